@@ -1,0 +1,105 @@
+#include "app/command_line.h"
+
+#include <QCommandLineParser>
+#include <array>
+
+#include "app/generate_command.h"
+#include "app/version.h"
+
+namespace ensil::app {
+namespace {
+
+struct Subcommand {
+    const char* name;
+    const char* summary;
+    bool available;
+};
+
+constexpr std::array<Subcommand, 4> kSubcommands{{
+    {"generate", "Write the built-in demo ensemble as a CF NetCDF file", true},
+    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", false},
+    {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", false},
+    {"render", "Draw an ensemble's silhouettes to a PNG without a window", false},
+}};
+
+const Subcommand* findSubcommand(const QString& name) {
+    for (const Subcommand& sub : kSubcommands) {
+        if (name == QLatin1String(sub.name)) return &sub;
+    }
+    return nullptr;
+}
+
+QString topLevelHelp() {
+    QString text = QStringLiteral(
+        "Usage: ensil [options] [PATH...]\n"
+        "       ensil <command> [options]\n"
+        "\n"
+        "ensil (ensemble silhouettes) shows ensembles of 3D isosurfaces as screen-space\n"
+        "silhouettes. With no PATH it opens the workbench on the built-in demo ensemble;\n"
+        "with PATHs it opens those data files or that project.\n"
+        "\n"
+        "Commands:\n");
+    for (const Subcommand& sub : kSubcommands) {
+        text += QStringLiteral("  %1%2\n")
+                    .arg(QLatin1String(sub.name), -12)
+                    .arg(QLatin1String(sub.summary) +
+                         (sub.available ? QString() : QStringLiteral(" (not yet available)")));
+    }
+    text += QStringLiteral(
+        "\n"
+        "Options:\n"
+        "  -h, --help     Show this help.\n"
+        "  -v, --version  Show the version.\n"
+        "\n"
+        "Run 'ensil <command> --help' for the options of a command.\n");
+    return text;
+}
+
+}  // namespace
+
+bool isHeadlessInvocation(const QStringList& args) {
+    if (args.size() < 2) return false;
+    const QString& first = args.at(1);
+    return findSubcommand(first) != nullptr || first == QLatin1String("-h") ||
+           first == QLatin1String("--help") || first == QLatin1String("-v") ||
+           first == QLatin1String("--version");
+}
+
+CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTextStream& err) {
+    if (args.size() >= 2) {
+        if (const Subcommand* sub = findSubcommand(args.at(1))) {
+            QStringList rest = args.mid(2);
+            rest.prepend(QStringLiteral("ensil ") + QLatin1String(sub->name));
+            if (QLatin1String(sub->name) == QLatin1String("generate")) {
+                return {runGenerateCommand(rest, out, err), std::nullopt};
+            }
+            err << "ensil " << sub->name << ": not available in ensil " << ENSIL_VERSION
+                << " yet. Available now: ensil generate, and the workbench (ensil).\n";
+            return {3, std::nullopt};
+        }
+    }
+    QCommandLineParser parser;
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  QStringLiteral("Show this help."));
+    const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")},
+                                     QStringLiteral("Show the version."));
+    parser.addOptions({help, version});
+    parser.addPositionalArgument(QStringLiteral("PATH"),
+                                 QStringLiteral("Data files or a project to open."),
+                                 QStringLiteral("[PATH...]"));
+    if (!parser.parse(args)) {
+        err << "ensil: " << parser.errorText() << "\nRun 'ensil --help' for usage.\n";
+        return {2, std::nullopt};
+    }
+    if (parser.isSet(help)) {
+        out << topLevelHelp();
+        return {0, std::nullopt};
+    }
+    if (parser.isSet(version)) {
+        out << "ensil " << ENSIL_VERSION << "\n";
+        return {0, std::nullopt};
+    }
+    return {0, WorkbenchRequest{parser.positionalArguments()}};
+}
+
+}  // namespace ensil::app

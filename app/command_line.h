@@ -1,0 +1,28 @@
+// The command-line front end of the `ensil` executable. Subcommands (generate, info, preprocess,
+// render) run without a display; anything else asks for the workbench. Pure dispatch: output
+// goes to the given streams so tests can read it. Main thread only.
+#pragma once
+
+#include <QStringList>
+#include <QTextStream>
+#include <optional>
+
+namespace ensil::app {
+
+// What the workbench should open: nothing (the demo), or the given files or project.
+struct WorkbenchRequest {
+    QStringList paths;
+};
+
+struct CommandLineOutcome {
+    int exitCode = 0;
+    std::optional<WorkbenchRequest> workbench;  // set when the GUI should start
+};
+
+// True when args (including the program name) name a subcommand or --help/--version, i.e. the
+// run needs no display and no QApplication.
+bool isHeadlessInvocation(const QStringList& args);
+
+CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTextStream& err);
+
+}  // namespace ensil::app

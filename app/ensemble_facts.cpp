@@ -1,0 +1,37 @@
+#include "app/ensemble_facts.h"
+
+namespace ensil::app {
+
+QString describeAxis(const data::Axis& axis) {
+    return QStringLiteral("%1: %2 .. %3 %4, %5 points, %6")
+        .arg(QString::fromStdString(axis.name))
+        .arg(axis.front(), 0, 'g', 6)
+        .arg(axis.back(), 0, 'g', 6)
+        .arg(QString::fromStdString(axis.units))
+        .arg(axis.size())
+        .arg(axis.isUniform() ? QStringLiteral("uniform") : QStringLiteral("uneven spacing"));
+}
+
+ui::EnsembleFacts describeEnsemble(const EnsembleOverview& overview) {
+    const data::Ensemble& e = *overview.ensemble;
+    ui::EnsembleFacts facts;
+    facts.source = QString::fromStdString(e.source);
+    facts.variable = QString::fromStdString(e.variable);
+    if (!e.longName.empty()) facts.variable += QStringLiteral(" (%1)").arg(e.longName.c_str());
+    facts.units = QString::fromStdString(e.units);
+    facts.memberDimension = QString::fromStdString(e.memberDimension);
+    facts.members = static_cast<int>(e.memberCount());
+    facts.gridSize =
+        QStringLiteral("%1 x %2 x %3").arg(e.grid.nx()).arg(e.grid.ny()).arg(e.grid.nz());
+    for (int a = 0; a < 3; ++a) facts.axes << describeAxis(e.grid.axis(a));
+    facts.valueRange = QStringLiteral("%1 .. %2 %3, mean %4")
+                           .arg(overview.statistics.minimum, 0, 'g', 5)
+                           .arg(overview.statistics.maximum, 0, 'g', 5)
+                           .arg(facts.units)
+                           .arg(overview.statistics.mean, 0, 'g', 5);
+    facts.missing = overview.statistics.missingCount;
+    facts.megabytes = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
+    return facts;
+}
+
+}  // namespace ensil::app

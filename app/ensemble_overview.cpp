@@ -1,0 +1,28 @@
+#include "app/ensemble_overview.h"
+
+#include "data/error.h"
+#include "preprocessing/column_maximum.h"
+#include "preprocessing/mean_member.h"
+
+namespace ensil::app {
+
+EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
+                                       const std::stop_token& stop,
+                                       const prep::Progress& progress) {
+    EnsembleOverview overview;
+    overview.statistics = prep::computeFieldStatistics(
+        *ensemble, 128, stop, [&](double f) { prep::report(progress, 0.5 * f); });
+    if (overview.statistics.validCount == 0) {
+        throw data::Error(data::ErrorKind::AllValuesMissing,
+                          "every value of '" + ensemble->variable + "' in " + ensemble->source +
+                              " is missing: there is nothing to draw");
+    }
+    overview.mean = prep::computeMeanMember(
+        *ensemble, stop, [&](double f) { prep::report(progress, 0.5 + 0.45 * f); });
+    overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, overview.mean);
+    prep::report(progress, 1.0);
+    overview.ensemble = std::move(ensemble);
+    return overview;
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,28 @@
+// What the workbench shows as soon as an ensemble is loaded, before any isovalue is chosen:
+// value statistics, the mean member, and the column maximum of the mean for the floor map.
+// Computed off the GUI thread by a pure function. Immutable once built.
+#pragma once
+
+#include <memory>
+#include <stop_token>
+#include <vector>
+
+#include "data/ensemble.h"
+#include "preprocessing/field_statistics.h"
+#include "preprocessing/job.h"
+
+namespace ensil::app {
+
+struct EnsembleOverview {
+    std::shared_ptr<const data::Ensemble> ensemble;
+    prep::FieldStatistics statistics;
+    data::Member mean;
+    std::vector<float> meanColumnMaximum;  // nx * ny
+};
+
+// Throws prep::Cancelled, data::Error.
+EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
+                                       const std::stop_token& stop,
+                                       const prep::Progress& progress);
+
+}  // namespace ensil::app

@@ -1,0 +1,257 @@
+#include "app/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPromise>
+#include <QSettings>
+#include <QStatusBar>
+#include <QToolButton>
+#include <QUnhandledException>
+#include <QtConcurrent/QtConcurrentRun>
+#include <cmath>
+#include <limits>
+
+#include "app/ensemble_facts.h"
+#include "app/version.h"
+#include "data/error.h"
+#include "widgets/ensemble_info_panel.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+namespace {
+constexpr int kProgressSteps = 1000;
+
+// QtConcurrent wraps exceptions it does not know in QUnhandledException; recover the message.
+QString messageOf(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const QUnhandledException& e) {
+        return e.exception() ? messageOf(e.exception()) : QStringLiteral("unknown error");
+    } catch (const std::bad_alloc&) {
+        return QObject::tr("not enough memory to load the ensemble");
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    }
+}
+}  // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::SilhouetteView) {
+    setWindowTitle(QStringLiteral("ensil"));
+    setCentralWidget(m_view);
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
+    createDocks();
+    createMenus();
+    createStatusBar();
+    connect(&m_loader, &QFutureWatcher<EnsembleOverview>::progressValueChanged, this,
+            [this](int value) { m_progress->setValue(value); });
+    connect(&m_loader, &QFutureWatcher<EnsembleOverview>::finished, this,
+            &MainWindow::onLoaderFinished);
+    connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
+        QMessageBox::critical(this, tr("ensil cannot draw"),
+                              tr("The 3D view needs OpenGL 4.1 (core profile), which this "
+                                 "display does not provide.\n\n%1\n\nUpdate the graphics "
+                                 "driver, or run ensil on a machine with OpenGL 4.1.")
+                                  .arg(message));
+    });
+
+    QSettings settings;
+    resize(1400, 900);
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+}
+
+MainWindow::~MainWindow() {
+    // A worker must not outlive the window whose stop source and watcher it reports to.
+    if (m_loaderStop) m_loaderStop->request_stop();
+    waitForLoader();
+}
+
+void MainWindow::waitForLoader() {
+    // QFuture rethrows the worker's exception from waitForFinished(); onLoaderFinished() reports
+    // it, so here it only needs to end.
+    try {
+        m_loader.waitForFinished();
+    } catch (...) {
+    }
+}
+
+void MainWindow::createDocks() {
+    m_info = new ui::EnsembleInfoPanel;
+    auto* dock = new QDockWidget(tr("Ensemble"), this);
+    dock->setObjectName(QStringLiteral("ensembleDock"));
+    dock->setWidget(m_info);
+    addDockWidget(Qt::LeftDockWidgetArea, dock);
+    m_info->showMessage(tr("No ensemble loaded."));
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* screenshot = file->addAction(tr("Save &Screenshot..."), this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save Screenshot"), QStringLiteral("ensil.png"), tr("PNG images (*.png)"));
+        QString error;
+        if (!path.isEmpty() && !saveScreenshot(path, &error)) {
+            QMessageBox::warning(this, tr("Screenshot not saved"), error);
+        }
+    });
+    screenshot->setShortcut(QKeySequence(Qt::Key_F12));
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view,
+                        &ui::SilhouetteView::resetCamera);
+    QAction* fullScreen = viewMenu->addAction(tr("&Full Screen"));
+    fullScreen->setShortcut(QKeySequence::FullScreen);
+    fullScreen->setCheckable(true);
+    connect(fullScreen, &QAction::toggled, this,
+            [this](bool on) { on ? showFullScreen() : showNormal(); });
+    viewMenu->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        viewMenu->addAction(dock->toggleViewAction());
+    }
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About ensil"), this, [this] {
+        QMessageBox::about(this, tr("About ensil"),
+                           tr("<b>ensil %1</b><p>Ensemble silhouettes: ensembles of 3D "
+                              "isosurfaces drawn as screen-space silhouettes, after Demir, "
+                              "Kehrer and Westermann.</p>")
+                               .arg(QStringLiteral(ENSIL_VERSION)));
+    });
+}
+
+void MainWindow::createStatusBar() {
+    m_statusText = new QLabel(this);
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, kProgressSteps);
+    m_progress->setMaximumWidth(220);
+    m_progress->setTextVisible(false);
+    m_cancel = new QToolButton(this);
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Stop the work in progress (Esc)"));
+    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+    connect(m_cancel, &QToolButton::clicked, this, &MainWindow::cancelLoading);
+    statusBar()->addWidget(m_statusText, 1);
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancel);
+    setIdle(tr("Ready"));
+}
+
+void MainWindow::setBusy(const QString& what) {
+    m_statusText->setText(what);
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_cancel->setVisible(true);
+}
+
+void MainWindow::setIdle(const QString& message) {
+    m_statusText->setText(message);
+    m_progress->setVisible(false);
+    m_cancel->setVisible(false);
+}
+
+void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
+    cancelLoading();
+    waitForLoader();
+    auto stop = std::make_shared<std::stop_source>();
+    m_loaderStop = stop;
+    setBusy(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
+                .arg(params.members)
+                .arg(params.nx)
+                .arg(params.ny)
+                .arg(params.nz));
+    m_info->showMessage(tr("Loading..."));
+    m_loader.setFuture(QtConcurrent::run([params, stop](QPromise<EnsembleOverview>& promise) {
+        promise.setProgressRange(0, kProgressSteps);
+        const auto progress = [&promise](double f) {
+            promise.setProgressValue(static_cast<int>(f * kProgressSteps));
+        };
+        auto demo = data::makeDemoEnsemble(params);
+        progress(0.3);
+        auto ensemble = std::make_shared<const data::Ensemble>(std::move(demo.ensemble));
+        promise.addResult(buildEnsembleOverview(
+            std::move(ensemble), stop->get_token(), [&](double f) { progress(0.3 + 0.7 * f); }));
+    }));
+}
+
+void MainWindow::cancelLoading() {
+    if (m_loaderStop) m_loaderStop->request_stop();
+}
+
+void MainWindow::onLoaderFinished() {
+    QFuture<EnsembleOverview> future = m_loader.future();
+    const bool cancelled = m_loaderStop && m_loaderStop->stop_requested();
+    try {
+        future.waitForFinished();  // rethrows the worker's exception, if any
+        if (future.resultCount() == 1) {
+            showOverview(std::make_unique<EnsembleOverview>(future.result()));
+            return;
+        }
+    } catch (...) {
+        if (!cancelled) {
+            const QString message = messageOf(std::current_exception());
+            setIdle(tr("Loading failed: %1").arg(message));
+            m_info->showMessage(tr("Loading failed: %1").arg(message));
+            emit loadingFailed(message);
+            return;
+        }
+    }
+    setIdle(tr("Loading cancelled"));
+    if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+}
+
+void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
+    m_overview = std::move(overview);
+    const data::Ensemble& e = *m_overview->ensemble;
+    gl::Renderer& renderer = m_view->renderer();
+    renderer.setGrid(e.grid);
+    // The map spans its own range: the mean's column maxima cover only part of the values.
+    const auto& map = m_overview->meanColumnMaximum;
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (const float v : map) {
+        if (!std::isnan(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    renderer.setFloorMap({map, lo, hi});
+    m_view->update();
+    m_info->showFacts(describeEnsemble(*m_overview));
+    setWindowTitle(QStringLiteral("%1 - %2 - ensil")
+                       .arg(QString::fromStdString(e.variable))
+                       .arg(QString::fromStdString(e.source)));
+    setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6")
+                .arg(QString::fromStdString(e.source))
+                .arg(e.memberCount())
+                .arg(QString::fromStdString(e.variable))
+                .arg(e.grid.nx())
+                .arg(e.grid.ny())
+                .arg(e.grid.nz()));
+    emit ensembleLoaded();
+}
+
+bool MainWindow::saveScreenshot(const QString& path, QString* error) {
+    const QImage image = m_view->grabFramebuffer();
+    if (image.isNull() || !image.save(path)) {
+        if (error != nullptr) *error = tr("Could not write '%1'.").arg(path);
+        return false;
+    }
+    return true;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    QMainWindow::closeEvent(event);
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,71 @@
+// The workbench window: the silhouette view in the centre, dock panels around it, menus with
+// standard shortcuts, and the status bar that shows background work with a cancel button.
+// Loading runs on a worker thread (QtConcurrent); results come back through QFutureWatcher's
+// queued signals. Window layout is remembered with QSettings. GUI thread only.
+#pragma once
+
+#include <QFutureWatcher>
+#include <QMainWindow>
+#include <memory>
+#include <stop_token>
+
+#include "app/ensemble_overview.h"
+#include "data/demo_ensemble.h"
+
+class QProgressBar;
+class QToolButton;
+class QLabel;
+
+namespace ensil::ui {
+class SilhouetteView;
+class EnsembleInfoPanel;
+}  // namespace ensil::ui
+
+namespace ensil::app {
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    // Starts generating the demo ensemble in the background; ensembleLoaded() follows.
+    void loadDemo(const data::DemoEnsembleParams& params = {});
+    void cancelLoading();
+
+    [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
+    [[nodiscard]] ui::EnsembleInfoPanel* infoPanel() const { return m_info; }
+    [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
+    [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
+
+    // Saves the view (without the UI) as an image; returns false with a message on failure.
+    bool saveScreenshot(const QString& path, QString* error = nullptr);
+
+signals:
+    void ensembleLoaded();
+    void loadingFailed(const QString& message);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void createMenus();
+    void createDocks();
+    void createStatusBar();
+    void onLoaderFinished();
+    void waitForLoader();
+    void showOverview(std::unique_ptr<EnsembleOverview> overview);
+    void setBusy(const QString& what);
+    void setIdle(const QString& message);
+
+    ui::SilhouetteView* m_view;
+    ui::EnsembleInfoPanel* m_info = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QToolButton* m_cancel = nullptr;
+    QLabel* m_statusText = nullptr;
+    QFutureWatcher<EnsembleOverview> m_loader;
+    std::shared_ptr<std::stop_source> m_loaderStop;
+    std::unique_ptr<EnsembleOverview> m_overview;
+};
+
+}  // namespace ensil::app

@@ -1,0 +1,35 @@
+// An ensemble of scalar fields on one rectilinear grid. Each member owns one contiguous float
+// block in the grid's x-fastest order, so preprocessing walks it without copies. Missing values
+// are NaN. Built by a reader or the demo generator, then treated as immutable and shared
+// read-only between threads (std::shared_ptr<const Ensemble>).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "data/grid.h"
+
+namespace ensil::data {
+
+struct Member {
+    std::string name;           // e.g. "member 7", "2012-10-17T00"
+    std::vector<float> values;  // grid.pointCount() values, NaN where missing
+};
+
+struct Ensemble {
+    std::string variable;    // variable name, e.g. "wind_speed"
+    std::string longName;    // CF long_name, may be empty
+    std::string units;       // e.g. "m s-1"
+    std::string memberDimension;  // name of the dimension members came from, e.g. "number"
+    std::string source;      // where it came from (file path or "demo"), for the UI
+    Grid grid;
+    std::vector<Member> members;
+
+    [[nodiscard]] std::size_t memberCount() const { return members.size(); }
+    [[nodiscard]] std::size_t bytes() const {
+        return members.size() * grid.pointCount() * sizeof(float);
+    }
+};
+
+}  // namespace ensil::data

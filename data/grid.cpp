@@ -1,0 +1,72 @@
+#include "data/grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "data/error.h"
+
+namespace ensil::data {
+
+double Axis::minValue() const { return std::min(values.front(), values.back()); }
+double Axis::maxValue() const { return std::max(values.front(), values.back()); }
+
+bool Axis::isUniform() const {
+    if (values.size() < 3) return true;
+    const double step = values[1] - values[0];
+    const double tolerance = 1e-6 * std::abs(values.back() - values.front());
+    for (std::size_t i = 2; i < values.size(); ++i) {
+        if (std::abs((values[i] - values[i - 1]) - step) > tolerance) return false;
+    }
+    return true;
+}
+
+Axis makeUniformAxis(std::string name, std::string units, double first, double last,
+                     std::size_t n) {
+    Axis axis;
+    axis.name = std::move(name);
+    axis.units = std::move(units);
+    axis.values.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double t = n > 1 ? static_cast<double>(i) / static_cast<double>(n - 1) : 0.0;
+        axis.values[i] = first + t * (last - first);
+    }
+    return axis;
+}
+
+namespace {
+void checkAxis(const Axis& axis) {
+    if (axis.values.size() < 2) {
+        throw Error(ErrorKind::InvalidArgument,
+                    "axis '" + axis.name + "' has " + std::to_string(axis.values.size()) +
+                        " value(s): a 3D grid needs at least 2 points along every axis");
+    }
+    const bool increasing = axis.values[1] > axis.values[0];
+    for (std::size_t i = 1; i < axis.values.size(); ++i) {
+        const double step = axis.values[i] - axis.values[i - 1];
+        if (!std::isfinite(axis.values[i]) || (increasing ? step <= 0 : step >= 0)) {
+            throw Error(ErrorKind::InvalidArgument,
+                        "axis '" + axis.name + "' is not strictly monotonic at index " +
+                            std::to_string(i) + ": coordinates must increase or decrease");
+        }
+    }
+}
+}  // namespace
+
+Grid::Grid(Axis x, Axis y, Axis z) : m_axes{std::move(x), std::move(y), std::move(z)} {
+    for (const Axis& axis : m_axes) checkAxis(axis);
+}
+
+bool Grid::sameShapeAndCoordinates(const Grid& other) const {
+    for (std::size_t a = 0; a < 3; ++a) {
+        const auto& mine = m_axes[a].values;
+        const auto& theirs = other.m_axes[a].values;
+        if (mine.size() != theirs.size()) return false;
+        for (std::size_t i = 0; i < mine.size(); ++i) {
+            const double scale = std::max(1.0, std::abs(mine[i]));
+            if (std::abs(mine[i] - theirs[i]) > 1e-6 * scale) return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace ensil::data

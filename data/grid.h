@@ -1,0 +1,58 @@
+// A rectilinear 3D grid: three independent, strictly monotonic coordinate axes (uneven spacing
+// allowed, e.g. pressure levels). Values on the grid are stored x-fastest:
+// index = x + nx * (y + ny * z), the C order of a NetCDF variable (z, y, x).
+// Immutable after construction; safe to share between threads.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ensil::data {
+
+struct Axis {
+    std::string name;           // e.g. "lon", "plev"
+    std::string units;          // e.g. "degrees_east", "hPa"
+    std::string standardName;   // CF standard_name, may be empty
+    std::vector<double> values; // strictly increasing or strictly decreasing
+    bool positiveUp = true;     // false for pressure-like axes (CF positive = "down")
+
+    [[nodiscard]] std::size_t size() const { return values.size(); }
+    [[nodiscard]] double front() const { return values.front(); }
+    [[nodiscard]] double back() const { return values.back(); }
+    [[nodiscard]] double minValue() const;
+    [[nodiscard]] double maxValue() const;
+    // True when all steps are equal within a relative tolerance of 1e-6.
+    [[nodiscard]] bool isUniform() const;
+};
+
+// Builds an axis of n evenly spaced values from first to last (inclusive).
+Axis makeUniformAxis(std::string name, std::string units, double first, double last,
+                     std::size_t n);
+
+class Grid {
+public:
+    Grid() = default;
+    // Throws Error(InvalidArgument) unless every axis has at least 2 strictly monotonic values.
+    Grid(Axis x, Axis y, Axis z);
+
+    [[nodiscard]] const Axis& x() const { return m_axes[0]; }
+    [[nodiscard]] const Axis& y() const { return m_axes[1]; }
+    [[nodiscard]] const Axis& z() const { return m_axes[2]; }
+    [[nodiscard]] const Axis& axis(int i) const { return m_axes.at(static_cast<std::size_t>(i)); }
+
+    [[nodiscard]] std::size_t nx() const { return m_axes[0].size(); }
+    [[nodiscard]] std::size_t ny() const { return m_axes[1].size(); }
+    [[nodiscard]] std::size_t nz() const { return m_axes[2].size(); }
+    [[nodiscard]] std::size_t pointCount() const { return nx() * ny() * nz(); }
+    [[nodiscard]] std::size_t index(std::size_t i, std::size_t j, std::size_t k) const {
+        return i + nx() * (j + ny() * k);
+    }
+    [[nodiscard]] bool sameShapeAndCoordinates(const Grid& other) const;
+
+private:
+    std::array<Axis, 3> m_axes;
+};
+
+}  // namespace ensil::data

@@ -1,0 +1,68 @@
+#include "gl/camera.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace ensil::gl {
+namespace {
+constexpr float kOrbitDegPerPixel = 0.4F;
+constexpr float kMaxElevation = 89.0F;
+}  // namespace
+
+void Camera::fit(const glm::vec3& center, float radius) {
+    m_target = center;
+    m_radius = std::max(radius, 1e-6F);
+    // Distance at which the sphere fills the vertical field of view, with a small margin.
+    m_distance = 1.1F * m_radius / std::sin(glm::radians(kFieldOfViewDeg * 0.5F));
+}
+
+void Camera::reset(const glm::vec3& center, float radius) {
+    setAngles(kDefaultAzimuth, kDefaultElevation);
+    fit(center, radius);
+}
+
+void Camera::setAngles(float azimuthDeg, float elevationDeg) {
+    m_azimuth = std::remainder(azimuthDeg, 360.0F);
+    m_elevation = std::clamp(elevationDeg, -kMaxElevation, kMaxElevation);
+}
+
+void Camera::orbit(float dxPixels, float dyPixels) {
+    setAngles(m_azimuth - dxPixels * kOrbitDegPerPixel, m_elevation + dyPixels * kOrbitDegPerPixel);
+}
+
+void Camera::pan(float dxPixels, float dyPixels, float viewportHeight) {
+    // World units per pixel at the target's depth, so the point under the mouse follows it.
+    const float visibleHeight = 2.0F * m_distance * std::tan(glm::radians(kFieldOfViewDeg * 0.5F));
+    const float scale = visibleHeight / std::max(viewportHeight, 1.0F);
+    const glm::mat4 v = view();
+    const glm::vec3 right{v[0][0], v[1][0], v[2][0]};
+    const glm::vec3 up{v[0][1], v[1][1], v[2][1]};
+    m_target += (-dxPixels * right + dyPixels * up) * scale;
+}
+
+void Camera::zoom(float factor) {
+    m_distance = std::clamp(m_distance / std::max(factor, 1e-3F), 1e-3F * m_radius,
+                            100.0F * m_radius);
+}
+
+glm::vec3 Camera::eye() const {
+    const float az = glm::radians(m_azimuth);
+    const float el = glm::radians(m_elevation);
+    const glm::vec3 dir{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+    return m_target + m_distance * dir;
+}
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye(), m_target, glm::vec3(0, 0, 1)); }
+
+glm::mat4 Camera::projectionMatrix(float aspect) const {
+    const float nearPlane = std::max(m_distance - 4.0F * m_radius, m_distance * 1e-3F);
+    const float farPlane = m_distance + 4.0F * m_radius;
+    if (m_projection == Projection::Orthographic) {
+        const float h = m_distance * std::tan(glm::radians(kFieldOfViewDeg * 0.5F));
+        return glm::ortho(-h * aspect, h * aspect, -h, h, nearPlane, farPlane);
+    }
+    return glm::perspective(glm::radians(kFieldOfViewDeg), aspect, nearPlane, farPlane);
+}
+
+}  // namespace ensil::gl

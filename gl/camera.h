@@ -1,0 +1,53 @@
+// An orbit camera around a target point: azimuth and elevation in degrees, a distance, and a
+// perspective or orthographic projection. Z is up. A value type; GUI thread in practice.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace ensil::gl {
+
+class Camera {
+public:
+    enum class Projection { Perspective, Orthographic };
+
+    // Frames a sphere of the given radius around center, looking from the current angles.
+    void fit(const glm::vec3& center, float radius);
+    // Back to the default angles, then fit.
+    void reset(const glm::vec3& center, float radius);
+
+    // Mouse gestures, in pixels of a viewport of the given height.
+    void orbit(float dxPixels, float dyPixels);
+    void pan(float dxPixels, float dyPixels, float viewportHeight);
+    void zoom(float factor);  // > 1 moves closer
+
+    void setAngles(float azimuthDeg, float elevationDeg);
+    void setProjection(Projection p) { m_projection = p; }
+
+    [[nodiscard]] float azimuth() const { return m_azimuth; }
+    [[nodiscard]] float elevation() const { return m_elevation; }
+    [[nodiscard]] float distance() const { return m_distance; }
+    [[nodiscard]] glm::vec3 target() const { return m_target; }
+    [[nodiscard]] Projection projection() const { return m_projection; }
+    [[nodiscard]] glm::vec3 eye() const;
+    [[nodiscard]] glm::mat4 view() const;
+    [[nodiscard]] glm::mat4 projectionMatrix(float aspect) const;
+    [[nodiscard]] glm::mat4 viewProjection(float aspect) const {
+        return projectionMatrix(aspect) * view();
+    }
+
+    static constexpr float kFieldOfViewDeg = 30.0F;
+    static constexpr float kDefaultAzimuth = -75.0F;  // from the south, east to the right
+    static constexpr float kDefaultElevation = 30.0F;
+
+private:
+    glm::vec3 m_target{0.5F};
+    float m_distance = 3.0F;
+    float m_radius = 1.0F;
+    float m_azimuth = kDefaultAzimuth;
+    float m_elevation = kDefaultElevation;
+    Projection m_projection = Projection::Perspective;
+};
+
+}  // namespace ensil::gl

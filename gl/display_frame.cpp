@@ -1,0 +1,72 @@
+#include "gl/display_frame.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec3.hpp>
+
+namespace ensil::gl {
+namespace {
+constexpr float kAtmosphereThickness = 0.2F;
+
+// Linear interpolation of the axis coordinate at a fractional index, clamped to the axis.
+double coordinateAt(const data::Axis& axis, float index) {
+    const auto last = static_cast<float>(axis.size() - 1);
+    const float t = std::clamp(index, 0.0F, last);
+    const auto i = std::min(static_cast<std::size_t>(t), axis.size() - 2);
+    const double f = t - static_cast<float>(i);
+    return axis.values[i] + f * (axis.values[i + 1] - axis.values[i]);
+}
+}  // namespace
+
+bool isPressureUnit(const std::string& units) {
+    std::string u;
+    for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
+           u == "millibars" || u == "mb" || u == "bar" || u == "atm";
+}
+
+DisplayFrame::DisplayFrame(const data::Grid& grid, float verticalExaggeration)
+    : m_grid(grid), m_exaggeration(verticalExaggeration) {
+    const double sx = grid.x().maxValue() - grid.x().minValue();
+    const double sy = grid.y().maxValue() - grid.y().minValue();
+    const double longest = std::max(sx, sy);
+    m_size.x = static_cast<float>(sx / longest);
+    m_size.y = static_cast<float>(sy / longest);
+    m_logPressure = isPressureUnit(grid.z().units) && grid.z().minValue() > 0.0;
+    const bool sameUnits = grid.z().units == grid.x().units && grid.x().units == grid.y().units;
+    const double sz = grid.z().maxValue() - grid.z().minValue();
+    const float natural =
+        sameUnits && !m_logPressure ? static_cast<float>(sz / longest) : kAtmosphereThickness;
+    m_size.z = natural * verticalExaggeration;
+}
+
+double DisplayFrame::verticalFraction(double z) const {
+    const data::Axis& axis = m_grid.z();
+    double t = 0.0;
+    if (m_logPressure) {
+        const double bottom = std::log(axis.maxValue());
+        t = (bottom - std::log(z)) / (bottom - std::log(axis.minValue()));
+    } else {
+        t = (z - axis.minValue()) / (axis.maxValue() - axis.minValue());
+        if (!axis.positiveUp) t = 1.0 - t;
+    }
+    return t;
+}
+
+glm::vec3 DisplayFrame::toDisplay(const glm::dvec3& p) const {
+    const data::Axis& ax = m_grid.x();
+    const data::Axis& ay = m_grid.y();
+    // Horizontal axes may run either way; display always grows with the coordinate.
+    const double fx = (p.x - ax.minValue()) / (ax.maxValue() - ax.minValue());
+    const double fy = (p.y - ay.minValue()) / (ay.maxValue() - ay.minValue());
+    return {static_cast<float>(fx) * m_size.x, static_cast<float>(fy) * m_size.y,
+            static_cast<float>(verticalFraction(p.z)) * m_size.z};
+}
+
+glm::vec3 DisplayFrame::indexToDisplay(const glm::vec3& index) const {
+    return toDisplay({coordinateAt(m_grid.x(), index.x), coordinateAt(m_grid.y(), index.y),
+                      coordinateAt(m_grid.z(), index.z)});
+}
+
+}  // namespace ensil::gl

@@ -1,0 +1,45 @@
+// Maps data coordinates (longitude, latitude, pressure, metres, grid indices...) into the
+// display space the renderer draws in. Horizontal axes keep their true proportions, scaled so
+// the longer one spans 1. The vertical axis is mapped to a sensible thickness: when its units
+// differ from the horizontal ones (an atmosphere in hPa over a map in degrees), the box is 0.2
+// units high before exaggeration, because true proportions would make it a sheet of paper;
+// pressure axes are mapped through log-pressure so levels sit at their approximate heights,
+// with low pressure on top. A value type; any thread.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "data/grid.h"
+
+namespace ensil::gl {
+
+class DisplayFrame {
+public:
+    DisplayFrame() = default;
+    DisplayFrame(const data::Grid& grid, float verticalExaggeration);
+
+    [[nodiscard]] glm::vec3 boxMin() const { return {0.0F, 0.0F, 0.0F}; }
+    [[nodiscard]] glm::vec3 boxMax() const { return m_size; }
+    [[nodiscard]] glm::vec3 center() const { return 0.5F * m_size; }
+    [[nodiscard]] float verticalExaggeration() const { return m_exaggeration; }
+    // Whether the vertical axis is drawn through log-pressure.
+    [[nodiscard]] bool logPressure() const { return m_logPressure; }
+
+    // A point given in the grid's axis coordinates, in display space.
+    [[nodiscard]] glm::vec3 toDisplay(const glm::dvec3& dataPoint) const;
+    // A point given in (fractional) grid indices, in display space.
+    [[nodiscard]] glm::vec3 indexToDisplay(const glm::vec3& index) const;
+
+private:
+    [[nodiscard]] double verticalFraction(double z) const;
+
+    data::Grid m_grid;
+    glm::vec3 m_size{1.0F};
+    float m_exaggeration = 1.0F;
+    bool m_logPressure = false;
+};
+
+// True for units that name a pressure (hPa, Pa, mbar, millibar, ...).
+bool isPressureUnit(const std::string& units);
+
+}  // namespace ensil::gl

@@ -1,0 +1,192 @@
+#include "gl/renderer.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLVersionFunctionsFactory>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
+
+#include "gl/gl_functions.h"
+#include "gl/shader_library.h"
+
+namespace ensil::gl {
+
+struct Renderer::Gpu {
+    GlFunctions* f = nullptr;
+    ShaderLibrary shaders;
+    GLuint boxVao = 0, boxVbo = 0;
+    GLuint quadVao = 0, quadVbo = 0;
+    GLuint floorTexture = 0;
+    glm::ivec2 floorSize{0};
+};
+
+Renderer::Renderer() = default;
+Renderer::~Renderer() = default;  // GPU objects are released by releaseGpuResources().
+
+bool Renderer::isInitialized() const { return m_gpu != nullptr; }
+
+void Renderer::initialize() {
+    if (m_gpu) return;
+    QOpenGLContext* context = QOpenGLContext::currentContext();
+    if (context == nullptr) throw std::runtime_error("no current OpenGL context");
+    const QSurfaceFormat format = context->format();
+    if (format.version() < qMakePair(4, 1) || format.profile() != QSurfaceFormat::CoreProfile) {
+        throw std::runtime_error("ensil needs OpenGL 4.1 core profile; this context is " +
+                                 std::to_string(format.majorVersion()) + "." +
+                                 std::to_string(format.minorVersion()));
+    }
+    auto gpu = std::make_unique<Gpu>();
+    gpu->f = QOpenGLVersionFunctionsFactory::get<GlFunctions>(context);
+    if (gpu->f == nullptr) throw std::runtime_error("cannot resolve OpenGL 4.1 core functions");
+    GlFunctions& f = *gpu->f;
+    // Compile now so a broken shader is reported at start-up, not at the first frame.
+    gpu->shaders.program(QStringLiteral("lines"));
+    gpu->shaders.program(QStringLiteral("floor_map"));
+
+    f.glGenVertexArrays(1, &gpu->boxVao);
+    f.glGenBuffers(1, &gpu->boxVbo);
+    f.glBindVertexArray(gpu->boxVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->boxVbo);
+    // 12 edges of the unit cube; scaled to the box in the vertex data at draw time.
+    f.glBufferData(GL_ARRAY_BUFFER, 24 * sizeof(glm::vec3), nullptr, GL_DYNAMIC_DRAW);
+    f.glEnableVertexAttribArray(0);
+    f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+
+    const std::array<float, 8> corners{0, 0, 1, 0, 0, 1, 1, 1};
+    f.glGenVertexArrays(1, &gpu->quadVao);
+    f.glGenBuffers(1, &gpu->quadVbo);
+    f.glBindVertexArray(gpu->quadVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->quadVbo);
+    f.glBufferData(GL_ARRAY_BUFFER, sizeof(corners), corners.data(), GL_STATIC_DRAW);
+    f.glEnableVertexAttribArray(0);
+    f.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+    f.glBindVertexArray(0);
+
+    f.glGenTextures(1, &gpu->floorTexture);
+    m_gpu = std::move(gpu);
+    m_floorDirty = true;
+}
+
+void Renderer::releaseGpuResources() {
+    if (!m_gpu) return;
+    GlFunctions& f = *m_gpu->f;
+    f.glDeleteVertexArrays(1, &m_gpu->boxVao);
+    f.glDeleteBuffers(1, &m_gpu->boxVbo);
+    f.glDeleteVertexArrays(1, &m_gpu->quadVao);
+    f.glDeleteBuffers(1, &m_gpu->quadVbo);
+    f.glDeleteTextures(1, &m_gpu->floorTexture);
+    m_gpu->shaders.clear();
+    m_gpu.reset();
+}
+
+void Renderer::setGrid(const data::Grid& grid) {
+    m_grid = grid;
+    m_hasGrid = true;
+    m_frame = DisplayFrame(grid, m_frame.verticalExaggeration());
+    resetCamera();
+}
+
+void Renderer::setVerticalExaggeration(float exaggeration) {
+    if (m_hasGrid) {
+        m_frame = DisplayFrame(m_grid, exaggeration);
+        m_camera.fit(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
+    }
+}
+
+void Renderer::resetCamera() {
+    m_camera.reset(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
+}
+
+void Renderer::setFloorMap(FloorMap map) {
+    m_floor = std::move(map);
+    m_floorDirty = true;
+}
+
+void Renderer::uploadFloorMap() {
+    m_floorDirty = false;
+    if (!m_hasGrid || m_floor.values.size() != m_grid.nx() * m_grid.ny()) {
+        m_gpu->floorSize = {0, 0};
+        return;
+    }
+    // Normalise on the CPU, with -1 marking missing values: linear filtering of NaN would
+    // smear gaps into their neighbours.
+    const float span = m_floor.maximum - m_floor.minimum;
+    std::vector<float> normalised(m_floor.values.size());
+    for (std::size_t i = 0; i < normalised.size(); ++i) {
+        const float v = m_floor.values[i];
+        normalised[i] = std::isnan(v) ? -1.0F : (span > 0 ? (v - m_floor.minimum) / span : 0.5F);
+    }
+    GlFunctions& f = *m_gpu->f;
+    m_gpu->floorSize = {static_cast<int>(m_grid.nx()), static_cast<int>(m_grid.ny())};
+    f.glBindTexture(GL_TEXTURE_2D, m_gpu->floorTexture);
+    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    f.glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, m_gpu->floorSize.x, m_gpu->floorSize.y, 0, GL_RED,
+                   GL_FLOAT, normalised.data());
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void Renderer::render(unsigned framebuffer, int width, int height) {
+    if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
+    GlFunctions& f = *m_gpu->f;
+    f.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    f.glViewport(0, 0, width, height);
+    f.glClearColor(m_background.r, m_background.g, m_background.b, m_background.a);
+    f.glClearDepth(1.0);
+    f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_hasGrid || width <= 0 || height <= 0) return;
+    if (m_floorDirty) uploadFloorMap();
+
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthFunc(GL_LEQUAL);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const glm::mat4 viewProjection = m_camera.viewProjection(aspect);
+    const glm::vec3 lo = m_frame.boxMin();
+    const glm::vec3 hi = m_frame.boxMax();
+
+    if (m_gpu->floorSize.x > 0) {
+        QOpenGLShaderProgram& floor = m_gpu->shaders.program(QStringLiteral("floor_map"));
+        floor.bind();
+        f.glUniformMatrix4fv(floor.uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                             glm::value_ptr(viewProjection));
+        floor.setUniformValue("u_boxMin", lo.x, lo.y, lo.z);
+        floor.setUniformValue("u_boxMax", hi.x, hi.y, hi.z);
+        floor.setUniformValue("u_texelInset", 0.5F / static_cast<float>(m_gpu->floorSize.x),
+                              0.5F / static_cast<float>(m_gpu->floorSize.y));
+        floor.setUniformValue("u_opacity", 1.0F);
+        floor.setUniformValue("u_map", 0);
+        f.glActiveTexture(GL_TEXTURE0);
+        f.glBindTexture(GL_TEXTURE_2D, m_gpu->floorTexture);
+        f.glBindVertexArray(m_gpu->quadVao);
+        // Push the floor back a little so the box edges lying on it stay visible.
+        f.glEnable(GL_POLYGON_OFFSET_FILL);
+        f.glPolygonOffset(1.0F, 1.0F);
+        f.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+        f.glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+
+    const std::array<glm::vec3, 8> c{glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z},
+                                     {hi.x, hi.y, lo.z},          {lo.x, hi.y, lo.z},
+                                     {lo.x, lo.y, hi.z},          {hi.x, lo.y, hi.z},
+                                     {hi.x, hi.y, hi.z},          {lo.x, hi.y, hi.z}};
+    const std::array<glm::vec3, 24> edges{c[0], c[1], c[1], c[2], c[2], c[3], c[3], c[0],
+                                          c[4], c[5], c[5], c[6], c[6], c[7], c[7], c[4],
+                                          c[0], c[4], c[1], c[5], c[2], c[6], c[3], c[7]};
+    QOpenGLShaderProgram& lines = m_gpu->shaders.program(QStringLiteral("lines"));
+    lines.bind();
+    f.glUniformMatrix4fv(lines.uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                         glm::value_ptr(viewProjection));
+    lines.setUniformValue("u_color", kBoxColor.r, kBoxColor.g, kBoxColor.b, kBoxColor.a);
+    f.glBindVertexArray(m_gpu->boxVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->boxVbo);
+    f.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(edges), edges.data());
+    f.glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(edges.size()));
+    f.glBindVertexArray(0);
+    lines.release();
+}
+
+}  // namespace ensil::gl

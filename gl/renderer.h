@@ -1,0 +1,70 @@
+// Draws the 3D scene into whatever framebuffer is bound (a window's, or an offscreen one for
+// tests and `ensil render`). Today: the data box with its edges and, on its floor, a map of the
+// column maximum of the mean member. Later issues add the silhouettes.
+// Threading: setters may be called at any time on the GUI thread; initialize(), render() and
+// releaseGpuResources() need the owning OpenGL context current. The renderer owns its GL
+// objects and must release them before that context dies (QOpenGLContext::aboutToBeDestroyed).
+#pragma once
+
+#include <glm/vec4.hpp>
+#include <memory>
+#include <vector>
+
+#include "data/grid.h"
+#include "gl/camera.h"
+#include "gl/display_frame.h"
+
+namespace ensil::gl {
+
+// A 2D field drawn on the box floor: nx * ny values (x fastest), NaN where missing.
+struct FloorMap {
+    std::vector<float> values;
+    float minimum = 0.0F;
+    float maximum = 1.0F;
+};
+
+class Renderer {
+public:
+    Renderer();
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Compiles shaders and creates GL objects. Throws ShaderError, or std::runtime_error when the
+    // context is not OpenGL 4.1 core or newer.
+    void initialize();
+    void releaseGpuResources();
+    [[nodiscard]] bool isInitialized() const;
+
+    // Draws into the framebuffer object `framebuffer` (0 = the default) of the given pixel size.
+    void render(unsigned framebuffer, int width, int height);
+
+    // The grid frames the scene; setting it refits the camera.
+    void setGrid(const data::Grid& grid);
+    void setFloorMap(FloorMap map);
+    void setVerticalExaggeration(float exaggeration);
+    void setBackground(const glm::vec4& color) { m_background = color; }
+
+    [[nodiscard]] const DisplayFrame& frame() const { return m_frame; }
+    [[nodiscard]] Camera& camera() { return m_camera; }
+    [[nodiscard]] const Camera& camera() const { return m_camera; }
+    void resetCamera();
+
+    static constexpr glm::vec4 kDefaultBackground{0.11F, 0.12F, 0.14F, 1.0F};
+    static constexpr glm::vec4 kBoxColor{0.85F, 0.85F, 0.85F, 1.0F};
+
+private:
+    struct Gpu;
+    void uploadFloorMap();
+
+    std::unique_ptr<Gpu> m_gpu;
+    data::Grid m_grid;
+    bool m_hasGrid = false;
+    DisplayFrame m_frame;
+    Camera m_camera;
+    FloorMap m_floor;
+    bool m_floorDirty = false;
+    glm::vec4 m_background = kDefaultBackground;
+};
+
+}  // namespace ensil::gl

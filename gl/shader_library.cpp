@@ -1,0 +1,39 @@
+#include "gl/shader_library.h"
+
+#include <QFile>
+
+namespace ensil::gl {
+
+QByteArray ShaderLibrary::source(const QString& file) {
+    const QString dir = qEnvironmentVariable("ENSIL_SHADER_DIR");
+    const QString path = dir.isEmpty() ? QStringLiteral(":/ensil/shaders/") + file
+                                       : dir + QLatin1Char('/') + file;
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        throw ShaderError("cannot read shader '" + path.toStdString() +
+                          "': " + f.errorString().toStdString());
+    }
+    return f.readAll();
+}
+
+QOpenGLShaderProgram& ShaderLibrary::program(const QString& name) {
+    auto found = m_programs.find(name);
+    if (found != m_programs.end()) return *found->second;
+
+    auto program = std::make_unique<QOpenGLShaderProgram>();
+    const auto compile = [&](QOpenGLShader::ShaderType type, const QString& file) {
+        if (!program->addShaderFromSourceCode(type, source(file))) {
+            throw ShaderError("shader '" + file.toStdString() +
+                              "' does not compile:\n" + program->log().toStdString());
+        }
+    };
+    compile(QOpenGLShader::Vertex, name + QStringLiteral(".vert"));
+    compile(QOpenGLShader::Fragment, name + QStringLiteral(".frag"));
+    if (!program->link()) {
+        throw ShaderError("shader program '" + name.toStdString() +
+                          "' does not link:\n" + program->log().toStdString());
+    }
+    return *m_programs.emplace(name, std::move(program)).first->second;
+}
+
+}  // namespace ensil::gl

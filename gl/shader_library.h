@@ -1,0 +1,35 @@
+// Compiles and owns the shader programs. Sources are embedded at build time (Qt resources under
+// :/ensil/shaders/); setting the environment variable ENSIL_SHADER_DIR to the source tree's
+// gl/shaders folder loads them from disk instead, so a developer can edit shaders without
+// rebuilding. GUI thread only, with the owning context current.
+#pragma once
+
+#include <QOpenGLShaderProgram>
+#include <QString>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+namespace ensil::gl {
+
+class ShaderError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class ShaderLibrary {
+public:
+    // Returns the program built from NAME.vert and NAME.frag, compiling it on first use.
+    // Throws ShaderError with the compiler's log if it does not compile or link.
+    QOpenGLShaderProgram& program(const QString& name);
+    // Destroys every program; the context that created them must be current.
+    void clear() { m_programs.clear(); }
+
+    // The text of shaders/FILE (embedded, or from ENSIL_SHADER_DIR). Throws ShaderError.
+    static QByteArray source(const QString& file);
+
+private:
+    std::map<QString, std::unique_ptr<QOpenGLShaderProgram>> m_programs;
+};
+
+}  // namespace ensil::gl

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# README command 2 (and CI): install dependencies, build with warnings as errors, run every
+# test (OpenGL and GUI tests on a virtual X display, Mesa llvmpipe), then rebuild the GPU-free
+# layers with Address and UndefinedBehavior sanitizers and run their tests again.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packaging/install-deps.sh
+
+cmake --preset ci
+cmake --build --preset ci
+# One virtual display for the whole run; 24-bit colour so images compare exactly.
+xvfb-run -a -s "-screen 0 1920x1200x24" ctest --preset ci
+
+cmake --preset asan
+cmake --build --preset asan --target ensil_data_tests ensil_preprocessing_tests
+ctest --preset asan

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages that ensil's build, tests and app need.
+# Idempotent: packages already present are skipped, and `apt-get update` runs only when
+# something is missing. Run as root (or with sudo available).
+set -euo pipefail
+
+packages=(
+    # toolchain
+    cmake ninja-build g++ pkg-config
+    # Qt 6 (Widgets, OpenGL, OpenGLWidgets, Test, Concurrent, Svg); libqt6opengl6-dev is only
+    # a recommendation of qt6-base-dev but Qt6OpenGLWidgets' CMake config needs it.
+    qt6-base-dev libqt6opengl6-dev qt6-svg-dev qt6-qpa-plugins
+    # maths, meshes, threads
+    libglm-dev libopenmesh-dev libmeshoptimizer-dev libtbb-dev libeigen3-dev
+    # file formats
+    libnetcdf-dev netcdf-bin libhdf5-dev hdf5-tools libvtk9-dev
+    # tests and benchmarks
+    libgtest-dev libgmock-dev libbenchmark-dev
+    # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering
+    xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing+=("$p")
+    fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#packages[@]} packages already installed"
+    exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: done"

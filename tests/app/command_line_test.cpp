@@ -1,0 +1,123 @@
+#include <gtest/gtest.h>
+#include <netcdf.h>
+
+#include <QString>
+#include <QTextStream>
+
+#include "app/command_line.h"
+#include "app/generate_command.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil::app;
+
+namespace {
+struct CliRun {
+    int code = 0;
+    bool workbench = false;
+    QStringList paths;
+    QString out, err;
+};
+
+CliRun run(QStringList args) {
+    args.prepend("ensil");
+    CliRun r;
+    QTextStream out(&r.out), err(&r.err);
+    const CommandLineOutcome o = runCommandLine(args, out, err);
+    out.flush();
+    err.flush();
+    r.code = o.exitCode;
+    r.workbench = o.workbench.has_value();
+    if (o.workbench) r.paths = o.workbench->paths;
+    return r;
+}
+}  // namespace
+
+TEST(CommandLine, VersionAndHelpNeedNoDisplay) {
+    EXPECT_TRUE(isHeadlessInvocation({"ensil", "--version"}));
+    EXPECT_TRUE(isHeadlessInvocation({"ensil", "generate", "--out", "x.nc"}));
+    EXPECT_FALSE(isHeadlessInvocation({"ensil"}));
+    EXPECT_FALSE(isHeadlessInvocation({"ensil", "data.nc"}));
+
+    const CliRun version = run({"--version"});
+    EXPECT_EQ(version.code, 0);
+    EXPECT_TRUE(version.out.startsWith("ensil 0.")) << version.out.toStdString();
+    EXPECT_FALSE(version.workbench);
+
+    const CliRun help = run({"--help"});
+    EXPECT_EQ(help.code, 0);
+    for (const char* sub : {"generate", "info", "preprocess", "render"}) {
+        EXPECT_TRUE(help.out.contains(sub)) << sub;
+    }
+}
+
+TEST(CommandLine, NoArgumentsOpensTheDemoAndPathsAreForwarded) {
+    const CliRun demo = run({});
+    EXPECT_TRUE(demo.workbench);
+    EXPECT_TRUE(demo.paths.isEmpty());
+    const CliRun files = run({"a.nc", "b.nc"});
+    EXPECT_TRUE(files.workbench);
+    EXPECT_EQ(files.paths, (QStringList{"a.nc", "b.nc"}));
+}
+
+TEST(CommandLine, UnknownOptionIsAnErrorWithAHint) {
+    const CliRun r = run({"--frobnicate"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_FALSE(r.workbench);
+    EXPECT_TRUE(r.err.contains("--help")) << r.err.toStdString();
+}
+
+TEST(CommandLine, SubcommandsOfLaterReleasesSaySoAndFail) {
+    const CliRun r = run({"render", "x.nc", "--out", "y.png"});
+    EXPECT_EQ(r.code, 3);
+    EXPECT_TRUE(r.err.contains("not available")) << r.err.toStdString();
+}
+
+TEST(GenerateCommand, WritesTheRequestedEnsemble) {
+    ensil::test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("demo.nc"));
+    const CliRun r = run({"generate", "--members", "6", "--grid", "20x10x5", "--seed", "9", "--out", path});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_TRUE(r.out.contains("6 members")) << r.out.toStdString();
+
+    int nc = -1;
+    ASSERT_EQ(nc_open(path.toLocal8Bit().constData(), NC_NOWRITE, &nc), NC_NOERR);
+    const auto dimSize = [nc](const char* name) {
+        int id = -1;
+        std::size_t n = 0;
+        nc_inq_dimid(nc, name, &id);
+        nc_inq_dimlen(nc, id, &n);
+        return n;
+    };
+    EXPECT_EQ(dimSize("number"), 6u);
+    EXPECT_EQ(dimSize("lon"), 20u);
+    EXPECT_EQ(dimSize("lat"), 10u);
+    EXPECT_EQ(dimSize("plev"), 5u);
+    nc_close(nc);
+}
+
+TEST(GenerateCommand, BadArgumentsAreExplained) {
+    const CliRun noOut = run({"generate"});
+    EXPECT_EQ(noOut.code, 2);
+    EXPECT_TRUE(noOut.err.contains("--out")) << noOut.err.toStdString();
+    const CliRun badGrid = run({"generate", "--grid", "12x4", "--out", "x.nc"});
+    EXPECT_EQ(badGrid.code, 2);
+    EXPECT_TRUE(badGrid.err.contains("256x128x16")) << badGrid.err.toStdString();
+    const CliRun badMembers = run({"generate", "--members", "zero", "--out", "x.nc"});
+    EXPECT_EQ(badMembers.code, 2);
+    const CliRun unwritable = run({"generate", "--members", "2", "--grid", "4x4x2", "--out",
+                                "/nonexistent-ensil-dir/x.nc"});
+    EXPECT_EQ(unwritable.code, 1);
+    EXPECT_TRUE(unwritable.err.contains("/nonexistent-ensil-dir/x.nc")) << unwritable.err.toStdString();
+}
+
+TEST(GenerateCommand, GridSizeParsing) {
+    std::size_t nx = 0, ny = 0, nz = 0;
+    EXPECT_TRUE(parseGridSize("128x256x16", nx, ny, nz));
+    EXPECT_EQ(nx, 128u);
+    EXPECT_EQ(ny, 256u);
+    EXPECT_EQ(nz, 16u);
+    EXPECT_FALSE(parseGridSize("128x256", nx, ny, nz));
+    EXPECT_FALSE(parseGridSize("1x256x16", nx, ny, nz));
+    EXPECT_FALSE(parseGridSize("axbxc", nx, ny, nz));
+    EXPECT_EQ(nx, 128u) << "a failed parse leaves the outputs alone";
+}

@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/main_window.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/ensemble_info_panel.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+TEST(MainWindow, LoadsTheDemoInTheBackgroundAndShowsIt) {
+    app::MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    window.loadDemo({.members = 5, .nx = 64, .ny = 32, .nz = 8, .seed = 3});
+    ASSERT_TRUE(loaded.wait(30000)) << "the demo did not load";
+    ASSERT_NE(window.overview(), nullptr);
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 5u);
+
+    const QString info = window.infoPanel()->text();
+    EXPECT_TRUE(info.contains("Members: 5")) << info.toStdString();
+    EXPECT_TRUE(info.contains("Grid: 64 x 32 x 8")) << info.toStdString();
+    EXPECT_TRUE(window.windowTitle().contains("wind_speed"));
+
+    // The screenshot shows the floor map: many pixels that are neither background nor gray.
+    ensil::test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("shot.png"));
+    QTest::qWait(50);
+    ASSERT_TRUE(window.saveScreenshot(path));
+    const QImage shot(path);
+    ASSERT_FALSE(shot.isNull());
+    int coloured = 0;
+    for (int y = 0; y < shot.height(); y += 2)
+        for (int x = 0; x < shot.width(); x += 2) {
+            const QColor c = shot.pixelColor(x, y);
+            if (std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 40)
+                ++coloured;
+        }
+    EXPECT_GT(coloured, shot.width() * shot.height() / 4 / 20) << "floor map missing";
+    shot.save(test::testOutputDir() + "/main_window_demo.png");  // kept as a test artifact
+}
+
+TEST(MainWindow, CancelledLoadLeavesNothingHalfLoaded) {
+    app::MainWindow window;
+    QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    window.loadDemo({.members = 20, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
+    window.cancelLoading();
+    QElapsedTimer timer;
+    timer.start();
+    while (window.isLoading() && timer.elapsed() < 30000) QTest::qWait(10);
+    ASSERT_FALSE(window.isLoading());
+    QTest::qWait(20);  // let the queued finished signal arrive
+    EXPECT_EQ(window.overview(), nullptr);
+    EXPECT_EQ(loaded.count(), 0);
+    EXPECT_EQ(failed.count(), 0) << "a cancel is not a failure";
+}

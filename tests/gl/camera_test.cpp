@@ -1,0 +1,72 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl/camera.h"
+
+using ensil::gl::Camera;
+
+namespace {
+glm::vec3 ndc(const glm::mat4& m, const glm::vec3& p) {
+    const glm::vec4 c = m * glm::vec4(p, 1.0F);
+    return glm::vec3(c) / c.w;
+}
+}  // namespace
+
+TEST(Camera, FitPutsTheTargetInTheCentreAndTheSphereInView) {
+    Camera cam;
+    cam.fit({1, 2, 3}, 0.5F);
+    const glm::mat4 vp = cam.viewProjection(1.0F);
+    const glm::vec3 centre = ndc(vp, {1, 2, 3});
+    EXPECT_NEAR(centre.x, 0.0F, 1e-5);
+    EXPECT_NEAR(centre.y, 0.0F, 1e-5);
+    EXPECT_NEAR(glm::length(cam.eye() - glm::vec3(1, 2, 3)), cam.distance(), 1e-4);
+    // Points on the sphere along the camera's up and right stay inside the view.
+    const glm::mat4 v = cam.view();
+    const glm::vec3 up{v[0][1], v[1][1], v[2][1]};
+    const glm::vec3 right{v[0][0], v[1][0], v[2][0]};
+    for (const glm::vec3& dir : {up, -up, right, -right}) {
+        const glm::vec3 p = ndc(vp, glm::vec3(1, 2, 3) + 0.5F * dir);
+        EXPECT_LT(std::abs(p.x), 1.0F);
+        EXPECT_LT(std::abs(p.y), 1.0F);
+        EXPECT_GT(std::max(std::abs(p.x), std::abs(p.y)), 0.7F) << "the sphere should fill the view";
+    }
+}
+
+TEST(Camera, OrbitTurnsAndElevationIsClamped) {
+    Camera cam;
+    cam.setAngles(10.0F, 20.0F);
+    cam.orbit(-25.0F, 0.0F);  // 0.4 degrees per pixel
+    EXPECT_NEAR(cam.azimuth(), 20.0F, 1e-4);
+    cam.orbit(0.0F, 1000.0F);
+    EXPECT_LE(cam.elevation(), 89.0F);
+    cam.setAngles(370.0F, 0.0F);
+    EXPECT_NEAR(cam.azimuth(), 10.0F, 1e-4);
+}
+
+TEST(Camera, PanMovesTargetAcrossTheViewNotAlongIt) {
+    Camera cam;
+    cam.fit({0, 0, 0}, 1.0F);
+    const glm::vec3 before = cam.target();
+    const glm::vec3 viewDir = glm::normalize(before - cam.eye());
+    cam.pan(30.0F, -10.0F, 600.0F);
+    const glm::vec3 moved = cam.target() - before;
+    EXPECT_GT(glm::length(moved), 0.0F);
+    EXPECT_NEAR(glm::dot(moved, viewDir), 0.0F, 1e-5);
+}
+
+TEST(Camera, ZoomChangesDistanceAndOrthographicKeepsCentre) {
+    Camera cam;
+    cam.fit({0, 0, 0}, 1.0F);
+    const float d = cam.distance();
+    cam.zoom(2.0F);
+    EXPECT_NEAR(cam.distance(), d / 2.0F, 1e-5);
+    cam.setProjection(Camera::Projection::Orthographic);
+    const glm::vec3 c = ndc(cam.viewProjection(1.5F), {0, 0, 0});
+    EXPECT_NEAR(c.x, 0.0F, 1e-5);
+    EXPECT_NEAR(c.y, 0.0F, 1e-5);
+    EXPECT_GT(c.z, -1.0F);
+    EXPECT_LT(c.z, 1.0F);
+}

@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "data/demo_ensemble.h"
+#include "gl/display_frame.h"
+
+using namespace ensil;
+
+namespace {
+data::Grid demoGrid() {
+    return data::makeDemoEnsemble({.members = 1, .nx = 25, .ny = 11, .nz = 6}).ensemble.grid;
+}
+}  // namespace
+
+TEST(DisplayFrame, HorizontalProportionsAreKeptAndAtmosphereIsAThinSlab) {
+    const gl::DisplayFrame frame(demoGrid(), 1.0F);
+    EXPECT_FLOAT_EQ(frame.boxMax().x, 1.0F);                  // 120 degrees of longitude
+    EXPECT_FLOAT_EQ(frame.boxMax().y, 50.0F / 120.0F);        // 50 degrees of latitude
+    EXPECT_FLOAT_EQ(frame.boxMax().z, 0.2F);
+    EXPECT_TRUE(frame.logPressure());
+    const gl::DisplayFrame exaggerated(demoGrid(), 3.0F);
+    EXPECT_FLOAT_EQ(exaggerated.boxMax().z, 0.6F);
+}
+
+TEST(DisplayFrame, PressureMapsThroughLogPressureWithLowPressureOnTop) {
+    const gl::DisplayFrame frame(demoGrid(), 1.0F);
+    const float top = frame.boxMax().z;
+    EXPECT_NEAR(frame.toDisplay({0, 50, 1000}).z, 0.0F, 1e-6);
+    EXPECT_NEAR(frame.toDisplay({0, 50, 100}).z, top, 1e-6);
+    // sqrt(1000 * 100) hPa is halfway up in log-pressure.
+    EXPECT_NEAR(frame.toDisplay({0, 50, std::sqrt(1000.0 * 100.0)}).z, 0.5F * top, 1e-5);
+    EXPECT_NEAR(frame.toDisplay({-80, 25, 500}).x, 0.0F, 1e-6);
+    EXPECT_NEAR(frame.toDisplay({40, 75, 500}).y, frame.boxMax().y, 1e-6);
+}
+
+TEST(DisplayFrame, IndexSpaceCornersAreBoxCorners) {
+    const data::Grid grid = demoGrid();
+    const gl::DisplayFrame frame(grid, 1.0F);
+    const glm::vec3 first = frame.indexToDisplay({0, 0, 0});
+    const glm::vec3 last = frame.indexToDisplay({24, 10, 5});
+    EXPECT_NEAR(first.x, 0.0F, 1e-6);
+    EXPECT_NEAR(first.y, 0.0F, 1e-6);
+    EXPECT_NEAR(first.z, 0.0F, 1e-6);
+    EXPECT_NEAR(last.x, frame.boxMax().x, 1e-6);
+    EXPECT_NEAR(last.y, frame.boxMax().y, 1e-6);
+    EXPECT_NEAR(last.z, frame.boxMax().z, 1e-6);
+    // Half an index step in x is half a cell of longitude: 2.5 degrees of 120.
+    EXPECT_NEAR(frame.indexToDisplay({0.5F, 0, 0}).x, 2.5F / 120.0F, 1e-6);
+}
+
+TEST(DisplayFrame, VolumeInOneUnitKeepsTrueProportions) {
+    const data::Grid cube(data::makeUniformAxis("x", "", 0, 67, 68),
+                          data::makeUniformAxis("y", "", 0, 67, 68),
+                          data::makeUniformAxis("z", "", 0, 33.5, 35));
+    const gl::DisplayFrame frame(cube, 1.0F);
+    EXPECT_FALSE(frame.logPressure());
+    EXPECT_FLOAT_EQ(frame.boxMax().z, 0.5F);
+    EXPECT_TRUE(gl::isPressureUnit("hPa"));
+    EXPECT_TRUE(gl::isPressureUnit("Pa"));
+    EXPECT_FALSE(gl::isPressureUnit("m"));
+}

@@ -1,0 +1,131 @@
+#include <gtest/gtest.h>
+
+#include <QColor>
+#include <cmath>
+#include <glm/vec4.hpp>
+#include <limits>
+
+#include "data/demo_ensemble.h"
+#include "gl/renderer.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/offscreen_gl.h"
+
+using namespace ensil;
+
+namespace {
+constexpr int kTolerance = 12;  // per channel, out of 255
+
+bool near(const QColor& c, const glm::vec4& expected, int tolerance = kTolerance) {
+    return std::abs(c.red() - static_cast<int>(std::lround(expected.r * 255))) <= tolerance &&
+           std::abs(c.green() - static_cast<int>(std::lround(expected.g * 255))) <= tolerance &&
+           std::abs(c.blue() - static_cast<int>(std::lround(expected.b * 255))) <= tolerance;
+}
+
+// Any pixel in the (2r+1)^2 neighbourhood has the colour.
+bool colourNear(const QImage& image, QPoint p, const glm::vec4& colour, int r = 2) {
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            const QPoint q = p + QPoint(dx, dy);
+            if (image.rect().contains(q) && near(image.pixelColor(q), colour)) return true;
+        }
+    return false;
+}
+}  // namespace
+
+class RendererTest : public test::OffscreenGlTest {
+protected:
+    void SetUp() override {
+        test::OffscreenGlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        m_renderer.initialize();
+    }
+    void TearDown() override {
+        if (m_renderer.isInitialized()) m_renderer.releaseGpuResources();
+        test::OffscreenGlTest::TearDown();
+    }
+    QImage draw() {
+        m_renderer.render(framebuffer(), kWidth, kHeight);
+        return grab();
+    }
+    // Pixel position (top-left origin) of a display-space point.
+    QPoint project(const glm::vec3& p) const {
+        const glm::vec4 c = m_renderer.camera().viewProjection(float(kWidth) / kHeight) *
+                            glm::vec4(p, 1.0F);
+        const float x = (c.x / c.w * 0.5F + 0.5F) * kWidth;
+        const float y = (1.0F - (c.y / c.w * 0.5F + 0.5F)) * kHeight;
+        return {static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
+    }
+    data::DemoEnsemble demo() const {
+        return data::makeDemoEnsemble({.members = 3, .nx = 48, .ny = 24, .nz = 8, .seed = 5});
+    }
+    gl::Renderer m_renderer;
+};
+
+TEST_F(RendererTest, WithoutDataEveryPixelIsBackground) {
+    const QImage image = draw();
+    for (QPoint p : {QPoint(0, 0), QPoint(kWidth / 2, kHeight / 2), QPoint(kWidth - 1, kHeight - 1)}) {
+        EXPECT_TRUE(near(image.pixelColor(p), gl::Renderer::kDefaultBackground, 1)) << p.x() << "," << p.y();
+    }
+}
+
+TEST_F(RendererTest, BoxCornersAppearWhereTheCameraProjectsThem) {
+    const auto d = demo();
+    m_renderer.setGrid(d.ensemble.grid);
+    const QImage image = draw();
+    const glm::vec3 lo = m_renderer.frame().boxMin(), hi = m_renderer.frame().boxMax();
+    int found = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
+        const QPoint px = project(p);
+        ASSERT_TRUE(image.rect().contains(px)) << "corner " << corner << " is off screen";
+        found += colourNear(image, px, gl::Renderer::kBoxColor) ? 1 : 0;
+    }
+    EXPECT_EQ(found, 8) << "every box corner is an endpoint of visible edges";
+    // The image corner is outside the box: background.
+    EXPECT_TRUE(near(image.pixelColor(1, 1), gl::Renderer::kDefaultBackground, 1));
+}
+
+TEST_F(RendererTest, FloorShowsTheMapAndMissingValuesInGray) {
+    const auto d = demo();
+    const data::Grid& grid = d.ensemble.grid;
+    m_renderer.setGrid(grid);
+    m_renderer.setBackground({0, 0, 0, 1});
+    // Left half of the map at the minimum (viridis dark purple), right half missing (gray).
+    std::vector<float> values(grid.nx() * grid.ny());
+    for (std::size_t j = 0; j < grid.ny(); ++j)
+        for (std::size_t i = 0; i < grid.nx(); ++i)
+            values[i + grid.nx() * j] = i < grid.nx() / 2 ? 0.0F : std::numeric_limits<float>::quiet_NaN();
+    m_renderer.setFloorMap({values, 0.0F, 1.0F});
+    const QImage image = draw();
+    const glm::vec3 hi = m_renderer.frame().boxMax();
+    const QPoint left = project({0.2F * hi.x, 0.5F * hi.y, 0.0F});
+    const QPoint right = project({0.8F * hi.x, 0.5F * hi.y, 0.0F});
+    EXPECT_TRUE(near(image.pixelColor(left), {0.267F, 0.005F, 0.329F, 1.0F}, 16))
+        << image.pixelColor(left).name().toStdString();
+    EXPECT_TRUE(near(image.pixelColor(right), {0.5F, 0.5F, 0.5F, 1.0F}, 4))
+        << image.pixelColor(right).name().toStdString();
+}
+
+TEST_F(RendererTest, VerticalExaggerationRaisesTheTopOfTheBox) {
+    const auto d = demo();
+    m_renderer.setGrid(d.ensemble.grid);
+    const float flat = m_renderer.frame().boxMax().z;
+    m_renderer.setVerticalExaggeration(4.0F);
+    EXPECT_FLOAT_EQ(m_renderer.frame().boxMax().z, 4.0F * flat);
+}
+
+TEST_F(RendererTest, DemoSceneMatchesBaseline) {
+    const auto d = demo();
+    const data::Grid& grid = d.ensemble.grid;
+    m_renderer.setGrid(grid);
+    // Column maximum of member 1 as the floor map, computed here to keep gl free of
+    // preprocessing.
+    std::vector<float> map(grid.nx() * grid.ny(), 0.0F);
+    for (std::size_t k = 0; k < grid.nz(); ++k)
+        for (std::size_t p = 0; p < map.size(); ++p)
+            map[p] = std::max(map[p], d.ensemble.members[0].values[k * map.size() + p]);
+    m_renderer.setFloorMap({map, 0.0F, 80.0F});
+    const QImage image = draw();
+    const test::ImageComparison result = test::compareWithBaseline(image, "renderer_demo_scene");
+    EXPECT_TRUE(result.passed) << result.message.toStdString();
+}

@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "fixtures.h"
+#include "preprocessing/field_statistics.h"
+
+using namespace ensil;
+
+TEST(FieldStatistics, RangeMeanAndMissingOfAnAnalyticField) {
+    // Values 0..63 in member 0 and 64..127 in member 1: range [0, 127], mean 63.5.
+    auto e = test::analyticEnsemble(2, 4, 4, 4, [](auto m, auto i, auto j, auto k) {
+        return static_cast<float>(64 * m + i + 4 * j + 16 * k);
+    });
+    const prep::FieldStatistics s = prep::computeFieldStatistics(e, 8);
+    EXPECT_FLOAT_EQ(s.minimum, 0.0F);
+    EXPECT_FLOAT_EQ(s.maximum, 127.0F);
+    EXPECT_DOUBLE_EQ(s.mean, 63.5);
+    EXPECT_EQ(s.validCount, 128u);
+    EXPECT_EQ(s.missingCount, 0u);
+    // 128 evenly spread values in 8 equal bins: 16 each (the maximum falls in the last bin).
+    ASSERT_EQ(s.histogram.size(), 8u);
+    for (auto count : s.histogram) EXPECT_EQ(count, 16u);
+}
+
+TEST(FieldStatistics, NaNsAreCountedAsMissingAndIgnored) {
+    auto e = test::analyticEnsemble(1, 2, 2, 2, [](auto, auto i, auto, auto) {
+        return static_cast<float>(i);
+    });
+    e.members[0].values[0] = std::numeric_limits<float>::quiet_NaN();
+    e.members[0].values[3] = std::numeric_limits<float>::quiet_NaN();
+    const auto s = prep::computeFieldStatistics(e, 4);
+    EXPECT_EQ(s.missingCount, 2u);
+    EXPECT_EQ(s.validCount, 6u);
+    EXPECT_EQ(std::accumulate(s.histogram.begin(), s.histogram.end(), std::uint64_t{0}), 6u);
+}
+
+TEST(FieldStatistics, ConstantFieldPutsEverythingInOneBin) {
+    const auto e = test::analyticEnsemble(2, 3, 3, 3, [](auto, auto, auto, auto) { return 4.0F; });
+    const auto s = prep::computeFieldStatistics(e, 10);
+    EXPECT_FLOAT_EQ(s.minimum, 4.0F);
+    EXPECT_FLOAT_EQ(s.maximum, 4.0F);
+    EXPECT_EQ(s.histogram[0], 54u);
+}
+
+TEST(FieldStatistics, AllMissingGivesNoValidValues) {
+    const auto e = test::analyticEnsemble(1, 2, 2, 2, [](auto, auto, auto, auto) {
+        return std::numeric_limits<float>::quiet_NaN();
+    });
+    const auto s = prep::computeFieldStatistics(e, 4);
+    EXPECT_EQ(s.validCount, 0u);
+    EXPECT_EQ(s.missingCount, 8u);
+}
+
+TEST(FieldStatistics, StopsWhenCancelled) {
+    const auto e = test::analyticEnsemble(2, 2, 2, 2, [](auto, auto, auto, auto) { return 1.0F; });
+    std::stop_source stop;
+    stop.request_stop();
+    EXPECT_THROW(prep::computeFieldStatistics(e, 4, stop.get_token()), prep::Cancelled);
+}

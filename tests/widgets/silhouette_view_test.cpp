@@ -1,0 +1,85 @@
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QMouseEvent>
+#include <QTest>
+#include <QWheelEvent>
+
+#include "data/demo_ensemble.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+namespace {
+int countNear(const QImage& image, const QColor& colour, int tolerance) {
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - colour.red()) <= tolerance &&
+                std::abs(c.green() - colour.green()) <= tolerance &&
+                std::abs(c.blue() - colour.blue()) <= tolerance)
+                ++n;
+        }
+    return n;
+}
+
+class ShownView : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_view.resize(400, 300);
+        const auto demo = data::makeDemoEnsemble({.members = 2, .nx = 16, .ny = 8, .nz = 4});
+        m_view.renderer().setGrid(demo.ensemble.grid);
+        m_view.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&m_view));
+        ASSERT_TRUE(m_view.glError().isEmpty()) << m_view.glError().toStdString();
+    }
+    void drag(Qt::MouseButton button, QPoint from, QPoint to, Qt::KeyboardModifiers mods = {}) {
+        QMouseEvent press(QEvent::MouseButtonPress, from, m_view.mapToGlobal(from), button, button, mods);
+        QApplication::sendEvent(&m_view, &press);
+        QMouseEvent move(QEvent::MouseMove, to, m_view.mapToGlobal(to), Qt::NoButton, button, mods);
+        QApplication::sendEvent(&m_view, &move);
+        QMouseEvent release(QEvent::MouseButtonRelease, to, m_view.mapToGlobal(to), button, {}, mods);
+        QApplication::sendEvent(&m_view, &release);
+    }
+    ui::SilhouetteView m_view;
+};
+}  // namespace
+
+TEST_F(ShownView, DrawsTheDataBoxInTheWindow) {
+    const QImage image = m_view.grabFramebuffer();
+    ASSERT_FALSE(image.isNull());
+    const QColor box = QColor::fromRgbF(gl::Renderer::kBoxColor.r, gl::Renderer::kBoxColor.g,
+                                        gl::Renderer::kBoxColor.b);
+    EXPECT_GT(countNear(image, box, 30), 200) << "the 12 box edges should cover some pixels";
+    EXPECT_GT(countNear(image, QColor::fromRgbF(0.11F, 0.12F, 0.14F), 2), image.width() * image.height() / 2);
+}
+
+TEST_F(ShownView, LeftDragOrbitsShiftDragPansWheelZooms) {
+    gl::Camera& cam = m_view.renderer().camera();
+    const float azimuth = cam.azimuth();
+    drag(Qt::LeftButton, {200, 150}, {250, 150});
+    EXPECT_NEAR(cam.azimuth(), azimuth - 50 * 0.4F, 1e-3);
+
+    const glm::vec3 target = cam.target();
+    drag(Qt::LeftButton, {200, 150}, {220, 170}, Qt::ShiftModifier);
+    EXPECT_NE(cam.target(), target);
+    EXPECT_NEAR(cam.azimuth(), azimuth - 50 * 0.4F, 1e-3) << "panning must not orbit";
+
+    const float distance = cam.distance();
+    QWheelEvent wheel(QPointF(200, 150), m_view.mapToGlobal(QPointF(200, 150)), QPoint(),
+                      QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&m_view, &wheel);
+    EXPECT_NEAR(cam.distance(), distance / 1.12F, 1e-4);
+}
+
+TEST_F(ShownView, ResetCameraRestoresTheDefaultView) {
+    gl::Camera& cam = m_view.renderer().camera();
+    const glm::vec3 eye = cam.eye();
+    cam.orbit(100, 40);
+    cam.zoom(3.0F);
+    m_view.resetCamera();
+    EXPECT_NEAR(cam.eye().x, eye.x, 1e-5);
+    EXPECT_NEAR(cam.eye().y, eye.y, 1e-5);
+    EXPECT_NEAR(cam.eye().z, eye.z, 1e-5);
+}
