@@ -1,0 +1,90 @@
+// Readers turn files into an Ensemble. An ensemble arrives in one of three shapes:
+//   - one file with a member dimension, e.g. t(number, time, plev, lat, lon);
+//   - one file per member (run_01.nc ... run_56.nc, member_*.vti), same grid in each;
+//   - one file where another dimension stands in for members (forecast times, months): the user
+//     names it in DataSelection::memberDimension.
+// Each format implements EnsembleReader; openEnsemble()/describeEnsemble() pick the reader by the
+// files' first bytes, not their names. Readers are stateless and callable from any thread.
+// Every failure is a data::Error whose message names the file, variable and dimension at fault
+// and says what would work.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "data/ensemble.h"
+#include "data/job.h"
+
+namespace ensil::data {
+
+// What the user asked for. Empty fields mean "choose automatically".
+struct DataSelection {
+    std::vector<std::string> paths;  // one file with members, or one file per member
+    std::string variable;            // variable / dataset / point-data array name
+    std::string memberDimension;     // override of the detected member dimension (NetCDF)
+    std::size_t timeIndex = 0;       // index for every other non-spatial dimension
+};
+
+// A variable the file holds, and whether ensil can make an ensemble of it.
+struct VariableInfo {
+    std::string name;
+    std::string longName;
+    std::string units;
+    std::vector<std::string> dimensions;  // as stored, e.g. {"number", "time", "plev", "lat", "lon"}
+    std::vector<std::size_t> shape;
+    bool usable = false;
+    bool derived = false;      // computed by ensil (wind_speed from u and v)
+    std::string whyNotUsable;  // set when !usable: what is missing, in plain words
+};
+
+// What a selection resolves to, read from headers only (cheap): everything `ensil info` prints
+// except the value statistics.
+struct EnsembleDescription {
+    std::string format;  // "NetCDF-4", "NetCDF classic", "HDF5", "VTK legacy", "VTK XML image"
+    std::vector<VariableInfo> variables;
+    std::string variable;  // the chosen one
+    std::string longName;
+    std::string units;
+    std::string memberDimension;  // empty for one file per member
+    std::string memberDimensionReason;  // how it was found, e.g. "standard_name = realization"
+    std::size_t members = 0;
+    std::vector<std::string> memberNames;
+    std::vector<std::string> fixedDimensions;  // e.g. "time = 0 of 4 (2017-01-01T00:00)"
+    Grid grid;
+    [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
+};
+
+class EnsembleReader {
+public:
+    virtual ~EnsembleReader() = default;
+
+    [[nodiscard]] virtual std::string name() const = 0;  // "NetCDF", "HDF5", "VTK"
+    // True when the file's first bytes say it is in this reader's format.
+    [[nodiscard]] virtual bool recognizes(const std::string& path) const = 0;
+    // Resolves the selection from the headers. Throws Error.
+    [[nodiscard]] virtual EnsembleDescription describe(const DataSelection& selection) const = 0;
+    // Reads the values. Throws Error, Cancelled. Values are float, NaN where missing.
+    [[nodiscard]] virtual Ensemble read(const DataSelection& selection,
+                                        const std::stop_token& stop,
+                                        const Progress& progress) const = 0;
+};
+
+// The reader for the selection's files, chosen by their first bytes. Throws Error(FileNotFound)
+// or Error(UnsupportedFormat) listing the formats ensil reads.
+const EnsembleReader& readerFor(const DataSelection& selection);
+
+EnsembleDescription describeEnsemble(const DataSelection& selection);
+
+// Checks the memory the ensemble needs against what the machine has (Error(OutOfMemory) with
+// both figures), then reads it.
+Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop = {},
+                      const Progress& progress = {});
+
+// Throws Error(OutOfMemory) when `bytes` will not fit in the memory available now.
+void checkMemoryFor(std::size_t bytes, const std::string& what);
+
+}  // namespace ensil::data
