@@ -4,6 +4,7 @@
 #include <array>
 
 #include "app/generate_command.h"
+#include "app/info_command.h"
 #include "app/version.h"
 
 namespace ensil::app {
@@ -17,7 +18,7 @@ struct Subcommand {
 
 constexpr std::array<Subcommand, 4> kSubcommands{{
     {"generate", "Write the built-in demo ensemble as a CF NetCDF file", true},
-    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", false},
+    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", true},
     {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", false},
     {"render", "Draw an ensemble's silhouettes to a PNG without a window", false},
 }};
@@ -73,8 +74,11 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
             if (QLatin1String(sub->name) == QLatin1String("generate")) {
                 return {runGenerateCommand(rest, out, err), std::nullopt};
             }
+            if (QLatin1String(sub->name) == QLatin1String("info")) {
+                return {runInfoCommand(rest, out, err), std::nullopt};
+            }
             err << "ensil " << sub->name << ": not available in ensil " << ENSIL_VERSION
-                << " yet. Available now: ensil generate, and the workbench (ensil).\n";
+                << " yet. Available now: ensil generate, ensil info, and the workbench (ensil).\n";
             return {3, std::nullopt};
         }
     }

@@ -23,9 +23,9 @@ namespace ensil::data {
 
 // What the user asked for. Empty fields mean "choose automatically".
 struct DataSelection {
-    std::vector<std::string> paths;  // one file with members, or one file per member
-    std::string variable;            // variable / dataset / point-data array name
-    std::string memberDimension;     // override of the detected member dimension (NetCDF)
+    std::vector<std::string> paths{};  // one file with members, or one file per member
+    std::string variable{};            // variable / dataset / point-data array name
+    std::string memberDimension{};     // override of the detected member dimension (NetCDF)
     std::size_t timeIndex = 0;       // index for every other non-spatial dimension
 };
 

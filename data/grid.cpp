@@ -13,7 +13,9 @@ double Axis::maxValue() const { return std::max(values.front(), values.back()); 
 bool Axis::isUniform() const {
     if (values.size() < 3) return true;
     const double step = values[1] - values[0];
-    const double tolerance = 1e-6 * std::abs(values.back() - values.front());
+    // Coordinates are often stored as float; near 360 degrees a float resolves only 3e-5, which
+    // is half a percent of a 0.0135-degree step. Uneven axes (pressure levels) differ by far more.
+    const double tolerance = 1e-2 * std::abs(step);
     for (std::size_t i = 2; i < values.size(); ++i) {
         if (std::abs((values[i] - values[i - 1]) - step) > tolerance) return false;
     }

@@ -23,7 +23,7 @@ struct Axis {
     [[nodiscard]] double back() const { return values.back(); }
     [[nodiscard]] double minValue() const;
     [[nodiscard]] double maxValue() const;
-    // True when all steps are equal within a relative tolerance of 1e-6.
+    // True when all steps are equal within 1 % of a step (float-stored coordinates jitter).
     [[nodiscard]] bool isUniform() const;
 };
 

@@ -1,0 +1,166 @@
+#include "data/cf_conventions.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <string_view>
+
+namespace ensil::data {
+namespace {
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+template <std::size_t N>
+bool oneOf(const std::string& value, const std::array<std::string_view, N>& options) {
+    return std::find(options.begin(), options.end(), value) != options.end();
+}
+
+constexpr std::array<std::string_view, 10> kXNames{
+    "lon", "longitude", "x", "west_east", "west_east_stag", "nlon", "xc", "rlon",
+    "grid_longitude", "lon_0"};
+constexpr std::array<std::string_view, 10> kYNames{
+    "lat", "latitude", "y", "south_north", "south_north_stag", "nlat", "yc", "rlat",
+    "grid_latitude", "lat_0"};
+constexpr std::array<std::string_view, 15> kZNames{
+    "level", "plev", "lev", "z", "bottom_top", "bottom_top_stag", "model_level_number",
+    "height", "altitude", "depth", "pressure", "isobaric", "levelist", "pressure_level",
+    "isobaricinhpa"};
+constexpr std::array<std::string_view, 8> kTimeNames{
+    "time", "t", "frtime", "month", "valid_time", "step", "times", "forecast_time"};
+constexpr std::array<std::string_view, 7> kMemberNames{
+    "number", "member", "members", "realization", "ens", "ens0", "ensemble"};
+
+bool isPressure(const std::string& units) {
+    const std::string u = lower(units);
+    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
+           u == "millibars" || u == "mb" || u == "bar";
+}
+
+std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVariable& coord) {
+    const std::string axis = lower(file.text(coord.id, "axis"));
+    if (axis == "x") return AxisRole::X;
+    if (axis == "y") return AxisRole::Y;
+    if (axis == "z") return AxisRole::Z;
+    if (axis == "t") return AxisRole::Time;
+    const std::string standard = lower(file.text(coord.id, "standard_name"));
+    if (standard == "longitude" || standard == "grid_longitude" ||
+        standard == "projection_x_coordinate") {
+        return AxisRole::X;
+    }
+    if (standard == "latitude" || standard == "grid_latitude" ||
+        standard == "projection_y_coordinate") {
+        return AxisRole::Y;
+    }
+    if (standard == "time" || standard == "forecast_period" || standard == "forecast_reference_time") {
+        return AxisRole::Time;
+    }
+    if (standard == "air_pressure" || standard == "altitude" || standard == "height" ||
+        standard == "depth" || standard == "model_level_number" ||
+        standard.starts_with("atmosphere_") || standard.starts_with("ocean_")) {
+        return AxisRole::Z;
+    }
+    const std::string units = lower(file.text(coord.id, "units"));
+    if (units == "degrees_east" || units == "degree_east" || units == "degrees_e") {
+        return AxisRole::X;
+    }
+    if (units == "degrees_north" || units == "degree_north" || units == "degrees_n") {
+        return AxisRole::Y;
+    }
+    if (units.find(" since ") != std::string::npos) return AxisRole::Time;
+    if (isPressure(units) || file.textAttribute(coord.id, "positive")) return AxisRole::Z;
+    return std::nullopt;
+}
+
+}  // namespace
+
+AxisRole classifyDimension(const NetcdfFile& file, const NcDimension& dim) {
+    if (const NcVariable* coord = file.coordinateVariable(dim)) {
+        if (auto role = roleFromAttributes(file, *coord)) return *role;
+    }
+    const std::string name = lower(dim.name);
+    if (oneOf(name, kXNames)) return AxisRole::X;
+    if (oneOf(name, kYNames)) return AxisRole::Y;
+    if (oneOf(name, kZNames)) return AxisRole::Z;
+    if (oneOf(name, kTimeNames)) return AxisRole::Time;
+    return AxisRole::Other;
+}
+
+MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariable& var) {
+    for (int id : var.dimIds) {
+        const NcDimension& dim = file.dimension(id);
+        if (const NcVariable* coord = file.coordinateVariable(dim)) {
+            const std::string standard = file.text(coord->id, "standard_name");
+            if (standard == "realization" || standard == "ensemble_member_id") {
+                return {&dim, "coordinate variable '" + dim.name + "' has standard_name = " +
+                                  standard};
+            }
+        }
+    }
+    for (int id : var.dimIds) {
+        const NcDimension& dim = file.dimension(id);
+        if (const NcVariable* coord = file.coordinateVariable(dim)) {
+            if (file.text(coord->id, "_CoordinateAxisType") == "Ensemble") {
+                return {&dim, "coordinate variable '" + dim.name +
+                                  "' has _CoordinateAxisType = Ensemble"};
+            }
+        }
+    }
+    for (int id : var.dimIds) {
+        const NcDimension& dim = file.dimension(id);
+        if (oneOf(lower(dim.name), kMemberNames)) {
+            return {&dim, "dimension named '" + dim.name + "'"};
+        }
+    }
+    return {};
+}
+
+std::optional<std::string> formatCfTime(double value, const std::string& units,
+                                        const std::string& calendar) {
+    const std::string cal = lower(calendar);
+    if (!cal.empty() && cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") {
+        return std::nullopt;
+    }
+    static const std::regex pattern(
+        R"(^\s*(seconds?|minutes?|hours?|days?)\s+since\s+(\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ T](\d{1,2}):(\d{1,2})(?::(\d{1,2})(?:\.\d*)?)?)?.*$)",
+        std::regex::icase);
+    std::smatch m;
+    if (!std::regex_match(units, m, pattern) || !std::isfinite(value)) return std::nullopt;
+    const std::string unit = lower(m[1].str());
+    const double secondsPerUnit = unit.starts_with("second") ? 1.0
+                                  : unit.starts_with("minute") ? 60.0
+                                  : unit.starts_with("hour")   ? 3600.0
+                                                               : 86400.0;
+    using namespace std::chrono;
+    const year_month_day epochDate{year{std::stoi(m[2].str())},
+                                   month{static_cast<unsigned>(std::stoi(m[3].str()))},
+                                   day{static_cast<unsigned>(std::stoi(m[4].str()))}};
+    if (!epochDate.ok()) return std::nullopt;
+    const auto epoch = sys_days{epochDate} + hours{m[5].matched ? std::stoi(m[5].str()) : 0} +
+                       minutes{m[6].matched ? std::stoi(m[6].str()) : 0} +
+                       seconds{m[7].matched ? std::stoi(m[7].str()) : 0};
+    const auto t = epoch + seconds{static_cast<long long>(std::llround(value * secondsPerUnit))};
+    const auto dayPoint = floor<days>(t);
+    const year_month_day ymd{dayPoint};
+    const hh_mm_ss hms{t - dayPoint};
+    std::array<char, 32> text{};
+    std::snprintf(text.data(), text.size(), "%04d-%02u-%02uT%02ld:%02ld",
+                  static_cast<int>(ymd.year()), static_cast<unsigned>(ymd.month()),
+                  static_cast<unsigned>(ymd.day()), static_cast<long>(hms.hours().count()),
+                  static_cast<long>(hms.minutes().count()));
+    return std::string(text.data());
+}
+
+bool isLengthUnit(const std::string& units) {
+    const std::string u = lower(units);
+    return u == "m" || u == "km" || u == "meters" || u == "metres" || u == "meter" ||
+           u == "metre" || u == "kilometers" || u == "kilometres";
+}
+
+}  // namespace ensil::data

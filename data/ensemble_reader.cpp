@@ -1,0 +1,125 @@
+#include "data/ensemble_reader.h"
+
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "data/error.h"
+#include "data/netcdf_reader.h"
+
+namespace ensil::data {
+namespace {
+
+// Asked in this order: NetCDF-4 files are HDF5 files too, so NetCDF goes first.
+const std::vector<std::unique_ptr<EnsembleReader>>& readers() {
+    static const auto list = [] {
+        std::vector<std::unique_ptr<EnsembleReader>> r;
+        r.push_back(std::make_unique<NetcdfReader>());
+        return r;
+    }();
+    return list;
+}
+
+std::string gib(double bytes) {
+    std::array<char, 32> text{};
+    std::snprintf(text.data(), text.size(), "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+    return text.data();
+}
+
+// Memory the system can give without swapping; 0 when unknown.
+std::size_t availableMemory() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    std::size_t kib = 0;
+    std::string unit;
+    while (meminfo >> key >> kib >> unit) {
+        if (key == "MemAvailable:") return kib * 1024;
+    }
+    const long pages = sysconf(_SC_AVPHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGESIZE);
+    return pages > 0 && pageSize > 0 ? static_cast<std::size_t>(pages) *
+                                           static_cast<std::size_t>(pageSize)
+                                     : 0;
+}
+
+}  // namespace
+
+const EnsembleReader& readerFor(const DataSelection& selection) {
+    if (selection.paths.empty()) {
+        throw Error(ErrorKind::InvalidArgument, "no file given: name one or more files to open");
+    }
+    const std::string& path = selection.paths.front();
+    for (const std::string& p : selection.paths) {
+        if (!std::filesystem::exists(p)) throw Error(ErrorKind::FileNotFound, "no such file: '" + p + "'");
+        if (std::filesystem::is_directory(p)) {
+            throw Error(ErrorKind::InvalidArgument,
+                        "'" + p + "' is a folder; name the files in it (e.g. '" + p + "/*.nc')");
+        }
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::array<char, 4> magic{};
+    if (in.read(magic.data(), magic.size()) && std::string(magic.data(), 4) == "GRIB") {
+        throw Error(ErrorKind::UnsupportedFormat,
+                    "'" + path + "' is a GRIB file, which ensil does not read yet; convert it to "
+                    "NetCDF first, e.g. with 'cdo -f nc4 copy " + path + " out.nc' or "
+                    "'grib_to_netcdf -o out.nc " + path + "'");
+    }
+    std::string names;
+    for (const auto& reader : readers()) {
+        if (reader->recognizes(path)) return *reader;
+        names += (names.empty() ? "" : ", ") + reader->name();
+    }
+    throw Error(ErrorKind::UnsupportedFormat,
+                "'" + path + "' is not in a format ensil reads (" + names +
+                    "), or it is truncated");
+}
+
+EnsembleDescription describeEnsemble(const DataSelection& selection) {
+    return readerFor(selection).describe(selection);
+}
+
+void checkMemoryFor(std::size_t bytes, const std::string& what) {
+    const std::size_t available = availableMemory();
+    // Keep a quarter of what is free for meshes, the cache and everything else.
+    if (available > 0 && static_cast<double>(bytes) > 0.75 * static_cast<double>(available)) {
+        throw Error(ErrorKind::OutOfMemory,
+                    what + " needs " + gib(static_cast<double>(bytes)) + " of memory, but only " +
+                        gib(static_cast<double>(available)) +
+                        " is available. Choose fewer members or files, or close other programs");
+    }
+}
+
+Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
+                      const Progress& progress) {
+    const EnsembleReader& reader = readerFor(selection);
+    const EnsembleDescription description = reader.describe(selection);
+    checkMemoryFor(description.bytes(),
+                   "'" + description.variable + "' (" + std::to_string(description.members) +
+                       " members of " + std::to_string(description.grid.nx()) + " x " +
+                       std::to_string(description.grid.ny()) + " x " +
+                       std::to_string(description.grid.nz()) + " points)");
+    Ensemble ensemble = reader.read(selection, stop, progress);
+    bool anyValid = false;
+    for (const Member& m : ensemble.members) {
+        for (float v : m.values) {
+            if (v == v) {
+                anyValid = true;
+                break;
+            }
+        }
+        if (anyValid) break;
+    }
+    if (!anyValid) {
+        throw Error(ErrorKind::AllValuesMissing,
+                    "every value of '" + ensemble.variable + "' in " + ensemble.source +
+                        " is missing (fill value or outside valid_range): there is nothing to draw");
+    }
+    return ensemble;
+}
+
+}  // namespace ensil::data

@@ -1,0 +1,76 @@
+// A thin RAII wrapper over a netCDF-C file handle opened for reading, with the queries the
+// reader needs (dimensions, variables, attributes) and errors that name the file. Internal to
+// data/ (netcdf.h stays out of public headers). One instance per thread: netCDF-C is not
+// thread-safe, so callers must not share a handle and the reader serialises library calls.
+#pragma once
+
+#include <cstddef>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ensil::data {
+
+// netCDF-C (and HDF5 beneath it) is not thread-safe; every call into the library holds this.
+std::mutex& netcdfLibraryMutex();
+
+struct NcDimension {
+    int id = -1;
+    std::string name;
+    std::size_t size = 0;
+};
+
+struct NcVariable {
+    int id = -1;
+    std::string name;
+    int type = 0;               // nc_type
+    std::vector<int> dimIds;    // in storage order
+};
+
+class NetcdfFile {
+public:
+    // Throws Error(FileNotFound / UnsupportedFormat / CorruptFile) naming the path.
+    explicit NetcdfFile(std::string path);
+    NetcdfFile(const NetcdfFile&) = delete;
+    NetcdfFile& operator=(const NetcdfFile&) = delete;
+    ~NetcdfFile();
+
+    [[nodiscard]] const std::string& path() const { return m_path; }
+    [[nodiscard]] int id() const { return m_id; }
+    [[nodiscard]] std::string formatName() const;  // "NetCDF-4", "NetCDF classic", ...
+
+    [[nodiscard]] const std::vector<NcDimension>& dimensions() const { return m_dims; }
+    [[nodiscard]] const std::vector<NcVariable>& variables() const { return m_vars; }
+    [[nodiscard]] const NcDimension& dimension(int id) const;
+    [[nodiscard]] const NcDimension* findDimension(const std::string& name) const;
+    [[nodiscard]] const NcVariable* findVariable(const std::string& name) const;
+    // The coordinate variable of a dimension: a 1D variable of the same name over it.
+    [[nodiscard]] const NcVariable* coordinateVariable(const NcDimension& dim) const;
+
+    [[nodiscard]] std::optional<std::string> textAttribute(int varId, const char* name) const;
+    [[nodiscard]] std::vector<double> numericAttribute(int varId, const char* name) const;
+    [[nodiscard]] int attributeType(int varId, const char* name) const;  // 0 when absent
+    [[nodiscard]] std::string text(int varId, const char* name) const {
+        return textAttribute(varId, name).value_or("");
+    }
+
+    // Values of a 1D variable as doubles. Throws Error(CorruptFile).
+    [[nodiscard]] std::vector<double> readDoubles(const NcVariable& var) const;
+
+    // Throws Error(CorruptFile) with the library's reason when status is not NC_NOERR.
+    void check(int status, const std::string& what) const;
+
+private:
+    void checkNotTruncated() const;
+
+    std::string m_path;
+    int m_id = -1;
+    std::vector<NcDimension> m_dims;
+    std::vector<NcVariable> m_vars;
+};
+
+// "(number, time, plev, lat, lon)"
+std::string describeDimensions(const NetcdfFile& file, const NcVariable& var);
+
+}  // namespace ensil::data

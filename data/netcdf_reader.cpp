@@ -1,0 +1,238 @@
+#include "data/netcdf_reader.h"
+
+#include <netcdf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+#include "data/error.h"
+#include "data/member_files.h"
+#include "data/netcdf_file.h"
+#include "data/netcdf_plan.h"
+
+namespace ensil::data {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// How to turn stored numbers into physical values: masks first (on the stored numbers, as CF
+// says for packed data), then scale and offset.
+struct Unpacking {
+    std::vector<double> missing;  // _FillValue and missing_value
+    double validMin = -std::numeric_limits<double>::infinity();
+    double validMax = std::numeric_limits<double>::infinity();
+    double scale = 1.0, offset = 0.0;
+    bool packed = false;
+};
+
+Unpacking unpackingFor(const NetcdfFile& file, const NcVariable& var) {
+    Unpacking u;
+    for (const char* name : {"_FillValue", "missing_value"}) {
+        for (double v : file.numericAttribute(var.id, name)) u.missing.push_back(v);
+    }
+    if (file.numericAttribute(var.id, "_FillValue").empty()) {
+        // netCDF's default fill marks never-written values in float and double variables.
+        if (var.type == NC_FLOAT) u.missing.push_back(NC_FILL_FLOAT);
+        if (var.type == NC_DOUBLE) u.missing.push_back(NC_FILL_DOUBLE);
+    }
+    const auto range = file.numericAttribute(var.id, "valid_range");
+    if (range.size() == 2) {
+        u.validMin = range[0];
+        u.validMax = range[1];
+    }
+    if (const auto lo = file.numericAttribute(var.id, "valid_min"); !lo.empty()) u.validMin = lo[0];
+    if (const auto hi = file.numericAttribute(var.id, "valid_max"); !hi.empty()) u.validMax = hi[0];
+    if (const auto s = file.numericAttribute(var.id, "scale_factor"); !s.empty()) u.scale = s[0];
+    if (const auto o = file.numericAttribute(var.id, "add_offset"); !o.empty()) u.offset = o[0];
+    u.packed = u.scale != 1.0 || u.offset != 0.0;
+    return u;
+}
+
+template <typename T>
+void unpackInto(const T* raw, std::size_t n, const Unpacking& u, float* out) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double v = static_cast<double>(raw[i]);
+        bool masked = std::isnan(v) || v < u.validMin || v > u.validMax;
+        for (double m : u.missing) masked = masked || v == m || (std::isnan(m) && std::isnan(v));
+        out[i] = masked ? kNaN : static_cast<float>(v * u.scale + u.offset);
+    }
+}
+
+// Reads one member of one component into `out` (sizes[0] * sizes[1] * sizes[2] values, x fastest).
+void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent& c,
+                   std::size_t member, std::vector<float>& out, std::vector<double>& scratch) {
+    const NcVariable& var = *c.variable;
+    const std::size_t rank = var.dimIds.size();
+    std::vector<std::size_t> start(rank, 0), count(rank, 1);
+    std::vector<std::ptrdiff_t> stride(rank, 1), imap(rank, 0);
+    const std::array<std::ptrdiff_t, 3> strides{
+        1, static_cast<std::ptrdiff_t>(c.sizes[0]),
+        static_cast<std::ptrdiff_t>(c.sizes[0] * c.sizes[1])};
+    std::vector<int> order;  // slots of spatial dimensions in storage order
+    for (std::size_t d = 0; d < rank; ++d) {
+        const int id = var.dimIds[d];
+        const auto slot = std::find(c.spatialDims.begin(), c.spatialDims.end(), id);
+        if (slot != c.spatialDims.end()) {
+            const auto s = static_cast<std::size_t>(slot - c.spatialDims.begin());
+            count[d] = c.sizes[s];
+            imap[d] = strides[s];
+            order.push_back(static_cast<int>(s));
+        } else {
+            start[d] = id == plan.memberDim ? member : plan.timeIndex;
+        }
+    }
+    const bool canonical = order == std::vector<int>{2, 1, 0};  // (z, y, x): straight copy
+    const std::size_t n = c.sizes[0] * c.sizes[1] * c.sizes[2];
+    out.resize(n);
+    const Unpacking u = unpackingFor(file, var);
+    const std::string what = "read '" + var.name + "' member " + std::to_string(member);
+    if (var.type == NC_FLOAT && !u.packed) {
+        file.check(canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(),
+                                                 out.data())
+                             : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
+                                                 stride.data(), imap.data(), out.data()),
+                   what);
+        unpackInto(out.data(), n, u, out.data());
+        return;
+    }
+    scratch.resize(n);
+    file.check(canonical ? nc_get_vara_double(file.id(), var.id, start.data(), count.data(),
+                                              scratch.data())
+                         : nc_get_varm_double(file.id(), var.id, start.data(), count.data(),
+                                              stride.data(), imap.data(), scratch.data()),
+               what);
+    unpackInto(scratch.data(), n, u, out.data());
+}
+
+// Averages neighbours along every axis where the component has one more point than the grid.
+void destagger(const NcComponent& c, const Grid& grid, std::vector<float>& values) {
+    std::array<std::size_t, 3> size = c.sizes;
+    const std::array<std::size_t, 3> target{grid.nx(), grid.ny(), grid.nz()};
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+        if (size[axis] == target[axis]) continue;
+        std::array<std::size_t, 3> next = size;
+        next[axis] = target[axis];
+        std::vector<float> result(next[0] * next[1] * next[2]);
+        const std::array<std::size_t, 3> step{1, size[0], size[0] * size[1]};
+        for (std::size_t k = 0; k < next[2]; ++k)
+            for (std::size_t j = 0; j < next[1]; ++j)
+                for (std::size_t i = 0; i < next[0]; ++i) {
+                    const std::size_t src = i + size[0] * (j + size[1] * k);
+                    result[i + next[0] * (j + next[1] * k)] =
+                        0.5F * (values[src] + values[src + step[axis]]);
+                }
+        values = std::move(result);
+        size = next;
+    }
+}
+
+void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member,
+                std::vector<float>& out) {
+    std::vector<float> part;
+    std::vector<double> scratch;
+    readComponent(file, plan, plan.components.front(), member, out, scratch);
+    destagger(plan.components.front(), plan.grid, out);
+    if (!plan.derived) return;
+    for (float& v : out) v *= v;
+    for (std::size_t c = 1; c < plan.components.size(); ++c) {
+        readComponent(file, plan, plan.components[c], member, part, scratch);
+        destagger(plan.components[c], plan.grid, part);
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] += part[i] * part[i];
+    }
+    for (float& v : out) v = std::sqrt(v);
+}
+
+std::size_t membersIn(const NetcdfFile& file, const NcPlan& plan) {
+    return plan.memberDim < 0 ? 1 : file.dimension(plan.memberDim).size;
+}
+
+}  // namespace
+
+bool NetcdfReader::recognizes(const std::string& path) const {
+    std::ifstream in(path, std::ios::binary);
+    std::array<char, 8> magic{};
+    if (!in.read(magic.data(), magic.size())) return false;
+    if (magic[0] == 'C' && magic[1] == 'D' && magic[2] == 'F' &&
+        (magic[3] == 1 || magic[3] == 2 || magic[3] == 5)) {
+        return true;
+    }
+    if (std::string(magic.data(), 4) != "\x89HDF") return false;
+    // NetCDF-4 is HDF5 inside. netCDF-C also opens plain HDF5 files, inventing "phony_dim_N"
+    // dimensions: those are left to the HDF5 reader.
+    const std::lock_guard lock(netcdfLibraryMutex());
+    try {
+        const NetcdfFile file(path);
+        return std::none_of(file.dimensions().begin(), file.dimensions().end(),
+                            [](const NcDimension& d) { return d.name.starts_with("phony_dim"); });
+    } catch (const Error&) {
+        return false;
+    }
+}
+
+EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const {
+    const std::lock_guard lock(netcdfLibraryMutex());
+    const bool oneFile = selection.paths.size() == 1;
+    EnsembleDescription d;
+    for (std::size_t f = 0; f < selection.paths.size(); ++f) {
+        const NetcdfFile file(selection.paths[f]);
+        const NcPlan plan = planVariable(file, selection, oneFile);
+        if (f == 0) {
+            d.format = file.formatName();
+            d.variables = listVariables(file, selection.memberDimension);
+            d.variable = plan.name;
+            d.longName = plan.longName;
+            d.units = plan.units;
+            d.grid = plan.grid;
+            d.fixedDimensions = describeFixedDimensions(file, plan);
+            if (plan.memberDim >= 0) {
+                d.memberDimension = file.dimension(plan.memberDim).name;
+                d.memberDimensionReason = plan.memberReason;
+            } else {
+                d.memberDimensionReason = "one file per member";
+            }
+        } else {
+            checkSameGrid(selection.paths.front(), d.grid, file.path(), plan.grid);
+        }
+        std::vector<std::string> names = memberNames(file, plan);
+        if (names.empty()) names.push_back(fileStem(file.path()));
+        if (!oneFile && plan.memberDim >= 0) {
+            for (std::string& n : names) n = fileStem(file.path()) + " " + n;
+        }
+        d.members += names.size();
+        d.memberNames.insert(d.memberNames.end(), names.begin(), names.end());
+    }
+    return d;
+}
+
+Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_token& stop,
+                            const Progress& progress) const {
+    const EnsembleDescription description = describe(selection);
+    Ensemble e;
+    e.variable = description.variable;
+    e.longName = description.longName;
+    e.units = description.units;
+    e.memberDimension = description.memberDimension;
+    e.source = sourceLabel(selection.paths);
+    e.grid = description.grid;
+    e.members.resize(description.members);
+    std::size_t next = 0;
+    for (const std::string& path : selection.paths) {
+        const std::lock_guard lock(netcdfLibraryMutex());
+        const NetcdfFile file(path);
+        const NcPlan plan = planVariable(file, selection, selection.paths.size() == 1);
+        for (std::size_t m = 0; m < membersIn(file, plan); ++m, ++next) {
+            throwIfStopped(stop);
+            Member& member = e.members.at(next);
+            member.name = description.memberNames.at(next);
+            readMember(file, plan, m, member.values);
+            report(progress, static_cast<double>(next + 1) / static_cast<double>(e.members.size()));
+        }
+    }
+    return e;
+}
+
+}  // namespace ensil::data

@@ -1,0 +1,351 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "data/ensemble_reader.h"
+#include "data/error.h"
+#include "netcdf_test_file.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+using data::ErrorKind;
+using test::NcTestFile;
+using test::range;
+
+namespace {
+// f(m, i, j, k) = 1000 m + i + 10 j + 100 k: every value tells where it came from.
+double analytic(std::size_t m, std::size_t i, std::size_t j, std::size_t k) {
+    return 1000.0 * m + i + 10.0 * j + 100.0 * k;
+}
+
+data::ErrorKind errorKindOf(const data::DataSelection& s, std::string* message = nullptr) {
+    try {
+        (void)data::openEnsemble(s);
+    } catch (const data::Error& e) {
+        if (message) *message = e.what();
+        return e.kind();
+    }
+    ADD_FAILURE() << "no error";
+    return ErrorKind::InvalidArgument;
+}
+
+// A (member=3, level=4, lat=5, lon=6) float file with the member dimension named `memberDim`.
+std::string writeStandard(const test::TempDir& dir, const std::string& memberDim,
+                          std::vector<std::pair<std::string, std::string>> memberAttrs = {}) {
+    const std::string path = dir.file(memberDim + ".nc");
+    NcTestFile f(path);
+    const int m = f.dim(memberDim, 3, range(3), memberAttrs);
+    const int z = f.dim("level", 4, {1000, 850, 500, 250}, {{"units", "hPa"}});
+    const int y = f.dim("lat", 5, range(5, 30, 5), {{"units", "degrees_north"}});
+    const int x = f.dim("lon", 6, range(6, -10, 2), {{"units", "degrees_east"}});
+    const int v = f.variable("speed", NC_FLOAT, {m, z, y, x});
+    f.text(v, "units", "m s-1");
+    f.write(v, 3 * 4 * 5 * 6, [](std::size_t n) {
+        return analytic(n / 120, n % 6, (n / 6) % 5, (n / 30) % 4);
+    });
+    return path;
+}
+}  // namespace
+
+TEST(NetcdfReader, ReadsMembersAxesAndValuesInPlace) {
+    test::TempDir dir;
+    const std::string path = writeStandard(dir, "member");
+    const data::Ensemble e = data::openEnsemble({.paths = {path}});
+    EXPECT_EQ(e.variable, "speed");
+    EXPECT_EQ(e.units, "m s-1");
+    EXPECT_EQ(e.memberDimension, "member");
+    ASSERT_EQ(e.memberCount(), 3u);
+    EXPECT_EQ(e.grid.nx(), 6u);
+    EXPECT_EQ(e.grid.ny(), 5u);
+    EXPECT_EQ(e.grid.nz(), 4u);
+    EXPECT_EQ(e.grid.z().values, (std::vector<double>{1000, 850, 500, 250}));
+    EXPECT_FALSE(e.grid.z().positiveUp) << "hPa is a pressure: positive down";
+    EXPECT_FALSE(e.grid.z().isUniform());
+    for (std::size_t m = 0; m < 3; ++m)
+        for (std::size_t k = 0; k < 4; ++k)
+            for (std::size_t j = 0; j < 5; ++j)
+                for (std::size_t i = 0; i < 6; ++i)
+                    ASSERT_EQ(e.members[m].values[e.grid.index(i, j, k)], analytic(m, i, j, k));
+}
+
+TEST(NetcdfReader, FindsTheMemberDimensionByEveryRuleInOrder) {
+    test::TempDir dir;
+    const auto reason = [&](const std::string& dim, std::vector<std::pair<std::string, std::string>> attrs) {
+        return data::describeEnsemble({.paths = {writeStandard(dir, dim, std::move(attrs))}});
+    };
+    EXPECT_EQ(reason("runs", {{"standard_name", "realization"}}).memberDimensionReason,
+              "coordinate variable 'runs' has standard_name = realization");
+    EXPECT_EQ(reason("eid", {{"standard_name", "ensemble_member_id"}}).memberDimension, "eid");
+    EXPECT_EQ(reason("e", {{"_CoordinateAxisType", "Ensemble"}}).memberDimensionReason,
+              "coordinate variable 'e' has _CoordinateAxisType = Ensemble");
+    for (const char* name : {"number", "member", "members", "realization", "ens", "ens0", "ensemble"}) {
+        const auto d = reason(name, {});
+        EXPECT_EQ(d.memberDimension, name);
+        EXPECT_EQ(d.memberDimensionReason, std::string("dimension named '") + name + "'");
+    }
+}
+
+TEST(NetcdfReader, SpatialDimensionsInAnyOrder) {
+    test::TempDir dir;
+    const std::string path = dir.file("permuted.nc");
+    {
+        NcTestFile f(path);
+        const int x = f.dim("lon", 4, range(4), {{"units", "degrees_east"}});
+        const int m = f.dim("member", 2);
+        const int y = f.dim("lat", 3, range(3), {{"units", "degrees_north"}});
+        const int z = f.dim("height", 5, range(5, 0, 100), {{"units", "m"}, {"positive", "up"}});
+        const int v = f.variable("q", NC_DOUBLE, {x, m, z, y});  // (lon, member, height, lat)
+        f.write(v, 4 * 2 * 5 * 3, [](std::size_t n) {
+            const std::size_t j = n % 3, k = (n / 3) % 5, member = (n / 15) % 2, i = n / 30;
+            return analytic(member, i, j, k);
+        });
+    }
+    const data::Ensemble e = data::openEnsemble({.paths = {path}});
+    ASSERT_EQ(e.memberCount(), 2u);
+    EXPECT_TRUE(e.grid.z().positiveUp);
+    for (std::size_t m = 0; m < 2; ++m)
+        for (std::size_t k = 0; k < 5; ++k)
+            for (std::size_t j = 0; j < 3; ++j)
+                for (std::size_t i = 0; i < 4; ++i)
+                    ASSERT_EQ(e.members[m].values[e.grid.index(i, j, k)], analytic(m, i, j, k));
+}
+
+TEST(NetcdfReader, UnpacksAndMasksPackedIntegers) {
+    test::TempDir dir;
+    const std::string path = dir.file("packed.nc");
+    {
+        NcTestFile f(path);
+        const int m = f.dim("number", 2);
+        const int z = f.dim("lev", 2);
+        const int y = f.dim("y", 2);
+        const int x = f.dim("x", 3);
+        const int v = f.variable("t", NC_SHORT, {m, z, y, x});
+        f.number(v, "scale_factor", NC_DOUBLE, {0.5});
+        f.number(v, "add_offset", NC_DOUBLE, {200.0});
+        f.number(v, "_FillValue", NC_SHORT, {-32767});
+        f.number(v, "missing_value", NC_SHORT, {-999});
+        f.number(v, "valid_range", NC_SHORT, {-100, 100});  // packed units, as CF says
+        // raw values: n - 10, with a fill, a missing value and an out-of-range one
+        f.write(v, 24, [](std::size_t n) {
+            return n == 3 ? -32767.0 : n == 4 ? -999.0 : n == 5 ? 150.0 : static_cast<double>(n) - 10.0;
+        });
+    }
+    const data::Ensemble e = data::openEnsemble({.paths = {path}});
+    const auto& a = e.members[0].values;
+    EXPECT_FLOAT_EQ(a[0], 200.0F - 5.0F);
+    EXPECT_FLOAT_EQ(a[2], 200.0F - 4.0F);
+    EXPECT_TRUE(std::isnan(a[3]));
+    EXPECT_TRUE(std::isnan(a[4]));
+    EXPECT_TRUE(std::isnan(a[5]));
+    EXPECT_FLOAT_EQ(e.members[1].values[0], 200.0F + 0.5F * (12 - 10));
+}
+
+TEST(NetcdfReader, DefaultFillOfUnwrittenFloatsIsMissing) {
+    test::TempDir dir;
+    const std::string path = dir.file("fill.nc");
+    {
+        NcTestFile f(path);
+        const int m = f.dim("member", 2);
+        const int z = f.dim("z", 2);
+        const int y = f.dim("y", 2);
+        const int x = f.dim("x", 2);
+        const int v = f.variable("a", NC_FLOAT, {m, z, y, x});
+        f.write(v, 16, [](std::size_t n) { return n == 7 ? NC_FILL_FLOAT : 1.0; });
+    }
+    const data::Ensemble e = data::openEnsemble({.paths = {path}});
+    EXPECT_TRUE(std::isnan(e.members[0].values[7]));
+    EXPECT_FLOAT_EQ(e.members[0].values[6], 1.0F);
+}
+
+TEST(NetcdfReader, DerivedWindSpeedAndWrfDestaggering) {
+    test::TempDir dir;
+    const std::string path = dir.file("wrf.nc");
+    {
+        NcTestFile f(path);
+        const int t = f.dim("Time", 1);
+        const int z = f.dim("bottom_top", 2);
+        const int y = f.dim("south_north", 3);
+        const int ys = f.dim("south_north_stag", 4);
+        const int x = f.dim("west_east", 4);
+        const int xs = f.dim("west_east_stag", 5);
+        const int u = f.variable("U", NC_FLOAT, {t, z, y, xs});
+        const int v = f.variable("V", NC_FLOAT, {t, z, ys, x});
+        f.write(u, 2 * 3 * 5, [](std::size_t n) { return static_cast<double>(n % 5); });  // u = i
+        f.write(v, 2 * 4 * 4, [](std::size_t) { return 2.0; });
+    }
+    const data::EnsembleDescription d =
+        data::describeEnsemble({.paths = {path}, .variable = "wind_speed", .memberDimension = "Time"});
+    EXPECT_EQ(d.grid.nx(), 4u);
+    EXPECT_EQ(d.grid.ny(), 3u);
+    const data::Ensemble e =
+        data::openEnsemble({.paths = {path}, .variable = "wind_speed", .memberDimension = "Time"});
+    ASSERT_EQ(e.memberCount(), 1u);
+    // Destaggered u at mass point i is (i + i + 1) / 2; v is 2 everywhere.
+    for (std::size_t i = 0; i < 4; ++i) {
+        const float u = static_cast<float>(i) + 0.5F;
+        EXPECT_FLOAT_EQ(e.members[0].values[e.grid.index(i, 1, 1)], std::sqrt(u * u + 4.0F));
+    }
+}
+
+TEST(NetcdfReader, OneFilePerMemberAndGridMismatch) {
+    test::TempDir dir;
+    const auto write = [&](const std::string& name, std::size_t nx, double value) {
+        const std::string path = dir.file(name);
+        NcTestFile f(path, NC_CLOBBER);  // classic format
+        const int z = f.dim("z", 2, range(2));
+        const int y = f.dim("y", 2, range(2));
+        const int x = f.dim("x", nx, range(nx));
+        const int v = f.variable("vort", NC_FLOAT, {z, y, x});
+        f.write(v, 4 * nx, [value](std::size_t) { return value; });
+        return path;
+    };
+    const std::string a = write("run_01.nc", 3, 1.0), b = write("run_02.nc", 3, 2.0);
+    const data::Ensemble e = data::openEnsemble({.paths = {a, b}});
+    ASSERT_EQ(e.memberCount(), 2u);
+    EXPECT_EQ(e.members[0].name, "run_01");
+    EXPECT_EQ(e.members[1].name, "run_02");
+    EXPECT_FLOAT_EQ(e.members[1].values[5], 2.0F);
+    EXPECT_EQ(data::describeEnsemble({.paths = {a, b}}).format, "NetCDF classic");
+
+    const std::string c = write("run_03.nc", 4, 3.0);
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {a, c}}, &message), ErrorKind::GridMismatch);
+    EXPECT_NE(message.find("run_03.nc"), std::string::npos) << message;
+    EXPECT_NE(message.find("4 x 2 x 2"), std::string::npos) << message;
+}
+
+TEST(NetcdfReader, BadInputGetsTypedErrorsThatSayWhatWouldWork) {
+    test::TempDir dir;
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {dir.file("absent.nc")}}, &message), ErrorKind::FileNotFound);
+    EXPECT_NE(message.find("absent.nc"), std::string::npos);
+
+    const std::string text = dir.file("notes.nc");
+    std::ofstream(text) << "these are not numbers\n";
+    EXPECT_EQ(errorKindOf({.paths = {text}}), ErrorKind::UnsupportedFormat);
+
+    const std::string good = writeStandard(dir, "member");
+    EXPECT_EQ(errorKindOf({.paths = {good}, .variable = "temp"}, &message), ErrorKind::VariableNotFound);
+    EXPECT_NE(message.find("speed"), std::string::npos) << "candidates listed: " << message;
+
+    EXPECT_EQ(errorKindOf({.paths = {dir.path().string()}}, &message), ErrorKind::InvalidArgument);
+    EXPECT_NE(message.find("folder"), std::string::npos) << message;
+
+    // Truncated: a valid classic file cut in half.
+    const std::string cut = dir.file("cut.nc");
+    {
+        NcTestFile f(cut, NC_CLOBBER);
+        const int z = f.dim("member", 2);
+        const int a = f.dim("z", 8), b = f.dim("y", 8), c = f.dim("x", 8);
+        const int v = f.variable("f", NC_FLOAT, {z, a, b, c});
+        f.write(v, 1024, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    std::filesystem::resize_file(cut, std::filesystem::file_size(cut) / 2);
+    const auto kind = errorKindOf({.paths = {cut}}, &message);
+    EXPECT_TRUE(kind == ErrorKind::CorruptFile || kind == ErrorKind::UnsupportedFormat) << message;
+    EXPECT_NE(message.find("cut.nc"), std::string::npos) << message;
+}
+
+TEST(NetcdfReader, NoMemberDimensionListsTheDimensionsAndSuggestsOne) {
+    test::TempDir dir;
+    const std::string path = dir.file("forecast.nc");
+    {
+        NcTestFile f(path);
+        const int t = f.dim("frtime", 3, range(3, 0, 12), {{"units", "hours"}});
+        const int z = f.dim("level", 2, {1000, 500}, {{"units", "millibars"}});
+        const int y = f.dim("lat", 2, range(2));
+        const int x = f.dim("lon", 2, range(2));
+        const int v = f.variable("T", NC_FLOAT, {t, z, y, x});
+        f.write(v, 24, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {path}}, &message), ErrorKind::MemberDimensionNotFound);
+    EXPECT_NE(message.find("frtime (3)"), std::string::npos) << message;
+    EXPECT_NE(message.find("--member-dim frtime"), std::string::npos) << message;
+
+    const data::Ensemble e = data::openEnsemble({.paths = {path}, .memberDimension = "frtime"});
+    ASSERT_EQ(e.memberCount(), 3u);
+    EXPECT_EQ(e.members[2].name, "frtime 24");
+    EXPECT_FLOAT_EQ(e.members[2].values[0], 16.0F);
+
+    EXPECT_EQ(errorKindOf({.paths = {path}, .memberDimension = "depth"}, &message),
+              ErrorKind::NotThreeDimensional);
+    EXPECT_NE(message.find("'depth'"), std::string::npos) << message;
+}
+
+TEST(NetcdfReader, TwoDimensionalAndAllMissingDataAreRefused) {
+    test::TempDir dir;
+    const std::string flat = dir.file("flat.nc");
+    {
+        NcTestFile f(flat);
+        const int m = f.dim("realization", 2);
+        const int y = f.dim("latitude", 3, range(3), {{"standard_name", "latitude"}});
+        const int x = f.dim("longitude", 3, range(3), {{"standard_name", "longitude"}});
+        const int v = f.variable("tas", NC_FLOAT, {m, y, x});
+        f.write(v, 18, [](std::size_t) { return 1.0; });
+    }
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {flat}}, &message), ErrorKind::NotThreeDimensional);
+    EXPECT_NE(message.find("no vertical"), std::string::npos) << message;
+
+    const std::string empty = dir.file("empty.nc");
+    {
+        NcTestFile f(empty);
+        const int m = f.dim("member", 2);
+        const int z = f.dim("z", 2), y = f.dim("y", 2), x = f.dim("x", 2);
+        const int v = f.variable("a", NC_FLOAT, {m, z, y, x});
+        f.number(v, "_FillValue", NC_FLOAT, {-1.0});
+        f.write(v, 16, [](std::size_t) { return -1.0; });
+    }
+    EXPECT_EQ(errorKindOf({.paths = {empty}}, &message), ErrorKind::AllValuesMissing);
+}
+
+TEST(NetcdfReader, TimeIndexSelectsAndIsChecked) {
+    test::TempDir dir;
+    const std::string path = dir.file("times.nc");
+    {
+        NcTestFile f(path);
+        const int m = f.dim("number", 2);
+        const int t = f.dim("time", 3, range(3, 0, 6), {{"units", "hours since 2020-02-28 12:00"}});
+        const int z = f.dim("plev", 2, {85000, 50000}, {{"units", "Pa"}});
+        const int y = f.dim("lat", 2, range(2)), x = f.dim("lon", 2, range(2));
+        const int v = f.variable("z", NC_FLOAT, {m, t, z, y, x});
+        f.write(v, 48, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    const data::EnsembleDescription d = data::describeEnsemble({.paths = {path}, .timeIndex = 2});
+    ASSERT_EQ(d.fixedDimensions.size(), 1u);
+    EXPECT_EQ(d.fixedDimensions[0], "time = 2 of 3 (2020-02-29T00:00)");  // leap day
+    const data::Ensemble e = data::openEnsemble({.paths = {path}, .timeIndex = 2});
+    EXPECT_FLOAT_EQ(e.members[1].values[0], 24.0F + 16.0F);
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {path}, .timeIndex = 3}, &message), ErrorKind::InvalidArgument);
+    EXPECT_NE(message.find("0 to 2"), std::string::npos) << message;
+}
+
+TEST(NetcdfReader, CancelStopsBetweenMembersAndProgressIsMonotonic) {
+    test::TempDir dir;
+    const std::string path = writeStandard(dir, "member");
+    std::vector<double> seen;
+    (void)data::openEnsemble({.paths = {path}}, {}, [&](double f) { seen.push_back(f); });
+    ASSERT_EQ(seen.size(), 3u);
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+
+    std::stop_source stop;
+    EXPECT_THROW((void)data::openEnsemble({.paths = {path}}, stop.get_token(),
+                                          [&](double) { stop.request_stop(); }),
+                 data::Cancelled);
+}
+
+TEST(EnsembleReader, RefusesWhatWillNotFitInMemory) {
+    try {
+        data::checkMemoryFor(std::size_t{1} << 60, "the test ensemble");
+        FAIL() << "an exabyte was accepted";
+    } catch (const data::Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::OutOfMemory);
+        EXPECT_NE(std::string(e.what()).find("GiB"), std::string::npos) << e.what();
+    }
+    EXPECT_NO_THROW(data::checkMemoryFor(1024, "a kilobyte"));
+}

@@ -1,0 +1,126 @@
+// The real files in ../shared/data, written by others: each opens, or is refused with the
+// right message.
+#include <gtest/gtest.h>
+#include <netcdf.h>
+
+#include <array>
+#include <cmath>
+
+#include "data/ensemble_reader.h"
+#include "data/error.h"
+
+using namespace ensil;
+
+namespace {
+std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+
+float rawValue(const std::string& path, const char* var, std::vector<std::size_t> index) {
+    int nc = -1, id = -1;
+    float value = 0;
+    EXPECT_EQ(nc_open(path.c_str(), NC_NOWRITE, &nc), NC_NOERR);
+    EXPECT_EQ(nc_inq_varid(nc, var, &id), NC_NOERR);
+    EXPECT_EQ(nc_get_var1_float(nc, id, index.data(), &value), NC_NOERR);
+    nc_close(nc);
+    return value;
+}
+
+data::Error errorOf(const data::DataSelection& s) {
+    try {
+        (void)data::openEnsemble(s);
+    } catch (const data::Error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for " << s.paths.front();
+    return data::Error(data::ErrorKind::InvalidArgument, "");
+}
+}  // namespace
+
+TEST(RealFiles, Era5EdaIsATenMemberEnsembleAlongNumber) {
+    const std::string path = shared("era5_eda_members.nc");
+    const auto d = data::describeEnsemble({.paths = {path}, .variable = "t", .timeIndex = 1});
+    EXPECT_EQ(d.memberDimension, "number");
+    EXPECT_EQ(d.memberDimensionReason, "coordinate variable 'number' has standard_name = realization");
+    EXPECT_EQ(d.members, 10u);
+    EXPECT_EQ(d.units, "K");
+    EXPECT_EQ(d.grid.nx(), 120u);
+    EXPECT_EQ(d.grid.ny(), 61u);
+    EXPECT_EQ(d.grid.nz(), 2u);
+    EXPECT_EQ(d.grid.z().units, "Pa");
+    EXPECT_FALSE(d.grid.z().positiveUp);
+    const data::Ensemble e = data::openEnsemble({.paths = {path}, .variable = "t", .timeIndex = 1});
+    // (number=3, time=1, plev=1, lat=10, lon=20) as stored.
+    EXPECT_EQ(e.members[3].values[e.grid.index(20, 10, 1)], rawValue(path, "t", {3, 1, 1, 10, 20}));
+}
+
+TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
+    const std::string path = shared("eraint_uvz.nc");
+    EXPECT_EQ(errorOf({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
+    const data::DataSelection u{.paths = {path}, .variable = "u", .memberDimension = "month"};
+    const data::Ensemble eu = data::openEnsemble(u);
+    ASSERT_EQ(eu.memberCount(), 2u);
+    // Unpacking: raw short * scale_factor + add_offset, scale_factor negative in this file.
+    const float raw = rawValue(path, "u", {1, 2, 100, 200});
+    const float expected = static_cast<float>(raw * -0.00157270493804553 + 26.96875);
+    EXPECT_NEAR(eu.members[1].values[eu.grid.index(200, 100, 2)], expected, 1e-4);
+
+    data::DataSelection v = u, speed = u;
+    v.variable = "v";
+    speed.variable = "wind_speed";
+    const data::Ensemble ev = data::openEnsemble(v);
+    const data::Ensemble es = data::openEnsemble(speed);
+    EXPECT_EQ(es.units, "m s**-1");
+    float maximum = 0;
+    for (std::size_t p = 0; p < es.grid.pointCount(); p += 97) {
+        const float a = eu.members[0].values[p], b = ev.members[0].values[p];
+        ASSERT_NEAR(es.members[0].values[p], std::sqrt(a * a + b * b), 1e-4);
+        maximum = std::max(maximum, es.members[0].values[p]);
+    }
+    EXPECT_GT(maximum, 30.0F) << "January jet streams exceed 30 m/s at 200 hPa";
+}
+
+TEST(RealFiles, GloSea4HasNoVerticalAxisAndSaysSo) {
+    const data::Error e = errorOf({.paths = {shared("glosea4_surface_temperature_ensemble.nc")}});
+    EXPECT_EQ(e.kind(), data::ErrorKind::NotThreeDimensional);
+    const std::string m = e.what();
+    EXPECT_NE(m.find("surface_temperature"), std::string::npos) << m;
+    EXPECT_NE(m.find("no vertical"), std::string::npos) << m;
+}
+
+TEST(RealFiles, UkHiresTimeStandsInForMembersOnHybridHeights) {
+    const data::Ensemble e = data::openEnsemble({.paths = {shared("uk_hires.nc")}, .memberDimension = "time"});
+    ASSERT_EQ(e.memberCount(), 3u);
+    EXPECT_EQ(e.members[0].name, "2009-11-19T10:00");
+    EXPECT_EQ(e.grid.nx(), 187u);
+    EXPECT_EQ(e.grid.ny(), 204u);
+    EXPECT_EQ(e.grid.z().name, "level_height");
+    EXPECT_EQ(e.grid.z().units, "m");
+    EXPECT_FALSE(e.grid.z().isUniform());
+    EXPECT_TRUE(e.grid.x().isUniform()) << "float-stored rotated longitudes are evenly spaced";
+}
+
+TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
+    const std::string path = shared("contour.cdf");
+    const data::Error e = errorOf({.paths = {path}});
+    EXPECT_EQ(e.kind(), data::ErrorKind::MemberDimensionNotFound);
+    EXPECT_NE(std::string(e.what()).find("--member-dim frtime"), std::string::npos) << e.what();
+
+    const data::Ensemble z = data::openEnsemble({.paths = {path}, .variable = "Z", .memberDimension = "frtime"});
+    ASSERT_EQ(z.memberCount(), 7u);
+    const data::Grid& g = z.grid;
+    // valid_range [-150, 5000] m masks the upper levels (100 hPa is ~16 km up); 1000 hPa stays.
+    std::size_t bottomValid = 0, topValid = 0;
+    for (std::size_t j = 0; j < g.ny(); ++j)
+        for (std::size_t i = 0; i < g.nx(); ++i) {
+            bottomValid += std::isnan(z.members[0].values[g.index(i, j, 0)]) ? 0 : 1;
+            topValid += std::isnan(z.members[0].values[g.index(i, j, g.nz() - 1)]) ? 0 : 1;
+        }
+    EXPECT_EQ(g.z().values.back(), 100.0);
+    EXPECT_EQ(topValid, 0u);
+    EXPECT_GT(bottomValid, g.nx() * g.ny() / 2);
+}
+
+TEST(RealFiles, GribAndVtkAreNotMistakenForNetcdf) {
+    const data::Error grib = errorOf({.paths = {shared("era5-levels-members.grib")}});
+    EXPECT_EQ(grib.kind(), data::ErrorKind::UnsupportedFormat);
+    EXPECT_NE(std::string(grib.what()).find("GRIB"), std::string::npos) << grib.what();
+}
