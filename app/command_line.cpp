@@ -3,6 +3,7 @@
 #include <QCommandLineParser>
 #include <array>
 
+#include "app/data_selection_options.h"
 #include "app/generate_command.h"
 #include "app/info_command.h"
 #include "app/version.h"
@@ -49,8 +50,12 @@ QString topLevelHelp() {
     text += QStringLiteral(
         "\n"
         "Options:\n"
-        "  -h, --help     Show this help.\n"
-        "  -v, --version  Show the version.\n"
+        "  --var V           Variable to show (default: the first with three spatial\n"
+        "                    dimensions).\n"
+        "  --member-dim D    Dimension that holds the members, when ensil finds none.\n"
+        "  --time-index I    Index along other dimensions such as time (default 0).\n"
+        "  -h, --help        Show this help.\n"
+        "  -v, --version     Show the version.\n"
         "\n"
         "Run 'ensil <command> --help' for the options of a command.\n");
     return text;
@@ -88,9 +93,8 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
     const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")},
                                      QStringLiteral("Show the version."));
     parser.addOptions({help, version});
-    parser.addPositionalArgument(QStringLiteral("PATH"),
-                                 QStringLiteral("Data files or a project to open."),
-                                 QStringLiteral("[PATH...]"));
+    const DataSelectionOptions selectionOptions;
+    selectionOptions.addTo(parser);
     if (!parser.parse(args)) {
         err << "ensil: " << parser.errorText() << "\nRun 'ensil --help' for usage.\n";
         return {2, std::nullopt};
@@ -103,7 +107,13 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
         out << "ensil " << ENSIL_VERSION << "\n";
         return {0, std::nullopt};
     }
-    return {0, WorkbenchRequest{parser.positionalArguments()}};
+    QString problem;
+    auto selection = selectionOptions.selection(parser, problem);
+    if (!selection) {
+        err << "ensil: " << problem << "\n";
+        return {2, std::nullopt};
+    }
+    return {0, WorkbenchRequest{std::move(*selection)}};
 }
 
 }  // namespace ensil::app

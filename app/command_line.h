@@ -7,11 +7,13 @@
 #include <QTextStream>
 #include <optional>
 
+#include "data/ensemble_reader.h"
+
 namespace ensil::app {
 
-// What the workbench should open: nothing (the demo), or the given files or project.
+// What the workbench should open: no paths means the built-in demo.
 struct WorkbenchRequest {
-    QStringList paths;
+    data::DataSelection selection;
 };
 
 struct CommandLineOutcome {

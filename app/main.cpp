@@ -1,7 +1,6 @@
 // The `ensil` executable: subcommands run headless on a QCoreApplication; everything else opens
 // the workbench.
 #include <QApplication>
-#include <QMessageBox>
 #include <QSurfaceFormat>
 #include <QTextStream>
 #include <cstdio>
@@ -40,14 +39,10 @@ int main(int argc, char* argv[]) {
     setApplicationIdentity();
     ensil::app::MainWindow window;
     window.show();
-    if (!outcome.workbench->paths.isEmpty()) {
-        QMessageBox::information(
-            &window, QObject::tr("Opening files"),
-            QObject::tr("This version of ensil cannot read data files yet; the readers for "
-                        "NetCDF, HDF5 and VTK arrive in the next release. Showing the built-in "
-                        "demo ensemble instead.\n\nAsked to open:\n%1")
-                .arg(outcome.workbench->paths.join(QLatin1Char('\n'))));
+    if (outcome.workbench->selection.paths.empty()) {
+        window.loadDemo();
+    } else {
+        window.openFiles(outcome.workbench->selection);
     }
-    window.loadDemo();
     return QApplication::exec();
 }

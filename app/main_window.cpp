@@ -5,6 +5,7 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -93,6 +94,11 @@ void MainWindow::createDocks() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&Open..."), QKeySequence::Open, this, &MainWindow::chooseFiles);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addAction(tr("Open &Demo Ensemble"), this, [this] { loadDemo(); });
+    file->addSeparator();
     QAction* screenshot = file->addAction(tr("Save &Screenshot..."), this, [this] {
         const QString path = QFileDialog::getSaveFileName(
             this, tr("Save Screenshot"), QStringLiteral("ensil.png"), tr("PNG images (*.png)"));
@@ -159,27 +165,93 @@ void MainWindow::setIdle(const QString& message) {
 }
 
 void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
+    startLoading(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
+                     .arg(params.members)
+                     .arg(params.nx)
+                     .arg(params.ny)
+                     .arg(params.nz),
+                 [params](const std::stop_token&, const data::Progress&) {
+                     return data::makeDemoEnsemble(params).ensemble;
+                 });
+}
+
+void MainWindow::openFiles(const data::DataSelection& selection) {
+    const QString name = selection.paths.size() == 1
+                             ? QFileInfo(QString::fromStdString(selection.paths.front())).fileName()
+                             : tr("%1 files").arg(selection.paths.size());
+    rememberRecent(selection);
+    startLoading(tr("Reading %1...").arg(name),
+                 [selection](const std::stop_token& stop, const data::Progress& progress) {
+                     return data::openEnsemble(selection, stop, progress);
+                 });
+}
+
+void MainWindow::startLoading(const QString& what, EnsembleSource source) {
     cancelLoading();
     waitForLoader();
     auto stop = std::make_shared<std::stop_source>();
     m_loaderStop = stop;
-    setBusy(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
-                .arg(params.members)
-                .arg(params.nx)
-                .arg(params.ny)
-                .arg(params.nz));
-    m_info->showMessage(tr("Loading..."));
-    m_loader.setFuture(QtConcurrent::run([params, stop](QPromise<EnsembleOverview>& promise) {
-        promise.setProgressRange(0, kProgressSteps);
-        const auto progress = [&promise](double f) {
-            promise.setProgressValue(static_cast<int>(f * kProgressSteps));
-        };
-        auto demo = data::makeDemoEnsemble(params);
-        progress(0.3);
-        auto ensemble = std::make_shared<const data::Ensemble>(std::move(demo.ensemble));
-        promise.addResult(buildEnsembleOverview(
-            std::move(ensemble), stop->get_token(), [&](double f) { progress(0.3 + 0.7 * f); }));
-    }));
+    setBusy(what);
+    if (!m_overview) m_info->showMessage(tr("Loading..."));
+    m_loader.setFuture(QtConcurrent::run(
+        [source = std::move(source), stop](QPromise<EnsembleOverview>& promise) {
+            promise.setProgressRange(0, kProgressSteps);
+            const auto progress = [&promise](double f) {
+                promise.setProgressValue(static_cast<int>(f * kProgressSteps));
+            };
+            const std::stop_token token = stop->get_token();
+            auto ensemble = std::make_shared<const data::Ensemble>(
+                source(token, [&](double f) { progress(0.6 * f); }));
+            promise.addResult(buildEnsembleOverview(std::move(ensemble), token,
+                                                    [&](double f) { progress(0.6 + 0.4 * f); }));
+        }));
+}
+
+void MainWindow::chooseFiles() {
+    QSettings settings;
+    const QStringList files = QFileDialog::getOpenFileNames(
+        this, tr("Open Ensemble (one file with members, or one file per member)"),
+        settings.value(QStringLiteral("open/lastFolder")).toString(),
+        tr("Ensemble files (*.nc *.nc4 *.cdf *.netcdf *.h5 *.hdf5 *.he5 *.vtk *.vti);;"
+           "All files (*)"));
+    if (files.isEmpty()) return;
+    settings.setValue(QStringLiteral("open/lastFolder"), QFileInfo(files.front()).absolutePath());
+    data::DataSelection selection;
+    for (const QString& f : files) selection.paths.push_back(f.toStdString());
+    openFiles(selection);
+}
+
+void MainWindow::rememberRecent(const data::DataSelection& selection) {
+    QStringList entry;
+    for (const auto& p : selection.paths) {
+        entry << QFileInfo(QString::fromStdString(p)).absoluteFilePath();
+    }
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+    const QString key = entry.join(QLatin1Char('\n'));
+    recent.removeAll(key);
+    recent.prepend(key);
+    while (recent.size() > 10) recent.removeLast();
+    settings.setValue(QStringLiteral("recentFiles"), recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& key : recent) {
+        const QStringList paths = key.split(QLatin1Char('\n'));
+        const QString label = paths.size() == 1
+                                  ? paths.front()
+                                  : tr("%1 files in %2").arg(paths.size()).arg(
+                                        QFileInfo(paths.front()).absolutePath());
+        m_recentMenu->addAction(label, this, [this, paths] {
+            data::DataSelection selection;
+            for (const QString& p : paths) selection.paths.push_back(p.toStdString());
+            openFiles(selection);
+        });
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
 void MainWindow::cancelLoading() {
@@ -199,7 +271,12 @@ void MainWindow::onLoaderFinished() {
         if (!cancelled) {
             const QString message = messageOf(std::current_exception());
             setIdle(tr("Loading failed: %1").arg(message));
-            m_info->showMessage(tr("Loading failed: %1").arg(message));
+            if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
+            // Not modal: the window stays usable, and scripted sessions are not blocked.
+            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the ensemble"),
+                                        message, QMessageBox::Ok, this);
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->open();
             emit loadingFailed(message);
             return;
         }

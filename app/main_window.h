@@ -6,15 +6,18 @@
 
 #include <QFutureWatcher>
 #include <QMainWindow>
+#include <functional>
 #include <memory>
 #include <stop_token>
 
 #include "app/ensemble_overview.h"
 #include "data/demo_ensemble.h"
+#include "data/ensemble_reader.h"
 
 class QProgressBar;
 class QToolButton;
 class QLabel;
+class QMenu;
 
 namespace ensil::ui {
 class SilhouetteView;
@@ -29,8 +32,10 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Starts generating the demo ensemble in the background; ensembleLoaded() follows.
+    // Start loading in the background; ensembleLoaded() or loadingFailed() follows. The
+    // ensemble on screen stays until the new one is ready, and stays if loading fails.
     void loadDemo(const data::DemoEnsembleParams& params = {});
+    void openFiles(const data::DataSelection& selection);
     void cancelLoading();
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
@@ -49,6 +54,12 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    using EnsembleSource =
+        std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
+    void startLoading(const QString& what, EnsembleSource source);
+    void chooseFiles();
+    void rememberRecent(const data::DataSelection& selection);
+    void rebuildRecentMenu();
     void createMenus();
     void createDocks();
     void createStatusBar();
@@ -63,6 +74,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QToolButton* m_cancel = nullptr;
     QLabel* m_statusText = nullptr;
+    QMenu* m_recentMenu = nullptr;
     QFutureWatcher<EnsembleOverview> m_loader;
     std::shared_ptr<std::stop_source> m_loaderStop;
     std::unique_ptr<EnsembleOverview> m_overview;

@@ -112,11 +112,19 @@ void Renderer::uploadFloorMap() {
     }
     // Normalise on the CPU, with -1 marking missing values: linear filtering of NaN would
     // smear gaps into their neighbours.
+    // Texture rows and columns run from the smallest coordinate up, as display space does;
+    // many files store latitude from north to south.
     const float span = m_floor.maximum - m_floor.minimum;
+    const std::size_t nx = m_grid.nx(), ny = m_grid.ny();
+    const bool flipX = m_grid.x().back() < m_grid.x().front();
+    const bool flipY = m_grid.y().back() < m_grid.y().front();
     std::vector<float> normalised(m_floor.values.size());
-    for (std::size_t i = 0; i < normalised.size(); ++i) {
-        const float v = m_floor.values[i];
-        normalised[i] = std::isnan(v) ? -1.0F : (span > 0 ? (v - m_floor.minimum) / span : 0.5F);
+    for (std::size_t j = 0; j < ny; ++j) {
+        for (std::size_t i = 0; i < nx; ++i) {
+            const float v = m_floor.values[(flipX ? nx - 1 - i : i) + nx * (flipY ? ny - 1 - j : j)];
+            normalised[i + nx * j] =
+                std::isnan(v) ? -1.0F : (span > 0 ? (v - m_floor.minimum) / span : 0.5F);
+        }
     }
     GlFunctions& f = *m_gpu->f;
     m_gpu->floorSize = {static_cast<int>(m_grid.nx()), static_cast<int>(m_grid.ny())};

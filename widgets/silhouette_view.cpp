@@ -14,6 +14,8 @@ SilhouetteView::SilhouetteView(QWidget* parent) : QOpenGLWidget(parent) {
 
 SilhouetteView::~SilhouetteView() {
     if (context() != nullptr) {
+        // QOpenGLWidget's destructor destroys the context after this class is gone.
+        disconnect(context(), nullptr, this, nullptr);
         makeCurrent();
         releaseGpu();
         doneCurrent();
@@ -22,14 +24,16 @@ SilhouetteView::~SilhouetteView() {
 
 void SilhouetteView::releaseGpu() { m_renderer.releaseGpuResources(); }
 
+void SilhouetteView::onContextAboutToBeDestroyed() {
+    makeCurrent();
+    releaseGpu();
+    doneCurrent();
+}
+
 void SilhouetteView::initializeGL() {
+    // initializeGL runs again for each new context (re-parenting); connect to each once.
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this,
-            [this] {
-                makeCurrent();
-                releaseGpu();
-                doneCurrent();
-            },
-            Qt::UniqueConnection);
+            &SilhouetteView::onContextAboutToBeDestroyed, Qt::UniqueConnection);
     try {
         m_renderer.initialize();
         m_glError.clear();

@@ -35,6 +35,9 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
 
+private slots:
+    void onContextAboutToBeDestroyed();
+
 private:
     void releaseGpu();
 

@@ -15,6 +15,8 @@ struct CliRun {
     int code = 0;
     bool workbench = false;
     QStringList paths;
+    QString variable, memberDim;
+    std::size_t timeIndex = 0;
     QString out, err;
 };
 
@@ -27,7 +29,12 @@ CliRun run(QStringList args) {
     err.flush();
     r.code = o.exitCode;
     r.workbench = o.workbench.has_value();
-    if (o.workbench) r.paths = o.workbench->paths;
+    if (o.workbench) {
+        for (const auto& p : o.workbench->selection.paths) r.paths << QString::fromStdString(p);
+        r.variable = QString::fromStdString(o.workbench->selection.variable);
+        r.memberDim = QString::fromStdString(o.workbench->selection.memberDimension);
+        r.timeIndex = o.workbench->selection.timeIndex;
+    }
     return r;
 }
 }  // namespace
@@ -57,6 +64,14 @@ TEST(CommandLine, NoArgumentsOpensTheDemoAndPathsAreForwarded) {
     const CliRun files = run({"a.nc", "b.nc"});
     EXPECT_TRUE(files.workbench);
     EXPECT_EQ(files.paths, (QStringList{"a.nc", "b.nc"}));
+    const CliRun chosen = run({"t.nc", "--var", "u", "--member-dim", "month", "--time-index", "2"});
+    EXPECT_TRUE(chosen.workbench);
+    EXPECT_EQ(chosen.variable, "u");
+    EXPECT_EQ(chosen.memberDim, "month");
+    EXPECT_EQ(chosen.timeIndex, 2u);
+    const CliRun bad = run({"t.nc", "--time-index", "-1"});
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_FALSE(bad.workbench);
 }
 
 TEST(CommandLine, UnknownOptionIsAnErrorWithAHint) {

@@ -61,3 +61,32 @@ TEST(MainWindow, CancelledLoadLeavesNothingHalfLoaded) {
     EXPECT_EQ(loaded.count(), 0);
     EXPECT_EQ(failed.count(), 0) << "a cancel is not a failure";
 }
+
+TEST(MainWindow, OpensARealEnsembleFile) {
+    app::MainWindow window;
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(loaded.wait(30000));
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 10u);
+    EXPECT_TRUE(window.infoPanel()->text().contains("Variable: t (Temperature)"))
+        << window.infoPanel()->text().toStdString();
+}
+
+TEST(MainWindow, AFailedOpenExplainsAndKeepsWhatIsShown) {
+    app::MainWindow window;
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
+    window.loadDemo({.members = 5, .nx = 32, .ny = 16, .nz = 4, .seed = 3});
+    ASSERT_TRUE(loaded.wait(30000));
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/glosea4_surface_temperature_ensemble.nc"};
+    window.openFiles(selection);
+    ASSERT_TRUE(failed.wait(30000));
+    EXPECT_TRUE(failed.front().front().toString().contains("no vertical"))
+        << failed.front().front().toString().toStdString();
+    ASSERT_NE(window.overview(), nullptr);
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 5u) << "the demo stays on screen";
+}

@@ -106,6 +106,25 @@ TEST_F(RendererTest, FloorShowsTheMapAndMissingValuesInGray) {
         << image.pixelColor(right).name().toStdString();
 }
 
+TEST_F(RendererTest, FloorMapFollowsAxisDirectionNorthStaysNorth) {
+    // Latitude stored from north to south, as ERA5 does; the map marks the northern half.
+    data::Axis lat = data::makeUniformAxis("lat", "degrees_north", 60.0, 30.0, 16);
+    const data::Grid grid(data::makeUniformAxis("lon", "degrees_east", 0.0, 60.0, 16), lat,
+                          data::makeUniformAxis("z", "km", 0.0, 10.0, 3));
+    m_renderer.setGrid(grid);
+    std::vector<float> values(16 * 16);
+    for (std::size_t j = 0; j < 16; ++j)
+        for (std::size_t i = 0; i < 16; ++i) values[i + 16 * j] = grid.y().values[j] > 45.0 ? 1.0F : 0.0F;
+    m_renderer.setFloorMap({values, 0.0F, 1.0F});
+    const QImage image = draw();
+    const glm::vec3 hi = m_renderer.frame().boxMax();
+    const QPoint north = project({0.5F * hi.x, 0.85F * hi.y, 0.0F});
+    const QPoint south = project({0.5F * hi.x, 0.15F * hi.y, 0.0F});
+    const glm::vec4 yellow{0.993F, 0.906F, 0.144F, 1.0F}, purple{0.267F, 0.005F, 0.329F, 1.0F};
+    EXPECT_TRUE(near(image.pixelColor(north), yellow, 20)) << image.pixelColor(north).name().toStdString();
+    EXPECT_TRUE(near(image.pixelColor(south), purple, 20)) << image.pixelColor(south).name().toStdString();
+}
+
 TEST_F(RendererTest, VerticalExaggerationRaisesTheTopOfTheBox) {
     const auto d = demo();
     m_renderer.setGrid(d.ensemble.grid);
