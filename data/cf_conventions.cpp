@@ -149,7 +149,7 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
     const auto dayPoint = floor<days>(t);
     const year_month_day ymd{dayPoint};
     const hh_mm_ss hms{t - dayPoint};
-    std::array<char, 32> text{};
+    std::array<char, 96> text{};  // room for any int the format could print
     std::snprintf(text.data(), text.size(), "%04d-%02u-%02uT%02ld:%02ld",
                   static_cast<int>(ymd.year()), static_cast<unsigned>(ymd.month()),
                   static_cast<unsigned>(ymd.day()), static_cast<long>(hms.hours().count()),

@@ -122,7 +122,7 @@ MemberRecipe makeRecipe(DemoRegime regime, std::mt19937_64& rng) {
 }
 
 void fillMember(const MemberRecipe& recipe, const Grid& grid, const std::vector<double>& heightKm,
-                std::vector<float>& out) {
+                FieldValues& out) {
     const std::size_t nx = grid.nx(), ny = grid.ny(), nz = grid.nz(), nxy = nx * ny;
     const std::size_t nj = recipe.jets.size(), nw = recipe.waves.size();
     // Horizontal parts: per jet the wind components at full strength; per wave sin and cos.

@@ -8,13 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "data/bulk_allocator.h"
 #include "data/grid.h"
 
 namespace ensil::data {
 
 struct Member {
     std::string name;           // e.g. "member 7", "2012-10-17T00"
-    std::vector<float> values;  // grid.pointCount() values, NaN where missing
+    FieldValues values;         // grid.pointCount() values, NaN where missing
 };
 
 struct Ensemble {

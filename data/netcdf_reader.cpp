@@ -64,7 +64,7 @@ void unpackInto(const T* raw, std::size_t n, const Unpacking& u, float* out) {
 
 // Reads one member of one component into `out` (sizes[0] * sizes[1] * sizes[2] values, x fastest).
 void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent& c,
-                   std::size_t member, std::vector<float>& out, std::vector<double>& scratch) {
+                   std::size_t member, FieldValues& out, std::vector<double>& scratch) {
     const NcVariable& var = *c.variable;
     const std::size_t rank = var.dimIds.size();
     std::vector<std::size_t> start(rank, 0), count(rank, 1);
@@ -90,6 +90,21 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
     out.resize(n);
     const Unpacking u = unpackingFor(file, var);
     const std::string what = "read '" + var.name + "' member " + std::to_string(member);
+    if (var.type == NC_FLOAT && !u.packed && u.missing.size() <= 1 && std::isinf(u.validMin) &&
+        std::isinf(u.validMax)) {
+        // The common case: floats with at most one fill value. A tight loop the compiler
+        // vectorises; NaN never equals the fill, so it stays NaN.
+        file.check(canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(),
+                                                 out.data())
+                             : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
+                                                 stride.data(), imap.data(), out.data()),
+                   what);
+        const float fill = u.missing.empty() ? kNaN : static_cast<float>(u.missing.front());
+        if (std::isnan(fill)) return;  // a NaN fill is already what ensil uses for missing
+        float* values = out.data();
+        for (std::size_t i = 0; i < n; ++i) values[i] = values[i] == fill ? kNaN : values[i];
+        return;
+    }
     if (var.type == NC_FLOAT && !u.packed) {
         file.check(canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(),
                                                  out.data())
@@ -109,14 +124,14 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
 }
 
 // Averages neighbours along every axis where the component has one more point than the grid.
-void destagger(const NcComponent& c, const Grid& grid, std::vector<float>& values) {
+void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
     std::array<std::size_t, 3> size = c.sizes;
     const std::array<std::size_t, 3> target{grid.nx(), grid.ny(), grid.nz()};
     for (std::size_t axis = 0; axis < 3; ++axis) {
         if (size[axis] == target[axis]) continue;
         std::array<std::size_t, 3> next = size;
         next[axis] = target[axis];
-        std::vector<float> result(next[0] * next[1] * next[2]);
+        FieldValues result(next[0] * next[1] * next[2]);
         const std::array<std::size_t, 3> step{1, size[0], size[0] * size[1]};
         for (std::size_t k = 0; k < next[2]; ++k)
             for (std::size_t j = 0; j < next[1]; ++j)
@@ -131,8 +146,8 @@ void destagger(const NcComponent& c, const Grid& grid, std::vector<float>& value
 }
 
 void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member,
-                std::vector<float>& out) {
-    std::vector<float> part;
+                FieldValues& out) {
+    FieldValues part;
     std::vector<double> scratch;
     readComponent(file, plan, plan.components.front(), member, out, scratch);
     destagger(plan.components.front(), plan.grid, out);

@@ -15,7 +15,7 @@ namespace {
 class NetcdfFile {
 public:
     explicit NetcdfFile(const std::string& path) : m_path(path) {
-        check(nc_create(path.c_str(), NC_CLOBBER | NC_64BIT_OFFSET, &m_id), "create the file");
+        check(nc_create(path.c_str(), NC_CLOBBER | NC_NETCDF4, &m_id), "create the file");
     }
     NetcdfFile(const NetcdfFile&) = delete;
     NetcdfFile& operator=(const NetcdfFile&) = delete;
