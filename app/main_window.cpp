@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -29,16 +30,37 @@ namespace ensil::app {
 namespace {
 constexpr int kProgressSteps = 1000;
 
-// QtConcurrent wraps exceptions it does not know in QUnhandledException; recover the message.
-QString messageOf(const std::exception_ptr& error) {
+// QtConcurrent wraps exceptions it does not know in QUnhandledException; unwrap them.
+std::exception_ptr unwrap(const std::exception_ptr& error) {
     try {
         std::rethrow_exception(error);
     } catch (const QUnhandledException& e) {
-        return e.exception() ? messageOf(e.exception()) : QStringLiteral("unknown error");
+        return e.exception() ? unwrap(e.exception()) : error;
+    } catch (...) {
+        return error;
+    }
+}
+
+QString messageOf(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(unwrap(error));
     } catch (const std::bad_alloc&) {
         return QObject::tr("not enough memory to load the ensemble");
     } catch (const std::exception& e) {
         return QString::fromStdString(e.what());
+    } catch (...) {
+        return QStringLiteral("unknown error");
+    }
+}
+
+// The reader's typed error, if that is what the worker threw.
+std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(unwrap(error));
+    } catch (const data::Error& e) {
+        return e;
+    } catch (...) {
+        return std::nullopt;
     }
 }
 }  // namespace
@@ -165,6 +187,7 @@ void MainWindow::setIdle(const QString& message) {
 }
 
 void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
+    m_requested.reset();
     startLoading(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
                      .arg(params.members)
                      .arg(params.nx)
@@ -180,6 +203,7 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
                              ? QFileInfo(QString::fromStdString(selection.paths.front())).fileName()
                              : tr("%1 files").arg(selection.paths.size());
     rememberRecent(selection);
+    m_requested = selection;
     startLoading(tr("Reading %1...").arg(name),
                  [selection](const std::stop_token& stop, const data::Progress& progress) {
                      return data::openEnsemble(selection, stop, progress);
@@ -269,6 +293,12 @@ void MainWindow::onLoaderFinished() {
         }
     } catch (...) {
         if (!cancelled) {
+            const auto dataError = dataErrorOf(std::current_exception());
+            if (dataError && dataError->kind() == data::ErrorKind::MemberDimensionNotFound &&
+                !dataError->choices().empty() && m_requested) {
+                askForMemberDimension(*dataError);
+                return;
+            }
             const QString message = messageOf(std::current_exception());
             setIdle(tr("Loading failed: %1").arg(message));
             if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
@@ -283,6 +313,33 @@ void MainWindow::onLoaderFinished() {
     }
     setIdle(tr("Loading cancelled"));
     if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+}
+
+void MainWindow::askForMemberDimension(const data::Error& error) {
+    // Many files hold one run over time or months: let the user say which dimension stands in
+    // for members instead of failing. Not modal, so scripted sessions can answer it too.
+    QStringList choices;
+    for (const auto& c : error.choices()) choices << QString::fromStdString(c);
+    const QString file =
+        QFileInfo(QString::fromStdString(m_requested->paths.front())).fileName();
+    setIdle(tr("%1 has no member dimension: choose one").arg(file));
+    auto* dialog = new QInputDialog(this);
+    dialog->setObjectName(QStringLiteral("memberDimensionDialog"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->setWindowTitle(tr("Which dimension holds the members?"));
+    dialog->setLabelText(
+        tr("ensil found no ensemble member dimension in %1.\n\nIf one of its other dimensions "
+           "(such as forecast times or months) stands in for members, choose it:")
+            .arg(file));
+    dialog->setComboBoxItems(choices);
+    dialog->setComboBoxEditable(false);
+    const data::DataSelection retry = *m_requested;
+    connect(dialog, &QInputDialog::textValueSelected, this, [this, retry](const QString& dim) {
+        data::DataSelection chosen = retry;
+        chosen.memberDimension = dim.toStdString();
+        openFiles(chosen);
+    });
+    dialog->open();
 }
 
 void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {

@@ -8,11 +8,13 @@
 #include <QMainWindow>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stop_token>
 
 #include "app/ensemble_overview.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
+#include "data/error.h"
 
 class QProgressBar;
 class QToolButton;
@@ -64,6 +66,7 @@ private:
     void createDocks();
     void createStatusBar();
     void onLoaderFinished();
+    void askForMemberDimension(const data::Error& error);
     void waitForLoader();
     void showOverview(std::unique_ptr<EnsembleOverview> overview);
     void setBusy(const QString& what);
@@ -78,6 +81,7 @@ private:
     QFutureWatcher<EnsembleOverview> m_loader;
     std::shared_ptr<std::stop_source> m_loaderStop;
     std::unique_ptr<EnsembleOverview> m_overview;
+    std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
 };
 
 }  // namespace ensil::app

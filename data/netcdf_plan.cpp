@@ -173,16 +173,26 @@ std::string candidatesText(const std::vector<VariableInfo>& variables) {
     return text;
 }
 
+// Dimensions of the plan's variable that are not spatial and hold more than one value.
+std::vector<std::string> memberDimensionCandidates(const NetcdfFile& file, const NcPlan& plan) {
+    std::vector<std::string> candidates;
+    const auto& sd = plan.components.front().spatialDims;
+    for (int id : plan.components.front().variable->dimIds) {
+        if (file.dimension(id).size > 1 && std::find(sd.begin(), sd.end(), id) == sd.end()) {
+            candidates.push_back(file.dimension(id).name);
+        }
+    }
+    return candidates;
+}
+
 std::string suggestMemberDimension(const NetcdfFile& file, const NcPlan& plan) {
-    std::string dims, suggestion;
+    std::string dims;
     for (int id : plan.components.front().variable->dimIds) {
         const NcDimension& d = file.dimension(id);
         dims += (dims.empty() ? "" : ", ") + d.name + " (" + std::to_string(d.size) + ")";
-        const auto& sd = plan.components.front().spatialDims;
-        if (suggestion.empty() && d.size > 1 && std::find(sd.begin(), sd.end(), id) == sd.end()) {
-            suggestion = d.name;
-        }
     }
+    const auto candidates = memberDimensionCandidates(file, plan);
+    const std::string suggestion = candidates.empty() ? "" : candidates.front();
     std::string text = "found no member dimension for '" + plan.name + "' in '" + file.path() +
                        "'; its dimensions are " + dims + ". ";
     if (!suggestion.empty()) {
@@ -245,9 +255,14 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection,
         }
     }
     if (chosen == nullptr && !selection.variable.empty()) {
-        throw Error(ErrorKind::VariableNotFound, "'" + file.path() + "' has no variable '" +
-                                                     selection.variable + "'; " +
-                                                     candidatesText(variables));
+        std::vector<std::string> usable;
+        for (const VariableInfo& v : variables) {
+            if (v.usable) usable.push_back(v.name);
+        }
+        throw Error(ErrorKind::VariableNotFound,
+                    "'" + file.path() + "' has no variable '" + selection.variable + "'; " +
+                        candidatesText(variables),
+                    usable);
     }
     if (chosen == nullptr || !chosen->usable) {
         std::string reasons;
@@ -308,7 +323,8 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection,
         }
     }
     if (requireMemberDim && plan.memberDim < 0) {
-        throw Error(ErrorKind::MemberDimensionNotFound, suggestMemberDimension(file, plan));
+        throw Error(ErrorKind::MemberDimensionNotFound, suggestMemberDimension(file, plan),
+                    memberDimensionCandidates(file, plan));
     }
     plan.grid = makeGrid(file, plan);
     return plan;

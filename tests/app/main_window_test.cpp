@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <QElapsedTimer>
+#include <QInputDialog>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -89,4 +90,27 @@ TEST(MainWindow, AFailedOpenExplainsAndKeepsWhatIsShown) {
         << failed.front().front().toString().toStdString();
     ASSERT_NE(window.overview(), nullptr);
     EXPECT_EQ(window.overview()->ensemble->memberCount(), 5u) << "the demo stays on screen";
+}
+
+TEST(MainWindow, AsksWhichDimensionHoldsTheMembersWhenTheFileDoesNotSay) {
+    app::MainWindow window;
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/contour.cdf"};
+    selection.variable = "T";
+    window.openFiles(selection);
+    QInputDialog* dialog = nullptr;
+    QElapsedTimer timer;
+    timer.start();
+    while (dialog == nullptr && timer.elapsed() < 30000) {
+        QTest::qWait(20);
+        dialog = window.findChild<QInputDialog*>(QStringLiteral("memberDimensionDialog"));
+    }
+    ASSERT_NE(dialog, nullptr) << "no question about the member dimension";
+    EXPECT_EQ(dialog->comboBoxItems(), QStringList{QStringLiteral("frtime")});
+    dialog->setTextValue(QStringLiteral("frtime"));
+    dialog->accept();
+    ASSERT_TRUE(loaded.wait(30000));
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 7u);
+    EXPECT_EQ(window.overview()->ensemble->memberDimension, "frtime");
 }

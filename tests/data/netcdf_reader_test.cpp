@@ -264,6 +264,11 @@ TEST(NetcdfReader, NoMemberDimensionListsTheDimensionsAndSuggestsOne) {
     EXPECT_EQ(errorKindOf({.paths = {path}}, &message), ErrorKind::MemberDimensionNotFound);
     EXPECT_NE(message.find("frtime (3)"), std::string::npos) << message;
     EXPECT_NE(message.find("--member-dim frtime"), std::string::npos) << message;
+    try {
+        (void)data::describeEnsemble({.paths = {path}});
+    } catch (const data::Error& e) {
+        EXPECT_EQ(e.choices(), std::vector<std::string>{"frtime"}) << "level, lat, lon are spatial";
+    }
 
     const data::Ensemble e = data::openEnsemble({.paths = {path}, .memberDimension = "frtime"});
     ASSERT_EQ(e.memberCount(), 3u);
