@@ -323,6 +323,7 @@ void MainWindow::askForMemberDimension(const data::Error& error) {
     const QString file =
         QFileInfo(QString::fromStdString(m_requested->paths.front())).fileName();
     setIdle(tr("%1 has no member dimension: choose one").arg(file));
+    if (!m_overview) m_info->showMessage(tr("Waiting for the choice of member dimension."));
     auto* dialog = new QInputDialog(this);
     dialog->setObjectName(QStringLiteral("memberDimensionDialog"));
     dialog->setAttribute(Qt::WA_DeleteOnClose);

@@ -10,6 +10,8 @@ EnsembleInfoPanel::EnsembleInfoPanel(QWidget* parent)
     : QWidget(parent), m_message(new QLabel(this)), m_form(new QFormLayout) {
     auto* layout = new QVBoxLayout(this);
     m_message->setWordWrap(true);
+    // Wide enough for axis descriptions without wrapping every line, whatever is shown now.
+    setMinimumWidth(280);
     layout->addWidget(m_message);
     layout->addLayout(m_form);
     layout->addStretch(1);
