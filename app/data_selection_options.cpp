@@ -25,8 +25,8 @@ void DataSelectionOptions::addTo(QCommandLineParser& parser) const {
         QStringLiteral("PATH..."));
 }
 
-std::optional<data::DataSelection> DataSelectionOptions::selection(
-    const QCommandLineParser& parser, QString& error) const {
+std::optional<data::DataSelection> DataSelectionOptions::selection(const QCommandLineParser& parser,
+                                                                   QString& error) const {
     data::DataSelection s;
     for (const QString& path : parser.positionalArguments()) s.paths.push_back(path.toStdString());
     s.variable = parser.value(m_variable).toStdString();

@@ -22,7 +22,6 @@ struct EnsembleOverview {
 
 // Throws prep::Cancelled, data::Error.
 EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
-                                       const std::stop_token& stop,
-                                       const prep::Progress& progress);
+                                       const std::stop_token& stop, const prep::Progress& progress);
 
 }  // namespace ensil::app

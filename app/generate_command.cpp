@@ -35,10 +35,10 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
                        "and variable 'wind_speed' in m s-1."));
     parser.addHelpOption();
     const data::DemoEnsembleParams defaults;
-    const QCommandLineOption members(QStringLiteral("members"),
-                                     QStringLiteral("Number of members (default %1).")
-                                         .arg(defaults.members),
-                                     QStringLiteral("N"), QString::number(defaults.members));
+    const QCommandLineOption members(
+        QStringLiteral("members"),
+        QStringLiteral("Number of members (default %1).").arg(defaults.members),
+        QStringLiteral("N"), QString::number(defaults.members));
     const QCommandLineOption grid(
         QStringLiteral("grid"),
         QStringLiteral("Grid size as NXxNYxNZ: longitude x latitude x levels (default %1x%2x%3).")

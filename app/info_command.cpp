@@ -18,8 +18,9 @@ QString qs(const std::string& s) { return QString::fromStdString(s); }
 QString dimensionsText(const data::VariableInfo& v) {
     QStringList dims;
     for (std::size_t i = 0; i < v.dimensions.size(); ++i) {
-        dims << (i < v.shape.size() ? QStringLiteral("%1=%2").arg(qs(v.dimensions[i])).arg(v.shape[i])
-                                    : qs(v.dimensions[i]));
+        dims << (i < v.shape.size()
+                     ? QStringLiteral("%1=%2").arg(qs(v.dimensions[i])).arg(v.shape[i])
+                     : qs(v.dimensions[i]));
     }
     return QLatin1Char('(') + dims.join(QStringLiteral(", ")) + QLatin1Char(')');
 }
@@ -36,9 +37,9 @@ QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatisti
     QJsonArray names;
     for (const auto& n : d.memberNames) names.append(qs(n));
     o[QStringLiteral("member_names")] = names;
-    o[QStringLiteral("grid")] = QJsonArray{static_cast<qint64>(d.grid.nx()),
-                                           static_cast<qint64>(d.grid.ny()),
-                                           static_cast<qint64>(d.grid.nz())};
+    o[QStringLiteral("grid")] =
+        QJsonArray{static_cast<qint64>(d.grid.nx()), static_cast<qint64>(d.grid.ny()),
+                   static_cast<qint64>(d.grid.nz())};
     QJsonArray axes;
     for (int a = 0; a < 3; ++a) {
         const data::Axis& axis = d.grid.axis(a);
@@ -71,17 +72,18 @@ QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatisti
     return o;
 }
 
-void printText(QTextStream& out, const data::DataSelection& sel,
-               const data::EnsembleDescription& d, const prep::FieldStatistics& s) {
-    out << "File:       " << qs(sel.paths.size() == 1 ? sel.paths.front()
-                                                      : std::to_string(sel.paths.size()) + " files")
+void printText(QTextStream& out, const data::DataSelection& sel, const data::EnsembleDescription& d,
+               const prep::FieldStatistics& s) {
+    out << "File:       "
+        << qs(sel.paths.size() == 1 ? sel.paths.front()
+                                    : std::to_string(sel.paths.size()) + " files")
         << " (" << qs(d.format) << ")\n";
     out << "Variables usable as ensembles:\n";
     for (const auto& v : d.variables) {
         if (!v.usable) continue;
         out << "  " << qs(v.name).leftJustified(12) << ' ' << dimensionsText(v) << "  "
-            << qs(v.longName) << (v.units.empty() ? QString() : QStringLiteral(" [%1]").arg(qs(v.units)))
-            << "\n";
+            << qs(v.longName)
+            << (v.units.empty() ? QString() : QStringLiteral(" [%1]").arg(qs(v.units))) << "\n";
     }
     bool headed = false;
     for (const auto& v : d.variables) {
@@ -101,17 +103,20 @@ void printText(QTextStream& out, const data::DataSelection& sel,
     }
     out << "\n";
     if (!d.memberNames.empty()) {
-        out << "            " << qs(d.memberNames.front()) << " ... " << qs(d.memberNames.back()) << "\n";
+        out << "            " << qs(d.memberNames.front()) << " ... " << qs(d.memberNames.back())
+            << "\n";
     }
     for (const auto& f : d.fixedDimensions) out << "Fixed:      " << qs(f) << "\n";
     out << "Grid:       " << d.grid.nx() << " x " << d.grid.ny() << " x " << d.grid.nz() << "\n";
-    for (int a = 0; a < 3; ++a) out << "  " << "xyz"[a] << "  " << describeAxis(d.grid.axis(a)) << "\n";
+    for (int a = 0; a < 3; ++a)
+        out << "  "
+            << "xyz"[a] << "  " << describeAxis(d.grid.axis(a)) << "\n";
     out << "Values:     " << s.minimum << " .. " << s.maximum << " " << qs(d.units) << ", mean "
         << s.mean << "\n";
     out << "Missing:    " << s.missingCount << " of " << (s.missingCount + s.validCount)
         << " values\n";
-    out << "Memory:     " << QString::number(static_cast<double>(d.bytes()) / (1024.0 * 1024.0), 'f', 1)
-        << " MiB\n";
+    out << "Memory:     "
+        << QString::number(static_cast<double>(d.bytes()) / (1024.0 * 1024.0), 'f', 1) << " MiB\n";
 }
 
 }  // namespace
@@ -133,7 +138,8 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
         return 2;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText().replace(QStringLiteral("[options]"), QStringLiteral("info [options]"));
+        out << parser.helpText().replace(QStringLiteral("[options]"),
+                                         QStringLiteral("info [options]"));
         return 0;
     }
     QString problem;

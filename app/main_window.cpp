@@ -217,8 +217,8 @@ void MainWindow::startLoading(const QString& what, EnsembleSource source) {
     m_loaderStop = stop;
     setBusy(what);
     if (!m_overview) m_info->showMessage(tr("Loading..."));
-    m_loader.setFuture(QtConcurrent::run(
-        [source = std::move(source), stop](QPromise<EnsembleOverview>& promise) {
+    m_loader.setFuture(
+        QtConcurrent::run([source = std::move(source), stop](QPromise<EnsembleOverview>& promise) {
             promise.setProgressRange(0, kProgressSteps);
             const auto progress = [&promise](double f) {
                 promise.setProgressValue(static_cast<int>(f * kProgressSteps));
@@ -265,10 +265,10 @@ void MainWindow::rebuildRecentMenu() {
     const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
     for (const QString& key : recent) {
         const QStringList paths = key.split(QLatin1Char('\n'));
-        const QString label = paths.size() == 1
-                                  ? paths.front()
-                                  : tr("%1 files in %2").arg(paths.size()).arg(
-                                        QFileInfo(paths.front()).absolutePath());
+        const QString label = paths.size() == 1 ? paths.front()
+                                                : tr("%1 files in %2")
+                                                      .arg(paths.size())
+                                                      .arg(QFileInfo(paths.front()).absolutePath());
         m_recentMenu->addAction(label, this, [this, paths] {
             data::DataSelection selection;
             for (const QString& p : paths) selection.paths.push_back(p.toStdString());
@@ -320,8 +320,7 @@ void MainWindow::askForMemberDimension(const data::Error& error) {
     // for members instead of failing. Not modal, so scripted sessions can answer it too.
     QStringList choices;
     for (const auto& c : error.choices()) choices << QString::fromStdString(c);
-    const QString file =
-        QFileInfo(QString::fromStdString(m_requested->paths.front())).fileName();
+    const QString file = QFileInfo(QString::fromStdString(m_requested->paths.front())).fileName();
     setIdle(tr("%1 has no member dimension: choose one").arg(file));
     if (!m_overview) m_info->showMessage(tr("Waiting for the choice of member dimension."));
     auto* dialog = new QInputDialog(this);

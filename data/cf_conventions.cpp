@@ -23,19 +23,30 @@ bool oneOf(const std::string& value, const std::array<std::string_view, N>& opti
 }
 
 constexpr std::array<std::string_view, 10> kXNames{
-    "lon", "longitude", "x", "west_east", "west_east_stag", "nlon", "xc", "rlon",
-    "grid_longitude", "lon_0"};
+    "lon",  "longitude", "x",    "west_east",      "west_east_stag",
+    "nlon", "xc",        "rlon", "grid_longitude", "lon_0"};
 constexpr std::array<std::string_view, 10> kYNames{
-    "lat", "latitude", "y", "south_north", "south_north_stag", "nlat", "yc", "rlat",
-    "grid_latitude", "lat_0"};
-constexpr std::array<std::string_view, 15> kZNames{
-    "level", "plev", "lev", "z", "bottom_top", "bottom_top_stag", "model_level_number",
-    "height", "altitude", "depth", "pressure", "isobaric", "levelist", "pressure_level",
-    "isobaricinhpa"};
+    "lat",  "latitude", "y",    "south_north",   "south_north_stag",
+    "nlat", "yc",       "rlat", "grid_latitude", "lat_0"};
+constexpr std::array<std::string_view, 15> kZNames{"level",
+                                                   "plev",
+                                                   "lev",
+                                                   "z",
+                                                   "bottom_top",
+                                                   "bottom_top_stag",
+                                                   "model_level_number",
+                                                   "height",
+                                                   "altitude",
+                                                   "depth",
+                                                   "pressure",
+                                                   "isobaric",
+                                                   "levelist",
+                                                   "pressure_level",
+                                                   "isobaricinhpa"};
 constexpr std::array<std::string_view, 8> kTimeNames{
     "time", "t", "frtime", "month", "valid_time", "step", "times", "forecast_time"};
-constexpr std::array<std::string_view, 7> kMemberNames{
-    "number", "member", "members", "realization", "ens", "ens0", "ensemble"};
+constexpr std::array<std::string_view, 7> kMemberNames{"number", "member", "members", "realization",
+                                                       "ens",    "ens0",   "ensemble"};
 
 bool isPressure(const std::string& units) {
     const std::string u = lower(units);
@@ -58,7 +69,8 @@ std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVaria
         standard == "projection_y_coordinate") {
         return AxisRole::Y;
     }
-    if (standard == "time" || standard == "forecast_period" || standard == "forecast_reference_time") {
+    if (standard == "time" || standard == "forecast_period" ||
+        standard == "forecast_reference_time") {
         return AxisRole::Time;
     }
     if (standard == "air_pressure" || standard == "altitude" || standard == "height" ||
@@ -98,8 +110,8 @@ MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariabl
         if (const NcVariable* coord = file.coordinateVariable(dim)) {
             const std::string standard = file.text(coord->id, "standard_name");
             if (standard == "realization" || standard == "ensemble_member_id") {
-                return {&dim, "coordinate variable '" + dim.name + "' has standard_name = " +
-                                  standard};
+                return {&dim,
+                        "coordinate variable '" + dim.name + "' has standard_name = " + standard};
             }
         }
     }
@@ -133,7 +145,7 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
     std::smatch m;
     if (!std::regex_match(units, m, pattern) || !std::isfinite(value)) return std::nullopt;
     const std::string unit = lower(m[1].str());
-    const double secondsPerUnit = unit.starts_with("second") ? 1.0
+    const double secondsPerUnit = unit.starts_with("second")   ? 1.0
                                   : unit.starts_with("minute") ? 60.0
                                   : unit.starts_with("hour")   ? 3600.0
                                                                : 86400.0;

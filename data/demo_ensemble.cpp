@@ -32,16 +32,16 @@ double smoothstep(double t) {
 
 // One jet stream: a tube of fast wind around a meandering core line.
 struct Jet {
-    double coreLat = 48.0;        // degrees north
-    double meander = 5.0;         // meander amplitude, degrees
-    double wavelength = 70.0;     // meander wavelength, degrees of longitude
-    double phase = 0.0;           // degrees of longitude
-    double halfWidth = 6.0;       // degrees of latitude
-    double peak = 55.0;           // m/s at the core
-    double coreHeightKm = 9.5;    // about 270 hPa
+    double coreLat = 48.0;      // degrees north
+    double meander = 5.0;       // meander amplitude, degrees
+    double wavelength = 70.0;   // meander wavelength, degrees of longitude
+    double phase = 0.0;         // degrees of longitude
+    double halfWidth = 6.0;     // degrees of latitude
+    double peak = 55.0;         // m/s at the core
+    double coreHeightKm = 9.5;  // about 270 hPa
     double depthKm = 3.0;
     double lonStart = -1e9, lonEnd = 1e9, lonRamp = 10.0;  // where along longitude it exists
-    double eastwardFade = 0.0;    // relative change of peak from west to east edge
+    double eastwardFade = 0.0;  // relative change of peak from west to east edge
 
     [[nodiscard]] double coreLatAt(double lon) const {
         return coreLat + meander * std::sin(2.0 * std::numbers::pi * (lon - phase) / wavelength);
@@ -58,8 +58,13 @@ struct Jet {
 };
 
 std::vector<Jet> regimeJets(DemoRegime regime) {
-    Jet subtropical{.coreLat = 30.0, .meander = 2.0, .wavelength = 90.0, .halfWidth = 4.0,
-                    .peak = 42.0, .coreHeightKm = 12.0, .depthKm = 2.5};
+    Jet subtropical{.coreLat = 30.0,
+                    .meander = 2.0,
+                    .wavelength = 90.0,
+                    .halfWidth = 4.0,
+                    .peak = 42.0,
+                    .coreHeightKm = 12.0,
+                    .depthKm = 2.5};
     switch (regime) {
         case DemoRegime::Zonal:
             return {subtropical, Jet{}};
@@ -71,10 +76,14 @@ std::vector<Jet> regimeJets(DemoRegime regime) {
             return {subtropical,
                     Jet{.coreLat = 56.0, .meander = 7.0, .peak = 62.0, .eastwardFade = -0.65}};
         case DemoRegime::Outlier:
-            return {subtropical,
-                    Jet{.meander = 12.0, .wavelength = 45.0, .peak = 70.0},
-                    Jet{.coreLat = 34.0, .meander = 1.0, .halfWidth = 4.0, .peak = 78.0,
-                        .coreHeightKm = 10.5, .lonStart = -40.0, .lonEnd = 10.0}};
+            return {subtropical, Jet{.meander = 12.0, .wavelength = 45.0, .peak = 70.0},
+                    Jet{.coreLat = 34.0,
+                        .meander = 1.0,
+                        .halfWidth = 4.0,
+                        .peak = 78.0,
+                        .coreHeightKm = 10.5,
+                        .lonStart = -40.0,
+                        .lonEnd = 10.0}};
     }
     return {};
 }
@@ -102,7 +111,7 @@ std::vector<DemoRegime> assignRegimes(std::size_t members, std::mt19937_64& rng)
     for (std::size_t m = 0; m < members; ++m) {
         // 45 % zonal, 35 % split, 20 % north-fading: unequal clusters, as in real ensembles.
         const double r = uniform(rng);
-        regimes[m] = r < 0.45 ? DemoRegime::Zonal
+        regimes[m] = r < 0.45   ? DemoRegime::Zonal
                      : r < 0.80 ? DemoRegime::Split
                                 : DemoRegime::NorthFading;
     }

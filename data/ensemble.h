@@ -14,16 +14,16 @@
 namespace ensil::data {
 
 struct Member {
-    std::string name;           // e.g. "member 7", "2012-10-17T00"
-    FieldValues values;         // grid.pointCount() values, NaN where missing
+    std::string name;    // e.g. "member 7", "2012-10-17T00"
+    FieldValues values;  // grid.pointCount() values, NaN where missing
 };
 
 struct Ensemble {
-    std::string variable;    // variable name, e.g. "wind_speed"
-    std::string longName;    // CF long_name, may be empty
-    std::string units;       // e.g. "m s-1"
+    std::string variable;         // variable name, e.g. "wind_speed"
+    std::string longName;         // CF long_name, may be empty
+    std::string units;            // e.g. "m s-1"
     std::string memberDimension;  // name of the dimension members came from, e.g. "number"
-    std::string source;      // where it came from (file path or "demo"), for the UI
+    std::string source;           // where it came from (file path or "demo"), for the UI
     Grid grid;
     std::vector<Member> members;
 

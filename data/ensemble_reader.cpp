@@ -42,9 +42,9 @@ std::size_t availableMemory() {
     }
     const long pages = sysconf(_SC_AVPHYS_PAGES);
     const long pageSize = sysconf(_SC_PAGESIZE);
-    return pages > 0 && pageSize > 0 ? static_cast<std::size_t>(pages) *
-                                           static_cast<std::size_t>(pageSize)
-                                     : 0;
+    return pages > 0 && pageSize > 0
+               ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
+               : 0;
 }
 
 }  // namespace
@@ -55,7 +55,8 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
     }
     const std::string& path = selection.paths.front();
     for (const std::string& p : selection.paths) {
-        if (!std::filesystem::exists(p)) throw Error(ErrorKind::FileNotFound, "no such file: '" + p + "'");
+        if (!std::filesystem::exists(p))
+            throw Error(ErrorKind::FileNotFound, "no such file: '" + p + "'");
         if (std::filesystem::is_directory(p)) {
             throw Error(ErrorKind::InvalidArgument,
                         "'" + p + "' is a folder; name the files in it (e.g. '" + p + "/*.nc')");
@@ -65,18 +66,21 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
     std::array<char, 4> magic{};
     if (in.read(magic.data(), magic.size()) && std::string(magic.data(), 4) == "GRIB") {
         throw Error(ErrorKind::UnsupportedFormat,
-                    "'" + path + "' is a GRIB file, which ensil does not read yet; convert it to "
-                    "NetCDF first, e.g. with 'cdo -f nc4 copy " + path + " out.nc' or "
-                    "'grib_to_netcdf -o out.nc " + path + "'");
+                    "'" + path +
+                        "' is a GRIB file, which ensil does not read yet; convert it to "
+                        "NetCDF first, e.g. with 'cdo -f nc4 copy " +
+                        path +
+                        " out.nc' or "
+                        "'grib_to_netcdf -o out.nc " +
+                        path + "'");
     }
     std::string names;
     for (const auto& reader : readers()) {
         if (reader->recognizes(path)) return *reader;
         names += (names.empty() ? "" : ", ") + reader->name();
     }
-    throw Error(ErrorKind::UnsupportedFormat,
-                "'" + path + "' is not in a format ensil reads (" + names +
-                    "), or it is truncated");
+    throw Error(ErrorKind::UnsupportedFormat, "'" + path + "' is not in a format ensil reads (" +
+                                                  names + "), or it is truncated");
 }
 
 EnsembleDescription describeEnsemble(const DataSelection& selection) {
@@ -98,11 +102,11 @@ Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& sto
                       const Progress& progress) {
     const EnsembleReader& reader = readerFor(selection);
     const EnsembleDescription description = reader.describe(selection);
-    checkMemoryFor(description.bytes(),
-                   "'" + description.variable + "' (" + std::to_string(description.members) +
-                       " members of " + std::to_string(description.grid.nx()) + " x " +
-                       std::to_string(description.grid.ny()) + " x " +
-                       std::to_string(description.grid.nz()) + " points)");
+    checkMemoryFor(description.bytes(), "'" + description.variable + "' (" +
+                                            std::to_string(description.members) + " members of " +
+                                            std::to_string(description.grid.nx()) + " x " +
+                                            std::to_string(description.grid.ny()) + " x " +
+                                            std::to_string(description.grid.nz()) + " points)");
     Ensemble ensemble = reader.read(selection, stop, progress);
     bool anyValid = false;
     for (const Member& m : ensemble.members) {
@@ -115,9 +119,10 @@ Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& sto
         if (anyValid) break;
     }
     if (!anyValid) {
-        throw Error(ErrorKind::AllValuesMissing,
-                    "every value of '" + ensemble.variable + "' in " + ensemble.source +
-                        " is missing (fill value or outside valid_range): there is nothing to draw");
+        throw Error(
+            ErrorKind::AllValuesMissing,
+            "every value of '" + ensemble.variable + "' in " + ensemble.source +
+                " is missing (fill value or outside valid_range): there is nothing to draw");
     }
     return ensemble;
 }

@@ -26,7 +26,7 @@ struct DataSelection {
     std::vector<std::string> paths{};  // one file with members, or one file per member
     std::string variable{};            // variable / dataset / point-data array name
     std::string memberDimension{};     // override of the detected member dimension (NetCDF)
-    std::size_t timeIndex = 0;       // index for every other non-spatial dimension
+    std::size_t timeIndex = 0;         // index for every other non-spatial dimension
 };
 
 // A variable the file holds, and whether ensil can make an ensemble of it.
@@ -34,7 +34,8 @@ struct VariableInfo {
     std::string name;
     std::string longName;
     std::string units;
-    std::vector<std::string> dimensions;  // as stored, e.g. {"number", "time", "plev", "lat", "lon"}
+    std::vector<std::string>
+        dimensions;  // as stored, e.g. {"number", "time", "plev", "lat", "lon"}
     std::vector<std::size_t> shape;
     bool usable = false;
     bool derived = false;      // computed by ensil (wind_speed from u and v)
@@ -49,7 +50,7 @@ struct EnsembleDescription {
     std::string variable;  // the chosen one
     std::string longName;
     std::string units;
-    std::string memberDimension;  // empty for one file per member
+    std::string memberDimension;        // empty for one file per member
     std::string memberDimensionReason;  // how it was found, e.g. "standard_name = realization"
     std::size_t members = 0;
     std::vector<std::string> memberNames;
@@ -68,8 +69,7 @@ public:
     // Resolves the selection from the headers. Throws Error.
     [[nodiscard]] virtual EnsembleDescription describe(const DataSelection& selection) const = 0;
     // Reads the values. Throws Error, Cancelled. Values are float, NaN where missing.
-    [[nodiscard]] virtual Ensemble read(const DataSelection& selection,
-                                        const std::stop_token& stop,
+    [[nodiscard]] virtual Ensemble read(const DataSelection& selection, const std::stop_token& stop,
                                         const Progress& progress) const = 0;
 };
 

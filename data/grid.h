@@ -12,11 +12,11 @@
 namespace ensil::data {
 
 struct Axis {
-    std::string name;           // e.g. "lon", "plev"
-    std::string units;          // e.g. "degrees_east", "hPa"
-    std::string standardName;   // CF standard_name, may be empty
-    std::vector<double> values; // strictly increasing or strictly decreasing
-    bool positiveUp = true;     // false for pressure-like axes (CF positive = "down")
+    std::string name;            // e.g. "lon", "plev"
+    std::string units;           // e.g. "degrees_east", "hPa"
+    std::string standardName;    // CF standard_name, may be empty
+    std::vector<double> values;  // strictly increasing or strictly decreasing
+    bool positiveUp = true;      // false for pressure-like axes (CF positive = "down")
 
     [[nodiscard]] std::size_t size() const { return values.size(); }
     [[nodiscard]] double front() const { return values.front(); }
@@ -28,8 +28,7 @@ struct Axis {
 };
 
 // Builds an axis of n evenly spaced values from first to last (inclusive).
-Axis makeUniformAxis(std::string name, std::string units, double first, double last,
-                     std::size_t n);
+Axis makeUniformAxis(std::string name, std::string units, double first, double last, std::size_t n);
 
 class Grid {
 public:

@@ -25,8 +25,8 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
     }
     if (status != NC_NOERR) {
         m_id = -1;
-        throw Error(ErrorKind::CorruptFile, "cannot open '" + m_path + "' as NetCDF: " +
-                                                nc_strerror(status) +
+        throw Error(ErrorKind::CorruptFile, "cannot open '" + m_path +
+                                                "' as NetCDF: " + nc_strerror(status) +
                                                 "; the file may be truncated or damaged");
     }
     int ndims = 0, nvars = 0;
@@ -45,8 +45,7 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
         var.id = v;
         int type = 0, nd = 0;
         std::array<int, NC_MAX_VAR_DIMS> ids{};
-        check(nc_inq_var(m_id, v, name.data(), &type, &nd, ids.data(), nullptr),
-              "read a variable");
+        check(nc_inq_var(m_id, v, name.data(), &type, &nd, ids.data(), nullptr), "read a variable");
         var.name = name.data();
         var.type = type;
         var.dimIds.assign(ids.begin(), ids.begin() + nd);
@@ -88,11 +87,16 @@ std::string NetcdfFile::formatName() const {
     int format = 0;
     nc_inq_format(m_id, &format);
     switch (format) {
-        case NC_FORMAT_NETCDF4: return "NetCDF-4";
-        case NC_FORMAT_NETCDF4_CLASSIC: return "NetCDF-4 classic model";
-        case NC_FORMAT_64BIT_OFFSET: return "NetCDF 64-bit offset";
-        case NC_FORMAT_CDF5: return "NetCDF CDF-5";
-        default: return "NetCDF classic";
+        case NC_FORMAT_NETCDF4:
+            return "NetCDF-4";
+        case NC_FORMAT_NETCDF4_CLASSIC:
+            return "NetCDF-4 classic model";
+        case NC_FORMAT_64BIT_OFFSET:
+            return "NetCDF 64-bit offset";
+        case NC_FORMAT_CDF5:
+            return "NetCDF CDF-5";
+        default:
+            return "NetCDF classic";
     }
 }
 

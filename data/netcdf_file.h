@@ -24,8 +24,8 @@ struct NcDimension {
 struct NcVariable {
     int id = -1;
     std::string name;
-    int type = 0;               // nc_type
-    std::vector<int> dimIds;    // in storage order
+    int type = 0;             // nc_type
+    std::vector<int> dimIds;  // in storage order
 };
 
 class NetcdfFile {

@@ -32,8 +32,8 @@ Analysis analyze(const NetcdfFile& file, const NcVariable& var, const std::strin
     }
     if (!memberDim.empty()) {
         const NcDimension* d = file.findDimension(memberDim);
-        if (d == nullptr || std::find(var.dimIds.begin(), var.dimIds.end(), d->id) ==
-                                var.dimIds.end()) {
+        if (d == nullptr ||
+            std::find(var.dimIds.begin(), var.dimIds.end(), d->id) == var.dimIds.end()) {
             a.whyNot = "has dimensions " + dims + ", none of them named '" + memberDim + "'";
             return a;
         }
@@ -51,7 +51,10 @@ Analysis analyze(const NetcdfFile& file, const NcVariable& var, const std::strin
     for (int id : var.dimIds) {
         if (id == a.memberDim) continue;
         const AxisRole role = classifyDimension(file, file.dimension(id));
-        const int slot = role == AxisRole::X ? 0 : role == AxisRole::Y ? 1 : role == AxisRole::Z ? 2 : -1;
+        const int slot = role == AxisRole::X   ? 0
+                         : role == AxisRole::Y ? 1
+                         : role == AxisRole::Z ? 2
+                                               : -1;
         if (slot >= 0 && c.spatialDims[static_cast<std::size_t>(slot)] < 0) {
             c.spatialDims[static_cast<std::size_t>(slot)] = id;
             c.sizes[static_cast<std::size_t>(slot)] = file.dimension(id).size;
@@ -156,16 +159,16 @@ Grid makeGrid(const NetcdfFile& file, const NcPlan& plan) {
     try {
         return Grid(std::move(axes[0]), std::move(axes[1]), std::move(axes[2]));
     } catch (const Error& e) {
-        throw Error(ErrorKind::CorruptFile, "'" + file.path() + "', variable '" + plan.name +
-                                                "': " + e.what());
+        throw Error(ErrorKind::CorruptFile,
+                    "'" + file.path() + "', variable '" + plan.name + "': " + e.what());
     }
 }
 
 std::string candidatesText(const std::vector<VariableInfo>& variables) {
     std::string usable, others;
     for (const VariableInfo& v : variables) {
-        (v.usable ? usable : others) += (v.usable ? (usable.empty() ? "" : ", ")
-                                                  : (others.empty() ? "" : ", ")) + v.name;
+        (v.usable ? usable : others) +=
+            (v.usable ? (usable.empty() ? "" : ", ") : (others.empty() ? "" : ", ")) + v.name;
     }
     std::string text = usable.empty() ? "no variable has three spatial dimensions"
                                       : "variables usable as ensembles: " + usable;
@@ -235,7 +238,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
             info.derived = true;
             for (int id : uv->first->dimIds) info.dimensions.push_back(file.dimension(id).name);
             info.usable = au.component && av.component;
-            info.whyNotUsable = !au.component ? uv->first->name + " " + au.whyNot
+            info.whyNotUsable = !au.component   ? uv->first->name + " " + au.whyNot
                                 : !av.component ? uv->second->name + " " + av.whyNot
                                                 : "";
             list.push_back(std::move(info));
@@ -244,8 +247,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
     return list;
 }
 
-NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection,
-                    bool requireMemberDim) {
+NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool requireMemberDim) {
     const std::vector<VariableInfo> variables = listVariables(file, selection.memberDimension);
     const VariableInfo* chosen = nullptr;
     for (const VariableInfo& v : variables) {
@@ -305,9 +307,9 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection,
         const std::size_t a = plan.components.front().sizes[s];
         const std::size_t b = plan.components.back().sizes[s];
         if (std::max(a, b) - std::min(a, b) > 1) {
-            throw Error(ErrorKind::GridMismatch,
-                        "'" + file.path() + "': " + parts.front()->name + " and " +
-                            parts.back()->name + " lie on different grids");
+            throw Error(ErrorKind::GridMismatch, "'" + file.path() + "': " + parts.front()->name +
+                                                     " and " + parts.back()->name +
+                                                     " lie on different grids");
         }
     }
     for (int id : plan.components.front().variable->dimIds) {
@@ -336,8 +338,8 @@ std::vector<std::string> describeFixedDimensions(const NetcdfFile& file, const N
     for (int id : plan.components.front().variable->dimIds) {
         if (id == plan.memberDim || std::find(sd.begin(), sd.end(), id) != sd.end()) continue;
         const NcDimension& d = file.dimension(id);
-        std::string line = d.name + " = " + std::to_string(plan.timeIndex) + " of " +
-                           std::to_string(d.size);
+        std::string line =
+            d.name + " = " + std::to_string(plan.timeIndex) + " of " + std::to_string(d.size);
         if (const NcVariable* coord = file.coordinateVariable(d)) {
             const double value = file.readDoubles(*coord).at(plan.timeIndex);
             const auto date = formatCfTime(value, file.text(coord->id, "units"),

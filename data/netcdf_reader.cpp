@@ -94,11 +94,11 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
         std::isinf(u.validMax)) {
         // The common case: floats with at most one fill value. A tight loop the compiler
         // vectorises; NaN never equals the fill, so it stays NaN.
-        file.check(canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(),
-                                                 out.data())
-                             : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
-                                                 stride.data(), imap.data(), out.data()),
-                   what);
+        file.check(
+            canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(), out.data())
+                      : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
+                                          stride.data(), imap.data(), out.data()),
+            what);
         const float fill = u.missing.empty() ? kNaN : static_cast<float>(u.missing.front());
         if (std::isnan(fill)) return;  // a NaN fill is already what ensil uses for missing
         float* values = out.data();
@@ -106,11 +106,11 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
         return;
     }
     if (var.type == NC_FLOAT && !u.packed) {
-        file.check(canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(),
-                                                 out.data())
-                             : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
-                                                 stride.data(), imap.data(), out.data()),
-                   what);
+        file.check(
+            canonical ? nc_get_vara_float(file.id(), var.id, start.data(), count.data(), out.data())
+                      : nc_get_varm_float(file.id(), var.id, start.data(), count.data(),
+                                          stride.data(), imap.data(), out.data()),
+            what);
         unpackInto(out.data(), n, u, out.data());
         return;
     }
@@ -145,8 +145,7 @@ void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
     }
 }
 
-void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member,
-                FieldValues& out) {
+void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, FieldValues& out) {
     FieldValues part;
     std::vector<double> scratch;
     readComponent(file, plan, plan.components.front(), member, out, scratch);

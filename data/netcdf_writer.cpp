@@ -77,13 +77,13 @@ void writeFile(const Ensemble& ensemble, NetcdfFile& nc, const WriteProgress& pr
         const auto ai = static_cast<std::size_t>(a);
         nc.check(nc_def_dim(nc.id(), axis.name.c_str(), axis.size(), &axisDimIds[ai]),
                  "define dimension " + axis.name);
-        nc.check(nc_def_var(nc.id(), axis.name.c_str(), NC_DOUBLE, 1, &axisDimIds[ai],
-                            &axisVarIds[ai]),
-                 "define variable " + axis.name);
+        nc.check(
+            nc_def_var(nc.id(), axis.name.c_str(), NC_DOUBLE, 1, &axisDimIds[ai], &axisVarIds[ai]),
+            "define variable " + axis.name);
         nc.text(axisVarIds[ai], "units", axis.units);
         nc.text(axisVarIds[ai], "standard_name", axis.standardName);
-        nc.text(axisVarIds[ai], "long_name", axis.standardName.empty() ? axis.name
-                                                                        : axis.standardName);
+        nc.text(axisVarIds[ai], "long_name",
+                axis.standardName.empty() ? axis.name : axis.standardName);
         nc.text(axisVarIds[ai], "axis", axisLetter(a));
         if (a == 2) nc.text(axisVarIds[ai], "positive", axis.positiveUp ? "up" : "down");
     }
@@ -122,8 +122,7 @@ void writeFile(const Ensemble& ensemble, NetcdfFile& nc, const WriteProgress& pr
 
 }  // namespace
 
-void writeNetcdf(const Ensemble& ensemble, const std::string& path,
-                 const WriteProgress& progress) {
+void writeNetcdf(const Ensemble& ensemble, const std::string& path, const WriteProgress& progress) {
     if (ensemble.members.empty()) {
         throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': no members");
     }

@@ -42,8 +42,8 @@ void Camera::pan(float dxPixels, float dyPixels, float viewportHeight) {
 }
 
 void Camera::zoom(float factor) {
-    m_distance = std::clamp(m_distance / std::max(factor, 1e-3F), 1e-3F * m_radius,
-                            100.0F * m_radius);
+    m_distance =
+        std::clamp(m_distance / std::max(factor, 1e-3F), 1e-3F * m_radius, 100.0F * m_radius);
 }
 
 glm::vec3 Camera::eye() const {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/vec3.hpp>
 
 namespace ensil::gl {

@@ -121,7 +121,8 @@ void Renderer::uploadFloorMap() {
     std::vector<float> normalised(m_floor.values.size());
     for (std::size_t j = 0; j < ny; ++j) {
         for (std::size_t i = 0; i < nx; ++i) {
-            const float v = m_floor.values[(flipX ? nx - 1 - i : i) + nx * (flipY ? ny - 1 - j : j)];
+            const float v =
+                m_floor.values[(flipX ? nx - 1 - i : i) + nx * (flipY ? ny - 1 - j : j)];
             normalised[i + nx * j] =
                 std::isnan(v) ? -1.0F : (span > 0 ? (v - m_floor.minimum) / span : 0.5F);
         }
@@ -177,10 +178,9 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
         f.glDisable(GL_POLYGON_OFFSET_FILL);
     }
 
-    const std::array<glm::vec3, 8> c{glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z},
-                                     {hi.x, hi.y, lo.z},          {lo.x, hi.y, lo.z},
-                                     {lo.x, lo.y, hi.z},          {hi.x, lo.y, hi.z},
-                                     {hi.x, hi.y, hi.z},          {lo.x, hi.y, hi.z}};
+    const std::array<glm::vec3, 8> c{
+        glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+        {lo.x, lo.y, hi.z},          {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
     const std::array<glm::vec3, 24> edges{c[0], c[1], c[1], c[2], c[2], c[3], c[3], c[0],
                                           c[4], c[5], c[5], c[6], c[6], c[7], c[7], c[4],
                                           c[0], c[4], c[1], c[5], c[2], c[6], c[3], c[7]};

@@ -6,8 +6,8 @@ namespace ensil::gl {
 
 QByteArray ShaderLibrary::source(const QString& file) {
     const QString dir = qEnvironmentVariable("ENSIL_SHADER_DIR");
-    const QString path = dir.isEmpty() ? QStringLiteral(":/ensil/shaders/") + file
-                                       : dir + QLatin1Char('/') + file;
+    const QString path =
+        dir.isEmpty() ? QStringLiteral(":/ensil/shaders/") + file : dir + QLatin1Char('/') + file;
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly)) {
         throw ShaderError("cannot read shader '" + path.toStdString() +
@@ -23,15 +23,15 @@ QOpenGLShaderProgram& ShaderLibrary::program(const QString& name) {
     auto program = std::make_unique<QOpenGLShaderProgram>();
     const auto compile = [&](QOpenGLShader::ShaderType type, const QString& file) {
         if (!program->addShaderFromSourceCode(type, source(file))) {
-            throw ShaderError("shader '" + file.toStdString() +
-                              "' does not compile:\n" + program->log().toStdString());
+            throw ShaderError("shader '" + file.toStdString() + "' does not compile:\n" +
+                              program->log().toStdString());
         }
     };
     compile(QOpenGLShader::Vertex, name + QStringLiteral(".vert"));
     compile(QOpenGLShader::Fragment, name + QStringLiteral(".frag"));
     if (!program->link()) {
-        throw ShaderError("shader program '" + name.toStdString() +
-                          "' does not link:\n" + program->log().toStdString());
+        throw ShaderError("shader program '" + name.toStdString() + "' does not link:\n" +
+                          program->log().toStdString());
     }
     return *m_programs.emplace(name, std::move(program)).first->second;
 }

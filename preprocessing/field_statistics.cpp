@@ -46,8 +46,7 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
                 const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
                 ++stats.histogram[std::min(bin, bins - 1)];
             }
-            report(progress,
-                   0.5 + 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
+            report(progress, 0.5 + 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
         }
     }
     return stats;

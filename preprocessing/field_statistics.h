@@ -14,12 +14,12 @@
 namespace ensil::prep {
 
 struct FieldStatistics {
-    float minimum = 0.0F;       // over valid (non-NaN) values; 0 when none are valid
+    float minimum = 0.0F;  // over valid (non-NaN) values; 0 when none are valid
     float maximum = 0.0F;
     double mean = 0.0;
     std::size_t validCount = 0;
-    std::size_t missingCount = 0;              // NaN values over all members
-    std::vector<std::uint64_t> histogram;      // bins of equal width over [minimum, maximum]
+    std::size_t missingCount = 0;          // NaN values over all members
+    std::vector<std::uint64_t> histogram;  // bins of equal width over [minimum, maximum]
 };
 
 // Throws Cancelled if stop is requested.

@@ -64,9 +64,9 @@ void SilhouetteView::mouseMoveEvent(QMouseEvent* event) {
     const QPoint pos = event->position().toPoint();
     const QPoint delta = pos - m_lastMouse;
     m_lastMouse = pos;
-    const bool panning = (event->buttons() & Qt::MiddleButton) ||
-                         ((event->buttons() & Qt::LeftButton) &&
-                          (event->modifiers() & Qt::ShiftModifier));
+    const bool panning =
+        (event->buttons() & Qt::MiddleButton) ||
+        ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier));
     if (panning) {
         m_renderer.camera().pan(static_cast<float>(delta.x()), static_cast<float>(delta.y()),
                                 static_cast<float>(height()));

@@ -1,10 +1,11 @@
+#include "app/command_line.h"
+
 #include <gtest/gtest.h>
 #include <netcdf.h>
 
 #include <QString>
 #include <QTextStream>
 
-#include "app/command_line.h"
 #include "app/generate_command.h"
 #include "tests/support/temp_dir.h"
 
@@ -90,7 +91,8 @@ TEST(CommandLine, SubcommandsOfLaterReleasesSaySoAndFail) {
 TEST(GenerateCommand, WritesTheRequestedEnsemble) {
     ensil::test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("demo.nc"));
-    const CliRun r = run({"generate", "--members", "6", "--grid", "20x10x5", "--seed", "9", "--out", path});
+    const CliRun r =
+        run({"generate", "--members", "6", "--grid", "20x10x5", "--seed", "9", "--out", path});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     EXPECT_TRUE(r.out.contains("6 members")) << r.out.toStdString();
 
@@ -119,10 +121,11 @@ TEST(GenerateCommand, BadArgumentsAreExplained) {
     EXPECT_TRUE(badGrid.err.contains("256x128x16")) << badGrid.err.toStdString();
     const CliRun badMembers = run({"generate", "--members", "zero", "--out", "x.nc"});
     EXPECT_EQ(badMembers.code, 2);
-    const CliRun unwritable = run({"generate", "--members", "2", "--grid", "4x4x2", "--out",
-                                "/nonexistent-ensil-dir/x.nc"});
+    const CliRun unwritable = run(
+        {"generate", "--members", "2", "--grid", "4x4x2", "--out", "/nonexistent-ensil-dir/x.nc"});
     EXPECT_EQ(unwritable.code, 1);
-    EXPECT_TRUE(unwritable.err.contains("/nonexistent-ensil-dir/x.nc")) << unwritable.err.toStdString();
+    EXPECT_TRUE(unwritable.err.contains("/nonexistent-ensil-dir/x.nc"))
+        << unwritable.err.toStdString();
 }
 
 TEST(GenerateCommand, GridSizeParsing) {

@@ -1,3 +1,5 @@
+#include "app/main_window.h"
+
 #include <gtest/gtest.h>
 
 #include <QElapsedTimer>
@@ -5,7 +7,6 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/main_window.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
@@ -40,7 +41,9 @@ TEST(MainWindow, LoadsTheDemoInTheBackgroundAndShowsIt) {
     for (int y = 0; y < shot.height(); y += 2)
         for (int x = 0; x < shot.width(); x += 2) {
             const QColor c = shot.pixelColor(x, y);
-            if (std::max({c.red(), c.green(), c.blue()}) - std::min({c.red(), c.green(), c.blue()}) > 40)
+            if (std::max({c.red(), c.green(), c.blue()}) -
+                    std::min({c.red(), c.green(), c.blue()}) >
+                40)
                 ++coloured;
         }
     EXPECT_GT(coloured, shot.width() * shot.height() / 4 / 20) << "floor map missing";

@@ -52,10 +52,14 @@ int main(int argc, char** argv) {
     ensil::data::DataSelection selection;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
-        else if (arg == "--var" && i + 1 < argc) selection.variable = argv[++i];
-        else if (arg == "--member-dim" && i + 1 < argc) selection.memberDimension = argv[++i];
-        else selection.paths.push_back(arg);
+        if (arg == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+        else if (arg == "--var" && i + 1 < argc)
+            selection.variable = argv[++i];
+        else if (arg == "--member-dim" && i + 1 < argc)
+            selection.memberDimension = argv[++i];
+        else
+            selection.paths.push_back(arg);
     }
     std::string temporary;
     if (selection.paths.empty()) {

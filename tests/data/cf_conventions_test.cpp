@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "data/cf_conventions.h"
+
+#include <gtest/gtest.h>
 
 using ensil::data::formatCfTime;
 

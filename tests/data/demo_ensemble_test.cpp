@@ -1,3 +1,5 @@
+#include "data/demo_ensemble.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -5,7 +7,6 @@
 #include <map>
 #include <numeric>
 
-#include "data/demo_ensemble.h"
 #include "data/error.h"
 
 using namespace ensil::data;

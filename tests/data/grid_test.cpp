@@ -1,7 +1,8 @@
+#include "data/grid.h"
+
 #include <gtest/gtest.h>
 
 #include "data/error.h"
-#include "data/grid.h"
 
 using namespace ensil::data;
 

@@ -42,9 +42,8 @@ std::string writeStandard(const test::TempDir& dir, const std::string& memberDim
     const int x = f.dim("lon", 6, range(6, -10, 2), {{"units", "degrees_east"}});
     const int v = f.variable("speed", NC_FLOAT, {m, z, y, x});
     f.text(v, "units", "m s-1");
-    f.write(v, 3 * 4 * 5 * 6, [](std::size_t n) {
-        return analytic(n / 120, n % 6, (n / 6) % 5, (n / 30) % 4);
-    });
+    f.write(v, 3 * 4 * 5 * 6,
+            [](std::size_t n) { return analytic(n / 120, n % 6, (n / 6) % 5, (n / 30) % 4); });
     return path;
 }
 }  // namespace
@@ -72,7 +71,8 @@ TEST(NetcdfReader, ReadsMembersAxesAndValuesInPlace) {
 
 TEST(NetcdfReader, FindsTheMemberDimensionByEveryRuleInOrder) {
     test::TempDir dir;
-    const auto reason = [&](const std::string& dim, std::vector<std::pair<std::string, std::string>> attrs) {
+    const auto reason = [&](const std::string& dim,
+                            std::vector<std::pair<std::string, std::string>> attrs) {
         return data::describeEnsemble({.paths = {writeStandard(dir, dim, std::move(attrs))}});
     };
     EXPECT_EQ(reason("runs", {{"standard_name", "realization"}}).memberDimensionReason,
@@ -80,7 +80,8 @@ TEST(NetcdfReader, FindsTheMemberDimensionByEveryRuleInOrder) {
     EXPECT_EQ(reason("eid", {{"standard_name", "ensemble_member_id"}}).memberDimension, "eid");
     EXPECT_EQ(reason("e", {{"_CoordinateAxisType", "Ensemble"}}).memberDimensionReason,
               "coordinate variable 'e' has _CoordinateAxisType = Ensemble");
-    for (const char* name : {"number", "member", "members", "realization", "ens", "ens0", "ensemble"}) {
+    for (const char* name :
+         {"number", "member", "members", "realization", "ens", "ens0", "ensemble"}) {
         const auto d = reason(name, {});
         EXPECT_EQ(d.memberDimension, name);
         EXPECT_EQ(d.memberDimensionReason, std::string("dimension named '") + name + "'");
@@ -129,7 +130,10 @@ TEST(NetcdfReader, UnpacksAndMasksPackedIntegers) {
         f.number(v, "valid_range", NC_SHORT, {-100, 100});  // packed units, as CF says
         // raw values: n - 10, with a fill, a missing value and an out-of-range one
         f.write(v, 24, [](std::size_t n) {
-            return n == 3 ? -32767.0 : n == 4 ? -999.0 : n == 5 ? 150.0 : static_cast<double>(n) - 10.0;
+            return n == 3   ? -32767.0
+                   : n == 4 ? -999.0
+                   : n == 5 ? 150.0
+                            : static_cast<double>(n) - 10.0;
         });
     }
     const data::Ensemble e = data::openEnsemble({.paths = {path}});
@@ -175,8 +179,8 @@ TEST(NetcdfReader, DerivedWindSpeedAndWrfDestaggering) {
         f.write(u, 2 * 3 * 5, [](std::size_t n) { return static_cast<double>(n % 5); });  // u = i
         f.write(v, 2 * 4 * 4, [](std::size_t) { return 2.0; });
     }
-    const data::EnsembleDescription d =
-        data::describeEnsemble({.paths = {path}, .variable = "wind_speed", .memberDimension = "Time"});
+    const data::EnsembleDescription d = data::describeEnsemble(
+        {.paths = {path}, .variable = "wind_speed", .memberDimension = "Time"});
     EXPECT_EQ(d.grid.nx(), 4u);
     EXPECT_EQ(d.grid.ny(), 3u);
     const data::Ensemble e =
@@ -227,7 +231,8 @@ TEST(NetcdfReader, BadInputGetsTypedErrorsThatSayWhatWouldWork) {
     EXPECT_EQ(errorKindOf({.paths = {text}}), ErrorKind::UnsupportedFormat);
 
     const std::string good = writeStandard(dir, "member");
-    EXPECT_EQ(errorKindOf({.paths = {good}, .variable = "temp"}, &message), ErrorKind::VariableNotFound);
+    EXPECT_EQ(errorKindOf({.paths = {good}, .variable = "temp"}, &message),
+              ErrorKind::VariableNotFound);
     EXPECT_NE(message.find("speed"), std::string::npos) << "candidates listed: " << message;
 
     EXPECT_EQ(errorKindOf({.paths = {dir.path().string()}}, &message), ErrorKind::InvalidArgument);

@@ -35,8 +35,9 @@ public:
     }
     int variable(const std::string& name, nc_type type, const std::vector<int>& dims) {
         int id = -1;
-        EXPECT_EQ(nc_def_var(m_id, name.c_str(), type, static_cast<int>(dims.size()), dims.data(), &id),
-                  NC_NOERR)
+        EXPECT_EQ(
+            nc_def_var(m_id, name.c_str(), type, static_cast<int>(dims.size()), dims.data(), &id),
+            NC_NOERR)
             << name;
         return id;
     }

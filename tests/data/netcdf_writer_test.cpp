@@ -1,3 +1,5 @@
+#include "data/netcdf_writer.h"
+
 #include <gtest/gtest.h>
 #include <netcdf.h>
 
@@ -9,7 +11,6 @@
 
 #include "data/demo_ensemble.h"
 #include "data/error.h"
-#include "data/netcdf_writer.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil::data;

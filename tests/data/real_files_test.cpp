@@ -39,7 +39,8 @@ TEST(RealFiles, Era5EdaIsATenMemberEnsembleAlongNumber) {
     const std::string path = shared("era5_eda_members.nc");
     const auto d = data::describeEnsemble({.paths = {path}, .variable = "t", .timeIndex = 1});
     EXPECT_EQ(d.memberDimension, "number");
-    EXPECT_EQ(d.memberDimensionReason, "coordinate variable 'number' has standard_name = realization");
+    EXPECT_EQ(d.memberDimensionReason,
+              "coordinate variable 'number' has standard_name = realization");
     EXPECT_EQ(d.members, 10u);
     EXPECT_EQ(d.units, "K");
     EXPECT_EQ(d.grid.nx(), 120u);
@@ -87,7 +88,8 @@ TEST(RealFiles, GloSea4HasNoVerticalAxisAndSaysSo) {
 }
 
 TEST(RealFiles, UkHiresTimeStandsInForMembersOnHybridHeights) {
-    const data::Ensemble e = data::openEnsemble({.paths = {shared("uk_hires.nc")}, .memberDimension = "time"});
+    const data::Ensemble e =
+        data::openEnsemble({.paths = {shared("uk_hires.nc")}, .memberDimension = "time"});
     ASSERT_EQ(e.memberCount(), 3u);
     EXPECT_EQ(e.members[0].name, "2009-11-19T10:00");
     EXPECT_EQ(e.grid.nx(), 187u);
@@ -104,7 +106,8 @@ TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
     EXPECT_EQ(e.kind(), data::ErrorKind::MemberDimensionNotFound);
     EXPECT_NE(std::string(e.what()).find("--member-dim frtime"), std::string::npos) << e.what();
 
-    const data::Ensemble z = data::openEnsemble({.paths = {path}, .variable = "Z", .memberDimension = "frtime"});
+    const data::Ensemble z =
+        data::openEnsemble({.paths = {path}, .variable = "Z", .memberDimension = "frtime"});
     ASSERT_EQ(z.memberCount(), 7u);
     const data::Grid& g = z.grid;
     // valid_range [-150, 5000] m masks the upper levels (100 hPa is ~16 km up); 1000 hPa stays.

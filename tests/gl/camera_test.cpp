@@ -1,10 +1,10 @@
+#include "gl/camera.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
-
-#include "gl/camera.h"
 
 using ensil::gl::Camera;
 
@@ -31,7 +31,8 @@ TEST(Camera, FitPutsTheTargetInTheCentreAndTheSphereInView) {
         const glm::vec3 p = ndc(vp, glm::vec3(1, 2, 3) + 0.5F * dir);
         EXPECT_LT(std::abs(p.x), 1.0F);
         EXPECT_LT(std::abs(p.y), 1.0F);
-        EXPECT_GT(std::max(std::abs(p.x), std::abs(p.y)), 0.7F) << "the sphere should fill the view";
+        EXPECT_GT(std::max(std::abs(p.x), std::abs(p.y)), 0.7F)
+            << "the sphere should fill the view";
     }
 }
 

@@ -1,9 +1,10 @@
+#include "gl/display_frame.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "data/demo_ensemble.h"
-#include "gl/display_frame.h"
 
 using namespace ensil;
 
@@ -15,8 +16,8 @@ data::Grid demoGrid() {
 
 TEST(DisplayFrame, HorizontalProportionsAreKeptAndAtmosphereIsAThinSlab) {
     const gl::DisplayFrame frame(demoGrid(), 1.0F);
-    EXPECT_FLOAT_EQ(frame.boxMax().x, 1.0F);                  // 120 degrees of longitude
-    EXPECT_FLOAT_EQ(frame.boxMax().y, 50.0F / 120.0F);        // 50 degrees of latitude
+    EXPECT_FLOAT_EQ(frame.boxMax().x, 1.0F);            // 120 degrees of longitude
+    EXPECT_FLOAT_EQ(frame.boxMax().y, 50.0F / 120.0F);  // 50 degrees of latitude
     EXPECT_FLOAT_EQ(frame.boxMax().z, 0.2F);
     EXPECT_TRUE(frame.logPressure());
     const gl::DisplayFrame exaggerated(demoGrid(), 3.0F);

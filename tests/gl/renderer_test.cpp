@@ -1,3 +1,5 @@
+#include "gl/renderer.h"
+
 #include <gtest/gtest.h>
 
 #include <QColor>
@@ -6,7 +8,6 @@
 #include <limits>
 
 #include "data/demo_ensemble.h"
-#include "gl/renderer.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/offscreen_gl.h"
 
@@ -49,8 +50,8 @@ protected:
     }
     // Pixel position (top-left origin) of a display-space point.
     QPoint project(const glm::vec3& p) const {
-        const glm::vec4 c = m_renderer.camera().viewProjection(float(kWidth) / kHeight) *
-                            glm::vec4(p, 1.0F);
+        const glm::vec4 c =
+            m_renderer.camera().viewProjection(float(kWidth) / kHeight) * glm::vec4(p, 1.0F);
         const float x = (c.x / c.w * 0.5F + 0.5F) * kWidth;
         const float y = (1.0F - (c.y / c.w * 0.5F + 0.5F)) * kHeight;
         return {static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
@@ -63,8 +64,10 @@ protected:
 
 TEST_F(RendererTest, WithoutDataEveryPixelIsBackground) {
     const QImage image = draw();
-    for (QPoint p : {QPoint(0, 0), QPoint(kWidth / 2, kHeight / 2), QPoint(kWidth - 1, kHeight - 1)}) {
-        EXPECT_TRUE(near(image.pixelColor(p), gl::Renderer::kDefaultBackground, 1)) << p.x() << "," << p.y();
+    for (QPoint p :
+         {QPoint(0, 0), QPoint(kWidth / 2, kHeight / 2), QPoint(kWidth - 1, kHeight - 1)}) {
+        EXPECT_TRUE(near(image.pixelColor(p), gl::Renderer::kDefaultBackground, 1))
+            << p.x() << "," << p.y();
     }
 }
 
@@ -75,7 +78,8 @@ TEST_F(RendererTest, BoxCornersAppearWhereTheCameraProjectsThem) {
     const glm::vec3 lo = m_renderer.frame().boxMin(), hi = m_renderer.frame().boxMax();
     int found = 0;
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y, corner & 4 ? hi.z : lo.z};
+        const glm::vec3 p{corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                          corner & 4 ? hi.z : lo.z};
         const QPoint px = project(p);
         ASSERT_TRUE(image.rect().contains(px)) << "corner " << corner << " is off screen";
         found += colourNear(image, px, gl::Renderer::kBoxColor) ? 1 : 0;
@@ -94,7 +98,8 @@ TEST_F(RendererTest, FloorShowsTheMapAndMissingValuesInGray) {
     std::vector<float> values(grid.nx() * grid.ny());
     for (std::size_t j = 0; j < grid.ny(); ++j)
         for (std::size_t i = 0; i < grid.nx(); ++i)
-            values[i + grid.nx() * j] = i < grid.nx() / 2 ? 0.0F : std::numeric_limits<float>::quiet_NaN();
+            values[i + grid.nx() * j] =
+                i < grid.nx() / 2 ? 0.0F : std::numeric_limits<float>::quiet_NaN();
     m_renderer.setFloorMap({values, 0.0F, 1.0F});
     const QImage image = draw();
     const glm::vec3 hi = m_renderer.frame().boxMax();
@@ -114,15 +119,18 @@ TEST_F(RendererTest, FloorMapFollowsAxisDirectionNorthStaysNorth) {
     m_renderer.setGrid(grid);
     std::vector<float> values(16 * 16);
     for (std::size_t j = 0; j < 16; ++j)
-        for (std::size_t i = 0; i < 16; ++i) values[i + 16 * j] = grid.y().values[j] > 45.0 ? 1.0F : 0.0F;
+        for (std::size_t i = 0; i < 16; ++i)
+            values[i + 16 * j] = grid.y().values[j] > 45.0 ? 1.0F : 0.0F;
     m_renderer.setFloorMap({values, 0.0F, 1.0F});
     const QImage image = draw();
     const glm::vec3 hi = m_renderer.frame().boxMax();
     const QPoint north = project({0.5F * hi.x, 0.85F * hi.y, 0.0F});
     const QPoint south = project({0.5F * hi.x, 0.15F * hi.y, 0.0F});
     const glm::vec4 yellow{0.993F, 0.906F, 0.144F, 1.0F}, purple{0.267F, 0.005F, 0.329F, 1.0F};
-    EXPECT_TRUE(near(image.pixelColor(north), yellow, 20)) << image.pixelColor(north).name().toStdString();
-    EXPECT_TRUE(near(image.pixelColor(south), purple, 20)) << image.pixelColor(south).name().toStdString();
+    EXPECT_TRUE(near(image.pixelColor(north), yellow, 20))
+        << image.pixelColor(north).name().toStdString();
+    EXPECT_TRUE(near(image.pixelColor(south), purple, 20))
+        << image.pixelColor(south).name().toStdString();
 }
 
 TEST_F(RendererTest, VerticalExaggerationRaisesTheTopOfTheBox) {

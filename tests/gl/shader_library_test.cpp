@@ -1,6 +1,7 @@
+#include "gl/shader_library.h"
+
 #include <gtest/gtest.h>
 
-#include "gl/shader_library.h"
 #include "tests/support/offscreen_gl.h"
 
 using namespace ensil;

@@ -1,3 +1,5 @@
+#include "preprocessing/field_statistics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include <numeric>
 
 #include "fixtures.h"
-#include "preprocessing/field_statistics.h"
 
 using namespace ensil;
 
@@ -26,9 +27,8 @@ TEST(FieldStatistics, RangeMeanAndMissingOfAnAnalyticField) {
 }
 
 TEST(FieldStatistics, NaNsAreCountedAsMissingAndIgnored) {
-    auto e = test::analyticEnsemble(1, 2, 2, 2, [](auto, auto i, auto, auto) {
-        return static_cast<float>(i);
-    });
+    auto e = test::analyticEnsemble(1, 2, 2, 2,
+                                    [](auto, auto i, auto, auto) { return static_cast<float>(i); });
     e.members[0].values[0] = std::numeric_limits<float>::quiet_NaN();
     e.members[0].values[3] = std::numeric_limits<float>::quiet_NaN();
     const auto s = prep::computeFieldStatistics(e, 4);
@@ -46,9 +46,8 @@ TEST(FieldStatistics, ConstantFieldPutsEverythingInOneBin) {
 }
 
 TEST(FieldStatistics, AllMissingGivesNoValidValues) {
-    const auto e = test::analyticEnsemble(1, 2, 2, 2, [](auto, auto, auto, auto) {
-        return std::numeric_limits<float>::quiet_NaN();
-    });
+    const auto e = test::analyticEnsemble(
+        1, 2, 2, 2, [](auto, auto, auto, auto) { return std::numeric_limits<float>::quiet_NaN(); });
     const auto s = prep::computeFieldStatistics(e, 4);
     EXPECT_EQ(s.validCount, 0u);
     EXPECT_EQ(s.missingCount, 8u);

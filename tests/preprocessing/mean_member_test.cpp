@@ -1,3 +1,5 @@
+#include "preprocessing/mean_member.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 
 #include "data/error.h"
 #include "fixtures.h"
-#include "preprocessing/mean_member.h"
 
 using namespace ensil;
 
@@ -28,7 +29,7 @@ TEST(MeanMember, AveragesOverMembersThatHaveThePointAndKeepsCommonGaps) {
     auto e = test::analyticEnsemble(3, 2, 2, 2, [](auto m, auto, auto, auto) {
         return static_cast<float>(3 * m);  // 0, 3, 6
     });
-    e.members[2].values[1] = nan;  // point 1: members 0 and 1 only -> 1.5
+    e.members[2].values[1] = nan;                 // point 1: members 0 and 1 only -> 1.5
     for (auto& m : e.members) m.values[5] = nan;  // point 5: missing everywhere
     const data::Member mean = prep::computeMeanMember(e);
     EXPECT_FLOAT_EQ(mean.values[0], 3.0F);
@@ -37,9 +38,8 @@ TEST(MeanMember, AveragesOverMembersThatHaveThePointAndKeepsCommonGaps) {
 }
 
 TEST(MeanMember, CancelThrowsAndProgressIsMonotonic) {
-    const auto e = test::analyticEnsemble(6, 8, 8, 8, [](auto m, auto, auto, auto) {
-        return static_cast<float>(m);
-    });
+    const auto e = test::analyticEnsemble(
+        6, 8, 8, 8, [](auto m, auto, auto, auto) { return static_cast<float>(m); });
     std::vector<double> fractions;
     prep::computeMeanMember(e, {}, [&](double f) { fractions.push_back(f); });
     ASSERT_EQ(fractions.size(), 6u);

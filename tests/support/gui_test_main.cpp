@@ -2,6 +2,7 @@
 // under a display: `xvfb-run -a ctest ...` on machines without one. Listing tests (CTest's
 // discovery) needs no display, so no QApplication is made for it.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <QApplication>
 #include <QSurfaceFormat>
@@ -10,7 +11,6 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include "gl/surface_format.h"
 
@@ -25,8 +25,8 @@ bool listingOnly(int argc, char** argv) {
 // Qt warns on every start when XDG_RUNTIME_DIR is unset (as under CI); give it a private one.
 void ensureRuntimeDir() {
     if (std::getenv("XDG_RUNTIME_DIR") != nullptr) return;
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("ensil-runtime-" + std::to_string(::getuid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("ensil-runtime-" + std::to_string(::getuid()));
     std::filesystem::create_directories(dir);
     std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
     ::setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);

@@ -23,13 +23,14 @@ double differingFraction(const QImage& a, const QImage& b, int channelTolerance,
         const uchar* py = y.constScanLine(row);
         for (int col = 0; col < x.width(); ++col) {
             int worst = 0;
-            for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(px[4 * col + c] - py[4 * col + c]));
+            for (int c = 0; c < 4; ++c)
+                worst = std::max(worst, std::abs(px[4 * col + c] - py[4 * col + c]));
             const bool beyond = worst > channelTolerance;
             differing += beyond ? 1 : 0;
             if (diff != nullptr) {
                 const int amplified = std::min(255, worst * 8);
-                diff->setPixelColor(col, row, beyond ? QColor(255, 0, 0)
-                                                     : QColor(amplified, amplified, amplified));
+                diff->setPixelColor(
+                    col, row, beyond ? QColor(255, 0, 0) : QColor(amplified, amplified, amplified));
             }
         }
     }
@@ -51,8 +52,9 @@ ImageComparison compareWithBaseline(const QImage& actual, const QString& name,
     const QImage baseline(baselinePath);
     if (baseline.isNull()) {
         actual.save(actualPath);
-        result.message = QStringLiteral("no baseline %1; the actual image is %2 (inspect it, "
-                                        "then run with ENSIL_UPDATE_BASELINES=1 to adopt it)")
+        result.message = QStringLiteral(
+                             "no baseline %1; the actual image is %2 (inspect it, "
+                             "then run with ENSIL_UPDATE_BASELINES=1 to adopt it)")
                              .arg(baselinePath, actualPath);
         return result;
     }

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "widgets/ensemble_info_panel.h"
+
+#include <gtest/gtest.h>
 
 using namespace ensil::ui;
 

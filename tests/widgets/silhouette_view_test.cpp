@@ -1,3 +1,5 @@
+#include "widgets/silhouette_view.h"
+
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -6,7 +8,6 @@
 #include <QWheelEvent>
 
 #include "data/demo_ensemble.h"
-#include "widgets/silhouette_view.h"
 
 using namespace ensil;
 
@@ -35,11 +36,13 @@ protected:
         ASSERT_TRUE(m_view.glError().isEmpty()) << m_view.glError().toStdString();
     }
     void drag(Qt::MouseButton button, QPoint from, QPoint to, Qt::KeyboardModifiers mods = {}) {
-        QMouseEvent press(QEvent::MouseButtonPress, from, m_view.mapToGlobal(from), button, button, mods);
+        QMouseEvent press(QEvent::MouseButtonPress, from, m_view.mapToGlobal(from), button, button,
+                          mods);
         QApplication::sendEvent(&m_view, &press);
         QMouseEvent move(QEvent::MouseMove, to, m_view.mapToGlobal(to), Qt::NoButton, button, mods);
         QApplication::sendEvent(&m_view, &move);
-        QMouseEvent release(QEvent::MouseButtonRelease, to, m_view.mapToGlobal(to), button, {}, mods);
+        QMouseEvent release(QEvent::MouseButtonRelease, to, m_view.mapToGlobal(to), button, {},
+                            mods);
         QApplication::sendEvent(&m_view, &release);
     }
     ui::SilhouetteView m_view;
@@ -52,7 +55,8 @@ TEST_F(ShownView, DrawsTheDataBoxInTheWindow) {
     const QColor box = QColor::fromRgbF(gl::Renderer::kBoxColor.r, gl::Renderer::kBoxColor.g,
                                         gl::Renderer::kBoxColor.b);
     EXPECT_GT(countNear(image, box, 30), 200) << "the 12 box edges should cover some pixels";
-    EXPECT_GT(countNear(image, QColor::fromRgbF(0.11F, 0.12F, 0.14F), 2), image.width() * image.height() / 2);
+    EXPECT_GT(countNear(image, QColor::fromRgbF(0.11F, 0.12F, 0.14F), 2),
+              image.width() * image.height() / 2);
 }
 
 TEST_F(ShownView, LeftDragOrbitsShiftDragPansWheelZooms) {
