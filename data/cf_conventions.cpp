@@ -1,4 +1,5 @@
 #include "data/cf_conventions.h"
+#include "data/grid.h"
 
 #include <algorithm>
 #include <array>
@@ -48,12 +49,6 @@ constexpr std::array<std::string_view, 8> kTimeNames{
 constexpr std::array<std::string_view, 7> kMemberNames{"number", "member", "members", "realization",
                                                        "ens",    "ens0",   "ensemble"};
 
-bool isPressure(const std::string& units) {
-    const std::string u = lower(units);
-    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
-           u == "millibars" || u == "mb" || u == "bar";
-}
-
 std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVariable& coord) {
     const std::string axis = lower(file.text(coord.id, "axis"));
     if (axis == "x") return AxisRole::X;
@@ -86,7 +81,7 @@ std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVaria
         return AxisRole::Y;
     }
     if (units.find(" since ") != std::string::npos) return AxisRole::Time;
-    if (isPressure(units) || file.textAttribute(coord.id, "positive")) return AxisRole::Z;
+    if (isPressureUnit(units) || file.textAttribute(coord.id, "positive")) return AxisRole::Z;
     return std::nullopt;
 }
 

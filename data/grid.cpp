@@ -1,6 +1,7 @@
 #include "data/grid.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "data/error.h"
@@ -20,6 +21,13 @@ bool Axis::isUniform() const {
         if (std::abs((values[i] - values[i - 1]) - step) > tolerance) return false;
     }
     return true;
+}
+
+bool isPressureUnit(const std::string& units) {
+    std::string u;
+    for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
+           u == "millibars" || u == "mb" || u == "bar" || u == "atm";
 }
 
 Axis makeUniformAxis(std::string name, std::string units, double first, double last,

@@ -30,6 +30,9 @@ struct Axis {
 // Builds an axis of n evenly spaced values from first to last (inclusive).
 Axis makeUniformAxis(std::string name, std::string units, double first, double last, std::size_t n);
 
+// True for units that name a pressure (Pa, hPa, mbar, millibars, ...), case-insensitive.
+bool isPressureUnit(const std::string& units);
+
 class Grid {
 public:
     Grid() = default;

@@ -115,9 +115,9 @@ Axis makeAxis(const NetcdfFile& file, const NcDimension& dim, std::size_t size, 
         axis.values = file.readDoubles(*coord);
         axis.units = file.text(coord->id, "units");
         axis.standardName = file.text(coord->id, "standard_name");
-        axis.positiveUp = file.text(coord->id, "positive") != "down" &&
-                          !(slot == 2 && axis.units.find("bar") != std::string::npos) &&
-                          !(slot == 2 && (axis.units == "Pa" || axis.units == "hPa"));
+        // CF: pressure coordinates point down even without a `positive` attribute.
+        axis.positiveUp =
+            file.text(coord->id, "positive") != "down" && !isPressureUnit(axis.units);
     } else {
         axis.values.resize(size);
         for (std::size_t i = 0; i < size; ++i) axis.values[i] = static_cast<double>(i);

@@ -12,7 +12,7 @@
 
 #include "data/grid.h"
 #include "gl/camera.h"
-#include "gl/display_frame.h"
+#include "data/display_frame.h"
 
 namespace ensil::gl {
 

@@ -1,15 +1,15 @@
-#include "gl/display_frame.h"
+#include "data/display_frame.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/vec3.hpp>
 
-namespace ensil::gl {
+namespace ensil::data {
 namespace {
 constexpr float kAtmosphereThickness = 0.2F;
 
 // Linear interpolation of the axis coordinate at a fractional index, clamped to the axis.
-double coordinateAt(const data::Axis& axis, float index) {
+double coordinateAt(const Axis& axis, float index) {
     const auto last = static_cast<float>(axis.size() - 1);
     const float t = std::clamp(index, 0.0F, last);
     const auto i = std::min(static_cast<std::size_t>(t), axis.size() - 2);
@@ -18,14 +18,7 @@ double coordinateAt(const data::Axis& axis, float index) {
 }
 }  // namespace
 
-bool isPressureUnit(const std::string& units) {
-    std::string u;
-    for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
-           u == "millibars" || u == "mb" || u == "bar" || u == "atm";
-}
-
-DisplayFrame::DisplayFrame(const data::Grid& grid, float verticalExaggeration)
+DisplayFrame::DisplayFrame(const Grid& grid, float verticalExaggeration)
     : m_grid(grid), m_exaggeration(verticalExaggeration) {
     const double sx = grid.x().maxValue() - grid.x().minValue();
     const double sy = grid.y().maxValue() - grid.y().minValue();
@@ -41,7 +34,7 @@ DisplayFrame::DisplayFrame(const data::Grid& grid, float verticalExaggeration)
 }
 
 double DisplayFrame::verticalFraction(double z) const {
-    const data::Axis& axis = m_grid.z();
+    const Axis& axis = m_grid.z();
     double t = 0.0;
     if (m_logPressure) {
         const double bottom = std::log(axis.maxValue());
@@ -54,8 +47,8 @@ double DisplayFrame::verticalFraction(double z) const {
 }
 
 glm::vec3 DisplayFrame::toDisplay(const glm::dvec3& p) const {
-    const data::Axis& ax = m_grid.x();
-    const data::Axis& ay = m_grid.y();
+    const Axis& ax = m_grid.x();
+    const Axis& ay = m_grid.y();
     // Horizontal axes may run either way; display always grows with the coordinate.
     const double fx = (p.x - ax.minValue()) / (ax.maxValue() - ax.minValue());
     const double fy = (p.y - ay.minValue()) / (ay.maxValue() - ay.minValue());
@@ -68,4 +61,4 @@ glm::vec3 DisplayFrame::indexToDisplay(const glm::vec3& index) const {
                       coordinateAt(m_grid.z(), index.z)});
 }
 
-}  // namespace ensil::gl
+}  // namespace ensil::data

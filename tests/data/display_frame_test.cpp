@@ -1,4 +1,4 @@
-#include "gl/display_frame.h"
+#include "data/display_frame.h"
 
 #include <gtest/gtest.h>
 
@@ -15,17 +15,17 @@ data::Grid demoGrid() {
 }  // namespace
 
 TEST(DisplayFrame, HorizontalProportionsAreKeptAndAtmosphereIsAThinSlab) {
-    const gl::DisplayFrame frame(demoGrid(), 1.0F);
+    const data::DisplayFrame frame(demoGrid(), 1.0F);
     EXPECT_FLOAT_EQ(frame.boxMax().x, 1.0F);            // 120 degrees of longitude
     EXPECT_FLOAT_EQ(frame.boxMax().y, 50.0F / 120.0F);  // 50 degrees of latitude
     EXPECT_FLOAT_EQ(frame.boxMax().z, 0.2F);
     EXPECT_TRUE(frame.logPressure());
-    const gl::DisplayFrame exaggerated(demoGrid(), 3.0F);
+    const data::DisplayFrame exaggerated(demoGrid(), 3.0F);
     EXPECT_FLOAT_EQ(exaggerated.boxMax().z, 0.6F);
 }
 
 TEST(DisplayFrame, PressureMapsThroughLogPressureWithLowPressureOnTop) {
-    const gl::DisplayFrame frame(demoGrid(), 1.0F);
+    const data::DisplayFrame frame(demoGrid(), 1.0F);
     const float top = frame.boxMax().z;
     EXPECT_NEAR(frame.toDisplay({0, 50, 1000}).z, 0.0F, 1e-6);
     EXPECT_NEAR(frame.toDisplay({0, 50, 100}).z, top, 1e-6);
@@ -37,7 +37,7 @@ TEST(DisplayFrame, PressureMapsThroughLogPressureWithLowPressureOnTop) {
 
 TEST(DisplayFrame, IndexSpaceCornersAreBoxCorners) {
     const data::Grid grid = demoGrid();
-    const gl::DisplayFrame frame(grid, 1.0F);
+    const data::DisplayFrame frame(grid, 1.0F);
     const glm::vec3 first = frame.indexToDisplay({0, 0, 0});
     const glm::vec3 last = frame.indexToDisplay({24, 10, 5});
     EXPECT_NEAR(first.x, 0.0F, 1e-6);
@@ -54,10 +54,10 @@ TEST(DisplayFrame, VolumeInOneUnitKeepsTrueProportions) {
     const data::Grid cube(data::makeUniformAxis("x", "", 0, 67, 68),
                           data::makeUniformAxis("y", "", 0, 67, 68),
                           data::makeUniformAxis("z", "", 0, 33.5, 35));
-    const gl::DisplayFrame frame(cube, 1.0F);
+    const data::DisplayFrame frame(cube, 1.0F);
     EXPECT_FALSE(frame.logPressure());
     EXPECT_FLOAT_EQ(frame.boxMax().z, 0.5F);
-    EXPECT_TRUE(gl::isPressureUnit("hPa"));
-    EXPECT_TRUE(gl::isPressureUnit("Pa"));
-    EXPECT_FALSE(gl::isPressureUnit("m"));
+    EXPECT_TRUE(data::isPressureUnit("hPa"));
+    EXPECT_TRUE(data::isPressureUnit("Pa"));
+    EXPECT_FALSE(data::isPressureUnit("m"));
 }

@@ -11,12 +11,12 @@
 
 #include "data/grid.h"
 
-namespace ensil::gl {
+namespace ensil::data {
 
 class DisplayFrame {
 public:
     DisplayFrame() = default;
-    DisplayFrame(const data::Grid& grid, float verticalExaggeration);
+    DisplayFrame(const Grid& grid, float verticalExaggeration);
 
     [[nodiscard]] glm::vec3 boxMin() const { return {0.0F, 0.0F, 0.0F}; }
     [[nodiscard]] glm::vec3 boxMax() const { return m_size; }
@@ -33,13 +33,10 @@ public:
 private:
     [[nodiscard]] double verticalFraction(double z) const;
 
-    data::Grid m_grid;
+    Grid m_grid;
     glm::vec3 m_size{1.0F};
     float m_exaggeration = 1.0F;
     bool m_logPressure = false;
 };
 
-// True for units that name a pressure (hPa, Pa, mbar, millibar, ...).
-bool isPressureUnit(const std::string& units);
-
-}  // namespace ensil::gl
+}  // namespace ensil::data
