@@ -84,13 +84,13 @@ void Renderer::releaseGpuResources() {
 void Renderer::setGrid(const data::Grid& grid) {
     m_grid = grid;
     m_hasGrid = true;
-    m_frame = DisplayFrame(grid, m_frame.verticalExaggeration());
+    m_frame = data::DisplayFrame(grid, m_frame.verticalExaggeration());
     resetCamera();
 }
 
 void Renderer::setVerticalExaggeration(float exaggeration) {
     if (m_hasGrid) {
-        m_frame = DisplayFrame(m_grid, exaggeration);
+        m_frame = data::DisplayFrame(m_grid, exaggeration);
         m_camera.fit(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
     }
 }

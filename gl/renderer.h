@@ -45,7 +45,7 @@ public:
     void setVerticalExaggeration(float exaggeration);
     void setBackground(const glm::vec4& color) { m_background = color; }
 
-    [[nodiscard]] const DisplayFrame& frame() const { return m_frame; }
+    [[nodiscard]] const data::DisplayFrame& frame() const { return m_frame; }
     [[nodiscard]] Camera& camera() { return m_camera; }
     [[nodiscard]] const Camera& camera() const { return m_camera; }
     void resetCamera();
@@ -60,7 +60,7 @@ private:
     std::unique_ptr<Gpu> m_gpu;
     data::Grid m_grid;
     bool m_hasGrid = false;
-    DisplayFrame m_frame;
+    data::DisplayFrame m_frame;
     Camera m_camera;
     FloorMap m_floor;
     bool m_floorDirty = false;
