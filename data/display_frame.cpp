@@ -56,6 +56,17 @@ glm::vec3 DisplayFrame::toDisplay(const glm::dvec3& p) const {
             static_cast<float>(verticalFraction(p.z)) * m_size.z};
 }
 
+std::vector<double> DisplayFrame::axisTable(int axis) const {
+    const std::size_t n = m_grid.axis(axis).size();
+    std::vector<double> table(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        glm::vec3 index{0.0F};
+        index[axis] = static_cast<float>(i);
+        table[i] = indexToDisplay(index)[axis];
+    }
+    return table;
+}
+
 glm::vec3 DisplayFrame::indexToDisplay(const glm::vec3& index) const {
     return toDisplay({coordinateAt(m_grid.x(), index.x), coordinateAt(m_grid.y(), index.y),
                       coordinateAt(m_grid.z(), index.z)});

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "data/grid.h"
 
@@ -29,6 +30,9 @@ public:
     [[nodiscard]] glm::vec3 toDisplay(const glm::dvec3& dataPoint) const;
     // A point given in (fractional) grid indices, in display space.
     [[nodiscard]] glm::vec3 indexToDisplay(const glm::vec3& index) const;
+    // The display coordinate of every grid index along one axis (0 = x, 1 = y, 2 = z): the
+    // mapping is separable, so three such tables describe it completely.
+    [[nodiscard]] std::vector<double> axisTable(int axis) const;
 
 private:
     [[nodiscard]] double verticalFraction(double z) const;
