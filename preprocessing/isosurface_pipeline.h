@@ -1,0 +1,46 @@
+// Everything the renderer needs for one isovalue: every member's isosurface and the mean
+// member's, each meshed, optionally decimated, given per-vertex attributes and packed. Runs as
+// three passes, each parallel over members (oneTBB), so each stage's time can be reported.
+// A new isovalue needs nothing precomputed but the ensemble moments. Pure function; any thread.
+#pragma once
+
+#include <stop_token>
+#include <vector>
+
+#include "data/display_frame.h"
+#include "data/ensemble.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/job.h"
+#include "preprocessing/packed_mesh.h"
+
+namespace ensil::prep {
+
+struct PipelineOptions {
+    float isovalue = 0.0F;
+    bool decimate = true;
+    float maxErrorCells = 0.25F;  // decimation error bound, in grid cells
+};
+
+struct StageSeconds {
+    double meshes = 0, decimation = 0, attributes = 0;
+};
+
+struct IsovalueMeshes {
+    float isovalue = 0.0F;
+    std::vector<PackedMesh> members;  // one per member, in member order (may be empty meshes)
+    PackedMesh mean;
+    StageSeconds seconds;
+    std::size_t trianglesExtracted = 0;  // before decimation, all members and the mean
+    std::size_t triangles = 0;           // after
+    std::size_t vertices = 0;
+    float worstErrorCells = 0.0F;  // largest decimation error estimate over the meshes
+
+    [[nodiscard]] std::size_t gpuBytes() const;
+};
+
+// Throws Cancelled.
+IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
+                                   const data::DisplayFrame& frame, const PipelineOptions& options,
+                                   const std::stop_token& stop = {}, const Progress& progress = {});
+
+}  // namespace ensil::prep

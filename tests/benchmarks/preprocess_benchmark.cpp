@@ -1,0 +1,82 @@
+// The preprocessing pipeline on the paper-sized ensemble: 50 members + mean, 256 x 128 x 16,
+// wind-speed-like demo, one isovalue. Prints the median time of each stage over several runs,
+// triangles, bytes per vertex, GPU bytes and peak memory.
+//
+//   ensil_preprocess_benchmark [--runs N] [--iso X] [--error CELLS] [--no-decimation]
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "data/demo_ensemble.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/isosurface_pipeline.h"
+
+namespace {
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 5;
+    ensil::prep::PipelineOptions options;
+    options.isovalue = 30.0F;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--iso" && i + 1 < argc)
+            options.isovalue = std::strtof(argv[++i], nullptr);
+        else if (a == "--error" && i + 1 < argc)
+            options.maxErrorCells = std::strtof(argv[++i], nullptr);
+        else if (a == "--no-decimation")
+            options.decimate = false;
+    }
+    using Clock = std::chrono::steady_clock;
+    auto t0 = Clock::now();
+    const auto demo = ensil::data::makeDemoEnsemble({});
+    const double generate = std::chrono::duration<double>(Clock::now() - t0).count();
+    const ensil::data::Ensemble& e = demo.ensemble;
+    const ensil::data::DisplayFrame frame(e.grid, 1.0F);
+
+    std::vector<double> moments, meshes, decimation, attributes, total;
+    ensil::prep::IsovalueMeshes result;
+    for (int r = 0; r < runs; ++r) {
+        t0 = Clock::now();
+        const auto m = ensil::prep::computeEnsembleMoments(e);
+        moments.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+        result = ensil::prep::buildIsovalueMeshes(e, m, frame, options);
+        meshes.push_back(result.seconds.meshes);
+        decimation.push_back(result.seconds.decimation);
+        attributes.push_back(result.seconds.attributes);
+        total.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf(
+        "ensemble: %zu members + mean, %zu x %zu x %zu, isovalue %.1f (generated in %.2f s)\n",
+        e.memberCount(), e.grid.nx(), e.grid.ny(), e.grid.nz(), options.isovalue, generate);
+    std::printf("median of %d runs (seconds):\n", runs);
+    std::printf("  moments (mean + variance) %8.3f\n", median(moments));
+    std::printf("  marching cubes            %8.3f\n", median(meshes));
+    std::printf("  decimation (%s, %.2f cells) %8.3f\n", options.decimate ? "on" : "off",
+                options.maxErrorCells, median(decimation));
+    std::printf("  attributes + packing      %8.3f\n", median(attributes));
+    std::printf("  total                     %8.3f\n", median(total));
+    std::printf("triangles: %zu extracted, %zu after decimation (%.1f %%); vertices %zu\n",
+                result.trianglesExtracted, result.triangles,
+                100.0 * static_cast<double>(result.triangles) /
+                    static_cast<double>(result.trianglesExtracted),
+                result.vertices);
+    std::printf("decimation error estimate: %.3f cells (worst mesh)\n", result.worstErrorCells);
+    std::printf("bytes per vertex: %zu; GPU bytes: %.1f MiB\n", sizeof(ensil::prep::PackedVertex),
+                static_cast<double>(result.gpuBytes()) / (1024.0 * 1024.0));
+    std::printf("peak memory (max RSS): %.0f MiB\n", static_cast<double>(usage.ru_maxrss) / 1024.0);
+    return 0;
+}
