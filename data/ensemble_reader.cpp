@@ -87,6 +87,20 @@ EnsembleDescription describeEnsemble(const DataSelection& selection) {
     return readerFor(selection).describe(selection);
 }
 
+std::string sourceIdentity(const DataSelection& selection) {
+    std::string id;
+    for (const std::string& p : selection.paths) {
+        std::error_code error;
+        const auto absolute = std::filesystem::absolute(p, error).lexically_normal();
+        const auto size = std::filesystem::file_size(p, error);
+        const auto time = std::filesystem::last_write_time(p, error).time_since_epoch().count();
+        id += "file=" + absolute.string() + " size=" + std::to_string(size) +
+              " mtime=" + std::to_string(time) + "; ";
+    }
+    return id + "var=" + selection.variable + " member-dim=" + selection.memberDimension +
+           " time-index=" + std::to_string(selection.timeIndex);
+}
+
 void checkMemoryFor(std::size_t bytes, const std::string& what) {
     const std::size_t available = availableMemory();
     // Keep a quarter of what is free for meshes, the cache and everything else.

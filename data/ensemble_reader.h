@@ -84,6 +84,11 @@ EnsembleDescription describeEnsemble(const DataSelection& selection);
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop = {},
                       const Progress& progress = {});
 
+// What identifies the data a selection reads, for cache keys: every file's absolute path,
+// size and modification time, and the variable, member dimension and time index. A file
+// that changes changes the identity.
+std::string sourceIdentity(const DataSelection& selection);
+
 // Throws Error(OutOfMemory) when `bytes` will not fit in the memory available now.
 void checkMemoryFor(std::size_t bytes, const std::string& what);
 

@@ -359,3 +359,16 @@ TEST(EnsembleReader, RefusesWhatWillNotFitInMemory) {
     }
     EXPECT_NO_THROW(data::checkMemoryFor(1024, "a kilobyte"));
 }
+
+TEST(EnsembleReader, SourceIdentityChangesWhenTheFileOrSelectionDoes) {
+    test::TempDir dir;
+    const std::string path = writeStandard(dir, "member");
+    const data::DataSelection s{.paths = {path}};
+    const std::string before = data::sourceIdentity(s);
+    EXPECT_EQ(before, data::sourceIdentity(s));
+    data::DataSelection other = s;
+    other.timeIndex = 1;
+    EXPECT_NE(before, data::sourceIdentity(other));
+    std::filesystem::last_write_time(path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
+    EXPECT_NE(before, data::sourceIdentity(s)) << "a rewritten file is another source";
+}
