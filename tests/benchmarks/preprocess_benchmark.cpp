@@ -15,6 +15,7 @@
 #include "data/demo_ensemble.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/isosurface_pipeline.h"
+#include "vtk_reference.h"
 
 namespace {
 double median(std::vector<double> v) {
@@ -25,6 +26,7 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
     int runs = 5;
+    std::size_t vtkMembers = 51;
     ensil::prep::PipelineOptions options;
     options.isovalue = 30.0F;
     for (int i = 1; i < argc; ++i) {
@@ -78,5 +80,21 @@ int main(int argc, char** argv) {
     std::printf("bytes per vertex: %zu; GPU bytes: %.1f MiB\n", sizeof(ensil::prep::PackedVertex),
                 static_cast<double>(result.gpuBytes()) / (1024.0 * 1024.0));
     std::printf("peak memory (max RSS): %.0f MiB\n", static_cast<double>(usage.ru_maxrss) / 1024.0);
+
+    // The same work with VTK's filters, decimating to the triangle count reached above.
+    const std::size_t perMember = result.triangles / (e.memberCount() + 1);
+    const std::size_t vtkCount = std::min(vtkMembers, e.memberCount());
+    const VtkReferenceTimes vtk = runVtkReference(e, options.isovalue, vtkCount, perMember);
+    const double scale = static_cast<double>(e.memberCount() + 1) / static_cast<double>(vtkCount);
+    const double vtkTotal = (vtk.isosurface + vtk.decimation + vtk.curvature) * scale;
+    std::printf("VTK reference on %zu members (seconds, scaled to %zu meshes):\n", vtkCount,
+                e.memberCount() + 1);
+    std::printf("  vtkFlyingEdges3D          %8.3f\n", vtk.isosurface * scale);
+    std::printf("  vtkQuadricDecimation      %8.3f  (%zu -> %zu triangles)\n", vtk.decimation * scale,
+                vtk.trianglesIn, vtk.trianglesOut);
+    std::printf("  vtkCurvatures (max + min) %8.3f\n", vtk.curvature * scale);
+    std::printf("  total                     %8.3f\n", vtkTotal);
+    const double ours = median(meshes) + median(decimation) + median(attributes);
+    std::printf("ratio VTK / ensil (meshes + decimation + attributes): %.1fx\n", vtkTotal / ours);
     return 0;
 }

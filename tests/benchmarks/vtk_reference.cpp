@@ -1,0 +1,69 @@
+#include "vtk_reference.h"
+
+#include <vtkCurvatures.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLogger.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkQuadricDecimation.h>
+
+#include <algorithm>
+#include <chrono>
+
+VtkReferenceTimes runVtkReference(const ensil::data::Ensemble& e, float isovalue,
+                                  std::size_t members, std::size_t target) {
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+    };
+    // vtkCurvatures warns for every vertex where its estimate is poor; those lines would bury
+    // the figures.
+    vtkObject::GlobalWarningDisplayOff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_ERROR);
+    VtkReferenceTimes times;
+    for (std::size_t m = 0; m < std::min(members, e.memberCount()); ++m) {
+        vtkNew<vtkImageData> image;
+        image->SetDimensions(static_cast<int>(e.grid.nx()), static_cast<int>(e.grid.ny()),
+                             static_cast<int>(e.grid.nz()));
+        vtkNew<vtkFloatArray> values;
+        // VTK reads the member in place (save = 1: VTK must not free it).
+        values->SetArray(const_cast<float*>(e.members[m].values.data()),
+                         static_cast<vtkIdType>(e.members[m].values.size()), 1);
+        image->GetPointData()->SetScalars(values);
+
+        auto t = Clock::now();
+        vtkNew<vtkFlyingEdges3D> edges;
+        edges->SetInputData(image);
+        edges->SetValue(0, isovalue);
+        edges->ComputeNormalsOff();
+        edges->ComputeGradientsOff();
+        edges->Update();
+        times.isosurface += seconds(t);
+        const auto in = static_cast<std::size_t>(edges->GetOutput()->GetNumberOfPolys());
+        times.trianglesIn += in;
+        if (in == 0) continue;
+
+        t = Clock::now();
+        vtkNew<vtkQuadricDecimation> decimate;
+        decimate->SetInputConnection(edges->GetOutputPort());
+        decimate->SetTargetReduction(1.0 - static_cast<double>(std::min(target, in)) / static_cast<double>(in));
+        decimate->Update();
+        times.decimation += seconds(t);
+        times.trianglesOut += static_cast<std::size_t>(decimate->GetOutput()->GetNumberOfPolys());
+
+        t = Clock::now();
+        vtkNew<vtkCurvatures> curvatures;
+        curvatures->SetInputConnection(decimate->GetOutputPort());
+        curvatures->SetCurvatureTypeToMaximum();
+        curvatures->Update();
+        vtkNew<vtkCurvatures> minimum;
+        minimum->SetInputConnection(decimate->GetOutputPort());
+        minimum->SetCurvatureTypeToMinimum();
+        minimum->Update();
+        times.curvature += seconds(t);
+    }
+    return times;
+}
