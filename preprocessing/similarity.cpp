@@ -1,0 +1,148 @@
+#include "preprocessing/similarity.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "data/error.h"
+
+namespace ensil::prep {
+namespace {
+
+// Column-major: one column per member, one row per grid point of the current block, so a
+// member's values are read and written contiguously.
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
+
+// Points per block: a block matrix (points x members, double) of about 4 MiB keeps memory small
+// for any grid, keeps a block to a few milliseconds (the stop token is checked between blocks),
+// and still gives the matrix products long enough inner dimensions to run at full speed.
+std::size_t blockRows(std::size_t members) {
+    constexpr std::size_t kBlockBytes = std::size_t{4} << 20;
+    return std::clamp<std::size_t>(kBlockBytes / (members * sizeof(double)), 1024, 65536);
+}
+
+// Running sums over the points seen so far, for every pair (i, j). With S_i = M_i s_i the
+// masked square-root distances and M_i the validity masks:
+//   cross(i, j)   = sum_x S_i S_j        (lower triangle only)
+//   squares(i, j) = sum_x S_i^2 M_j      (full matrix; not symmetric)
+//   common(i, j)  = sum_x M_i M_j = m_ij (lower triangle only)
+// so that sum_x M_i M_j (s_i - s_j)^2 = squares(i, j) + squares(j, i) - 2 cross(i, j).
+struct PairSums {
+    Matrix cross;
+    Matrix squares;
+    Matrix common;
+
+    explicit PairSums(Eigen::Index n)
+        : cross(Matrix::Zero(n, n)), squares(Matrix::Zero(n, n)), common(Matrix::Zero(n, n)) {}
+};
+
+// Fills s and mask (rows x members) with the points [first, first + rows) of every
+// member. Returns whether any of these points is missing in any member.
+bool fillBlock(const data::Ensemble& ensemble, double isovalue, std::size_t first, std::size_t rows,
+               Matrix& s, Matrix& mask) {
+    bool missing = false;
+    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
+        const float* values = ensemble.members[m].values.data() + first;
+        double* sColumn = s.col(static_cast<Eigen::Index>(m)).data();
+        double* maskColumn = mask.col(static_cast<Eigen::Index>(m)).data();
+        bool columnMissing = false;
+        // Branch-free so the compiler can vectorise: NaN and infinity fail the comparison.
+        for (std::size_t p = 0; p < rows; ++p) {
+            const double diff = std::abs(static_cast<double>(values[p]) - isovalue);
+            const bool valid = diff <= std::numeric_limits<double>::max();
+            sColumn[p] = valid ? std::sqrt(diff) : 0.0;
+            maskColumn[p] = valid ? 1.0 : 0.0;
+            columnMissing |= !valid;
+        }
+        missing |= columnMissing;
+    }
+    return missing;
+}
+
+void accumulateBlock(const Matrix& s, const Matrix& mask, bool missing, PairSums& sums) {
+    sums.cross.selfadjointView<Eigen::Lower>().rankUpdate(s.transpose());
+    if (missing) {
+        const Matrix squared = s.array().square().matrix();
+        sums.squares.noalias() += squared.transpose() * mask;
+        sums.common.selfadjointView<Eigen::Lower>().rankUpdate(mask.transpose());
+    } else {
+        // Every mask is all ones: the two mask products reduce to column sums and the point
+        // count, which saves two of the three matrix products.
+        const Eigen::VectorXd columnSums = s.array().square().colwise().sum().transpose();
+        sums.squares.colwise() += columnSums;
+        sums.common.array() += static_cast<double>(s.rows());
+    }
+}
+
+DistanceMatrix assemble(const PairSums& sums, std::size_t n) {
+    DistanceMatrix result;
+    result.size = n;
+    result.values.assign(n * n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
+            const double count = sums.common(ii, jj);
+            // The expanded form loses the exact zero of identical members to rounding; clamp
+            // the tiny negative values that can result.
+            const double sum = std::max(
+                0.0, sums.squares(ii, jj) + sums.squares(jj, ii) - 2.0 * sums.cross(ii, jj));
+            const double d = count > 0.0 ? sum / count : std::numeric_limits<double>::infinity();
+            result.values[i * n + j] = d;
+            result.values[j * n + i] = d;
+        }
+    }
+    return result;
+}
+
+void validate(const data::Ensemble& ensemble, float isovalue) {
+    if (ensemble.members.empty()) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "cannot compare the members of an ensemble with no members");
+    }
+    if (!std::isfinite(isovalue)) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "the isovalue for the similarity matrix must be a finite number");
+    }
+    const std::size_t points = ensemble.grid.pointCount();
+    for (const data::Member& member : ensemble.members) {
+        if (member.values.size() != points) {
+            throw data::Error(data::ErrorKind::InvalidArgument,
+                              "member '" + member.name + "' has " +
+                                  std::to_string(member.values.size()) +
+                                  " values but the grid has " + std::to_string(points) + " points");
+        }
+    }
+}
+
+}  // namespace
+
+DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
+                                     const std::stop_token& stop, const Progress& progress) {
+    validate(ensemble, isovalue);
+    const std::size_t n = ensemble.memberCount();
+    const std::size_t points = ensemble.grid.pointCount();
+    const std::size_t maxRows = std::min(blockRows(n), points);
+    const auto columns = static_cast<Eigen::Index>(n);
+    Matrix s(static_cast<Eigen::Index>(maxRows), columns);
+    Matrix mask(static_cast<Eigen::Index>(maxRows), columns);
+    PairSums sums(columns);
+    for (std::size_t first = 0; first < points; first += maxRows) {
+        throwIfStopped(stop);
+        const std::size_t rows = std::min(maxRows, points - first);
+        if (rows < maxRows) {  // the last block is shorter
+            s.resize(static_cast<Eigen::Index>(rows), columns);
+            mask.resize(static_cast<Eigen::Index>(rows), columns);
+        }
+        const bool missing = fillBlock(ensemble, isovalue, first, rows, s, mask);
+        accumulateBlock(s, mask, missing, sums);
+        report(progress, static_cast<double>(first + rows) / static_cast<double>(points));
+    }
+    throwIfStopped(stop);
+    DistanceMatrix result = assemble(sums, n);
+    report(progress, 1.0);
+    return result;
+}
+
+}  // namespace ensil::prep

@@ -1,0 +1,98 @@
+// Speed of the similarity matrix and the member clustering on the paper-sized demo ensemble
+// (50 members, 256 x 128 x 16 points): computeDistanceMatrix at isovalue 30, also with missing
+// values (the masked path), clusterMembers for each linkage, and clusterMembers on 200 random
+// points (the largest N the O(N^3) clustering is meant for). Prints medians over several runs.
+//
+//   ensil_similarity_benchmark [--runs N]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "data/demo_ensemble.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/similarity.h"
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+template <typename F>
+double medianMs(int runs, F&& f) {
+    std::vector<double> times;
+    for (int r = 0; r < runs; ++r) {
+        const auto start = Clock::now();
+        f();
+        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::sort(times.begin(), times.end());
+    return times[times.size() / 2];
+}
+
+// Euclidean distances between n random points in the unit cube.
+ensil::prep::DistanceMatrix randomPointDistances(std::size_t n) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+    std::vector<double> points(3 * n);
+    for (double& c : points) c = coordinate(rng);
+    ensil::prep::DistanceMatrix d{n, std::vector<double>(n * n)};
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            double sum = 0.0;
+            for (std::size_t a = 0; a < 3; ++a) {
+                const double diff = points[3 * i + a] - points[3 * j + a];
+                sum += diff * diff;
+            }
+            d.values[i * n + j] = std::sqrt(sum);
+        }
+    }
+    return d;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace ensil;
+    int runs = 5;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
+    }
+    const auto demo = data::makeDemoEnsemble({});
+    const auto& e = demo.ensemble;
+    std::printf("demo ensemble: %zu members x %zu x %zu x %zu = %zu points, %.1f MiB\n",
+                e.memberCount(), e.grid.nx(), e.grid.ny(), e.grid.nz(), e.grid.pointCount(),
+                static_cast<double>(e.bytes()) / (1024.0 * 1024.0));
+
+    prep::DistanceMatrix d;
+    const double matrixMs = medianMs(runs, [&] { d = prep::computeDistanceMatrix(e, 30.0F); });
+    std::printf("computeDistanceMatrix (isovalue 30):       %8.1f ms  (median of %d)\n", matrixMs,
+                runs);
+
+    // The masked path: the lowest level missing in every member (like terrain below the
+    // surface), so every block of points that touches it needs the mask products.
+    data::Ensemble masked = e;
+    const std::size_t level = e.grid.nx() * e.grid.ny();
+    for (auto& member : masked.members) {
+        std::fill_n(member.values.begin(), level, std::numeric_limits<float>::quiet_NaN());
+    }
+    const double maskedMs = medianMs(runs, [&] { prep::computeDistanceMatrix(masked, 30.0F); });
+    std::printf("computeDistanceMatrix, lowest level NaN:  %8.1f ms\n", maskedMs);
+
+    for (const auto linkage : {prep::Linkage::Average, prep::Linkage::Single,
+                               prep::Linkage::Complete, prep::Linkage::Ward}) {
+        const double ms = medianMs(runs, [&] { prep::clusterMembers(d, linkage); });
+        std::printf("clusterMembers N=%zu %-9s               %8.3f ms\n", d.size,
+                    prep::linkageName(linkage).c_str(), ms);
+    }
+    const auto random = randomPointDistances(200);
+    for (const auto linkage : {prep::Linkage::Average, prep::Linkage::Ward}) {
+        const double ms = medianMs(runs, [&] { prep::clusterMembers(random, linkage); });
+        std::printf("clusterMembers N=200 random points %-9s %8.3f ms\n",
+                    prep::linkageName(linkage).c_str(), ms);
+    }
+    return 0;
+}
