@@ -6,6 +6,7 @@
 #include "app/data_selection_options.h"
 #include "app/generate_command.h"
 #include "app/info_command.h"
+#include "app/preprocess_command.h"
 #include "app/version.h"
 
 namespace ensil::app {
@@ -20,7 +21,7 @@ struct Subcommand {
 constexpr std::array<Subcommand, 4> kSubcommands{{
     {"generate", "Write the built-in demo ensemble as a CF NetCDF file", true},
     {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", true},
-    {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", false},
+    {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", true},
     {"render", "Draw an ensemble's silhouettes to a PNG without a window", false},
 }};
 
@@ -82,8 +83,12 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
             if (QLatin1String(sub->name) == QLatin1String("info")) {
                 return {runInfoCommand(rest, out, err), std::nullopt};
             }
+            if (QLatin1String(sub->name) == QLatin1String("preprocess")) {
+                return {runPreprocessCommand(rest, out, err), std::nullopt};
+            }
             err << "ensil " << sub->name << ": not available in ensil " << ENSIL_VERSION
-                << " yet. Available now: ensil generate, ensil info, and the workbench (ensil).\n";
+                << " yet. Available now: ensil generate, info, preprocess, and the workbench "
+                   "(ensil).\n";
             return {3, std::nullopt};
         }
     }

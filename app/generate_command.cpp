@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
 #include "data/netcdf_writer.h"
@@ -57,14 +58,8 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
                                     QStringLiteral("FILE.nc"));
     parser.addOptions({members, grid, seed, output});
 
-    if (!parser.parse(args)) {
-        err << "ensil generate: " << parser.errorText() << "\n";
-        return 2;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText().replace(QStringLiteral("[options]"),
-                                         QStringLiteral("generate [options]"));
-        return 0;
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("generate"), out, err)) {
+        return *done;
     }
     if (!parser.positionalArguments().isEmpty()) {
         err << "ensil generate: unexpected argument '" << parser.positionalArguments().first()

@@ -7,6 +7,7 @@
 
 #include "app/data_selection_options.h"
 #include "app/ensemble_facts.h"
+#include "app/subcommand.h"
 #include "data/error.h"
 #include "preprocessing/field_statistics.h"
 
@@ -133,15 +134,7 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
     const QCommandLineOption json(QStringLiteral("json"),
                                   QStringLiteral("Print one JSON object instead of text."));
     parser.addOption(json);
-    if (!parser.parse(args)) {
-        err << "ensil info: " << parser.errorText() << "\n";
-        return 2;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText().replace(QStringLiteral("[options]"),
-                                         QStringLiteral("info [options]"));
-        return 0;
-    }
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("info"), out, err)) return *done;
     QString problem;
     const auto selection = selectionOptions.selection(parser, problem);
     if (!selection) {

@@ -1,0 +1,235 @@
+#include "app/preprocess_command.h"
+
+#include <QCommandLineParser>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QStandardPaths>
+#include <algorithm>
+#include <map>
+
+#include "app/data_selection_options.h"
+#include "app/subcommand.h"
+#include "data/demo_ensemble.h"
+#include "data/error.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/field_statistics.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/mesh_cache.h"
+#include "preprocessing/similarity.h"
+
+namespace ensil::app {
+namespace {
+
+struct Options {
+    QCommandLineOption iso{QStringLiteral("iso"), QStringLiteral("The isovalue (required)."),
+                           QStringLiteral("X")};
+    QCommandLineOption clusters{QStringLiteral("clusters"),
+                                QStringLiteral("Number of clusters to label (default 5)."),
+                                QStringLiteral("K"), QStringLiteral("5")};
+    QCommandLineOption linkage{QStringLiteral("linkage"),
+                               QStringLiteral("average (default), single, complete or ward."),
+                               QStringLiteral("L"), QStringLiteral("average")};
+    QCommandLineOption error{QStringLiteral("error"),
+                             QStringLiteral("Decimation error bound in grid cells (default 0.25)."),
+                             QStringLiteral("CELLS"), QStringLiteral("0.25")};
+    QCommandLineOption noDecimation{QStringLiteral("no-decimation"),
+                                    QStringLiteral("Keep every marching-cubes triangle.")};
+    QCommandLineOption noCache{QStringLiteral("no-cache"),
+                               QStringLiteral("Neither read nor write the preprocessing cache.")};
+    QCommandLineOption cacheDir{QStringLiteral("cache-dir"),
+                                QStringLiteral("Folder of the preprocessing cache (default: the "
+                                               "user's cache folder)."),
+                                QStringLiteral("DIR")};
+    QCommandLineOption demo{QStringLiteral("demo"),
+                            QStringLiteral("Use the built-in demo ensemble instead of files.")};
+    QCommandLineOption json{QStringLiteral("json"), QStringLiteral("Print one JSON object.")};
+};
+
+QString cacheDirectory() {
+    return QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
+           QStringLiteral("/meshes");
+}
+
+double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
+
+struct Result {
+    data::Ensemble ensemble;
+    prep::IsovalueMeshes meshes;
+    prep::DistanceMatrix distances;
+    prep::MergeTree tree;
+    std::vector<int> labels;
+    std::map<std::string, double> seconds;
+    QString cache;
+};
+
+QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
+    QJsonObject o;
+    const data::Grid& g = r.ensemble.grid;
+    o[QStringLiteral("members")] = static_cast<qint64>(r.ensemble.memberCount());
+    o[QStringLiteral("grid")] = QJsonArray{static_cast<qint64>(g.nx()), static_cast<qint64>(g.ny()),
+                                           static_cast<qint64>(g.nz())};
+    o[QStringLiteral("variable")] = QString::fromStdString(r.ensemble.variable);
+    o[QStringLiteral("isovalue")] = r.meshes.isovalue;
+    QJsonObject secs;
+    for (const auto& [name, value] : r.seconds) secs[QString::fromStdString(name)] = value;
+    o[QStringLiteral("seconds")] = secs;
+    o[QStringLiteral("cache")] = r.cache;
+    o[QStringLiteral("vertices")] = static_cast<qint64>(r.meshes.vertices);
+    o[QStringLiteral("triangles")] = static_cast<qint64>(r.meshes.triangles);
+    o[QStringLiteral("triangles_extracted")] = static_cast<qint64>(r.meshes.trianglesExtracted);
+    o[QStringLiteral("decimation_error_cells")] = r.meshes.worstErrorCells;
+    o[QStringLiteral("bytes_per_vertex")] = static_cast<int>(sizeof(prep::PackedVertex));
+    o[QStringLiteral("gpu_bytes")] = static_cast<qint64>(r.meshes.gpuBytes());
+    QJsonArray matrix;
+    for (std::size_t i = 0; i < r.distances.size; ++i) {
+        QJsonArray row;
+        for (std::size_t j = 0; j < r.distances.size; ++j) row.append(r.distances.at(i, j));
+        matrix.append(row);
+    }
+    o[QStringLiteral("distance_matrix")] = matrix;
+    o[QStringLiteral("linkage_method")] = QString::fromStdString(prep::linkageName(linkage));
+    QJsonArray rows;
+    for (const prep::Merge& m : r.tree.merges) rows.append(QJsonArray{m.a, m.b, m.height, m.size});
+    o[QStringLiteral("linkage")] = rows;
+    o[QStringLiteral("k")] = k;
+    QJsonArray labels;
+    for (int l : r.labels) labels.append(l);
+    o[QStringLiteral("clusters")] = labels;
+    return o;
+}
+
+void printText(QTextStream& out, const Result& r, int k) {
+    const auto& m = r.meshes;
+    out << "Ensemble:   " << r.ensemble.memberCount() << " members of "
+        << QString::fromStdString(r.ensemble.variable) << " on " << r.ensemble.grid.nx() << " x "
+        << r.ensemble.grid.ny() << " x " << r.ensemble.grid.nz() << ", isovalue " << m.isovalue
+        << "\n";
+    out << "Triangles:  " << m.trianglesExtracted << " extracted, " << m.triangles
+        << " after decimation (error <= " << m.worstErrorCells << " cells); " << m.vertices
+        << " vertices, " << sizeof(prep::PackedVertex) << " bytes each\n";
+    out << "GPU data:   " << QString::number(static_cast<double>(m.gpuBytes()) / 1048576.0, 'f', 2)
+        << " MiB (cache: " << r.cache << ")\n";
+    out << "Seconds:   ";
+    for (const auto& [name, value] : r.seconds) {
+        out << " " << QString::fromStdString(name) << " " << QString::number(value, 'f', 3);
+    }
+    out << "\n";
+    std::vector<int> sizes(static_cast<std::size_t>(k), 0);
+    for (int l : r.labels) ++sizes[static_cast<std::size_t>(l)];
+    out << "Clusters:   " << k << ", sizes";
+    for (int s : sizes) out << " " << s;
+    out << "\n";
+}
+
+}  // namespace
+
+int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Mesh every member's isosurface and the mean's, decimate, compute per-vertex "
+        "attributes, the similarity matrix and the clustering, for one isovalue."));
+    parser.addHelpOption();
+    const DataSelectionOptions selectionOptions;
+    selectionOptions.addTo(parser);
+    const Options o;
+    parser.addOptions({o.iso, o.clusters, o.linkage, o.error, o.noDecimation, o.noCache, o.cacheDir,
+                       o.demo, o.json});
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
+        return *done;
+    QString problem;
+    const auto selection = selectionOptions.selection(parser, problem);
+    bool ok = false;
+    const float iso = parser.value(o.iso).toFloat(&ok);
+    const int k = parser.value(o.clusters).toInt();
+    const float errorCells = parser.value(o.error).toFloat();
+    if (!selection) {
+        err << "ensil preprocess: " << problem << "\n";
+        return 2;
+    }
+    if (selection->paths.empty() != parser.isSet(o.demo)) {
+        err << "ensil preprocess: name the files to preprocess, or use --demo\n";
+        return 2;
+    }
+    if (!parser.isSet(o.iso) || !ok || !std::isfinite(iso)) {
+        err << "ensil preprocess: say which isovalue with --iso X (a number)\n";
+        return 2;
+    }
+    QElapsedTimer total, stage;
+    total.start();
+    try {
+        const prep::Linkage linkage = prep::parseLinkage(parser.value(o.linkage).toStdString());
+        Result r;
+        stage.start();
+        const data::DemoEnsembleParams demo;
+        r.ensemble = parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
+                                          : data::openEnsemble(*selection);
+        r.seconds["load"] = seconds(stage);
+        if (k < 1 || static_cast<std::size_t>(k) > r.ensemble.memberCount()) {
+            err << "ensil preprocess: --clusters must be from 1 to the number of members ("
+                << r.ensemble.memberCount() << ")\n";
+            return 2;
+        }
+        const prep::FieldStatistics stats = prep::computeFieldStatistics(r.ensemble, 0);
+        if (iso <= stats.minimum || iso >= stats.maximum) {
+            err << "ensil preprocess: isovalue " << iso << " is outside the values of '"
+                << QString::fromStdString(r.ensemble.variable) << "' (" << stats.minimum << " .. "
+                << stats.maximum << " " << QString::fromStdString(r.ensemble.units)
+                << "): no member has a surface there. Choose an isovalue inside that range\n";
+            return 1;
+        }
+        prep::PipelineOptions options;
+        options.isovalue = iso;
+        options.decimate = !parser.isSet(o.noDecimation);
+        options.maxErrorCells = errorCells;
+        const std::string source = parser.isSet(o.demo)
+                                       ? "demo members=" + std::to_string(demo.members) +
+                                             " seed=" + std::to_string(demo.seed)
+                                       : data::sourceIdentity(*selection);
+        const std::string key = source + "; " + prep::pipelineKey(options, 1.0F);
+        const prep::MeshCache cache(
+            (parser.isSet(o.cacheDir) ? parser.value(o.cacheDir) : cacheDirectory()).toStdString());
+        std::optional<prep::IsovalueMeshes> cached;
+        r.cache = parser.isSet(o.noCache) ? QStringLiteral("off") : QStringLiteral("miss");
+        stage.restart();
+        if (!parser.isSet(o.noCache)) cached = cache.load(key);
+        if (cached) {
+            r.meshes = std::move(*cached);
+            r.cache = QStringLiteral("hit");
+            r.seconds["cache_read"] = seconds(stage);
+        } else {
+            const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
+            r.seconds["moments"] = seconds(stage);
+            r.meshes = prep::buildIsovalueMeshes(
+                r.ensemble, moments, data::DisplayFrame(r.ensemble.grid, 1.0F), options);
+            r.seconds["meshes"] = r.meshes.seconds.meshes;
+            r.seconds["decimation"] = r.meshes.seconds.decimation;
+            r.seconds["attributes"] = r.meshes.seconds.attributes;
+            if (!parser.isSet(o.noCache)) cache.store(key, r.meshes);
+        }
+        stage.restart();
+        r.distances = prep::computeDistanceMatrix(r.ensemble, iso);
+        r.seconds["similarity"] = seconds(stage);
+        stage.restart();
+        r.tree = prep::clusterMembers(r.distances, linkage);
+        r.labels = prep::clusterLabels(r.tree, k);
+        r.seconds["clustering"] = seconds(stage);
+        r.seconds["total"] = seconds(total);
+        if (parser.isSet(o.json)) {
+            out << QJsonDocument(toJson(r, k, linkage)).toJson(QJsonDocument::Compact) << "\n";
+        } else {
+            printText(out, r, k);
+        }
+        return 0;
+    } catch (const data::Error& e) {
+        err << "ensil preprocess: " << e.what() << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        err << "ensil preprocess: not enough memory\n";
+        return 1;
+    }
+}
+
+}  // namespace ensil::app

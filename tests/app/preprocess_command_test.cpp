@@ -1,0 +1,95 @@
+#include <gtest/gtest.h>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTextStream>
+
+#include "app/command_line.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+namespace {
+struct CommandRun {
+    int code = 0;
+    QString out, err;
+};
+CommandRun preprocess(QStringList args) {
+    args.prepend("preprocess");
+    args.prepend("ensil");
+    CommandRun r;
+    QTextStream out(&r.out), err(&r.err);
+    r.code = app::runCommandLine(args, out, err).exitCode;
+    out.flush();
+    err.flush();
+    return r;
+}
+}  // namespace
+
+TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
+    test::TempDir cache;
+    const QStringList args{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                           "--var",
+                           "t",
+                           "--iso",
+                           "260",
+                           "--clusters",
+                           "3",
+                           "--linkage",
+                           "complete",
+                           "--json",
+                           "--cache-dir",
+                           QString::fromStdString(cache.path().string())};
+    const CommandRun first = preprocess(args);
+    ASSERT_EQ(first.code, 0) << first.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(first.out.toUtf8()).object();
+    EXPECT_EQ(o["members"].toInt(), 10);
+    EXPECT_EQ(o["grid"].toArray(), (QJsonArray{120, 61, 2}));
+    EXPECT_EQ(o["isovalue"].toDouble(), 260.0);
+    EXPECT_EQ(o["cache"].toString(), "miss");
+    for (const char* key :
+         {"load", "meshes", "decimation", "attributes", "similarity", "clustering", "total"}) {
+        EXPECT_TRUE(o["seconds"].toObject().contains(key)) << key;
+    }
+    EXPECT_GT(o["triangles"].toInt(), 0);
+    EXPECT_GT(o["vertices"].toInt(), 0);
+    EXPECT_EQ(o["gpu_bytes"].toInteger(),
+              o["vertices"].toInteger() * 20 + o["triangles"].toInteger() * 12);
+    const QJsonArray d = o["distance_matrix"].toArray();
+    ASSERT_EQ(d.size(), 10);
+    for (int i = 0; i < 10; ++i) {
+        ASSERT_EQ(d[i].toArray().size(), 10);
+        EXPECT_EQ(d[i].toArray()[i].toDouble(), 0.0);
+        for (int j = 0; j < 10; ++j)
+            EXPECT_EQ(d[i].toArray()[j].toDouble(), d[j].toArray()[i].toDouble());
+    }
+    const QJsonArray linkage = o["linkage"].toArray();
+    ASSERT_EQ(linkage.size(), 9) << "N - 1 merges, SciPy's linkage-matrix rows";
+    EXPECT_EQ(linkage.last().toArray()[3].toInt(), 10) << "the last merge holds every member";
+    const QJsonArray labels = o["clusters"].toArray();
+    ASSERT_EQ(labels.size(), 10);
+    for (const auto& l : labels) EXPECT_TRUE(l.toInt() >= 0 && l.toInt() < 3);
+
+    const CommandRun second = preprocess(args);
+    ASSERT_EQ(second.code, 0);
+    const QJsonObject again = QJsonDocument::fromJson(second.out.toUtf8()).object();
+    EXPECT_EQ(again["cache"].toString(), "hit");
+    EXPECT_EQ(again["triangles"], o["triangles"]);
+    EXPECT_EQ(again["clusters"], o["clusters"]);
+}
+
+TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
+    const CommandRun outside = preprocess(
+        {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "400", "--no-cache"});
+    EXPECT_EQ(outside.code, 1);
+    EXPECT_TRUE(outside.err.contains("225.8")) << outside.err.toStdString();
+    EXPECT_EQ(preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}).code, 2) << "no --iso";
+    const CommandRun linkage =
+        preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "260",
+                    "--linkage", "median", "--no-cache"});
+    EXPECT_EQ(linkage.code, 1);
+    EXPECT_TRUE(linkage.err.contains("ward"))
+        << "lists the linkages: " << linkage.err.toStdString();
+    EXPECT_EQ(preprocess({"--iso", "3"}).code, 2) << "neither files nor --demo";
+}
