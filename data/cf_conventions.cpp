@@ -1,5 +1,4 @@
 #include "data/cf_conventions.h"
-#include "data/grid.h"
 
 #include <algorithm>
 #include <array>
@@ -8,6 +7,8 @@
 #include <cstdio>
 #include <regex>
 #include <string_view>
+
+#include "data/grid.h"
 
 namespace ensil::data {
 namespace {

@@ -10,7 +10,9 @@
 #include <string>
 
 #include "data/error.h"
+#include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
+#include "data/vtk_reader.h"
 
 namespace ensil::data {
 namespace {
@@ -20,6 +22,8 @@ const std::vector<std::unique_ptr<EnsembleReader>>& readers() {
     static const auto list = [] {
         std::vector<std::unique_ptr<EnsembleReader>> r;
         r.push_back(std::make_unique<NetcdfReader>());
+        r.push_back(std::make_unique<Hdf5Reader>());
+        r.push_back(std::make_unique<VtkReader>());
         return r;
     }();
     return list;

@@ -116,8 +116,7 @@ Axis makeAxis(const NetcdfFile& file, const NcDimension& dim, std::size_t size, 
         axis.units = file.text(coord->id, "units");
         axis.standardName = file.text(coord->id, "standard_name");
         // CF: pressure coordinates point down even without a `positive` attribute.
-        axis.positiveUp =
-            file.text(coord->id, "positive") != "down" && !isPressureUnit(axis.units);
+        axis.positiveUp = file.text(coord->id, "positive") != "down" && !isPressureUnit(axis.units);
     } else {
         axis.values.resize(size);
         for (std::size_t i = 0; i < size; ++i) axis.values[i] = static_cast<double>(i);

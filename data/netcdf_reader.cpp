@@ -10,9 +10,9 @@
 #include <limits>
 
 #include "data/error.h"
-#include "data/member_files.h"
 #include "data/netcdf_file.h"
 #include "data/netcdf_plan.h"
+#include "data/reader_support.h"
 
 namespace ensil::data {
 namespace {
@@ -190,6 +190,7 @@ bool NetcdfReader::recognizes(const std::string& path) const {
 EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const {
     const std::lock_guard lock(netcdfLibraryMutex());
     const bool oneFile = selection.paths.size() == 1;
+    const std::vector<std::string> stems = memberNamesFromPaths(selection.paths);
     EnsembleDescription d;
     for (std::size_t f = 0; f < selection.paths.size(); ++f) {
         const NetcdfFile file(selection.paths[f]);
@@ -212,9 +213,9 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
             checkSameGrid(selection.paths.front(), d.grid, file.path(), plan.grid);
         }
         std::vector<std::string> names = memberNames(file, plan);
-        if (names.empty()) names.push_back(fileStem(file.path()));
+        if (names.empty()) names.push_back(stems[f]);
         if (!oneFile && plan.memberDim >= 0) {
-            for (std::string& n : names) n = fileStem(file.path()) + " " + n;
+            for (std::string& n : names) n = stems[f] + " " + n;
         }
         d.members += names.size();
         d.memberNames.insert(d.memberNames.end(), names.begin(), names.end());
@@ -230,7 +231,7 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
     e.longName = description.longName;
     e.units = description.units;
     e.memberDimension = description.memberDimension;
-    e.source = sourceLabel(selection.paths);
+    e.source = sourceOf(selection.paths);
     e.grid = description.grid;
     e.members.resize(description.members);
     std::size_t next = 0;

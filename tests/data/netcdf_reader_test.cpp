@@ -369,6 +369,7 @@ TEST(EnsembleReader, SourceIdentityChangesWhenTheFileOrSelectionDoes) {
     data::DataSelection other = s;
     other.timeIndex = 1;
     EXPECT_NE(before, data::sourceIdentity(other));
-    std::filesystem::last_write_time(path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
+    std::filesystem::last_write_time(
+        path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
     EXPECT_NE(before, data::sourceIdentity(s)) << "a rewritten file is another source";
 }
