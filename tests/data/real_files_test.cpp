@@ -126,4 +126,10 @@ TEST(RealFiles, GribAndVtkAreNotMistakenForNetcdf) {
     const data::Error grib = errorOf({.paths = {shared("era5-levels-members.grib")}});
     EXPECT_EQ(grib.kind(), data::ErrorKind::UnsupportedFormat);
     EXPECT_NE(std::string(grib.what()).find("GRIB"), std::string::npos) << grib.what();
+
+    // The VTK volume goes to the VTK reader; two copies make a two-member ensemble.
+    const data::Ensemble iron = data::openEnsemble({.paths = {shared("ironProt.vtk")}});
+    EXPECT_EQ(iron.memberCount(), 1u);
+    EXPECT_EQ(iron.grid.pointCount(), 68u * 68u * 68u);
+    EXPECT_EQ(data::describeEnsemble({.paths = {shared("ironProt.vtk")}}).format, "VTK legacy");
 }
