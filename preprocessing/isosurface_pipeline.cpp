@@ -51,42 +51,57 @@ IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const Ensembl
         return i < n ? ensemble.members[i].values : moments.mean.values;
     };
     const float iso = options.isovalue;
+    const AxisTables axes = axisTables(frame);
     IsovalueMeshes out;
     out.isovalue = iso;
-    std::vector<data::TriangleMesh> meshes(n + 1);
-
-    auto start = Clock::now();
-    forEachField(n + 1, stop, progress, 0.0, 0.4, [&](std::size_t i) {
-        meshes[i] = extractIsosurface(ensemble.grid, field(i), iso, stop);
-    });
-    out.seconds.meshes = since(start);
-    for (const auto& m : meshes) out.trianglesExtracted += m.triangleCount();
-
-    start = Clock::now();
-    std::vector<float> errors(n + 1, 0.0F);
-    forEachField(n + 1, stop, progress, 0.4, 0.6, [&](std::size_t i) {
-        DecimationResult d =
-            decimateMesh(meshes[i], options.decimate ? options.maxErrorCells : 0.0F);
-        meshes[i] = std::move(d.mesh);
-        errors[i] = d.errorCells;
-    });
-    out.seconds.decimation = since(start);
-
-    start = Clock::now();
-    const AxisTables axes = axisTables(frame);
     out.members.resize(n);
-    forEachField(n + 1, stop, progress, 0.6, 1.0, [&](std::size_t i) {
-        // The mean has no outlyingness of its own: it is drawn solid, never removed.
-        const VertexAttributes a = computeVertexAttributes(ensemble.grid, field(i), meshes[i], axes,
-                                                           iso, i < n ? &moments : nullptr, stop);
-        (i < n ? out.members[i] : out.mean) = packMesh(meshes[i], a);
-    });
-    out.seconds.attributes = since(start);
 
-    for (std::size_t i = 0; i <= n; ++i) {
-        out.triangles += meshes[i].triangleCount();
-        out.vertices += meshes[i].vertexCount();
-        out.worstErrorCells = std::max(out.worstErrorCells, errors[i]);
+    // One task per member runs every stage, so each full-resolution mesh is freed as soon as
+    // it is packed: peak memory holds a few raw meshes, not all of them.
+    struct MemberStats {
+        StageSeconds seconds;
+        std::size_t extracted = 0, triangles = 0, vertices = 0;
+        float error = 0.0F;
+    };
+    std::vector<MemberStats> stats(n + 1);
+    const auto start = Clock::now();
+    forEachField(n + 1, stop, progress, 0.0, 1.0, [&](std::size_t i) {
+        MemberStats& s = stats[i];
+        auto t = Clock::now();
+        data::TriangleMesh mesh = extractIsosurface(ensemble.grid, field(i), iso, stop);
+        s.seconds.meshes = since(t);
+        s.extracted = mesh.triangleCount();
+        t = Clock::now();
+        DecimationResult d = decimateMesh(mesh, options.decimate ? options.maxErrorCells : 0.0F);
+        mesh = std::move(d.mesh);
+        s.error = d.errorCells;
+        s.seconds.decimation = since(t);
+        t = Clock::now();
+        // The mean has no outlyingness of its own: it is drawn solid, never removed.
+        const VertexAttributes a = computeVertexAttributes(ensemble.grid, field(i), mesh, axes, iso,
+                                                           i < n ? &moments : nullptr, stop);
+        (i < n ? out.members[i] : out.mean) = packMesh(mesh, a);
+        s.seconds.attributes = since(t);
+        s.triangles = mesh.triangleCount();
+        s.vertices = mesh.vertexCount();
+    });
+    const double wall = since(start);
+
+    // Stages ran interleaved on all threads: give each stage its share of the wall time.
+    StageSeconds busy;
+    for (const MemberStats& s : stats) {
+        busy.meshes += s.seconds.meshes;
+        busy.decimation += s.seconds.decimation;
+        busy.attributes += s.seconds.attributes;
+        out.trianglesExtracted += s.extracted;
+        out.triangles += s.triangles;
+        out.vertices += s.vertices;
+        out.worstErrorCells = std::max(out.worstErrorCells, s.error);
+    }
+    const double total = busy.meshes + busy.decimation + busy.attributes;
+    if (total > 0.0) {
+        out.seconds = {wall * busy.meshes / total, wall * busy.decimation / total,
+                       wall * busy.attributes / total};
     }
     return out;
 }

@@ -1,7 +1,8 @@
 // Everything the renderer needs for one isovalue: every member's isosurface and the mean
-// member's, each meshed, optionally decimated, given per-vertex attributes and packed. Runs as
-// three passes, each parallel over members (oneTBB), so each stage's time can be reported.
-// A new isovalue needs nothing precomputed but the ensemble moments. Pure function; any thread.
+// member's, each meshed, optionally decimated, given per-vertex attributes and packed. One
+// task per member runs all stages (oneTBB, with marching cubes itself parallel over layers),
+// so full-resolution meshes never pile up. A new isovalue needs nothing precomputed but the
+// ensemble moments. Pure function; any thread.
 #pragma once
 
 #include <stop_token>
@@ -21,6 +22,8 @@ struct PipelineOptions {
     float maxErrorCells = 0.25F;  // decimation error bound, in grid cells
 };
 
+// Wall-clock seconds, apportioned among the stages by their share of the threads' busy time
+// (the stages of different members overlap).
 struct StageSeconds {
     double meshes = 0, decimation = 0, attributes = 0;
 };

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
+#include <limits>
 
 namespace ensil::prep {
 namespace {
@@ -18,7 +19,8 @@ public:
           m_n{grid.nx(), grid.ny(), grid.nz()},
           m_step{1, grid.nx(), grid.nx() * grid.ny()} {}
 
-    // d f / d axis at grid point (i, j, k): central, one-sided at the border or next to NaN.
+    // d f / d axis at grid point (i, j, k): central (three-point on uneven spacing), one-sided
+    // at the border or next to NaN.
     [[nodiscard]] double first(const std::array<std::size_t, 3>& p, int axis) const {
         return slope(p, axis, [this](const std::array<std::size_t, 3>& q) { return value(q); });
     }
@@ -34,21 +36,28 @@ private:
     template <typename F>
     [[nodiscard]] double slope(const std::array<std::size_t, 3>& p, int axis, F&& f) const {
         const auto a = static_cast<std::size_t>(axis);
+        const std::vector<double>& x = m_axes[a];
+        const double f0 = f(p);
         std::array<std::size_t, 3> lo = p, hi = p;
-        if (p[a] > 0) --lo[a];
-        if (p[a] + 1 < m_n[a]) ++hi[a];
-        double fl = f(lo), fh = f(hi);
-        // Next to a missing value, fall back to the one-sided difference on the valid side.
-        if (std::isnan(fl) && lo != p) {
-            lo = p;
+        double fl = std::numeric_limits<double>::quiet_NaN(), fh = fl;
+        if (p[a] > 0) {
+            --lo[a];
             fl = f(lo);
         }
-        if (std::isnan(fh) && hi != p) {
-            hi = p;
+        if (p[a] + 1 < m_n[a]) {
+            ++hi[a];
             fh = f(hi);
         }
-        const double dx = m_axes[a][hi[a]] - m_axes[a][lo[a]];
-        return dx != 0.0 && std::isfinite(fl) && std::isfinite(fh) ? (fh - fl) / dx : 0.0;
+        const bool hasLo = std::isfinite(fl), hasHi = std::isfinite(fh);
+        if (hasLo && hasHi && std::isfinite(f0)) {
+            // Second-order accurate on uneven spacing (the plain central difference is not).
+            const double hm = x[p[a]] - x[lo[a]], hp = x[hi[a]] - x[p[a]];
+            return (hm * hm * fh - hp * hp * fl + (hp * hp - hm * hm) * f0) / (hm * hp * (hm + hp));
+        }
+        // At the border or next to a missing value: one-sided, on the valid side.
+        if (hasHi && std::isfinite(f0)) return (fh - f0) / (x[hi[a]] - x[p[a]]);
+        if (hasLo && std::isfinite(f0)) return (f0 - fl) / (x[p[a]] - x[lo[a]]);
+        return 0.0;
     }
 
     std::span<const float> m_f;

@@ -1,8 +1,8 @@
 #include "vtk_reference.h"
 
 #include <vtkCurvatures.h>
-#include <vtkFlyingEdges3D.h>
 #include <vtkFloatArray.h>
+#include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
@@ -49,7 +49,8 @@ VtkReferenceTimes runVtkReference(const ensil::data::Ensemble& e, float isovalue
         t = Clock::now();
         vtkNew<vtkQuadricDecimation> decimate;
         decimate->SetInputConnection(edges->GetOutputPort());
-        decimate->SetTargetReduction(1.0 - static_cast<double>(std::min(target, in)) / static_cast<double>(in));
+        decimate->SetTargetReduction(1.0 - static_cast<double>(std::min(target, in)) /
+                                               static_cast<double>(in));
         decimate->Update();
         times.decimation += seconds(t);
         times.trianglesOut += static_cast<std::size_t>(decimate->GetOutput()->GetNumberOfPolys());

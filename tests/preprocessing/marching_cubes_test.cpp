@@ -47,7 +47,7 @@ TEST(MarchingCubes, SphereIsClosedOrientedGenusZeroWithTheRightArea) {
     EXPECT_EQ(topo.inconsistentEdges, 0u);
     EXPECT_EQ(topo.euler, 2) << "a sphere";
     const double exact = 4.0 * std::numbers::pi * 12.0 * 12.0;
-    EXPECT_NEAR(test::areaOf(m), exact, 0.02 * exact);
+    EXPECT_NEAR(test::areaOf(m), exact, 0.01 * exact);
     // Winding: counter-clockwise seen from lower values, so the geometric normal is -grad f,
     // which for the distance field points to the centre.
     for (std::size_t t = 0; t < m.indices.size(); t += 3) {
