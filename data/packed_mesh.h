@@ -36,4 +36,11 @@ struct PackedMesh {
     }
 };
 
+// The meshes of one isovalue as the renderer takes them: every member's and the mean's.
+struct MeshSet {
+    float isovalue = 0.0F;
+    std::vector<PackedMesh> members;
+    PackedMesh mean;
+};
+
 }  // namespace ensil::data

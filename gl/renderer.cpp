@@ -9,18 +9,10 @@
 #include <stdexcept>
 
 #include "gl/gl_functions.h"
+#include "gl/renderer_gpu.h"
 #include "gl/shader_library.h"
 
 namespace ensil::gl {
-
-struct Renderer::Gpu {
-    GlFunctions* f = nullptr;
-    ShaderLibrary shaders;
-    GLuint boxVao = 0, boxVbo = 0;
-    GLuint quadVao = 0, quadVbo = 0;
-    GLuint floorTexture = 0;
-    glm::ivec2 floorSize{0};
-};
 
 Renderer::Renderer() = default;
 Renderer::~Renderer() = default;  // GPU objects are released by releaseGpuResources().
@@ -44,6 +36,9 @@ void Renderer::initialize() {
     // Compile now so a broken shader is reported at start-up, not at the first frame.
     gpu->shaders.program(QStringLiteral("lines"));
     gpu->shaders.program(QStringLiteral("floor_map"));
+    gpu->shaders.program(QStringLiteral("surface"));
+    gpu->shaders.program(QStringLiteral("composite"));
+    gpu->shaders.program(QStringLiteral("present"), QStringLiteral("composite"));
 
     f.glGenVertexArrays(1, &gpu->boxVao);
     f.glGenBuffers(1, &gpu->boxVbo);
@@ -65,8 +60,12 @@ void Renderer::initialize() {
     f.glBindVertexArray(0);
 
     f.glGenTextures(1, &gpu->floorTexture);
+    f.glGenTextures(1, &gpu->axisTables);
+    f.glGenVertexArrays(1, &gpu->emptyVao);
     m_gpu = std::move(gpu);
     m_floorDirty = true;
+    m_axisTablesDirty = true;
+    m_meshesDirty = true;
 }
 
 void Renderer::releaseGpuResources() {
@@ -77,6 +76,10 @@ void Renderer::releaseGpuResources() {
     f.glDeleteVertexArrays(1, &m_gpu->quadVao);
     f.glDeleteBuffers(1, &m_gpu->quadVbo);
     f.glDeleteTextures(1, &m_gpu->floorTexture);
+    f.glDeleteTextures(1, &m_gpu->axisTables);
+    f.glDeleteVertexArrays(1, &m_gpu->emptyVao);
+    m_gpu->meshes.release(f);
+    m_gpu->targets.release(f);
     m_gpu->shaders.clear();
     m_gpu.reset();
 }
@@ -85,12 +88,14 @@ void Renderer::setGrid(const data::Grid& grid) {
     m_grid = grid;
     m_hasGrid = true;
     m_frame = data::DisplayFrame(grid, m_frame.verticalExaggeration());
+    m_axisTablesDirty = true;
     resetCamera();
 }
 
 void Renderer::setVerticalExaggeration(float exaggeration) {
     if (m_hasGrid) {
         m_frame = data::DisplayFrame(m_grid, exaggeration);
+        m_axisTablesDirty = true;
         m_camera.fit(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
     }
 }
@@ -141,22 +146,49 @@ void Renderer::uploadFloorMap() {
 
 void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
+    if (width <= 0 || height <= 0) return;
     GlFunctions& f = *m_gpu->f;
-    f.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    m_gpu->targets.ensure(f, width, height);
+    f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());
     f.glViewport(0, 0, width, height);
     f.glClearColor(m_background.r, m_background.g, m_background.b, m_background.a);
     f.glClearDepth(1.0);
+    f.glDepthMask(GL_TRUE);
     f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (!m_hasGrid || width <= 0 || height <= 0) return;
-    if (m_floorDirty) uploadFloorMap();
+    if (m_hasGrid) {
+        if (m_floorDirty) uploadFloorMap();
+        if (m_axisTablesDirty) uploadAxisTables();
+        const float aspect = static_cast<float>(width) / static_cast<float>(height);
+        const glm::mat4 viewProjection = m_camera.viewProjection(aspect);
+        drawFloorAndBox(viewProjection);
+        drawMeshes(viewProjection, width, height);
+    }
+    present(framebuffer, width, height);
+}
 
+void Renderer::present(unsigned framebuffer, int width, int height) {
+    GlFunctions& f = *m_gpu->f;
+    f.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    f.glViewport(0, 0, width, height);
+    f.glDisable(GL_DEPTH_TEST);
+    f.glDisable(GL_BLEND);
+    QOpenGLShaderProgram& program = m_gpu->shaders.program(QStringLiteral("present"));
+    program.bind();
+    program.setUniformValue("u_scene", 0);
+    f.glActiveTexture(GL_TEXTURE0);
+    f.glBindTexture(GL_TEXTURE_2D, m_gpu->targets.sceneColor());
+    f.glBindVertexArray(m_gpu->emptyVao);
+    f.glDrawArrays(GL_TRIANGLES, 0, 3);
+    f.glBindVertexArray(0);
+    program.release();
+}
+
+void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
+    GlFunctions& f = *m_gpu->f;
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthFunc(GL_LEQUAL);
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const glm::mat4 viewProjection = m_camera.viewProjection(aspect);
     const glm::vec3 lo = m_frame.boxMin();
     const glm::vec3 hi = m_frame.boxMax();
-
     if (m_gpu->floorSize.x > 0) {
         QOpenGLShaderProgram& floor = m_gpu->shaders.program(QStringLiteral("floor_map"));
         floor.bind();

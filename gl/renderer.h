@@ -1,6 +1,10 @@
 // Draws the 3D scene into whatever framebuffer is bound (a window's, or an offscreen one for
-// tests and `ensil render`). Today: the data box with its edges and, on its floor, a map of the
-// column maximum of the mean member. Later issues add the silhouettes.
+// tests and `ensil render`): the data box with its edges, a map of the mean's column maximum on
+// its floor, the mean isosurface as a solid gray surface, and every member's isosurface as
+// shaded silhouettes, a 3D spaghetti plot or semi-transparent surfaces (RenderSettings).
+// Translucent members are composited with weighted blended order-independent transparency, so
+// the image does not depend on the order members are drawn in. The scene is drawn into the
+// renderer's own targets first and then copied to the caller's framebuffer.
 // Threading: setters may be called at any time on the GUI thread; initialize(), render() and
 // releaseGpuResources() need the owning OpenGL context current. The renderer owns its GL
 // objects and must release them before that context dies (QOpenGLContext::aboutToBeDestroyed).
@@ -10,9 +14,11 @@
 #include <memory>
 #include <vector>
 
-#include "data/grid.h"
-#include "gl/camera.h"
 #include "data/display_frame.h"
+#include "data/grid.h"
+#include "data/packed_mesh.h"
+#include "gl/camera.h"
+#include "gl/render_settings.h"
 
 namespace ensil::gl {
 
@@ -43,6 +49,16 @@ public:
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
     void setVerticalExaggeration(float exaggeration);
+    // The meshes of the current isovalue (uploaded at the next frame); null clears them.
+    void setMeshes(std::shared_ptr<const data::MeshSet> meshes);
+    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& meshes() const { return m_meshes; }
+    // One entry per member; members without an entry are drawn light gray.
+    void setAppearance(std::vector<MemberAppearance> appearance) {
+        m_appearance = std::move(appearance);
+    }
+    [[nodiscard]] RenderSettings& settings() { return m_settings; }
+    // Bytes of mesh data on the GPU now.
+    [[nodiscard]] std::size_t gpuBytes() const;
     void setBackground(const glm::vec4& color) { m_background = color; }
 
     [[nodiscard]] const data::DisplayFrame& frame() const { return m_frame; }
@@ -56,6 +72,10 @@ public:
 private:
     struct Gpu;
     void uploadFloorMap();
+    void uploadAxisTables();
+    void drawFloorAndBox(const glm::mat4& viewProjection);
+    void drawMeshes(const glm::mat4& viewProjection, int width, int height);
+    void present(unsigned framebuffer, int width, int height);
 
     std::unique_ptr<Gpu> m_gpu;
     data::Grid m_grid;
@@ -64,6 +84,11 @@ private:
     Camera m_camera;
     FloorMap m_floor;
     bool m_floorDirty = false;
+    bool m_axisTablesDirty = false;
+    std::shared_ptr<const data::MeshSet> m_meshes;
+    bool m_meshesDirty = false;
+    std::vector<MemberAppearance> m_appearance;
+    RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
 };
 

@@ -16,7 +16,7 @@ QByteArray ShaderLibrary::source(const QString& file) {
     return f.readAll();
 }
 
-QOpenGLShaderProgram& ShaderLibrary::program(const QString& name) {
+QOpenGLShaderProgram& ShaderLibrary::program(const QString& name, const QString& vertex) {
     auto found = m_programs.find(name);
     if (found != m_programs.end()) return *found->second;
 
@@ -27,7 +27,7 @@ QOpenGLShaderProgram& ShaderLibrary::program(const QString& name) {
                               program->log().toStdString());
         }
     };
-    compile(QOpenGLShader::Vertex, name + QStringLiteral(".vert"));
+    compile(QOpenGLShader::Vertex, (vertex.isEmpty() ? name : vertex) + QStringLiteral(".vert"));
     compile(QOpenGLShader::Fragment, name + QStringLiteral(".frag"));
     if (!program->link()) {
         throw ShaderError("shader program '" + name.toStdString() + "' does not link:\n" +

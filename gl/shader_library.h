@@ -19,9 +19,10 @@ public:
 
 class ShaderLibrary {
 public:
-    // Returns the program built from NAME.vert and NAME.frag, compiling it on first use.
-    // Throws ShaderError with the compiler's log if it does not compile or link.
-    QOpenGLShaderProgram& program(const QString& name);
+    // Returns the program built from VERTEX.vert (NAME.vert when vertex is empty) and
+    // NAME.frag, compiling it on first use. Throws ShaderError with the compiler's log if it
+    // does not compile or link.
+    QOpenGLShaderProgram& program(const QString& name, const QString& vertex = {});
     // Destroys every program; the context that created them must be current.
     void clear() { m_programs.clear(); }
 

@@ -1,0 +1,38 @@
+// GPU copies of the packed meshes of one isovalue: a vertex array with the 20-byte vertex
+// layout (data/packed_mesh.h) and an index buffer per mesh. GUI thread, with the owning
+// context current; release() before the context goes.
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "data/packed_mesh.h"
+#include "gl/gl_functions.h"
+
+namespace ensil::gl {
+
+struct GpuMesh {
+    GLuint vao = 0, vertices = 0, indices = 0;
+    GLsizei indexCount = 0;
+    glm::vec3 boundsMin{0.0F}, boundsMax{0.0F};
+    float outlyingnessScale = 1.0F;
+};
+
+class GpuMeshCache {
+public:
+    void upload(GlFunctions& f, const data::MeshSet& meshes);
+    void release(GlFunctions& f);
+
+    [[nodiscard]] const std::vector<GpuMesh>& members() const { return m_members; }
+    [[nodiscard]] const GpuMesh& mean() const { return m_mean; }
+    [[nodiscard]] std::size_t bytes() const { return m_bytes; }
+
+private:
+    GpuMesh uploadOne(GlFunctions& f, const data::PackedMesh& mesh);
+
+    std::vector<GpuMesh> m_members;
+    GpuMesh m_mean;
+    std::size_t m_bytes = 0;
+};
+
+}  // namespace ensil::gl

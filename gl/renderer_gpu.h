@@ -1,0 +1,30 @@
+// The renderer's GPU state, shared by its source files (renderer.cpp draws the frame, the box
+// and the floor; renderer_meshes.cpp draws the isosurfaces). Internal to gl/.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "gl/gl_functions.h"
+#include "gl/gpu_mesh_cache.h"
+#include "gl/render_targets.h"
+#include "gl/renderer.h"
+#include "gl/shader_library.h"
+
+namespace ensil::gl {
+
+struct Renderer::Gpu {
+    GlFunctions* f = nullptr;
+    ShaderLibrary shaders;
+    GLuint boxVao = 0, boxVbo = 0;
+    GLuint quadVao = 0, quadVbo = 0;
+    GLuint emptyVao = 0;  // for the full-screen passes, which need no vertex data
+    GLuint floorTexture = 0;
+    glm::ivec2 floorSize{0};
+    GLuint axisTables = 0;  // row a: the display coordinate of every grid index along axis a
+    glm::ivec3 axisSize{0};
+    GpuMeshCache meshes;
+    RenderTargets targets;
+};
+
+}  // namespace ensil::gl

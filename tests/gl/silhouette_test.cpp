@@ -1,0 +1,182 @@
+// Rendering the isosurfaces of analytic ensembles: spheres give exact expectations for where
+// silhouettes must and must not be. The meshes come from the real preprocessing pipeline.
+#include <gtest/gtest.h>
+
+#include <QColor>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include "data/ensemble.h"
+#include "gl/palette.h"
+#include "gl/renderer.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/offscreen_gl.h"
+
+using namespace ensil;
+
+namespace {
+// Members are spheres |x - c_m| = 8 on a 32^3 unit grid, centres given in cells.
+data::Ensemble spheres(const std::vector<glm::vec3>& centres) {
+    data::Ensemble e;
+    e.grid = data::Grid(data::makeUniformAxis("x", "m", 0, 31, 32),
+                        data::makeUniformAxis("y", "m", 0, 31, 32),
+                        data::makeUniformAxis("z", "m", 0, 31, 32));
+    for (const glm::vec3& c : centres) {
+        data::Member m;
+        m.values.resize(e.grid.pointCount());
+        for (std::size_t k = 0; k < 32; ++k)
+            for (std::size_t j = 0; j < 32; ++j)
+                for (std::size_t i = 0; i < 32; ++i)
+                    m.values[e.grid.index(i, j, k)] = glm::length(glm::vec3(i, j, k) - c);
+        e.members.push_back(std::move(m));
+    }
+    return e;
+}
+
+std::shared_ptr<data::MeshSet> meshesOf(const data::Ensemble& e) {
+    prep::PipelineOptions options;
+    options.isovalue = 8.0F;
+    auto built = prep::buildIsovalueMeshes(e, prep::computeEnsembleMoments(e),
+                                           data::DisplayFrame(e.grid, 1.0F), options);
+    auto set = std::make_shared<data::MeshSet>();
+    set->members = std::move(built.members);
+    set->mean = std::move(built.mean);
+    return set;
+}
+
+int channelDistance(const QColor& c, const glm::vec3& e) {
+    return std::max({std::abs(c.red() - int(e.r * 255)), std::abs(c.green() - int(e.g * 255)),
+                     std::abs(c.blue() - int(e.b * 255))});
+}
+}  // namespace
+
+class SilhouetteTest : public test::OffscreenGlTest {
+protected:
+    void SetUp() override {
+        test::OffscreenGlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        m_renderer.initialize();
+        m_renderer.setBackground({0, 0, 0, 1});
+    }
+    void TearDown() override {
+        if (m_renderer.isInitialized()) m_renderer.releaseGpuResources();
+        test::OffscreenGlTest::TearDown();
+    }
+    void show(const data::Ensemble& e, std::vector<glm::vec3> colours) {
+        m_renderer.setGrid(e.grid);
+        m_renderer.camera().setAngles(-90.0F, 0.0F);  // looking along +y
+        m_renderer.camera().fit(m_renderer.frame().center(), 0.45F);
+        m_renderer.setMeshes(meshesOf(e));
+        std::vector<gl::MemberAppearance> look;
+        for (const glm::vec3& c : colours) look.push_back({c, true, false});
+        m_renderer.setAppearance(look);
+    }
+    QImage draw() {
+        m_renderer.render(framebuffer(), kWidth, kHeight);
+        return grab();
+    }
+    QPoint project(const glm::vec3& p) {
+        const glm::vec4 c =
+            m_renderer.camera().viewProjection(float(kWidth) / kHeight) * glm::vec4(p, 1.0F);
+        return {int((c.x / c.w * 0.5F + 0.5F) * kWidth),
+                int((1.0F - (c.y / c.w * 0.5F + 0.5F)) * kHeight)};
+    }
+    // Display position of grid index (i, j, k) on the 32^3 unit grid.
+    glm::vec3 display(glm::vec3 index) { return m_renderer.frame().indexToDisplay(index); }
+    gl::Renderer m_renderer;
+};
+
+TEST_F(SilhouetteTest, ShadedSilhouetteOutlinesTheRimAndLeavesTheFaceEmpty) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {{1.0F, 0.5F, 0.0F}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    const QImage image = draw();
+    // Facing the viewer, the surface is no silhouette: background.
+    const QPoint middle = project(display(centre));
+    EXPECT_LE(channelDistance(image.pixelColor(middle), {0, 0, 0}), 3)
+        << image.pixelColor(middle).name().toStdString();
+    // On the rim (8 cells to the side, perpendicular to the view), the member's colour.
+    const QPoint rim = project(display(centre + glm::vec3(7.9F, 0, 0)));
+    int best = 255;
+    for (int dx = -3; dx <= 3; ++dx)
+        best = std::min(best,
+                        channelDistance(image.pixelColor(rim + QPoint(dx, 0)), {1.0F, 0.5F, 0.0F}));
+    EXPECT_LE(best, 40) << "no silhouette at the rim";
+}
+
+TEST_F(SilhouetteTest, TheMeanIsASolidGraySurface) {
+    show(spheres({{13, 15.5F, 15.5F}, {18, 15.5F, 15.5F}}), {{1, 0, 0}, {0, 0, 1}});
+    m_renderer.settings().showMean = true;
+    const QImage image = draw();
+    const QColor middle = image.pixelColor(project(display({15.5F, 15.5F, 15.5F})));
+    EXPECT_EQ(middle.red(), middle.green()) << "gray";
+    EXPECT_EQ(middle.green(), middle.blue()) << "gray";
+    EXPECT_GT(middle.red(), 120) << "lit, facing the headlight";
+}
+
+TEST_F(SilhouetteTest, TheImageDoesNotDependOnTheOrderMembersAreDrawnIn) {
+    // Three overlapping spheres in three colours, drawn in two orders.
+    const std::vector<glm::vec3> centres{{12, 15.5F, 15.5F}, {16, 14, 16}, {19, 17, 15}};
+    const std::vector<glm::vec3> colours{{1, 0.2F, 0.2F}, {0.2F, 1, 0.2F}, {0.2F, 0.3F, 1}};
+    show(spheres(centres), colours);
+    m_renderer.settings().showMean = false;
+    const QImage forward = draw();
+    show(spheres({centres[2], centres[1], centres[0]}), {colours[2], colours[1], colours[0]});
+    m_renderer.settings().showMean = false;
+    const QImage backward = draw();
+    // Floating-point sums in another order may differ in the last bit: allow 2/255.
+    EXPECT_LE(test::differingFraction(forward, backward, 2), 0.0) << "order-dependent pixels";
+    EXPECT_GT(test::differingFraction(forward, QImage(forward.size(), forward.format()), 2), 0.01)
+        << "the scene is not empty";
+}
+
+TEST_F(SilhouetteTest, SpaghettiIsOpaqueAndSurfacesAreFaint) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {{0.0F, 1.0F, 0.0F}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    m_renderer.settings().mode = gl::RenderMode::Spaghetti;
+    QImage image = draw();
+    const QPoint rim = project(display(centre + glm::vec3(7.9F, 0, 0)));
+    bool opaque = false;
+    for (int dx = -3; dx <= 3; ++dx)
+        opaque = opaque || image.pixelColor(rim + QPoint(dx, 0)) == QColor(0, 255, 0);
+    EXPECT_TRUE(opaque) << "spaghetti lines are the member's colour, fully opaque";
+
+    m_renderer.settings().mode = gl::RenderMode::Surfaces;
+    m_renderer.settings().surfaceAlpha = 0.25F;
+    image = draw();
+    const QColor middle = image.pixelColor(project(display(centre)));
+    EXPECT_GT(middle.green(), 20) << "the face is drawn";
+    EXPECT_LT(middle.green(), 180) << "but translucent";
+}
+
+TEST_F(SilhouetteTest, RemovalHidesMembersWhereTheyAgree) {
+    // Two identical spheres: outlyingness is zero everywhere, so removal with o*_min > 0 hides
+    // them completely.
+    show(spheres({{15.5F, 15.5F, 15.5F}, {15.5F, 15.5F, 15.5F}}), {{1, 1, 0}, {1, 1, 0}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    const QImage before = draw();
+    m_renderer.settings().removal = true;
+    m_renderer.settings().removalMin = 0.5F;
+    m_renderer.settings().removalMax = 1.0F;
+    const QImage after = draw();
+    m_renderer.setMeshes(nullptr);
+    const QImage empty = draw();  // the box alone
+    EXPECT_GT(test::differingFraction(before, empty, 8), 0.01) << "silhouettes were drawn";
+    EXPECT_EQ(test::differingFraction(after, empty, 8), 0.0) << "and all of them removed";
+}
+
+TEST_F(SilhouetteTest, ShadedSilhouettesMatchBaseline) {
+    show(spheres({{12, 15.5F, 15.5F}, {17, 15, 17}, {19, 17.5F, 13}}),
+         {gl::clusterColor(0), gl::clusterColor(1), gl::clusterColor(2)});
+    m_renderer.camera().setAngles(-60.0F, 25.0F);
+    m_renderer.camera().fit(m_renderer.frame().center(), 0.5F);
+    const test::ImageComparison result =
+        test::compareWithBaseline(draw(), "silhouettes_three_spheres");
+    EXPECT_TRUE(result.passed) << result.message.toStdString();
+}
