@@ -11,12 +11,10 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
-#include <QPromise>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUnhandledException>
-#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 #include <limits>
 
@@ -72,10 +70,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createDocks();
     createMenus();
     createStatusBar();
-    connect(&m_loader, &QFutureWatcher<EnsembleOverview>::progressValueChanged, this,
-            [this](int value) { m_progress->setValue(value); });
-    connect(&m_loader, &QFutureWatcher<EnsembleOverview>::finished, this,
-            &MainWindow::onLoaderFinished);
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -91,18 +85,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
 }
 
 MainWindow::~MainWindow() {
-    // A worker must not outlive the window whose stop source and watcher it reports to.
-    if (m_loaderStop) m_loaderStop->request_stop();
-    waitForLoader();
-}
-
-void MainWindow::waitForLoader() {
-    // QFuture rethrows the worker's exception from waitForFinished(); onLoaderFinished() reports
-    // it, so here it only needs to end.
-    try {
-        m_loader.waitForFinished();
-    } catch (...) {
-    }
+    // A worker must not outlive the window it reports to.
+    m_loader.cancel();
+    m_loader.wait();
 }
 
 void MainWindow::createDocks() {
@@ -211,24 +196,20 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
 }
 
 void MainWindow::startLoading(const QString& what, EnsembleSource source) {
-    cancelLoading();
-    waitForLoader();
-    auto stop = std::make_shared<std::stop_source>();
-    m_loaderStop = stop;
     setBusy(what);
     if (!m_overview) m_info->showMessage(tr("Loading..."));
-    m_loader.setFuture(
-        QtConcurrent::run([source = std::move(source), stop](QPromise<EnsembleOverview>& promise) {
-            promise.setProgressRange(0, kProgressSteps);
-            const auto progress = [&promise](double f) {
-                promise.setProgressValue(static_cast<int>(f * kProgressSteps));
-            };
-            const std::stop_token token = stop->get_token();
+    m_loader.start(
+        [source = std::move(source)](const std::stop_token& stop, const data::Progress& progress) {
             auto ensemble = std::make_shared<const data::Ensemble>(
-                source(token, [&](double f) { progress(0.6 * f); }));
-            promise.addResult(buildEnsembleOverview(std::move(ensemble), token,
-                                                    [&](double f) { progress(0.6 + 0.4 * f); }));
-        }));
+                source(stop, [&](double f) { data::report(progress, 0.6 * f); }));
+            return buildEnsembleOverview(std::move(ensemble), stop,
+                                         [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+        },
+        [this](EnsembleOverview overview) {
+            showOverview(std::make_unique<EnsembleOverview>(std::move(overview)));
+        },
+        [this](std::exception_ptr error, bool cancelled) { onLoadFailed(error, cancelled); },
+        [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
 }
 
 void MainWindow::chooseFiles() {
@@ -278,41 +259,29 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::cancelLoading() {
-    if (m_loaderStop) m_loaderStop->request_stop();
-}
+void MainWindow::cancelLoading() { m_loader.cancel(); }
 
-void MainWindow::onLoaderFinished() {
-    QFuture<EnsembleOverview> future = m_loader.future();
-    const bool cancelled = m_loaderStop && m_loaderStop->stop_requested();
-    try {
-        future.waitForFinished();  // rethrows the worker's exception, if any
-        if (future.resultCount() == 1) {
-            showOverview(std::make_unique<EnsembleOverview>(future.result()));
-            return;
-        }
-    } catch (...) {
-        if (!cancelled) {
-            const auto dataError = dataErrorOf(std::current_exception());
-            if (dataError && dataError->kind() == data::ErrorKind::MemberDimensionNotFound &&
-                !dataError->choices().empty() && m_requested) {
-                askForMemberDimension(*dataError);
-                return;
-            }
-            const QString message = messageOf(std::current_exception());
-            setIdle(tr("Loading failed: %1").arg(message));
-            if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
-            // Not modal: the window stays usable, and scripted sessions are not blocked.
-            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the ensemble"),
-                                        message, QMessageBox::Ok, this);
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-            emit loadingFailed(message);
-            return;
-        }
+void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
+    if (cancelled || !error) {
+        setIdle(tr("Loading cancelled"));
+        if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+        return;
     }
-    setIdle(tr("Loading cancelled"));
-    if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+    const auto dataError = dataErrorOf(error);
+    if (dataError && dataError->kind() == data::ErrorKind::MemberDimensionNotFound &&
+        !dataError->choices().empty() && m_requested) {
+        askForMemberDimension(*dataError);
+        return;
+    }
+    const QString message = messageOf(error);
+    setIdle(tr("Loading failed: %1").arg(message));
+    if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
+    // Not modal: the window stays usable, and scripted sessions are not blocked.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the ensemble"), message,
+                                QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+    emit loadingFailed(message);
 }
 
 void MainWindow::askForMemberDimension(const data::Error& error) {

@@ -4,13 +4,13 @@
 // queued signals. Window layout is remembered with QSettings. GUI thread only.
 #pragma once
 
-#include <QFutureWatcher>
 #include <QMainWindow>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <stop_token>
 
+#include "app/background_job.h"
 #include "app/ensemble_overview.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
@@ -65,9 +65,8 @@ private:
     void createMenus();
     void createDocks();
     void createStatusBar();
-    void onLoaderFinished();
+    void onLoadFailed(const std::exception_ptr& error, bool cancelled);
     void askForMemberDimension(const data::Error& error);
-    void waitForLoader();
     void showOverview(std::unique_ptr<EnsembleOverview> overview);
     void setBusy(const QString& what);
     void setIdle(const QString& message);
@@ -78,8 +77,7 @@ private:
     QToolButton* m_cancel = nullptr;
     QLabel* m_statusText = nullptr;
     QMenu* m_recentMenu = nullptr;
-    QFutureWatcher<EnsembleOverview> m_loader;
-    std::shared_ptr<std::stop_source> m_loaderStop;
+    BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
 };

@@ -1,0 +1,93 @@
+// Runs one job at a time on Qt's thread pool and hands its result back on the GUI thread. A
+// job is a function (stop token, progress) -> T that captures its inputs by value. Starting a
+// new job cancels the running one and drops its result (the user changed the isovalue
+// meanwhile); cancel() asks the running job to stop. Callbacks run on the GUI thread, through
+// QFutureWatcher's queued signals. GUI thread only; wait() before destroying what callbacks use.
+#pragma once
+
+#include <QFutureWatcher>
+#include <QPromise>
+#include <QtConcurrent/QtConcurrentRun>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <stop_token>
+
+#include "data/job.h"
+
+namespace ensil::app {
+
+template <typename T>
+class BackgroundJob {
+public:
+    using Work = std::function<T(const std::stop_token&, const data::Progress&)>;
+    using Done = std::function<void(T)>;
+    using Failed = std::function<void(std::exception_ptr error, bool cancelled)>;
+    using Progressed = std::function<void(double)>;
+    static constexpr int kSteps = 1000;
+
+    explicit BackgroundJob(QObject* context) {
+        QObject::connect(&m_watcher, &QFutureWatcher<T>::progressValueChanged, context,
+                         [this](int value) {
+                             if (m_progressed) m_progressed(static_cast<double>(value) / kSteps);
+                         });
+        QObject::connect(&m_watcher, &QFutureWatcher<T>::finished, context, [this] { finish(); });
+    }
+    BackgroundJob(const BackgroundJob&) = delete;
+    BackgroundJob& operator=(const BackgroundJob&) = delete;
+    ~BackgroundJob() {
+        cancel();
+        wait();
+    }
+
+    void start(Work work, Done done, Failed failed, Progressed progressed = {}) {
+        cancel();
+        m_done = std::move(done);
+        m_failed = std::move(failed);
+        m_progressed = std::move(progressed);
+        auto stop = std::make_shared<std::stop_source>();
+        m_stop = stop;
+        m_watcher.setFuture(QtConcurrent::run([work = std::move(work), stop](QPromise<T>& promise) {
+            promise.setProgressRange(0, kSteps);
+            promise.addResult(work(stop->get_token(), [&promise](double f) {
+                promise.setProgressValue(static_cast<int>(f * kSteps));
+            }));
+        }));
+    }
+
+    void cancel() {
+        if (m_stop) m_stop->request_stop();
+    }
+    [[nodiscard]] bool isRunning() const { return m_watcher.isRunning(); }
+    // Blocks until the job has returned; its outcome is still delivered by the event loop.
+    void wait() {
+        try {
+            m_watcher.waitForFinished();
+        } catch (...) {  // the outcome is reported by finish()
+        }
+    }
+
+private:
+    void finish() {
+        QFuture<T> future = m_watcher.future();
+        const bool cancelled = m_stop && m_stop->stop_requested();
+        try {
+            future.waitForFinished();  // rethrows the job's exception
+            if (future.resultCount() == 1 && !cancelled) {
+                if (m_done) m_done(future.result());
+                return;
+            }
+            if (m_failed) m_failed(nullptr, true);
+        } catch (...) {
+            if (m_failed) m_failed(std::current_exception(), cancelled);
+        }
+    }
+
+    QFutureWatcher<T> m_watcher;
+    std::shared_ptr<std::stop_source> m_stop;
+    Done m_done;
+    Failed m_failed;
+    Progressed m_progressed;
+};
+
+}  // namespace ensil::app
