@@ -2,7 +2,6 @@
 
 #include "data/error.h"
 #include "preprocessing/column_maximum.h"
-#include "preprocessing/mean_member.h"
 
 namespace ensil::app {
 
@@ -17,9 +16,10 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
                           "every value of '" + ensemble->variable + "' in " + ensemble->source +
                               " is missing: there is nothing to draw");
     }
-    overview.mean = prep::computeMeanMember(
-        *ensemble, stop, [&](double f) { prep::report(progress, 0.5 + 0.45 * f); });
-    overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, overview.mean);
+    auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
+        *ensemble, stop, [&](double f) { prep::report(progress, 0.5 + 0.45 * f); }));
+    overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, moments->mean);
+    overview.moments = std::move(moments);
     prep::report(progress, 1.0);
     overview.ensemble = std::move(ensemble);
     return overview;

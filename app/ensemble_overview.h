@@ -1,5 +1,6 @@
 // What the workbench shows as soon as an ensemble is loaded, before any isovalue is chosen:
-// value statistics, the mean member, and the column maximum of the mean for the floor map.
+// value statistics, the ensemble moments (mean member, variance), and the column maximum of the
+// mean for the floor map.
 // Computed off the GUI thread by a pure function. Immutable once built.
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "data/ensemble.h"
+#include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
 #include "preprocessing/job.h"
 
@@ -16,8 +18,8 @@ namespace ensil::app {
 struct EnsembleOverview {
     std::shared_ptr<const data::Ensemble> ensemble;
     prep::FieldStatistics statistics;
-    data::Member mean;
-    std::vector<float> meanColumnMaximum;  // nx * ny
+    std::shared_ptr<const prep::EnsembleMoments> moments;  // mean member and variance
+    std::vector<float> meanColumnMaximum;                  // nx * ny
 };
 
 // Throws prep::Cancelled, data::Error.

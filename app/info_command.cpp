@@ -95,13 +95,15 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
     }
     out << "Variable:   " << qs(d.variable)
         << (d.longName.empty() ? QString() : QStringLiteral(" (%1)").arg(qs(d.longName))) << "\n";
-    out << "Units:      " << (d.units.empty() ? QStringLiteral("(none given)") : qs(d.units)) << "\n";
+    out << "Units:      " << (d.units.empty() ? QStringLiteral("(none given)") : qs(d.units))
+        << "\n";
     out << "Members:    " << d.members;
     if (!d.memberDimension.empty()) {
         out << " along '" << qs(d.memberDimension) << "' (" << qs(d.memberDimensionReason) << ")";
     } else {
-        out << " (" << (d.memberDimensionReason.empty() ? QStringLiteral("one file per member")
-                                                       : qs(d.memberDimensionReason))
+        out << " ("
+            << (d.memberDimensionReason.empty() ? QStringLiteral("one file per member")
+                                                : qs(d.memberDimensionReason))
             << ")";
     }
     out << "\n";

@@ -12,6 +12,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUnhandledException>
@@ -19,9 +20,11 @@
 #include <limits>
 
 #include "app/ensemble_facts.h"
+#include "app/isovalue_session.h"
 #include "app/version.h"
 #include "data/error.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -70,6 +73,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createDocks();
     createMenus();
     createStatusBar();
+    createToolbar();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -141,6 +145,36 @@ void MainWindow::createMenus() {
     });
 }
 
+void MainWindow::createToolbar() {
+    m_toolbar = new ui::RenderToolbar(this);
+    addToolBar(Qt::TopToolBarArea, m_toolbar);
+    m_toolbar->setThickness(m_view->renderer().settings().thickness);
+    m_session = new IsovalueSession(
+        m_view, QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
+    gl::RenderSettings& settings = m_view->renderer().settings();
+    connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this,
+            [this](double v) { m_session->setIsovalue(static_cast<float>(v)); });
+    connect(m_toolbar, &ui::RenderToolbar::modeChanged, this, [this, &settings](int mode) {
+        settings.mode = static_cast<gl::RenderMode>(mode);
+        m_view->update();
+    });
+    connect(m_toolbar, &ui::RenderToolbar::thicknessChanged, this, [this, &settings](double tau) {
+        settings.thickness = static_cast<float>(tau);
+        m_view->update();
+    });
+    connect(m_toolbar, &ui::RenderToolbar::meanToggled, this, [this, &settings](bool shown) {
+        settings.showMean = shown;
+        m_view->update();
+    });
+    connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, m_session,
+            &IsovalueSession::setClusterCount);
+    connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
+    connect(m_session, &IsovalueSession::progressed, this,
+            [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
+    connect(m_session, &IsovalueSession::finished, this, &MainWindow::setIdle);
+    connect(m_session, &IsovalueSession::failed, this, &MainWindow::setIdle);
+}
+
 void MainWindow::createStatusBar() {
     m_statusText = new QLabel(this);
     m_progress = new QProgressBar(this);
@@ -173,12 +207,16 @@ void MainWindow::setIdle(const QString& message) {
 
 void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
     m_requested.reset();
+    const std::string key = "demo members=" + std::to_string(params.members) +
+                            " grid=" + std::to_string(params.nx) + "x" + std::to_string(params.ny) +
+                            "x" + std::to_string(params.nz) +
+                            " seed=" + std::to_string(params.seed);
     startLoading(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
                      .arg(params.members)
                      .arg(params.nx)
                      .arg(params.ny)
                      .arg(params.nz),
-                 [params](const std::stop_token&, const data::Progress&) {
+                 key, [params](const std::stop_token&, const data::Progress&) {
                      return data::makeDemoEnsemble(params).ensemble;
                  });
 }
@@ -189,13 +227,14 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
                              : tr("%1 files").arg(selection.paths.size());
     rememberRecent(selection);
     m_requested = selection;
-    startLoading(tr("Reading %1...").arg(name),
+    startLoading(tr("Reading %1...").arg(name), data::sourceIdentity(selection),
                  [selection](const std::stop_token& stop, const data::Progress& progress) {
                      return data::openEnsemble(selection, stop, progress);
                  });
 }
 
-void MainWindow::startLoading(const QString& what, EnsembleSource source) {
+void MainWindow::startLoading(const QString& what, std::string sourceKey, EnsembleSource source) {
+    m_loadingKey = std::move(sourceKey);
     setBusy(what);
     if (!m_overview) m_info->showMessage(tr("Loading..."));
     m_loader.start(
@@ -259,7 +298,10 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::cancelLoading() { m_loader.cancel(); }
+void MainWindow::cancelLoading() {
+    m_loader.cancel();
+    if (m_session != nullptr) m_session->cancel();
+}
 
 void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
     if (cancelled || !error) {
@@ -328,6 +370,13 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     renderer.setFloorMap({map, lo, hi});
     m_view->update();
     m_info->showFacts(describeEnsemble(*m_overview));
+    // Show isosurfaces right away, at an isovalue worth looking at.
+    const prep::FieldStatistics& stats = m_overview->statistics;
+    const float iso = defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
+    m_toolbar->setMemberCount(static_cast<int>(e.memberCount()),
+                              std::min<int>(5, static_cast<int>(e.memberCount())));
+    m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
     setWindowTitle(QStringLiteral("%1 - %2 - ensil")
                        .arg(QString::fromStdString(e.variable))
                        .arg(QString::fromStdString(e.source)));
@@ -339,6 +388,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
                 .arg(e.grid.ny())
                 .arg(e.grid.nz()));
     emit ensembleLoaded();
+    m_session->setIsovalue(iso);
 }
 
 bool MainWindow::saveScreenshot(const QString& path, QString* error) {

@@ -24,9 +24,12 @@ class QMenu;
 namespace ensil::ui {
 class SilhouetteView;
 class EnsembleInfoPanel;
+class RenderToolbar;
 }  // namespace ensil::ui
 
 namespace ensil::app {
+
+class IsovalueSession;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +45,8 @@ public:
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
     [[nodiscard]] ui::EnsembleInfoPanel* infoPanel() const { return m_info; }
+    [[nodiscard]] ui::RenderToolbar* renderToolbar() const { return m_toolbar; }
+    [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
 
@@ -58,7 +63,8 @@ protected:
 private:
     using EnsembleSource =
         std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
-    void startLoading(const QString& what, EnsembleSource source);
+    void startLoading(const QString& what, std::string sourceKey, EnsembleSource source);
+    void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);
     void rebuildRecentMenu();
@@ -77,6 +83,9 @@ private:
     QToolButton* m_cancel = nullptr;
     QLabel* m_statusText = nullptr;
     QMenu* m_recentMenu = nullptr;
+    ui::RenderToolbar* m_toolbar = nullptr;
+    IsovalueSession* m_session = nullptr;
+    std::string m_loadingKey;  // identity of the data being loaded, for the mesh cache
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices

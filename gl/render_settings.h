@@ -11,7 +11,7 @@ enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces };
 
 struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;
-    float thickness = 0.02F;    // tau, in display units (the data box is about 1 wide)
+    float thickness = 0.006F;   // tau, in display units (the data box is about 1 wide)
     float surfaceAlpha = 0.2F;  // for RenderMode::Surfaces
     bool showMean = true;       // the mean member as a solid gray surface
     bool removal = false;       // density-based silhouette removal (algorithms.md section 7)

@@ -176,6 +176,7 @@ TEST_F(SilhouetteTest, ShadedSilhouettesMatchBaseline) {
          {gl::clusterColor(0), gl::clusterColor(1), gl::clusterColor(2)});
     m_renderer.camera().setAngles(-60.0F, 25.0F);
     m_renderer.camera().fit(m_renderer.frame().center(), 0.5F);
+    m_renderer.settings().thickness = 0.02F;  // the baseline's, whatever the default
     const test::ImageComparison result =
         test::compareWithBaseline(draw(), "silhouettes_three_spheres");
     EXPECT_TRUE(result.passed) << result.message.toStdString();

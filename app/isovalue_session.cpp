@@ -1,0 +1,136 @@
+#include "app/isovalue_session.h"
+
+#include <QElapsedTimer>
+#include <numeric>
+
+#include "data/error.h"
+#include "gl/palette.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/mesh_cache.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+
+float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum) {
+    const std::uint64_t total =
+        std::accumulate(histogram.begin(), histogram.end(), std::uint64_t{0});
+    if (total == 0 || histogram.empty()) return 0.5F * (minimum + maximum);
+    std::uint64_t running = 0;
+    for (std::size_t b = 0; b < histogram.size(); ++b) {
+        running += histogram[b];
+        if (static_cast<double>(running) >= 0.9 * static_cast<double>(total)) {
+            const double t = (static_cast<double>(b) + 0.5) / static_cast<double>(histogram.size());
+            return static_cast<float>(minimum + t * (maximum - minimum));
+        }
+    }
+    return maximum;
+}
+
+IsovalueSession::IsovalueSession(ui::SilhouetteView* view, QString cacheDirectory, QObject* parent)
+    : QObject(parent), m_view(view), m_cacheDirectory(std::move(cacheDirectory)) {}
+
+void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
+                                  std::shared_ptr<const prep::EnsembleMoments> moments,
+                                  std::string sourceKey) {
+    m_job.cancel();
+    m_ensemble = std::move(ensemble);
+    m_moments = std::move(moments);
+    m_sourceKey = std::move(sourceKey);
+    m_result.reset();
+    m_clusters = std::min<int>(5, static_cast<int>(m_ensemble->memberCount()));
+    m_view->renderer().setMeshes(nullptr);
+    m_view->update();
+}
+
+void IsovalueSession::setIsovalue(float isovalue) {
+    if (!m_ensemble) return;
+    const float exaggeration = m_view->renderer().frame().verticalExaggeration();
+    prep::PipelineOptions options;
+    options.isovalue = isovalue;
+    const std::string key = m_sourceKey + "; " + prep::pipelineKey(options, exaggeration);
+    const auto ensemble = m_ensemble;
+    const auto moments = m_moments;
+    const std::string cacheDirectory = m_cacheDirectory.toStdString();
+    emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
+    m_job.start(
+        [=](const std::stop_token& stop, const data::Progress& progress) {
+            QElapsedTimer timer;
+            timer.start();
+            IsovalueResult r;
+            const prep::MeshCache cache(cacheDirectory);
+            auto cached = cache.load(key);
+            r.fromCache = cached.has_value();
+            prep::IsovalueMeshes built =
+                cached ? std::move(*cached)
+                       : prep::buildIsovalueMeshes(
+                             *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration),
+                             options, stop, [&](double f) { data::report(progress, 0.8 * f); });
+            if (!cached) {
+                try {
+                    cache.store(key, built);
+                } catch (const data::Error&) {
+                    // A cache that cannot be written only costs time next time.
+                }
+            }
+            r.triangles = built.triangles;
+            auto set = std::make_shared<data::MeshSet>();
+            set->isovalue = built.isovalue;
+            set->members = std::move(built.members);
+            set->mean = std::move(built.mean);
+            r.meshes = std::move(set);
+            r.distances = prep::computeDistanceMatrix(
+                *ensemble, options.isovalue, stop,
+                [&](double f) { data::report(progress, 0.8 + 0.2 * f); });
+            r.tree = prep::clusterMembers(r.distances, prep::Linkage::Average, stop);
+            r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+            return r;
+        },
+        [this, isovalue](IsovalueResult r) { show(std::move(r), isovalue); },
+        [this](std::exception_ptr error, bool cancelled) {
+            if (cancelled || !error) {
+                emit failed(tr("Isosurfaces cancelled"));
+                return;
+            }
+            try {
+                std::rethrow_exception(error);
+            } catch (const std::exception& e) {
+                emit failed(QString::fromStdString(e.what()));
+            } catch (...) {
+                emit failed(tr("unknown error"));
+            }
+        },
+        [this](double f) { emit progressed(f); });
+}
+
+void IsovalueSession::show(IsovalueResult result, float isovalue) {
+    m_result = std::make_unique<IsovalueResult>(std::move(result));
+    m_view->renderer().setMeshes(m_result->meshes);
+    applyColours();
+    emit finished(tr("Isovalue %1: %2 triangles for %3 members and the mean, %4 s%5")
+                      .arg(isovalue)
+                      .arg(m_result->triangles)
+                      .arg(m_result->meshes->members.size())
+                      .arg(m_result->seconds, 0, 'f', 2)
+                      .arg(m_result->fromCache ? tr(" (from the cache)") : QString()));
+}
+
+std::vector<int> IsovalueSession::labels() const {
+    if (!m_result || m_result->tree.memberCount == 0) return {};
+    return prep::clusterLabels(m_result->tree,
+                               std::clamp(m_clusters, 1, m_result->tree.memberCount));
+}
+
+void IsovalueSession::setClusterCount(int k) {
+    m_clusters = k;
+    applyColours();
+}
+
+void IsovalueSession::applyColours() {
+    const std::vector<int> clusters = labels();
+    std::vector<gl::MemberAppearance> look(clusters.size());
+    for (std::size_t m = 0; m < clusters.size(); ++m) look[m].color = gl::clusterColor(clusters[m]);
+    m_view->renderer().setAppearance(std::move(look));
+    m_view->update();
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,74 @@
+// Keeps the view's isosurfaces in step with the chosen isovalue: for each new isovalue it runs
+// one background job (meshes through the disk cache, similarity matrix, clustering) and, when
+// it is done, hands the meshes to the renderer and colours members by cluster. The previous
+// isovalue stays on screen until the new one is ready; a newer request drops an older result.
+// Changing the number of clusters recolours at once from the kept merge tree. GUI thread only.
+#pragma once
+
+#include <QObject>
+#include <memory>
+#include <string>
+
+#include "app/background_job.h"
+#include "data/ensemble.h"
+#include "data/packed_mesh.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/similarity.h"
+
+namespace ensil::ui {
+class SilhouetteView;
+}
+
+namespace ensil::app {
+
+struct IsovalueResult {
+    std::shared_ptr<const data::MeshSet> meshes;
+    prep::DistanceMatrix distances;
+    prep::MergeTree tree;
+    std::size_t triangles = 0;
+    double seconds = 0.0;
+    bool fromCache = false;
+};
+
+class IsovalueSession : public QObject {
+    Q_OBJECT
+public:
+    IsovalueSession(ui::SilhouetteView* view, QString cacheDirectory, QObject* parent = nullptr);
+
+    // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
+    void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
+                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
+    void setIsovalue(float isovalue);
+    void setClusterCount(int k);
+    void cancel() { m_job.cancel(); }
+
+    [[nodiscard]] const IsovalueResult* result() const { return m_result.get(); }
+    [[nodiscard]] std::vector<int> labels() const;
+    [[nodiscard]] bool isRunning() const { return m_job.isRunning(); }
+
+signals:
+    void started(const QString& what);
+    void progressed(double fraction);
+    void finished(const QString& summary);
+    void failed(const QString& message);
+
+private:
+    void show(IsovalueResult result, float isovalue);
+    void applyColours();
+
+    ui::SilhouetteView* m_view;
+    QString m_cacheDirectory;
+    std::shared_ptr<const data::Ensemble> m_ensemble;
+    std::shared_ptr<const prep::EnsembleMoments> m_moments;
+    std::string m_sourceKey;
+    std::unique_ptr<IsovalueResult> m_result;
+    int m_clusters = 5;
+    BackgroundJob<IsovalueResult> m_job{this};
+};
+
+// An isovalue worth looking at first: the 90th percentile of the values (for the demo's wind
+// speed about the paper's 30 m/s), from a histogram over [minimum, maximum].
+float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum);
+
+}  // namespace ensil::app

@@ -1,0 +1,83 @@
+#include "widgets/render_toolbar.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <cmath>
+
+namespace ensil::ui {
+
+RenderToolbar::RenderToolbar(QWidget* parent)
+    : QToolBar(tr("Rendering"), parent),
+      m_isovalue(new QDoubleSpinBox(this)),
+      m_mode(new QComboBox(this)),
+      m_thickness(new QDoubleSpinBox(this)),
+      m_clusters(new QSpinBox(this)),
+      m_mean(new QCheckBox(tr("Mean"), this)) {
+    setObjectName(QStringLiteral("renderToolbar"));
+    addWidget(new QLabel(tr(" Isovalue "), this));
+    // Preprocessing starts when the user commits a value, not on every keystroke.
+    m_isovalue->setKeyboardTracking(false);
+    m_isovalue->setMinimumWidth(120);
+    m_isovalue->setToolTip(tr("The isovalue whose surfaces are drawn (Enter to apply)"));
+    m_isovalue->setEnabled(false);
+    addWidget(m_isovalue);
+    addSeparator();
+    m_mode->addItems(
+        {tr("Shaded silhouettes"), tr("3D spaghetti plot"), tr("Transparent surfaces")});
+    m_mode->setToolTip(tr("How members are drawn"));
+    addWidget(m_mode);
+    addWidget(new QLabel(tr(" Thickness "), this));
+    m_thickness->setRange(0.001, 0.5);
+    m_thickness->setDecimals(3);
+    m_thickness->setSingleStep(0.005);
+    m_thickness->setToolTip(tr("Silhouette thickness (tau), in units of the data box width"));
+    addWidget(m_thickness);
+    addSeparator();
+    addWidget(new QLabel(tr(" Clusters "), this));
+    m_clusters->setRange(1, 1);
+    m_clusters->setToolTip(tr("Number of clusters members are coloured by"));
+    addWidget(m_clusters);
+    m_mean->setChecked(true);
+    m_mean->setToolTip(tr("Show the mean member's isosurface as a gray solid"));
+    addWidget(m_mean);
+
+    connect(m_isovalue, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::isovalueChanged);
+    connect(m_mode, &QComboBox::currentIndexChanged, this, &RenderToolbar::modeChanged);
+    connect(m_thickness, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::thicknessChanged);
+    connect(m_clusters, &QSpinBox::valueChanged, this, &RenderToolbar::clusterCountChanged);
+    connect(m_mean, &QCheckBox::toggled, this, &RenderToolbar::meanToggled);
+}
+
+void RenderToolbar::setIsovalueRange(double minimum, double maximum, double value,
+                                     const QString& units) {
+    const QSignalBlocker block(m_isovalue);
+    const double span = std::max(maximum - minimum, 1e-12);
+    // Enough decimals to step through 1/1000 of the range.
+    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(span / 1000.0))), 0, 6);
+    m_isovalue->setDecimals(decimals);
+    m_isovalue->setRange(minimum, maximum);
+    m_isovalue->setSingleStep(span / 100.0);
+    m_isovalue->setSuffix(units.isEmpty() ? QString() : QLatin1Char(' ') + units);
+    m_isovalue->setValue(value);
+    m_isovalue->setEnabled(true);
+}
+
+void RenderToolbar::setMemberCount(int members, int clusters) {
+    const QSignalBlocker block(m_clusters);
+    m_clusters->setRange(1, std::max(1, members));
+    m_clusters->setValue(clusters);
+}
+
+void RenderToolbar::setThickness(double tau) {
+    const QSignalBlocker block(m_thickness);
+    m_thickness->setValue(tau);
+}
+
+double RenderToolbar::isovalue() const { return m_isovalue->value(); }
+int RenderToolbar::clusterCount() const { return m_clusters->value(); }
+
+}  // namespace ensil::ui

@@ -1,0 +1,44 @@
+// The toolbar of the silhouette view: the isovalue (with the variable's range and units), the
+// render mode, the silhouette thickness, the number of clusters and the mean surface. Emits
+// what the user set; knows nothing of jobs or data. GUI thread only.
+#pragma once
+
+#include <QToolBar>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
+
+namespace ensil::ui {
+
+class RenderToolbar : public QToolBar {
+    Q_OBJECT
+public:
+    explicit RenderToolbar(QWidget* parent = nullptr);
+
+    // Range and units of the variable; the value is set without emitting isovalueChanged.
+    void setIsovalueRange(double minimum, double maximum, double value, const QString& units);
+    void setMemberCount(int members, int clusters);
+    void setThickness(double tau);
+
+    [[nodiscard]] double isovalue() const;
+    [[nodiscard]] int clusterCount() const;
+    [[nodiscard]] QDoubleSpinBox* isovalueBox() const { return m_isovalue; }
+
+signals:
+    void isovalueChanged(double value);
+    void modeChanged(int mode);  // 0 shaded silhouettes, 1 spaghetti, 2 surfaces
+    void thicknessChanged(double tau);
+    void clusterCountChanged(int k);
+    void meanToggled(bool shown);
+
+private:
+    QDoubleSpinBox* m_isovalue;
+    QComboBox* m_mode;
+    QDoubleSpinBox* m_thickness;
+    QSpinBox* m_clusters;
+    QCheckBox* m_mean;
+};
+
+}  // namespace ensil::ui
