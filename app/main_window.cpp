@@ -388,7 +388,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
                 .arg(e.grid.ny())
                 .arg(e.grid.nz()));
     emit ensembleLoaded();
-    m_session->setIsovalue(iso);
+    // What the toolbar shows, rounded to its precision, is what gets built.
+    m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
 }
 
 bool MainWindow::saveScreenshot(const QString& path, QString* error) {

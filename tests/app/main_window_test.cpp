@@ -2,14 +2,18 @@
 
 #include <gtest/gtest.h>
 
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QInputDialog>
 #include <QSignalSpy>
 #include <QTest>
+#include <algorithm>
 
+#include "app/isovalue_session.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -116,4 +120,42 @@ TEST(MainWindow, AsksWhichDimensionHoldsTheMembersWhenTheFileDoesNotSay) {
     ASSERT_TRUE(loaded.wait(30000));
     EXPECT_EQ(window.overview()->ensemble->memberCount(), 7u);
     EXPECT_EQ(window.overview()->ensemble->memberDimension, "frtime");
+}
+
+TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
+    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(ensil::test::TempDir().path().string()));
+    app::MainWindow window;
+    window.resize(900, 600);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo({.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11});
+    ASSERT_TRUE(loaded.wait(30000));
+    ASSERT_TRUE(built.count() > 0 || built.wait(60000)) << "no isosurfaces were built";
+    const auto& meshes = window.view()->renderer().meshes();
+    ASSERT_NE(meshes, nullptr);
+    EXPECT_EQ(meshes->members.size(), 8u);
+    const auto& stats = window.overview()->statistics;
+    const double iso = window.renderToolbar()->isovalue();
+    EXPECT_GT(iso, stats.minimum);
+    EXPECT_LT(iso, stats.maximum);
+    EXPECT_FLOAT_EQ(meshes->isovalue, static_cast<float>(iso));
+
+    // Every member has a cluster colour; one cluster makes them all the same colour.
+    EXPECT_EQ(window.isovalueSession()->labels().size(), 8u);
+    window.isovalueSession()->setClusterCount(1);
+    for (int label : window.isovalueSession()->labels()) EXPECT_EQ(label, 0);
+    window.isovalueSession()->setClusterCount(8);
+    auto labels = window.isovalueSession()->labels();
+    std::sort(labels.begin(), labels.end());
+    EXPECT_EQ(std::unique(labels.begin(), labels.end()) - labels.begin(), 8) << "eight singletons";
+
+    // A new isovalue from the toolbar builds new meshes.
+    built.clear();
+    window.renderToolbar()->isovalueBox()->setValue(stats.minimum +
+                                                    0.5 * (stats.maximum - stats.minimum));
+    ASSERT_TRUE(built.wait(60000));
+    EXPECT_NEAR(window.view()->renderer().meshes()->isovalue,
+                stats.minimum + 0.5 * (stats.maximum - stats.minimum), 1e-2);
 }
