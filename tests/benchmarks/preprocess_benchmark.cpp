@@ -22,14 +22,11 @@
 #include "preprocessing/isosurface_pipeline.h"
 #include "preprocessing/marching_cubes.h"
 #include "preprocessing/similarity.h"
+#include "timing.h"
 #include "vtk_reference.h"
 
-namespace {
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-}  // namespace
+using ensil::bench::median;
+using ensil::bench::medianMs;
 
 int main(int argc, char** argv) {
     int runs = 5;

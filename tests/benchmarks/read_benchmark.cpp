@@ -20,21 +20,13 @@
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/netcdf_writer.h"
+#include "timing.h"
+
+using ensil::bench::median;
+using ensil::bench::medianMs;
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-template <typename F>
-double medianMs(int runs, F&& f) {
-    std::vector<double> times;
-    for (int r = 0; r < runs; ++r) {
-        const auto start = Clock::now();
-        f();
-        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-}
 
 std::size_t readAllBytes(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -17,21 +17,13 @@
 #include "data/demo_ensemble.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/similarity.h"
+#include "timing.h"
+
+using ensil::bench::median;
+using ensil::bench::medianMs;
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-template <typename F>
-double medianMs(int runs, F&& f) {
-    std::vector<double> times;
-    for (int r = 0; r < runs; ++r) {
-        const auto start = Clock::now();
-        f();
-        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-    }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
-}
 
 // Euclidean distances between n random points in the unit cube.
 ensil::prep::DistanceMatrix randomPointDistances(std::size_t n) {
