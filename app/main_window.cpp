@@ -166,6 +166,13 @@ void MainWindow::createToolbar() {
         settings.showMean = shown;
         m_view->update();
     });
+    connect(m_toolbar, &ui::RenderToolbar::verticalExaggerationChanged, this, [this](double f) {
+        m_view->renderer().setVerticalExaggeration(static_cast<float>(f));
+        // Normals and curvatures live in display space: rebuild them (the meshes come from
+        // the cache when this exaggeration was seen before).
+        m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
+        m_view->update();
+    });
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, m_session,
             &IsovalueSession::setClusterCount);
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);

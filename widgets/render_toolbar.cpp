@@ -16,7 +16,8 @@ RenderToolbar::RenderToolbar(QWidget* parent)
       m_mode(new QComboBox(this)),
       m_thickness(new QDoubleSpinBox(this)),
       m_clusters(new QSpinBox(this)),
-      m_mean(new QCheckBox(tr("Mean"), this)) {
+      m_mean(new QCheckBox(tr("Mean"), this)),
+      m_exaggeration(new QDoubleSpinBox(this)) {
     setObjectName(QStringLiteral("renderToolbar"));
     addWidget(new QLabel(tr(" Isovalue "), this));
     // Preprocessing starts when the user commits a value, not on every keystroke.
@@ -45,6 +46,18 @@ RenderToolbar::RenderToolbar(QWidget* parent)
     m_mean->setToolTip(tr("Show the mean member's isosurface as a gray solid"));
     addWidget(m_mean);
 
+    addSeparator();
+    addWidget(new QLabel(tr(" Vertical x "), this));
+    m_exaggeration->setRange(0.1, 50.0);
+    m_exaggeration->setDecimals(1);
+    m_exaggeration->setSingleStep(0.5);
+    m_exaggeration->setValue(1.0);
+    m_exaggeration->setKeyboardTracking(false);
+    m_exaggeration->setToolTip(tr("Vertical exaggeration: stretches the vertical axis"));
+    addWidget(m_exaggeration);
+
+    connect(m_exaggeration, &QDoubleSpinBox::valueChanged, this,
+            &RenderToolbar::verticalExaggerationChanged);
     connect(m_isovalue, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::isovalueChanged);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &RenderToolbar::modeChanged);
     connect(m_thickness, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::thicknessChanged);

@@ -32,6 +32,7 @@ signals:
     void thicknessChanged(double tau);
     void clusterCountChanged(int k);
     void meanToggled(bool shown);
+    void verticalExaggerationChanged(double factor);
 
 private:
     QDoubleSpinBox* m_isovalue;
@@ -39,6 +40,7 @@ private:
     QDoubleSpinBox* m_thickness;
     QSpinBox* m_clusters;
     QCheckBox* m_mean;
+    QDoubleSpinBox* m_exaggeration;
 };
 
 }  // namespace ensil::ui

@@ -158,4 +158,12 @@ TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     ASSERT_TRUE(built.wait(60000));
     EXPECT_NEAR(window.view()->renderer().meshes()->isovalue,
                 stats.minimum + 0.5 * (stats.maximum - stats.minimum), 1e-2);
+
+    // Vertical exaggeration stretches the box and rebuilds the display-space attributes.
+    const float height = window.view()->renderer().frame().boxMax().z;
+    built.clear();
+    auto* exaggeration = window.renderToolbar()->findChildren<QDoubleSpinBox*>().back();
+    exaggeration->setValue(3.0);
+    EXPECT_FLOAT_EQ(window.view()->renderer().frame().boxMax().z, 3.0F * height);
+    ASSERT_TRUE(built.wait(60000)) << "attributes were not rebuilt";
 }
