@@ -3,10 +3,8 @@
 #include <QElapsedTimer>
 #include <numeric>
 
-#include "data/error.h"
+#include "app/isovalue_job.h"
 #include "gl/palette.h"
-#include "preprocessing/isosurface_pipeline.h"
-#include "preprocessing/mesh_cache.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -47,7 +45,7 @@ void IsovalueSession::setIsovalue(float isovalue) {
     const float exaggeration = m_view->renderer().frame().verticalExaggeration();
     prep::PipelineOptions options;
     options.isovalue = isovalue;
-    const std::string key = m_sourceKey + "; " + prep::pipelineKey(options, exaggeration);
+    const std::string sourceKey = m_sourceKey;
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     const std::string cacheDirectory = m_cacheDirectory.toStdString();
@@ -56,32 +54,24 @@ void IsovalueSession::setIsovalue(float isovalue) {
         [=](const std::stop_token& stop, const data::Progress& progress) {
             QElapsedTimer timer;
             timer.start();
+            IsovalueJobInput input;
+            input.ensemble = ensemble.get();
+            input.moments = moments.get();
+            input.options = options;
+            input.verticalExaggeration = exaggeration;
+            input.cacheDirectory = cacheDirectory;
+            input.sourceKey = sourceKey;
+            IsovalueOutcome outcome = runIsovalueJob(input, stop, progress);
             IsovalueResult r;
-            const prep::MeshCache cache(cacheDirectory);
-            auto cached = cache.load(key);
-            r.fromCache = cached.has_value();
-            prep::IsovalueMeshes built =
-                cached ? std::move(*cached)
-                       : prep::buildIsovalueMeshes(
-                             *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration),
-                             options, stop, [&](double f) { data::report(progress, 0.8 * f); });
-            if (!cached) {
-                try {
-                    cache.store(key, built);
-                } catch (const data::Error&) {
-                    // A cache that cannot be written only costs time next time.
-                }
-            }
-            r.triangles = built.triangles;
+            r.fromCache = outcome.fromCache;
+            r.triangles = outcome.meshes.triangles;
             auto set = std::make_shared<data::MeshSet>();
-            set->isovalue = built.isovalue;
-            set->members = std::move(built.members);
-            set->mean = std::move(built.mean);
+            set->isovalue = outcome.meshes.isovalue;
+            set->members = std::move(outcome.meshes.members);
+            set->mean = std::move(outcome.meshes.mean);
             r.meshes = std::move(set);
-            r.distances = prep::computeDistanceMatrix(
-                *ensemble, options.isovalue, stop,
-                [&](double f) { data::report(progress, 0.8 + 0.2 * f); });
-            r.tree = prep::clusterMembers(r.distances, prep::Linkage::Average, stop);
+            r.distances = std::move(outcome.distances);
+            r.tree = std::move(outcome.tree);
             r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
             return r;
         },

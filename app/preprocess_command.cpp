@@ -1,24 +1,20 @@
 #include "app/preprocess_command.h"
 
 #include <QCommandLineParser>
-#include <QDir>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QStandardPaths>
 #include <algorithm>
 #include <map>
 
 #include "app/data_selection_options.h"
+#include "app/isovalue_job.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/field_statistics.h"
-#include "preprocessing/isosurface_pipeline.h"
-#include "preprocessing/mesh_cache.h"
-#include "preprocessing/similarity.h"
 
 namespace ensil::app {
 namespace {
@@ -47,11 +43,6 @@ struct Options {
                             QStringLiteral("Use the built-in demo ensemble instead of files.")};
     QCommandLineOption json{QStringLiteral("json"), QStringLiteral("Print one JSON object.")};
 };
-
-QString cacheDirectory() {
-    return QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
-           QStringLiteral("/meshes");
-}
 
 double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
 
@@ -180,42 +171,32 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                 << "): no member has a surface there. Choose an isovalue inside that range\n";
             return 1;
         }
-        prep::PipelineOptions options;
-        options.isovalue = iso;
-        options.decimate = !parser.isSet(o.noDecimation);
-        options.maxErrorCells = errorCells;
-        const std::string source = parser.isSet(o.demo)
-                                       ? "demo members=" + std::to_string(demo.members) +
-                                             " seed=" + std::to_string(demo.seed)
-                                       : data::sourceIdentity(*selection);
-        const std::string key = source + "; " + prep::pipelineKey(options, 1.0F);
-        const prep::MeshCache cache(
-            (parser.isSet(o.cacheDir) ? parser.value(o.cacheDir) : cacheDirectory()).toStdString());
-        std::optional<prep::IsovalueMeshes> cached;
-        r.cache = parser.isSet(o.noCache) ? QStringLiteral("off") : QStringLiteral("miss");
-        stage.restart();
-        if (!parser.isSet(o.noCache)) cached = cache.load(key);
-        if (cached) {
-            r.meshes = std::move(*cached);
-            r.cache = QStringLiteral("hit");
-            r.seconds["cache_read"] = seconds(stage);
-        } else {
-            const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
-            r.seconds["moments"] = seconds(stage);
-            r.meshes = prep::buildIsovalueMeshes(
-                r.ensemble, moments, data::DisplayFrame(r.ensemble.grid, 1.0F), options);
-            r.seconds["meshes"] = r.meshes.seconds.meshes;
-            r.seconds["decimation"] = r.meshes.seconds.decimation;
-            r.seconds["attributes"] = r.meshes.seconds.attributes;
-            if (!parser.isSet(o.noCache)) cache.store(key, r.meshes);
+        IsovalueJobInput job;
+        job.ensemble = &r.ensemble;
+        job.options.isovalue = iso;
+        job.options.decimate = !parser.isSet(o.noDecimation);
+        job.options.maxErrorCells = errorCells;
+        job.linkage = linkage;
+        if (!parser.isSet(o.noCache)) {
+            job.cacheDirectory = parser.isSet(o.cacheDir) ? parser.value(o.cacheDir).toStdString()
+                                                          : defaultMeshCacheDirectory();
         }
+        job.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
+                                                   " seed=" + std::to_string(demo.seed)
+                                             : data::sourceIdentity(*selection);
         stage.restart();
-        r.distances = prep::computeDistanceMatrix(r.ensemble, iso);
-        r.seconds["similarity"] = seconds(stage);
-        stage.restart();
-        r.tree = prep::clusterMembers(r.distances, linkage);
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
+        r.seconds["moments"] = seconds(stage);
+        job.moments = &moments;
+        IsovalueOutcome outcome = runIsovalueJob(job);
+        r.seconds.insert(outcome.seconds.begin(), outcome.seconds.end());
+        r.cache = !job.cacheDirectory ? QStringLiteral("off")
+                  : outcome.fromCache ? QStringLiteral("hit")
+                                      : QStringLiteral("miss");
+        r.meshes = std::move(outcome.meshes);
+        r.distances = std::move(outcome.distances);
+        r.tree = std::move(outcome.tree);
         r.labels = prep::clusterLabels(r.tree, k);
-        r.seconds["clustering"] = seconds(stage);
         r.seconds["total"] = seconds(total);
         if (parser.isSet(o.json)) {
             out << QJsonDocument(toJson(r, k, linkage)).toJson(QJsonDocument::Compact) << "\n";

@@ -1,0 +1,64 @@
+#include "app/isovalue_job.h"
+
+#include <QStandardPaths>
+#include <chrono>
+
+#include "data/error.h"
+#include "preprocessing/mesh_cache.h"
+
+namespace ensil::app {
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+}
+}  // namespace
+
+std::string defaultMeshCacheDirectory() {
+    return (QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
+            QStringLiteral("/meshes"))
+        .toStdString();
+}
+
+IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token& stop,
+                               const data::Progress& progress) {
+    IsovalueOutcome out;
+    const std::string key =
+        in.sourceKey + "; " + prep::pipelineKey(in.options, in.verticalExaggeration);
+    std::optional<prep::MeshCache> cache;
+    if (in.cacheDirectory) cache.emplace(*in.cacheDirectory);
+    auto start = Clock::now();
+    std::optional<prep::IsovalueMeshes> cached;
+    if (cache) cached = cache->load(key);
+    if (cached) {
+        out.meshes = std::move(*cached);
+        out.fromCache = true;
+        out.seconds["cache_read"] = since(start);
+    } else {
+        out.meshes = prep::buildIsovalueMeshes(
+            *in.ensemble, *in.moments,
+            data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options, stop,
+            [&](double f) { data::report(progress, 0.8 * f); });
+        out.seconds["meshes"] = out.meshes.seconds.meshes;
+        out.seconds["decimation"] = out.meshes.seconds.decimation;
+        out.seconds["attributes"] = out.meshes.seconds.attributes;
+        if (cache) {
+            try {
+                cache->store(key, out.meshes);
+            } catch (const data::Error&) {
+                // A cache that cannot be written only costs time next time.
+            }
+        }
+    }
+    start = Clock::now();
+    out.distances =
+        prep::computeDistanceMatrix(*in.ensemble, in.options.isovalue, stop,
+                                    [&](double f) { data::report(progress, 0.8 + 0.2 * f); });
+    out.seconds["similarity"] = since(start);
+    start = Clock::now();
+    out.tree = prep::clusterMembers(out.distances, in.linkage, stop);
+    out.seconds["clustering"] = since(start);
+    return out;
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,46 @@
+// Everything one isovalue needs, in one job: the meshes (read from the disk cache when this data,
+// isovalue and display mapping were processed before, built and stored otherwise), the
+// similarity matrix and the merge tree. Shared by the workbench, `ensil preprocess` and
+// `ensil render`. A pure function; runs on any thread.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <stop_token>
+#include <string>
+
+#include "data/ensemble.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/similarity.h"
+
+namespace ensil::app {
+
+struct IsovalueJobInput {
+    const data::Ensemble* ensemble = nullptr;
+    const prep::EnsembleMoments* moments = nullptr;
+    prep::PipelineOptions options;
+    float verticalExaggeration = 1.0F;
+    prep::Linkage linkage = prep::Linkage::Average;
+    std::optional<std::string> cacheDirectory;  // no cache when empty
+    std::string sourceKey;                      // identity of the data, for the cache key
+};
+
+struct IsovalueOutcome {
+    prep::IsovalueMeshes meshes;
+    prep::DistanceMatrix distances;
+    prep::MergeTree tree;
+    bool fromCache = false;
+    std::map<std::string, double>
+        seconds;  // cache_read or meshes/decimation/attributes, similarity, clustering
+};
+
+// Throws Cancelled; data::Error from the steps. A cache that cannot be written is ignored.
+IsovalueOutcome runIsovalueJob(const IsovalueJobInput& input, const std::stop_token& stop = {},
+                               const data::Progress& progress = {});
+
+// The user's cache folder for meshes (QStandardPaths::CacheLocation + "/meshes").
+std::string defaultMeshCacheDirectory();
+
+}  // namespace ensil::app
