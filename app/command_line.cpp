@@ -7,6 +7,7 @@
 #include "app/generate_command.h"
 #include "app/info_command.h"
 #include "app/preprocess_command.h"
+#include "app/render_command.h"
 #include "app/version.h"
 
 namespace ensil::app {
@@ -15,14 +16,14 @@ namespace {
 struct Subcommand {
     const char* name;
     const char* summary;
-    bool available;
+    int (*run)(const QStringList&, QTextStream&, QTextStream&);
 };
 
 constexpr std::array<Subcommand, 4> kSubcommands{{
-    {"generate", "Write the built-in demo ensemble as a CF NetCDF file", true},
-    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", true},
-    {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", true},
-    {"render", "Draw an ensemble's silhouettes to a PNG without a window", false},
+    {"generate", "Write the built-in demo ensemble as a CF NetCDF file", &runGenerateCommand},
+    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", &runInfoCommand},
+    {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", &runPreprocessCommand},
+    {"render", "Draw an ensemble's silhouettes to a PNG without a window", &runRenderCommand},
 }};
 
 const Subcommand* findSubcommand(const QString& name) {
@@ -45,8 +46,7 @@ QString topLevelHelp() {
     for (const Subcommand& sub : kSubcommands) {
         text += QStringLiteral("  %1%2\n")
                     .arg(QLatin1String(sub.name), -12)
-                    .arg(QLatin1String(sub.summary) +
-                         (sub.available ? QString() : QStringLiteral(" (not yet available)")));
+                    .arg(QLatin1String(sub.summary));
     }
     text += QStringLiteral(
         "\n"
@@ -77,19 +77,7 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
         if (const Subcommand* sub = findSubcommand(args.at(1))) {
             QStringList rest = args.mid(2);
             rest.prepend(QStringLiteral("ensil ") + QLatin1String(sub->name));
-            if (QLatin1String(sub->name) == QLatin1String("generate")) {
-                return {runGenerateCommand(rest, out, err), std::nullopt};
-            }
-            if (QLatin1String(sub->name) == QLatin1String("info")) {
-                return {runInfoCommand(rest, out, err), std::nullopt};
-            }
-            if (QLatin1String(sub->name) == QLatin1String("preprocess")) {
-                return {runPreprocessCommand(rest, out, err), std::nullopt};
-            }
-            err << "ensil " << sub->name << ": not available in ensil " << ENSIL_VERSION
-                << " yet. Available now: ensil generate, info, preprocess, and the workbench "
-                   "(ensil).\n";
-            return {3, std::nullopt};
+            return {sub->run(rest, out, err), std::nullopt};
         }
     }
     QCommandLineParser parser;

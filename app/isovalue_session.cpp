@@ -116,10 +116,7 @@ void IsovalueSession::setClusterCount(int k) {
 }
 
 void IsovalueSession::applyColours() {
-    const std::vector<int> clusters = labels();
-    std::vector<gl::MemberAppearance> look(clusters.size());
-    for (std::size_t m = 0; m < clusters.size(); ++m) look[m].color = gl::clusterColor(clusters[m]);
-    m_view->renderer().setAppearance(std::move(look));
+    m_view->renderer().setAppearance(gl::clusterAppearance(labels()));
     m_view->update();
 }
 

@@ -1,6 +1,7 @@
 // The `ensil` executable: subcommands run headless on a QCoreApplication; everything else opens
 // the workbench.
 #include <QApplication>
+#include <QGuiApplication>
 #include <QSurfaceFormat>
 #include <QTextStream>
 #include <cstdio>
@@ -25,6 +26,20 @@ int main(int argc, char* argv[]) {
     QTextStream out(stdout);
     QTextStream err(stderr);
 
+    if (args.size() >= 2 && args.at(1) == QLatin1String("render")) {
+        // Offscreen OpenGL still needs a display server (Xvfb is enough) with Qt 6.4.
+        if (qEnvironmentVariableIsEmpty("DISPLAY") &&
+            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
+            qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
+            err << "ensil render: OpenGL needs a display server; on a machine without one, run "
+                   "it under a virtual one: xvfb-run -a ensil render ...\n";
+            return 4;
+        }
+        QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
+        QGuiApplication app(argc, argv);
+        setApplicationIdentity();
+        return ensil::app::runCommandLine(args, out, err).exitCode;
+    }
     if (ensil::app::isHeadlessInvocation(args)) {
         QCoreApplication app(argc, argv);
         setApplicationIdentity();

@@ -366,15 +366,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
     // The map spans its own range: the mean's column maxima cover only part of the values.
-    const auto& map = m_overview->meanColumnMaximum;
-    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-    for (const float v : map) {
-        if (!std::isnan(v)) {
-            lo = std::min(lo, v);
-            hi = std::max(hi, v);
-        }
-    }
-    renderer.setFloorMap({map, lo, hi});
+    renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
     m_view->update();
     m_info->showFacts(describeEnsemble(*m_overview));
     // Show isosurfaces right away, at an isovalue worth looking at.

@@ -4,6 +4,9 @@
 
 #include <array>
 #include <glm/vec3.hpp>
+#include <vector>
+
+#include "gl/render_settings.h"
 
 namespace ensil::gl {
 
@@ -20,6 +23,13 @@ inline constexpr std::array<glm::vec3, 8> kClusterPalette{{
 
 inline glm::vec3 clusterColor(int cluster) {
     return kClusterPalette[static_cast<std::size_t>(cluster) % kClusterPalette.size()];
+}
+
+// Every member visible, coloured by its cluster label.
+inline std::vector<MemberAppearance> clusterAppearance(const std::vector<int>& labels) {
+    std::vector<MemberAppearance> look(labels.size());
+    for (std::size_t m = 0; m < labels.size(); ++m) look[m].color = clusterColor(labels[m]);
+    return look;
 }
 
 inline constexpr glm::vec3 kMeanSurfaceColor{0.62F, 0.62F, 0.62F};

@@ -3,7 +3,9 @@
 #include <QOpenGLContext>
 #include <QOpenGLVersionFunctionsFactory>
 #include <array>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
@@ -13,6 +15,23 @@
 #include "gl/shader_library.h"
 
 namespace ensil::gl {
+
+FloorMap FloorMap::spanning(std::vector<float> values) {
+    FloorMap map;
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (const float v : values) {
+        if (!std::isnan(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    map.values = std::move(values);
+    if (lo <= hi) {
+        map.minimum = lo;
+        map.maximum = hi;
+    }
+    return map;
+}
 
 Renderer::Renderer() = default;
 Renderer::~Renderer() = default;  // GPU objects are released by releaseGpuResources().

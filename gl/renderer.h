@@ -27,6 +27,9 @@ struct FloorMap {
     std::vector<float> values;
     float minimum = 0.0F;
     float maximum = 1.0F;
+
+    // A map whose colour range spans its own valid values.
+    static FloorMap spanning(std::vector<float> values);
 };
 
 class Renderer {

@@ -82,10 +82,14 @@ TEST(CommandLine, UnknownOptionIsAnErrorWithAHint) {
     EXPECT_TRUE(r.err.contains("--help")) << r.err.toStdString();
 }
 
-TEST(CommandLine, SubcommandsOfLaterReleasesSaySoAndFail) {
-    const CliRun r = run({"render", "x.nc", "--out", "y.png"});
-    EXPECT_EQ(r.code, 3);
-    EXPECT_TRUE(r.err.contains("not available")) << r.err.toStdString();
+TEST(CommandLine, RenderExplainsMissingArguments) {
+    const CliRun noIso = run({"render", "x.nc", "--out", "y.png"});
+    EXPECT_EQ(noIso.code, 2);
+    EXPECT_TRUE(noIso.err.contains("--iso")) << noIso.err.toStdString();
+    const CliRun plane =
+        run({"render", "--demo", "--iso", "30", "--out", "y.png", "--plane", "0,0,1,0.5"});
+    EXPECT_EQ(plane.code, 2);
+    EXPECT_TRUE(plane.err.contains("cutting planes")) << plane.err.toStdString();
 }
 
 TEST(GenerateCommand, WritesTheRequestedEnsemble) {

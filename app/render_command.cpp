@@ -1,0 +1,211 @@
+#include "app/render_command.h"
+
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
+#include <algorithm>
+
+#include "app/data_selection_options.h"
+#include "app/generate_command.h"
+#include "app/isovalue_job.h"
+#include "app/subcommand.h"
+#include "data/demo_ensemble.h"
+#include "data/error.h"
+#include "gl/palette.h"
+#include "gl/renderer.h"
+#include "gl/surface_format.h"
+#include "preprocessing/column_maximum.h"
+#include "preprocessing/field_statistics.h"
+
+namespace ensil::app {
+namespace {
+
+struct Options {
+    QCommandLineOption iso{"iso", "The isovalue (required).", "X"};
+    QCommandLineOption output{"out", "The PNG file to write (required).", "FILE.png"};
+    QCommandLineOption size{"size", "Image size in pixels (default 1600x1000).", "WxH",
+                            "1600x1000"};
+    QCommandLineOption mode{"mode", "shaded (default), spaghetti or surfaces.", "M", "shaded"};
+    QCommandLineOption clusters{"clusters", "Number of clusters to colour by (default 5).", "K",
+                                "5"};
+    QCommandLineOption linkage{"linkage", "average (default), single, complete or ward.", "L",
+                               "average"};
+    QCommandLineOption mean{"mean", "Draw the mean member's surface (the default)."};
+    QCommandLineOption noMean{"no-mean", "Do not draw the mean member's surface."};
+    QCommandLineOption thickness{"thickness", "Silhouette thickness tau (default 0.006).", "T",
+                                 "0.006"};
+    QCommandLineOption exaggeration{"exaggeration", "Vertical exaggeration (default 1).", "F", "1"};
+    QCommandLineOption azimuth{"azimuth", "Camera azimuth in degrees (default -75).", "A", "-75"};
+    QCommandLineOption elevation{"elevation", "Camera elevation in degrees (default 30).", "E",
+                                 "30"};
+    QCommandLineOption plane{"plane", "Cutting plane NX,NY,NZ,OFFSET (not available yet).", "P"};
+    QCommandLineOption frames{"frames", "Frames to time for frame_ms (default 20).", "N", "20"};
+    QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
+    QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
+    QCommandLineOption json{"json", "Print frame_ms, gpu_bytes, width, height as JSON."};
+};
+
+std::optional<gl::RenderMode> parseMode(const QString& name) {
+    if (name == QLatin1String("shaded")) return gl::RenderMode::ShadedSilhouettes;
+    if (name == QLatin1String("spaghetti")) return gl::RenderMode::Spaghetti;
+    if (name == QLatin1String("surfaces")) return gl::RenderMode::Surfaces;
+    return std::nullopt;
+}
+
+// The offscreen OpenGL 4.1 context everything is drawn in. Throws std::runtime_error.
+class OffscreenContext {
+public:
+    OffscreenContext() {
+        const QSurfaceFormat format = gl::preferredSurfaceFormat(0);
+        m_surface.setFormat(format);
+        m_surface.create();
+        m_context.setFormat(format);
+        if (!m_context.create() || !m_context.makeCurrent(&m_surface)) {
+            throw std::runtime_error("cannot create an OpenGL 4.1 context for rendering");
+        }
+    }
+
+private:
+    QOffscreenSurface m_surface;
+    QOpenGLContext m_context;
+};
+
+}  // namespace
+
+int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Draw an ensemble's isosurfaces as silhouettes into a PNG, without a window."));
+    parser.addHelpOption();
+    const DataSelectionOptions selectionOptions;
+    selectionOptions.addTo(parser);
+    const Options o;
+    parser.addOptions({o.iso, o.output, o.size, o.mode, o.clusters, o.linkage, o.mean, o.noMean,
+                       o.thickness, o.exaggeration, o.azimuth, o.elevation, o.plane, o.frames,
+                       o.noCache, o.demo, o.json});
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
+    QString problem;
+    const auto selection = selectionOptions.selection(parser, problem);
+    std::size_t width = 0, height = 0, ignored = 0;
+    bool isoOk = false;
+    const float iso = parser.value(o.iso).toFloat(&isoOk);
+    const auto mode = parseMode(parser.value(o.mode));
+    const int frames = std::max(1, parser.value(o.frames).toInt());
+    if (!selection)
+        problem = problem.isEmpty() ? QStringLiteral("bad data selection") : problem;
+    else if (selection->paths.empty() != parser.isSet(o.demo))
+        problem = QStringLiteral("name the files to render, or use --demo");
+    else if (!isoOk)
+        problem = QStringLiteral("say which isovalue with --iso X");
+    else if (!parser.isSet(o.output))
+        problem = QStringLiteral("say where to write the image with --out FILE.png");
+    else if (!parseGridSize(parser.value(o.size) + QStringLiteral("x2"), width, height, ignored))
+        problem = QStringLiteral("--size must look like 1600x1000");
+    else if (!mode)
+        problem = QStringLiteral("--mode must be shaded, spaghetti or surfaces");
+    else if (parser.isSet(o.plane))
+        problem = QStringLiteral("cutting planes are not available in this version yet");
+    if (!problem.isEmpty()) {
+        err << "ensil render: " << problem << "\n";
+        return 2;
+    }
+    try {
+        const data::DemoEnsembleParams demoParams;
+        const data::Ensemble ensemble = parser.isSet(o.demo)
+                                            ? data::makeDemoEnsemble(demoParams).ensemble
+                                            : data::openEnsemble(*selection);
+        const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
+        if (iso <= stats.minimum || iso >= stats.maximum) {
+            err << "ensil render: isovalue " << iso << " is outside the values (" << stats.minimum
+                << " .. " << stats.maximum << " " << QString::fromStdString(ensemble.units)
+                << ")\n";
+            return 1;
+        }
+        const int k = std::clamp(parser.value(o.clusters).toInt(), 1,
+                                 static_cast<int>(ensemble.memberCount()));
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(ensemble);
+        IsovalueJobInput job;
+        job.ensemble = &ensemble;
+        job.moments = &moments;
+        job.options.isovalue = iso;
+        job.verticalExaggeration = parser.value(o.exaggeration).toFloat();
+        job.linkage = prep::parseLinkage(parser.value(o.linkage).toStdString());
+        if (!parser.isSet(o.noCache)) job.cacheDirectory = defaultMeshCacheDirectory();
+        job.sourceKey = parser.isSet(o.demo)
+                            ? "demo members=" + std::to_string(demoParams.members) +
+                                  " seed=" + std::to_string(demoParams.seed)
+                            : data::sourceIdentity(*selection);
+        IsovalueOutcome outcome = runIsovalueJob(job);
+
+        const OffscreenContext context;
+        QOpenGLFramebufferObject target(static_cast<int>(width), static_cast<int>(height),
+                                        QOpenGLFramebufferObject::CombinedDepthStencil);
+        gl::Renderer renderer;
+        renderer.initialize();
+        renderer.setGrid(ensemble.grid);
+        renderer.setVerticalExaggeration(job.verticalExaggeration);
+        renderer.camera().setAngles(parser.value(o.azimuth).toFloat(),
+                                    parser.value(o.elevation).toFloat());
+        renderer.setFloorMap(
+            gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
+        auto set = std::make_shared<data::MeshSet>();
+        set->isovalue = iso;
+        set->members = std::move(outcome.meshes.members);
+        set->mean = std::move(outcome.meshes.mean);
+        renderer.setMeshes(set);
+        renderer.setAppearance(gl::clusterAppearance(prep::clusterLabels(outcome.tree, k)));
+        gl::RenderSettings& settings = renderer.settings();
+        settings.mode = *mode;
+        settings.showMean = !parser.isSet(o.noMean);
+        settings.thickness = parser.value(o.thickness).toFloat();
+
+        auto* f = QOpenGLContext::currentContext()->functions();
+        std::vector<double> times;
+        for (int i = 0; i < frames; ++i) {
+            QElapsedTimer timer;
+            timer.start();
+            renderer.render(target.handle(), static_cast<int>(width), static_cast<int>(height));
+            f->glFinish();  // count the GPU's work, not only the submission
+            times.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
+        }
+        std::sort(times.begin(), times.end());
+        const QImage image = target.toImage();
+        const std::size_t gpuBytes = renderer.gpuBytes();
+        renderer.releaseGpuResources();
+        if (!image.save(parser.value(o.output))) {
+            err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";
+            return 1;
+        }
+        const double frameMs = times[times.size() / 2];
+        if (parser.isSet(o.json)) {
+            const QJsonObject result{{"frame_ms", frameMs},
+                                     {"gpu_bytes", static_cast<qint64>(gpuBytes)},
+                                     {"width", static_cast<qint64>(width)},
+                                     {"height", static_cast<qint64>(height)},
+                                     {"frames", frames},
+                                     {"isovalue", iso},
+                                     {"triangles", static_cast<qint64>(outcome.meshes.triangles)},
+                                     {"members", static_cast<qint64>(ensemble.memberCount())}};
+            out << QJsonDocument(result).toJson(QJsonDocument::Compact) << "\n";
+        } else {
+            out << "wrote " << parser.value(o.output) << ": " << width << " x " << height << ", "
+                << ensemble.memberCount() << " members at " << iso << ", median frame "
+                << QString::number(frameMs, 'f', 1) << " ms over " << frames << " frames\n";
+        }
+        return 0;
+    } catch (const data::Error& e) {
+        err << "ensil render: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        err << "ensil render: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace ensil::app
