@@ -101,7 +101,7 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
         out << "wrote " << path << ": " << params.members << " members of wind_speed (m s-1) on "
             << params.nx << " x " << params.ny << " x " << params.nz << " (lon x lat x plev), "
             << QString::number(mib, 'f', 1) << " MiB in "
-            << QString::number(timer.elapsed() / 1000.0, 'f', 2) << " s\n";
+            << QString::number(static_cast<double>(timer.elapsed()) / 1000.0, 'f', 2) << " s\n";
         return 0;
     } catch (const data::Error& e) {
         err << "ensil generate: " << e.what() << "\n";

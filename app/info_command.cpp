@@ -113,9 +113,10 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
     }
     for (const auto& f : d.fixedDimensions) out << "Fixed:      " << qs(f) << "\n";
     out << "Grid:       " << d.grid.nx() << " x " << d.grid.ny() << " x " << d.grid.nz() << "\n";
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < 3; ++a) {
         out << "  "
             << "xyz"[a] << "  " << describeAxis(d.grid.axis(a)) << "\n";
+    }
     out << "Values:     " << s.minimum << " .. " << s.maximum << " " << qs(d.units) << ", mean "
         << s.mean << "\n";
     out << "Missing:    " << s.missingCount << " of " << (s.missingCount + s.validCount)

@@ -76,7 +76,7 @@ void IsovalueSession::setIsovalue(float isovalue) {
             return r;
         },
         [this, isovalue](IsovalueResult r) { show(std::move(r), isovalue); },
-        [this](std::exception_ptr error, bool cancelled) {
+        [this](const std::exception_ptr& error, bool cancelled) {
             if (cancelled || !error) {
                 emit failed(tr("Isosurfaces cancelled"));
                 return;

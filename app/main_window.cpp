@@ -254,7 +254,7 @@ void MainWindow::startLoading(const QString& what, std::string sourceKey, Ensemb
         [this](EnsembleOverview overview) {
             showOverview(std::make_unique<EnsembleOverview>(std::move(overview)));
         },
-        [this](std::exception_ptr error, bool cancelled) { onLoadFailed(error, cancelled); },
+        [this](const std::exception_ptr& error, bool cancelled) { onLoadFailed(error, cancelled); },
         [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
 }
 

@@ -97,20 +97,22 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const float iso = parser.value(o.iso).toFloat(&isoOk);
     const auto mode = parseMode(parser.value(o.mode));
     const int frames = std::max(1, parser.value(o.frames).toInt());
-    if (!selection)
+    if (!selection) {
         problem = problem.isEmpty() ? QStringLiteral("bad data selection") : problem;
-    else if (selection->paths.empty() != parser.isSet(o.demo))
+    } else if (selection->paths.empty() != parser.isSet(o.demo)) {
         problem = QStringLiteral("name the files to render, or use --demo");
-    else if (!isoOk)
+    } else if (!isoOk) {
         problem = QStringLiteral("say which isovalue with --iso X");
-    else if (!parser.isSet(o.output))
+    } else if (!parser.isSet(o.output)) {
         problem = QStringLiteral("say where to write the image with --out FILE.png");
-    else if (!parseGridSize(parser.value(o.size) + QStringLiteral("x2"), width, height, ignored))
+    } else if (!parseGridSize(parser.value(o.size) + QStringLiteral("x2"), width, height,
+                              ignored)) {
         problem = QStringLiteral("--size must look like 1600x1000");
-    else if (!mode)
+    } else if (!mode) {
         problem = QStringLiteral("--mode must be shaded, spaghetti or surfaces");
-    else if (parser.isSet(o.plane))
+    } else if (parser.isSet(o.plane)) {
         problem = QStringLiteral("cutting planes are not available in this version yet");
+    }
     if (!problem.isEmpty()) {
         err << "ensil render: " << problem << "\n";
         return 2;

@@ -62,8 +62,10 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
         if (!std::filesystem::exists(p))
             throw Error(ErrorKind::FileNotFound, "no such file: '" + p + "'");
         if (std::filesystem::is_directory(p)) {
-            throw Error(ErrorKind::InvalidArgument,
-                        "'" + p + "' is a folder; name the files in it (e.g. '" + p + "/*.nc')");
+            std::string message = "'" + p + "' is a folder; name the files in it (e.g. '";
+            message += p;
+            message += "/*.nc')";
+            throw Error(ErrorKind::InvalidArgument, message);
         }
     }
     std::ifstream in(path, std::ios::binary);

@@ -55,7 +55,7 @@ Unpacking unpackingFor(const NetcdfFile& file, const NcVariable& var) {
 template <typename T>
 void unpackInto(const T* raw, std::size_t n, const Unpacking& u, float* out) {
     for (std::size_t i = 0; i < n; ++i) {
-        const double v = static_cast<double>(raw[i]);
+        const auto v = static_cast<double>(raw[i]);
         bool masked = std::isnan(v) || v < u.validMin || v > u.validMax;
         for (double m : u.missing) masked = masked || v == m || (std::isnan(m) && std::isnan(v));
         out[i] = masked ? kNaN : static_cast<float>(v * u.scale + u.offset);
@@ -133,13 +133,15 @@ void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
         next[axis] = target[axis];
         FieldValues result(next[0] * next[1] * next[2]);
         const std::array<std::size_t, 3> step{1, size[0], size[0] * size[1]};
-        for (std::size_t k = 0; k < next[2]; ++k)
-            for (std::size_t j = 0; j < next[1]; ++j)
+        for (std::size_t k = 0; k < next[2]; ++k) {
+            for (std::size_t j = 0; j < next[1]; ++j) {
                 for (std::size_t i = 0; i < next[0]; ++i) {
                     const std::size_t src = i + size[0] * (j + size[1] * k);
                     result[i + next[0] * (j + next[1] * k)] =
                         0.5F * (values[src] + values[src + step[axis]]);
                 }
+            }
+        }
         values = std::move(result);
         size = next;
     }
@@ -215,7 +217,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
         std::vector<std::string> names = memberNames(file, plan);
         if (names.empty()) names.push_back(stems[f]);
         if (!oneFile && plan.memberDim >= 0) {
-            for (std::string& n : names) n = stems[f] + " " + n;
+            for (std::string& n : names) n.insert(0, stems[f] + " ");
         }
         d.members += names.size();
         d.memberNames.insert(d.memberNames.end(), names.begin(), names.end());

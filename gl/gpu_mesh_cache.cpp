@@ -4,7 +4,10 @@
 
 namespace ensil::gl {
 namespace {
-const void* offset(std::size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+// OpenGL takes buffer offsets as pointers.
+const void* offset(std::size_t bytes) {
+    return reinterpret_cast<const void*>(bytes);  // NOLINT(performance-no-int-to-ptr)
+}
 
 void releaseOne(GlFunctions& f, GpuMesh& m) {
     if (m.vao != 0) f.glDeleteVertexArrays(1, &m.vao);

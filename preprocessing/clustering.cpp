@@ -208,6 +208,7 @@ Linkage parseLinkage(const std::string& name) {
         if (lower == text) return linkage;
     }
     std::vector<std::string> choices;
+    choices.reserve(kLinkageNames.size());
     for (const auto& entry : kLinkageNames) choices.emplace_back(entry.second);
     throw data::Error(data::ErrorKind::InvalidArgument,
                       "unknown linkage '" + name + "'; use average, single, complete or ward",

@@ -62,7 +62,8 @@ struct Extraction {
         return mask;
     }
 
-    std::uint32_t vertexOf(std::size_t i, std::size_t j, std::size_t k, int edge) const {
+    [[nodiscard]] std::uint32_t vertexOf(std::size_t i, std::size_t j, std::size_t k,
+                                         int edge) const {
         const int c = mc::kEdgeCorner[static_cast<std::size_t>(edge)];
         const std::size_t p =
             (i + (c & 1)) + nx * (j + ((c >> 1) & 1)) + nxy * (k + ((c >> 2) & 1));
@@ -114,8 +115,9 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
             x.forEachCrossing(k, [&](int a, std::size_t p, std::size_t q) {
                 x.edgeVertex[static_cast<std::size_t>(a)][p] = static_cast<std::uint32_t>(id);
                 const float t = (isovalue - values[p]) / (values[q] - values[p]);
-                glm::vec3 pos{static_cast<float>(p % x.nx), static_cast<float>((p / x.nx) % x.ny),
-                              static_cast<float>(p / x.nxy)};
+                // Grid indices of the edge's lower point (integer division on purpose).
+                const std::size_t pi = p % x.nx, pj = (p / x.nx) % x.ny, pk = p / x.nxy;
+                glm::vec3 pos{static_cast<float>(pi), static_cast<float>(pj), static_cast<float>(pk)};
                 pos[a] += t;
                 mesh.positions[id++] = pos;
             });

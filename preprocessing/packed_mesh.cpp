@@ -60,7 +60,8 @@ glm::vec3 octahedralDecode(glm::vec2 e) {
 }
 
 glm::vec3 unpackUnitVector(const std::int16_t e[2]) {
-    return octahedralDecode({std::max(e[0] / 32767.0F, -1.0F), std::max(e[1] / 32767.0F, -1.0F)});
+    return octahedralDecode({std::max(static_cast<float>(e[0]) / 32767.0F, -1.0F),
+                             std::max(static_cast<float>(e[1]) / 32767.0F, -1.0F)});
 }
 
 PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
@@ -92,7 +93,9 @@ PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
 }
 
 glm::vec3 unpackPosition(const PackedMesh& mesh, const PackedVertex& v) {
-    const glm::vec3 t{v.position[0] / 65535.0F, v.position[1] / 65535.0F, v.position[2] / 65535.0F};
+    const glm::vec3 t{static_cast<float>(v.position[0]) / 65535.0F,
+                      static_cast<float>(v.position[1]) / 65535.0F,
+                      static_cast<float>(v.position[2]) / 65535.0F};
     return mesh.boundsMin + t * (mesh.boundsMax - mesh.boundsMin);
 }
 
