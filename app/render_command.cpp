@@ -31,7 +31,8 @@ struct Options {
     QCommandLineOption output{"out", "The PNG file to write (required).", "FILE.png"};
     QCommandLineOption size{"size", "Image size in pixels (default 1600x1000).", "WxH",
                             "1600x1000"};
-    QCommandLineOption mode{"mode", "shaded (default), spaghetti or surfaces.", "M", "shaded"};
+    QCommandLineOption mode{"mode", "shaded (default), spaghetti, surfaces or opaque.", "M",
+                            "shaded"};
     QCommandLineOption clusters{"clusters", "Number of clusters to colour by (default 5).", "K",
                                 "5"};
     QCommandLineOption linkage{"linkage", "average (default), single, complete or ward.", "L",
@@ -55,6 +56,7 @@ std::optional<gl::RenderMode> parseMode(const QString& name) {
     if (name == QLatin1String("shaded")) return gl::RenderMode::ShadedSilhouettes;
     if (name == QLatin1String("spaghetti")) return gl::RenderMode::Spaghetti;
     if (name == QLatin1String("surfaces")) return gl::RenderMode::Surfaces;
+    if (name == QLatin1String("opaque")) return gl::RenderMode::OpaqueSurfaces;
     return std::nullopt;
 }
 
@@ -109,7 +111,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
                               ignored)) {
         problem = QStringLiteral("--size must look like 1600x1000");
     } else if (!mode) {
-        problem = QStringLiteral("--mode must be shaded, spaghetti or surfaces");
+        problem = QStringLiteral("--mode must be shaded, spaghetti, surfaces or opaque");
     } else if (parser.isSet(o.plane)) {
         problem = QStringLiteral("cutting planes are not available in this version yet");
     }

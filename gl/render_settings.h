@@ -7,7 +7,8 @@
 
 namespace ensil::gl {
 
-enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces };
+// OpaqueSurfaces draws every member as a solid lit isosurface (a reference; occludes).
+enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces, OpaqueSurfaces };
 
 struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;

@@ -2,12 +2,12 @@
 
 #include <QOpenGLContext>
 #include <QOpenGLVersionFunctionsFactory>
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 #include <stdexcept>
 
 #include "gl/gl_functions.h"

@@ -105,12 +105,14 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         setMember(0, kSolid, kMeanSurfaceColor);
         drawMesh(f, program, m_gpu->meshes.mean());
     }
-    const bool translucent = m_settings.mode != RenderMode::Spaghetti;
+    const bool translucent =
+        m_settings.mode == RenderMode::ShadedSilhouettes || m_settings.mode == RenderMode::Surfaces;
+    const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const MemberAppearance a = appearance(m);
         if (!a.visible) continue;
         if (a.selected || !translucent) {
-            setMember(m, a.selected ? kSolid : kSpaghetti, a.color);
+            setMember(m, a.selected ? kSolid : opaqueMode, a.color);
             drawMesh(f, program, members[m]);
         }
     }

@@ -27,8 +27,8 @@ RenderToolbar::RenderToolbar(QWidget* parent)
     m_isovalue->setEnabled(false);
     addWidget(m_isovalue);
     addSeparator();
-    m_mode->addItems(
-        {tr("Shaded silhouettes"), tr("3D spaghetti plot"), tr("Transparent surfaces")});
+    m_mode->addItems({tr("Shaded silhouettes"), tr("3D spaghetti plot"), tr("Transparent surfaces"),
+                      tr("Opaque surfaces")});
     m_mode->setToolTip(tr("How members are drawn"));
     addWidget(m_mode);
     addWidget(new QLabel(tr(" Thickness "), this));

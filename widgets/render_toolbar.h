@@ -28,7 +28,7 @@ public:
 
 signals:
     void isovalueChanged(double value);
-    void modeChanged(int mode);  // 0 shaded silhouettes, 1 spaghetti, 2 surfaces
+    void modeChanged(int mode);  // as gl::RenderMode: shaded, spaghetti, surfaces, opaque
     void thicknessChanged(double tau);
     void clusterCountChanged(int k);
     void meanToggled(bool shown);

@@ -154,6 +154,18 @@ TEST_F(SilhouetteTest, SpaghettiIsOpaqueAndSurfacesAreFaint) {
     EXPECT_LT(middle.green(), 180) << "but translucent";
 }
 
+TEST_F(SilhouetteTest, OpaqueSurfacesFillTheFaceWithTheLitColour) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {{0.0F, 0.0F, 1.0F}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
+    const QColor middle = draw().pixelColor(project(display(centre)));
+    // Facing the headlight: 0.3 + 0.7 * |n.v|, nearly full blue.
+    EXPECT_EQ(middle.red(), 0);
+    EXPECT_EQ(middle.green(), 0);
+    EXPECT_GT(middle.blue(), 230);
+}
+
 TEST_F(SilhouetteTest, RemovalHidesMembersWhereTheyAgree) {
     // Two identical spheres: outlyingness is zero everywhere, so removal with o*_min > 0 hides
     // them completely.

@@ -1,0 +1,101 @@
+// Frame times of the silhouette renderer on the paper-sized ensemble (50 members + mean, the
+// demo at isovalue 30) at 1920 x 1200: the median of each mode and, in the same run, of opaque
+// lit surfaces of the same meshes, with the ratios. Needs an X display (xvfb-run -a).
+//
+//   ensil_render_benchmark [--frames N] [--size WxH]
+#include <QElapsedTimer>
+#include <QGuiApplication>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "data/demo_ensemble.h"
+#include "gl/palette.h"
+#include "gl/renderer.h"
+#include "gl/surface_format.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/column_maximum.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/similarity.h"
+#include "timing.h"
+
+using ensil::bench::median;
+
+int main(int argc, char** argv) {
+    int frames = 20, width = 1920, height = 1200;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--frames" && i + 1 < argc) frames = std::max(1, std::atoi(argv[++i]));
+        if (a == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
+    }
+    QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat(0));
+    QGuiApplication app(argc, argv);
+    const auto demo = ensil::data::makeDemoEnsemble({});
+    const ensil::data::Ensemble& e = demo.ensemble;
+    const auto moments = ensil::prep::computeEnsembleMoments(e);
+    ensil::prep::PipelineOptions options;
+    options.isovalue = 30.0F;
+    auto built = ensil::prep::buildIsovalueMeshes(e, moments,
+                                                  ensil::data::DisplayFrame(e.grid, 1.0F), options);
+    const auto tree = ensil::prep::clusterMembers(ensil::prep::computeDistanceMatrix(e, 30.0F));
+    auto set = std::make_shared<ensil::data::MeshSet>();
+    set->members = std::move(built.members);
+    set->mean = std::move(built.mean);
+
+    QOffscreenSurface surface;
+    surface.setFormat(ensil::gl::preferredSurfaceFormat(0));
+    surface.create();
+    QOpenGLContext context;
+    context.setFormat(ensil::gl::preferredSurfaceFormat(0));
+    if (!context.create() || !context.makeCurrent(&surface)) {
+        std::fprintf(stderr, "cannot create an OpenGL 4.1 context (run under xvfb-run -a)\n");
+        return 1;
+    }
+    const char* renderer =
+        reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
+    QOpenGLFramebufferObject target(width, height, QOpenGLFramebufferObject::CombinedDepthStencil);
+    ensil::gl::Renderer r;
+    r.initialize();
+    r.setGrid(e.grid);
+    r.setFloorMap(
+        ensil::gl::FloorMap::spanning(ensil::prep::computeColumnMaximum(e.grid, moments.mean)));
+    r.setMeshes(set);
+    r.setAppearance(ensil::gl::clusterAppearance(ensil::prep::clusterLabels(tree, 5)));
+
+    const auto time = [&](ensil::gl::RenderMode mode) {
+        r.settings().mode = mode;
+        r.render(target.handle(), width, height);  // warm-up: uploads, shader variants
+        context.functions()->glFinish();
+        std::vector<double> ms;
+        for (int i = 0; i < frames; ++i) {
+            QElapsedTimer t;
+            t.start();
+            r.render(target.handle(), width, height);
+            context.functions()->glFinish();
+            ms.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+        }
+        return median(ms);
+    };
+    const double opaque = time(ensil::gl::RenderMode::OpaqueSurfaces);
+    const double shaded = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    const double spaghetti = time(ensil::gl::RenderMode::Spaghetti);
+    const double surfaces = time(ensil::gl::RenderMode::Surfaces);
+    std::printf("renderer: %s\n", renderer);
+    std::printf(
+        "scene: %zu meshes, %zu triangles, %.2f MiB on the GPU, %d x %d, median of %d frames\n",
+        e.memberCount() + 1, built.triangles, static_cast<double>(r.gpuBytes()) / (1024.0 * 1024.0),
+        width, height, frames);
+    std::printf("  opaque lit surfaces (reference) %8.2f ms\n", opaque);
+    std::printf("  shaded silhouettes              %8.2f ms  (%.2fx the reference; goal <= 1.5x)\n",
+                shaded, shaded / opaque);
+    std::printf("  3D spaghetti plot               %8.2f ms  (%.2fx)\n", spaghetti,
+                spaghetti / opaque);
+    std::printf("  semi-transparent surfaces       %8.2f ms  (%.2fx)\n", surfaces,
+                surfaces / opaque);
+    r.releaseGpuResources();
+    return 0;
+}
