@@ -151,8 +151,8 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
         return 2;
     }
     try {
-        const data::EnsembleDescription description = data::describeEnsemble(*selection);
-        const data::Ensemble ensemble = data::openEnsemble(*selection);
+        data::EnsembleDescription description;
+        const data::Ensemble ensemble = data::openEnsemble(*selection, {}, {}, &description);
         const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
         if (parser.isSet(json)) {
             out << QJsonDocument(toJson(description, stats)).toJson(QJsonDocument::Indented);

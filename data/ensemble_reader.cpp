@@ -119,15 +119,16 @@ void checkMemoryFor(std::size_t bytes, const std::string& what) {
 }
 
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
-                      const Progress& progress) {
+                      const Progress& progress, EnsembleDescription* describedAs) {
     const EnsembleReader& reader = readerFor(selection);
-    const EnsembleDescription description = reader.describe(selection);
+    EnsembleDescription description = reader.describe(selection);
     checkMemoryFor(description.bytes(), "'" + description.variable + "' (" +
                                             std::to_string(description.members) + " members of " +
                                             std::to_string(description.grid.nx()) + " x " +
                                             std::to_string(description.grid.ny()) + " x " +
                                             std::to_string(description.grid.nz()) + " points)");
     Ensemble ensemble = reader.read(selection, stop, progress);
+    if (describedAs != nullptr) *describedAs = std::move(description);
     bool anyValid = false;
     for (const Member& m : ensemble.members) {
         for (float v : m.values) {

@@ -81,8 +81,9 @@ EnsembleDescription describeEnsemble(const DataSelection& selection);
 
 // Checks the memory the ensemble needs against what the machine has (Error(OutOfMemory) with
 // both figures), then reads it.
+// `description`, when given, receives what the headers said (read once, not twice).
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop = {},
-                      const Progress& progress = {});
+                      const Progress& progress = {}, EnsembleDescription* description = nullptr);
 
 // What identifies the data a selection reads, for cache keys: every file's absolute path,
 // size and modification time, and the variable, member dimension and time index. A file

@@ -1,5 +1,6 @@
 #include "gl/gpu_mesh_cache.h"
 
+#include <array>
 #include <cstddef>
 
 namespace ensil::gl {
@@ -36,22 +37,26 @@ GpuMesh GpuMeshCache::uploadOne(GlFunctions& f, const data::PackedMesh& mesh) {
     f.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                    static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                    mesh.indices.data(), GL_STATIC_DRAW);
+    // The 20-byte layout of data/packed_mesh.h, one attribute per field; the GL converts.
+    struct Attribute {
+        GLint size;
+        GLenum type;
+        GLboolean normalized;
+        std::size_t offset;
+    };
+    const std::array<Attribute, 5> layout{{
+        {3, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(data::PackedVertex, position)},
+        {2, GL_HALF_FLOAT, GL_FALSE, offsetof(data::PackedVertex, kappa1)},
+        {1, GL_HALF_FLOAT, GL_FALSE, offsetof(data::PackedVertex, outlyingness)},
+        {2, GL_SHORT, GL_TRUE, offsetof(data::PackedVertex, normal)},
+        {2, GL_SHORT, GL_TRUE, offsetof(data::PackedVertex, direction)},
+    }};
     constexpr auto stride = static_cast<GLsizei>(sizeof(data::PackedVertex));
-    f.glEnableVertexAttribArray(0);
-    f.glVertexAttribPointer(0, 3, GL_UNSIGNED_SHORT, GL_TRUE, stride,
-                            offset(offsetof(data::PackedVertex, position)));
-    f.glEnableVertexAttribArray(1);
-    f.glVertexAttribPointer(1, 2, GL_HALF_FLOAT, GL_FALSE, stride,
-                            offset(offsetof(data::PackedVertex, kappa1)));
-    f.glEnableVertexAttribArray(2);
-    f.glVertexAttribPointer(2, 1, GL_HALF_FLOAT, GL_FALSE, stride,
-                            offset(offsetof(data::PackedVertex, outlyingness)));
-    f.glEnableVertexAttribArray(3);
-    f.glVertexAttribPointer(3, 2, GL_SHORT, GL_TRUE, stride,
-                            offset(offsetof(data::PackedVertex, normal)));
-    f.glEnableVertexAttribArray(4);
-    f.glVertexAttribPointer(4, 2, GL_SHORT, GL_TRUE, stride,
-                            offset(offsetof(data::PackedVertex, direction)));
+    for (GLuint location = 0; location < layout.size(); ++location) {
+        const Attribute& a = layout[location];
+        f.glEnableVertexAttribArray(location);
+        f.glVertexAttribPointer(location, a.size, a.type, a.normalized, stride, offset(a.offset));
+    }
     f.glBindVertexArray(0);
     m_bytes += mesh.vertices.size() * sizeof(data::PackedVertex) +
                mesh.indices.size() * sizeof(std::uint32_t);

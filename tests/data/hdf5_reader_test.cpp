@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "data/error.h"
+#include "reader_test_helpers.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil::data;
@@ -122,29 +123,11 @@ void expectMemberValues(const Ensemble& e, std::size_t member, std::size_t field
     }
 }
 
-// Spelled out because GCC 12 warns about designated initializers that skip fields.
-DataSelection selection(std::vector<std::string> paths, std::string variable = {}) {
-    DataSelection s;
-    s.paths = std::move(paths);
-    s.variable = std::move(variable);
-    return s;
-}
-
-Error errorFrom(const DataSelection& chosen) {
-    try {
-        (void)Hdf5Reader().read(chosen, {}, {});
-    } catch (const Error& e) {
-        return e;
-    }
-    ADD_FAILURE() << "reading succeeded";
-    return Error(ErrorKind::InvalidArgument, "");
-}
-
-bool contains(const Error& e, const std::string& text) {
-    return std::string(e.what()).find(text) != std::string::npos;
-}
-
 }  // namespace
+
+using ensil::test::contains;
+using ensil::test::errorFrom;
+using ensil::test::selection;
 
 TEST(Hdf5Reader, FourDimensionalDatasetGivesOneMemberPerIndex) {
     ensil::test::TempDir dir;
@@ -333,7 +316,7 @@ TEST(Hdf5Reader, WrongVariableNameListsTheUsableOnes) {
     ensil::test::TempDir dir;
     const std::string path = dir.file("four.h5");
     writeFourDimensional(path);
-    const Error e = errorFrom(selection({path}, "windspeed"));
+    const Error e = errorFrom<Hdf5Reader>(selection({path}, "windspeed"));
     EXPECT_EQ(e.kind(), ErrorKind::VariableNotFound);
     EXPECT_TRUE(contains(e, "'/windspeed'")) << e.what();
     EXPECT_TRUE(contains(e, "'/wind_speed'")) << e.what();
@@ -352,7 +335,7 @@ TEST(Hdf5Reader, FilesOnDifferentGridsAreRefusedNamingBoth) {
         H5Writer file(b);
         file.dataset("/t", {kNz, kNy, kNx + 1}, memberValues<float>(0, kNx + 1), H5T_NATIVE_FLOAT);
     }
-    const Error e = errorFrom(selection({a, b}));
+    const Error e = errorFrom<Hdf5Reader>(selection({a, b}));
     EXPECT_EQ(e.kind(), ErrorKind::GridMismatch);
     EXPECT_TRUE(contains(e, a) && contains(e, b)) << e.what();
     EXPECT_TRUE(contains(e, "6 x 5 x 4") && contains(e, "7 x 5 x 4")) << e.what();
@@ -371,10 +354,10 @@ TEST(Hdf5Reader, TwoDimensionalDataIsRefused) {
         file.dataset("/layer", {1, kNy, kNx}, std::vector<float>(kNx * kNy, 1.0f),
                      H5T_NATIVE_FLOAT);
     }
-    const Error rank2 = errorFrom(selection({flat}));
+    const Error rank2 = errorFrom<Hdf5Reader>(selection({flat}));
     EXPECT_EQ(rank2.kind(), ErrorKind::NotThreeDimensional);
     EXPECT_TRUE(contains(rank2, "rank 2")) << rank2.what();
-    const Error oneLevel = errorFrom(selection({thin}, "layer"));
+    const Error oneLevel = errorFrom<Hdf5Reader>(selection({thin}, "layer"));
     EXPECT_EQ(oneLevel.kind(), ErrorKind::NotThreeDimensional);
     EXPECT_TRUE(contains(oneLevel, "6 x 5 x 1")) << oneLevel.what();
 }
@@ -386,7 +369,7 @@ TEST(Hdf5Reader, TruncatedFileIsCorruptAndPrintsNothing) {
     std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
     ASSERT_TRUE(Hdf5Reader().recognizes(path));
     testing::internal::CaptureStderr();
-    const Error e = errorFrom(selection({path}));
+    const Error e = errorFrom<Hdf5Reader>(selection({path}));
     const std::string printed = testing::internal::GetCapturedStderr();
     EXPECT_EQ(e.kind(), ErrorKind::CorruptFile);
     EXPECT_TRUE(contains(e, path)) << e.what();
@@ -401,10 +384,11 @@ TEST(Hdf5Reader, FileThatIsNotHdf5IsRefused) {
     writeFourDimensional(real);
     EXPECT_FALSE(Hdf5Reader().recognizes(text));
     EXPECT_TRUE(Hdf5Reader().recognizes(real));
-    const Error e = errorFrom(selection({text}));
+    const Error e = errorFrom<Hdf5Reader>(selection({text}));
     EXPECT_EQ(e.kind(), ErrorKind::UnsupportedFormat);
     EXPECT_TRUE(contains(e, text)) << e.what();
-    EXPECT_EQ(errorFrom(selection({dir.file("absent.h5")})).kind(), ErrorKind::FileNotFound);
+    EXPECT_EQ(errorFrom<Hdf5Reader>(selection({dir.file("absent.h5")})).kind(),
+              ErrorKind::FileNotFound);
 }
 
 TEST(Hdf5Reader, ProgressRisesToOneAndAStopBetweenMembersCancels) {

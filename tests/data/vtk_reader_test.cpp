@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "data/error.h"
+#include "reader_test_helpers.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil::data;
@@ -104,29 +105,11 @@ void expectMemberValues(const Ensemble& e, std::size_t member, int fieldIndex,
     }
 }
 
-// Spelled out because GCC 12 warns about designated initializers that skip fields.
-DataSelection selection(std::vector<std::string> paths, std::string variable = {}) {
-    DataSelection s;
-    s.paths = std::move(paths);
-    s.variable = std::move(variable);
-    return s;
-}
-
-Error errorFrom(const DataSelection& chosen) {
-    try {
-        (void)VtkReader().read(chosen, {}, {});
-    } catch (const Error& e) {
-        return e;
-    }
-    ADD_FAILURE() << "reading succeeded";
-    return Error(ErrorKind::InvalidArgument, "");
-}
-
-bool contains(const Error& e, const std::string& text) {
-    return std::string(e.what()).find(text) != std::string::npos;
-}
-
 }  // namespace
+
+using ensil::test::contains;
+using ensil::test::errorFrom;
+using ensil::test::selection;
 
 TEST(VtkReader, LegacyStructuredPointsReadsEveryValueInPlace) {
     ensil::test::TempDir dir;
@@ -243,7 +226,7 @@ TEST(VtkReader, MultiComponentArrayIsRefusedSuggestingAScalarOne) {
     addVectors(*img, "velocity");
     addScalars<vtkFloatArray>(*img, "pressure", 1, {kNx, kNy, kNz});
     writeXml(img, path);
-    const Error e = errorFrom(selection({path}, "velocity"));
+    const Error e = errorFrom<VtkReader>(selection({path}, "velocity"));
     EXPECT_EQ(e.kind(), ErrorKind::InvalidArgument);
     EXPECT_TRUE(contains(e, "3 components")) << e.what();
     EXPECT_TRUE(contains(e, "'pressure'")) << e.what();
@@ -256,7 +239,7 @@ TEST(VtkReader, WrongArrayNameListsTheAvailableArrays) {
     addVectors(*img, "velocity");
     addScalars<vtkFloatArray>(*img, "pressure", 1, {kNx, kNy, kNz});
     writeXml(img, path);
-    const Error e = errorFrom(selection({path}, "temperature"));
+    const Error e = errorFrom<VtkReader>(selection({path}, "temperature"));
     EXPECT_EQ(e.kind(), ErrorKind::VariableNotFound);
     EXPECT_TRUE(contains(e, "'temperature'")) << e.what();
     EXPECT_TRUE(contains(e, "'velocity' (3 components), 'pressure'")) << e.what();
@@ -314,11 +297,11 @@ TEST(VtkReader, FilesOnDifferentGridsAreRefusedNamingBoth) {
     addScalars<vtkFloatArray>(*stretched, "f", 0, {kNx, kNy, kNz});
     writeXml(stretched, c);
 
-    const Error sizes = errorFrom(selection({a, b}));
+    const Error sizes = errorFrom<VtkReader>(selection({a, b}));
     EXPECT_EQ(sizes.kind(), ErrorKind::GridMismatch);
     EXPECT_TRUE(contains(sizes, a) && contains(sizes, b)) << sizes.what();
     EXPECT_TRUE(contains(sizes, "6 x 5 x 4") && contains(sizes, "7 x 5 x 4")) << sizes.what();
-    const Error spacing = errorFrom(selection({a, c}));
+    const Error spacing = errorFrom<VtkReader>(selection({a, c}));
     EXPECT_EQ(spacing.kind(), ErrorKind::GridMismatch);
     EXPECT_TRUE(contains(spacing, a) && contains(spacing, c)) << spacing.what();
 }
@@ -330,7 +313,7 @@ TEST(VtkReader, TwoDimensionalImageIsRefused) {
     writeXml(flat, dir.file("flat.vti"));
     writeLegacy(flat, dir.file("flat.vtk"), true);
     for (const std::string name : {"flat.vti", "flat.vtk"}) {
-        const Error e = errorFrom(selection({dir.file(name)}));
+        const Error e = errorFrom<VtkReader>(selection({dir.file(name)}));
         EXPECT_EQ(e.kind(), ErrorKind::NotThreeDimensional) << name;
         EXPECT_TRUE(contains(e, "6 x 5 x 1")) << e.what();
     }
@@ -348,7 +331,7 @@ TEST(VtkReader, TruncatedFilesAreCorruptAndPrintNothing) {
         const std::string path = dir.file(name);
         std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
         testing::internal::CaptureStderr();
-        const Error e = errorFrom(selection({path}));
+        const Error e = errorFrom<VtkReader>(selection({path}));
         const std::string printed = testing::internal::GetCapturedStderr();
         EXPECT_EQ(e.kind(), ErrorKind::CorruptFile) << name << ": " << e.what();
         EXPECT_TRUE(contains(e, path)) << e.what();
@@ -369,13 +352,14 @@ TEST(VtkReader, FilesThatAreNotVtkImagesAreRefused) {
 
     EXPECT_FALSE(VtkReader().recognizes(text));
     EXPECT_TRUE(VtkReader().recognizes(mesh));
-    const Error notVtk = errorFrom(selection({text}));
+    const Error notVtk = errorFrom<VtkReader>(selection({text}));
     EXPECT_EQ(notVtk.kind(), ErrorKind::UnsupportedFormat);
     EXPECT_TRUE(contains(notVtk, text)) << notVtk.what();
-    const Error polygons = errorFrom(selection({mesh}));
+    const Error polygons = errorFrom<VtkReader>(selection({mesh}));
     EXPECT_EQ(polygons.kind(), ErrorKind::UnsupportedFormat);
     EXPECT_TRUE(contains(polygons, "POLYDATA")) << polygons.what();
-    EXPECT_EQ(errorFrom(selection({dir.file("absent.vti")})).kind(), ErrorKind::FileNotFound);
+    EXPECT_EQ(errorFrom<VtkReader>(selection({dir.file("absent.vti")})).kind(),
+              ErrorKind::FileNotFound);
 }
 
 TEST(VtkReader, ProgressRisesToOneAndAStopBetweenMembersCancels) {
