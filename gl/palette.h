@@ -28,7 +28,10 @@ inline glm::vec3 clusterColor(int cluster) {
 // Every member visible, coloured by its cluster label.
 inline std::vector<MemberAppearance> clusterAppearance(const std::vector<int>& labels) {
     std::vector<MemberAppearance> look(labels.size());
-    for (std::size_t m = 0; m < labels.size(); ++m) look[m].color = clusterColor(labels[m]);
+    for (std::size_t m = 0; m < labels.size(); ++m) {
+        look[m].color = clusterColor(labels[m]);
+        look[m].cluster = labels[m];
+    }
     return look;
 }
 

@@ -2,6 +2,7 @@
 // surface, and each member's colour, visibility and selection. A value type; GUI thread.
 #pragma once
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -9,6 +10,25 @@ namespace ensil::gl {
 
 // OpaqueSurfaces draws every member as a solid lit isosurface (a reference; occludes).
 enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces, OpaqueSurfaces };
+
+// A plane that cuts the scene (algorithms.md section 8): points p with dot(normal, p) > offset,
+// in display space, are removed when they lie on the viewer's side; where each member's
+// isosurface crosses the plane, its intersection curve is drawn `thickness` wide.
+struct CuttingPlane {
+    bool enabled = false;
+    glm::vec3 normal{0.0F, 0.0F, 1.0F};  // unit length, display space
+    float offset = 0.0F;                 // display units
+    float thickness = 0.004F;            // eps, display units
+
+    // The plane with this normal through the given display-space point.
+    static CuttingPlane through(const glm::vec3& normal, const glm::vec3& point) {
+        CuttingPlane plane;
+        plane.enabled = true;
+        plane.normal = glm::normalize(normal);
+        plane.offset = glm::dot(plane.normal, point);
+        return plane;
+    }
+};
 
 struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;
@@ -19,12 +39,14 @@ struct RenderSettings {
     float removalMin = 0.0F;    // o*_min, in the variable's units squared
     float removalMax = 1.0F;    // o*_max
     int groupSize = 4;          // s_G
+    CuttingPlane plane;
 };
 
 struct MemberAppearance {
     glm::vec3 color{0.8F};
     bool visible = true;
     bool selected = false;  // drawn as a solid lit isosurface
+    int cluster = -1;       // reported by picking; -1 when the members are not clustered
 };
 
 }  // namespace ensil::gl

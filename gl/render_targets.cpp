@@ -52,7 +52,32 @@ void RenderTargets::ensure(GlFunctions& f, int width, int height) {
     checkComplete(f, "transparency");
 }
 
+void RenderTargets::ensurePick(GlFunctions& f, int width, int height) {
+    if (width == m_pickWidth && height == m_pickHeight && m_pick != 0) return;
+    releasePick(f);
+    m_pickWidth = width;
+    m_pickHeight = height;
+    m_pickIds = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    m_pickDepth = texture(f, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, width, height);
+    f.glGenFramebuffers(1, &m_pick);
+    f.glBindFramebuffer(GL_FRAMEBUFFER, m_pick);
+    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_pickIds, 0);
+    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_pickDepth, 0);
+    checkComplete(f, "picking");
+}
+
+void RenderTargets::releasePick(GlFunctions& f) {
+    if (m_pick != 0) f.glDeleteFramebuffers(1, &m_pick);
+    for (GLuint* t : {&m_pickIds, &m_pickDepth}) {
+        if (*t != 0) f.glDeleteTextures(1, t);
+        *t = 0;
+    }
+    m_pick = 0;
+    m_pickWidth = m_pickHeight = 0;
+}
+
 void RenderTargets::release(GlFunctions& f) {
+    releasePick(f);
     if (m_scene != 0) f.glDeleteFramebuffers(1, &m_scene);
     if (m_transparency != 0) f.glDeleteFramebuffers(1, &m_transparency);
     for (GLuint* t : {&m_color, &m_depth, &m_accumulation, &m_revealage}) {

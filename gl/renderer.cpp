@@ -166,6 +166,7 @@ void Renderer::uploadFloorMap() {
 void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
     if (width <= 0 || height <= 0) return;
+    m_lastSize = {width, height};
     GlFunctions& f = *m_gpu->f;
     m_gpu->targets.ensure(f, width, height);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());

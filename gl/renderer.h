@@ -10,6 +10,7 @@
 // objects and must release them before that context dies (QOpenGLContext::aboutToBeDestroyed).
 #pragma once
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
 #include <vector>
@@ -20,7 +21,15 @@
 #include "gl/camera.h"
 #include "gl/render_settings.h"
 
+class QOpenGLShaderProgram;
+
 namespace ensil::gl {
+
+// What lies under a pixel: the member (-1 for none) and its cluster (-1 when unknown).
+struct PickResult {
+    int member = -1;
+    int cluster = -1;
+};
 
 // A 2D field drawn on the box floor: nx * ny values (x fastest), NaN where missing.
 struct FloorMap {
@@ -48,6 +57,12 @@ public:
     // Draws into the framebuffer object `framebuffer` (0 = the default) of the given pixel size.
     void render(unsigned framebuffer, int width, int height);
 
+    // The member drawn at pixel (x, y) of the last frame (origin top left, framebuffer pixels):
+    // the member whose fragment is nearest to the pixel within `radius` pixels, the front-most
+    // where several overlap. Draws an id pass into the renderer's own framebuffer, limited to
+    // the pixels searched; leaves framebuffer 0 bound. Context current.
+    [[nodiscard]] PickResult pick(int x, int y, int radius = 3);
+
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
@@ -74,6 +89,12 @@ public:
 
 private:
     struct Gpu;
+    enum class MemberPass { Opaque, Translucent, All };
+    void uploadMeshesIfChanged();
+    [[nodiscard]] MemberAppearance appearance(std::size_t member) const;
+    [[nodiscard]] bool translucentMode() const;
+    QOpenGLShaderProgram& bindSurfaceProgram(const glm::mat4& viewProjection, bool pick);
+    void drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass);
     void uploadFloorMap();
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
@@ -93,6 +114,7 @@ private:
     std::vector<MemberAppearance> m_appearance;
     RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
+    glm::ivec2 m_lastSize{0};  // the last frame's size, which picking draws at
 };
 
 }  // namespace ensil::gl

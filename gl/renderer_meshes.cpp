@@ -1,9 +1,12 @@
 // The isosurface passes of the renderer: opaque (mean, selected members, spaghetti), then the
-// translucent members into the order-independent transparency targets, then the composite.
+// translucent members into the order-independent transparency targets, then the composite; and
+// the picking pass, which draws the same fragments as member ids.
 #include <QOpenGLShaderProgram>
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <glm/gtc/type_ptr.hpp>
+#include <limits>
 
 #include "gl/palette.h"
 #include "gl/renderer_gpu.h"
@@ -53,19 +56,23 @@ void Renderer::uploadAxisTables() {
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
-void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height) {
+void Renderer::uploadMeshesIfChanged() {
+    if (!m_meshesDirty) return;
+    m_meshesDirty = false;
     GlFunctions& f = *m_gpu->f;
-    if (m_meshesDirty) {
-        m_meshesDirty = false;
-        if (m_meshes) {
-            m_gpu->meshes.upload(f, *m_meshes);
-        } else {
-            m_gpu->meshes.release(f);
-        }
+    if (m_meshes) {
+        m_gpu->meshes.upload(f, *m_meshes);
+    } else {
+        m_gpu->meshes.release(f);
     }
-    const std::vector<GpuMesh>& members = m_gpu->meshes.members();
-    if (members.empty() && m_gpu->meshes.mean().vao == 0) return;
+}
 
+MemberAppearance Renderer::appearance(std::size_t member) const {
+    return member < m_appearance.size() ? m_appearance[member] : MemberAppearance{};
+}
+
+QOpenGLShaderProgram& Renderer::bindSurfaceProgram(const glm::mat4& viewProjection, bool pick) {
+    GlFunctions& f = *m_gpu->f;
     QOpenGLShaderProgram& program = m_gpu->shaders.program(QStringLiteral("surface"));
     program.bind();
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
@@ -82,42 +89,80 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     program.setUniformValue("u_removalMin", m_settings.removalMin);
     program.setUniformValue("u_removalMax", m_settings.removalMax);
     program.setUniformValue("u_groupSize", m_settings.groupSize);
+    program.setUniformValue("u_pick", pick);
+
+    // The plane's normal is turned towards the viewer, so the shader discards n.p > offset.
+    const CuttingPlane& plane = m_settings.plane;
+    glm::vec3 normal = plane.normal;
+    float offset = plane.offset;
+    const glm::vec3 viewerPoint = m_camera.projection() == Camera::Projection::Orthographic
+                                      ? m_camera.target() - 1e3F * viewDirection
+                                      : eye;
+    if (glm::dot(normal, viewerPoint) < offset) {
+        normal = -normal;
+        offset = -offset;
+    }
+    program.setUniformValue("u_planeEnabled", plane.enabled);
+    program.setUniformValue("u_plane", normal.x, normal.y, normal.z, offset);
+    program.setUniformValue("u_planeEpsilon", plane.thickness);
+
     program.setUniformValue("u_axisTables", 1);
     f.glUniform3i(program.uniformLocation("u_axisSize"), m_gpu->axisSize.x, m_gpu->axisSize.y,
                   m_gpu->axisSize.z);
     f.glActiveTexture(GL_TEXTURE1);
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->axisTables);
+    f.glActiveTexture(GL_TEXTURE0);
+    return program;
+}
 
-    const auto appearance = [this](std::size_t m) {
-        return m < m_appearance.size() ? m_appearance[m] : MemberAppearance{};
-    };
-    const auto setMember = [&](std::size_t m, int mode, const glm::vec3& colour) {
+bool Renderer::translucentMode() const {
+    return m_settings.mode == RenderMode::ShadedSilhouettes ||
+           m_settings.mode == RenderMode::Surfaces;
+}
+
+void Renderer::drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass) {
+    GlFunctions& f = *m_gpu->f;
+    const std::vector<GpuMesh>& members = m_gpu->meshes.members();
+    const auto setMember = [&](int pickId, std::size_t m, int mode, const glm::vec3& colour) {
         program.setUniformValue("u_mode", mode);
         program.setUniformValue("u_memberIndex", static_cast<int>(m));
+        program.setUniformValue("u_pickId", pickId);
         program.setUniformValue("u_color", colour.x, colour.y, colour.z);
     };
-
-    // Opaque: the mean, selected members as solid surfaces, and the spaghetti plot.
-    f.glEnable(GL_DEPTH_TEST);
-    f.glDepthMask(GL_TRUE);
-    f.glDisable(GL_BLEND);
-    if (m_settings.showMean) {
-        setMember(0, kSolid, kMeanSurfaceColor);
+    const bool translucent = translucentMode();
+    const int translucentShaderMode =
+        m_settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
+    const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
+    if (pass != MemberPass::Translucent && m_settings.showMean) {
+        setMember(0, 0, kSolid, kMeanSurfaceColor);
         drawMesh(f, program, m_gpu->meshes.mean());
     }
-    const bool translucent =
-        m_settings.mode == RenderMode::ShadedSilhouettes || m_settings.mode == RenderMode::Surfaces;
-    const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const MemberAppearance a = appearance(m);
         if (!a.visible) continue;
-        if (a.selected || !translucent) {
-            setMember(m, a.selected ? kSolid : opaqueMode, a.color);
-            drawMesh(f, program, members[m]);
+        const bool opaque = a.selected || !translucent;
+        if ((pass == MemberPass::Opaque && !opaque) ||
+            (pass == MemberPass::Translucent && opaque)) {
+            continue;
         }
+        const int mode = a.selected ? kSolid : (opaque ? opaqueMode : translucentShaderMode);
+        setMember(static_cast<int>(m) + 1, m, mode, a.color);
+        drawMesh(f, program, members[m]);
     }
+}
 
-    if (translucent) {
+void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height) {
+    GlFunctions& f = *m_gpu->f;
+    uploadMeshesIfChanged();
+    if (m_gpu->meshes.members().empty() && m_gpu->meshes.mean().vao == 0) return;
+
+    QOpenGLShaderProgram& program = bindSurfaceProgram(viewProjection, false);
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_BLEND);
+    drawMemberPass(program, MemberPass::Opaque);
+
+    if (translucentMode()) {
         // Accumulate every unselected visible member, testing but not writing depth.
         f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.transparencyFramebuffer());
         f.glViewport(0, 0, width, height);
@@ -129,13 +174,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         f.glEnable(GL_BLEND);
         f.glBlendFunci(0, GL_ONE, GL_ONE);
         f.glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
-        const int mode = m_settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
-        for (std::size_t m = 0; m < members.size(); ++m) {
-            const MemberAppearance a = appearance(m);
-            if (!a.visible || a.selected) continue;
-            setMember(m, mode, a.color);
-            drawMesh(f, program, members[m]);
-        }
+        drawMemberPass(program, MemberPass::Translucent);
         f.glDepthMask(GL_TRUE);
 
         // Composite over the opaque scene.
@@ -158,6 +197,69 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     }
     f.glBindVertexArray(0);
     program.release();
+}
+
+PickResult Renderer::pick(int x, int y, int radius) {
+    PickResult result;
+    if (!m_gpu || !m_hasGrid || m_lastSize.x <= 0 || m_lastSize.y <= 0) return result;
+    const int width = m_lastSize.x, height = m_lastSize.y;
+    if (x < 0 || y < 0 || x >= width || y >= height) return result;
+    GlFunctions& f = *m_gpu->f;
+    uploadMeshesIfChanged();
+    if (m_axisTablesDirty) uploadAxisTables();
+    m_gpu->targets.ensurePick(f, width, height);
+
+    // Only a small window around the pixel is drawn: picking on hover stays cheap.
+    radius = std::max(radius, 0);
+    const int glY = height - 1 - y;  // GL rows run bottom-up
+    const int x0 = std::max(x - radius, 0), y0 = std::max(glY - radius, 0);
+    const int w = std::min(x + radius, width - 1) - x0 + 1;
+    const int h = std::min(glY + radius, height - 1) - y0 + 1;
+    f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.pickFramebuffer());
+    f.glViewport(0, 0, width, height);
+    f.glEnable(GL_SCISSOR_TEST);
+    f.glScissor(x0, y0, w, h);
+    f.glClearColor(0, 0, 0, 0);
+    f.glClearDepth(1.0);
+    f.glDepthMask(GL_TRUE);
+    f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthFunc(GL_LEQUAL);
+    f.glDisable(GL_BLEND);
+    f.glDisable(GL_DITHER);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    QOpenGLShaderProgram& program = bindSurfaceProgram(m_camera.viewProjection(aspect), true);
+    drawMemberPass(program, MemberPass::All);
+    f.glBindVertexArray(0);
+    program.release();
+
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) *
+                                     4);
+    f.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    f.glReadPixels(x0, y0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    f.glDisable(GL_SCISSOR_TEST);
+    f.glEnable(GL_DITHER);
+    f.glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    // The id nearest to the pixel wins; thin silhouettes need not be hit exactly.
+    int bestDistance = std::numeric_limits<int>::max();
+    for (int row = 0; row < h; ++row) {
+        for (int col = 0; col < w; ++col) {
+            const std::uint8_t* p = &pixels[(static_cast<std::size_t>(row) * w + col) * 4];
+            const int id = (p[0] << 16) | (p[1] << 8) | p[2];
+            if (id == 0) continue;
+            const int dx = x0 + col - x, dy = y0 + row - glY;
+            const int distance = dx * dx + dy * dy;
+            if (distance < bestDistance) {
+                bestDistance = distance;
+                result.member = id - 1;
+            }
+        }
+    }
+    if (result.member >= 0) {
+        result.cluster = appearance(static_cast<std::size_t>(result.member)).cluster;
+    }
+    return result;
 }
 
 }  // namespace ensil::gl

@@ -1,0 +1,124 @@
+// The cutting plane (algorithms.md section 8) and density-based removal (section 7) on spheres,
+// whose geometry says exactly which pixels must change.
+#include <QImage>
+
+#include "tests/gl/sphere_scene.h"
+
+using namespace ensil;
+using test::channelDistance;
+using test::spheres;
+using CuttingPlaneTest = test::SphereSceneTest;
+using RemovalTest = test::SphereSceneTest;
+
+namespace {
+constexpr glm::vec3 kOrange{1.0F, 0.5F, 0.0F};
+
+// The best match to `colour` within `radius` pixels along the row through p.
+int nearestMatch(const QImage& image, QPoint p, const glm::vec3& colour, int radius = 3) {
+    int best = 255;
+    for (int dx = -radius; dx <= radius; ++dx)
+        best = std::min(best, channelDistance(image.pixelColor(p + QPoint(dx, 0)), colour));
+    return best;
+}
+}  // namespace
+
+TEST_F(CuttingPlaneTest, TheViewersSideIsCutAwayAndTheCurveDrawnWhereTheSurfaceCrossesThePlane) {
+    // A sphere of radius 8 at the centre; the plane x = 12 (3.5 cells left of the centre).
+    // Looking along +y from x = 15.5, the viewer is on the side x > 12, which is cut away.
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {kOrange});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.05F;
+    const QPoint rightRim = project(display(centre + glm::vec3(7.9F, 0, 0)));
+    const QPoint leftRim = project(display(centre - glm::vec3(7.9F, 0, 0)));
+    const QImage whole = draw();
+    ASSERT_LE(nearestMatch(whole, rightRim, kOrange), 40) << "the right rim is drawn uncut";
+
+    m_renderer.settings().plane =
+        gl::CuttingPlane::through({1, 0, 0}, display({12, 15.5F, 15.5F}));
+    m_renderer.settings().plane.thickness = 0.5F / 31.0F;  // half a cell
+    const QImage cut = draw();
+    EXPECT_LE(channelDistance(cut.pixelColor(rightRim), {0, 0, 0}), 3) << "cut away";
+    EXPECT_LE(nearestMatch(cut, leftRim, kOrange), 40) << "the far side of the plane stays";
+    // The sphere meets the plane x = 12 in a circle of radius sqrt(64 - 3.5^2) = 7.19 cells;
+    // seen edge-on, a vertical line. Its front point (12, 15.5 - 7.19, 15.5) is on screen.
+    const QPoint curve = project(display({11.9F, 15.5F - 7.19F, 15.5F}));
+    EXPECT_LE(nearestMatch(cut, curve, kOrange, 2), 40) << "the intersection curve";
+    // The same plane facing the other way cuts the same side: the viewer decides, not the sign.
+    m_renderer.settings().plane =
+        gl::CuttingPlane::through({-1, 0, 0}, display({12, 15.5F, 15.5F}));
+    m_renderer.settings().plane.thickness = 0.5F / 31.0F;
+    EXPECT_EQ(test::differingFraction(cut, draw(), 0), 0.0);
+}
+
+TEST_F(CuttingPlaneTest, ThePlaneCutsTheMeanAndTheCurveThicknessGrowsWithEpsilon) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {kOrange});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.001F;  // no silhouettes to speak of: the curve alone
+    m_renderer.settings().plane = gl::CuttingPlane::through({1, 0, 0}, display(centre));
+    const auto litPixels = [&](float epsilonCells) {
+        m_renderer.settings().plane.thickness = epsilonCells / 31.0F;
+        const QImage image = draw();
+        const QImage empty = [&] {
+            m_renderer.settings().plane.enabled = false;
+            m_renderer.setAppearance({{kOrange, false, false}});
+            QImage e = draw();
+            m_renderer.settings().plane.enabled = true;
+            m_renderer.setAppearance({{kOrange, true, false}});
+            return e;
+        }();
+        return test::differingFraction(image, empty, 8);
+    };
+    const double thin = litPixels(0.3F);
+    const double thick = litPixels(1.5F);
+    EXPECT_GT(thin, 0.0);
+    EXPECT_GT(thick, 2.0 * thin);
+}
+
+TEST_F(RemovalTest, ChangingTheThresholdsChangesOnlyMembersInTheBand) {
+    // Four concentric spheres of radius 8, 7, 6, 5 (offsets 0, -1, -2, -3): the fields differ by
+    // constants, so each member's outlyingness is constant: sum_j (d_j - d_i)^2 / 4 = 3.5, 1.5,
+    // 1.5, 3.5 for offsets 0, -1, -2, -3.
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre, centre, centre, centre}, {0, -1, -2, -3}),
+         {kOrange, kOrange, kOrange, kOrange});
+    m_renderer.settings().showMean = false;
+    // A silhouette is about tau display units wide (0.4 cells): the rings do not overlap.
+    m_renderer.settings().thickness = 0.013F;
+    m_renderer.settings().removal = true;
+    m_renderer.settings().groupSize = 1;
+    m_renderer.settings().removalMin = 0.0F;
+    m_renderer.settings().removalMax = 1.0F;
+    const QImage base = draw();
+    m_renderer.settings().removalMax = 1.4F;  // every member still above the band
+    EXPECT_EQ(test::differingFraction(base, draw(), 0), 0.0);
+
+    m_renderer.settings().removalMax = 2.0F;  // the band now holds 1.5: radii 7 and 6 fade
+    const QImage changed = draw();
+    const QPoint middle = project(display(centre));
+    const auto ringRadius = [&](float cells) {
+        const QPoint rim = project(display(centre + glm::vec3(cells, 0, 0)));
+        return static_cast<double>(rim.x() - middle.x());
+    };
+    // A silhouette lies on and just inside its sphere's outline: the middle of each ring is
+    // taken a quarter cell inside the outline.
+    const double cell = ringRadius(8) - ringRadius(7);
+    const std::array<double, 4> rings{ringRadius(8) - 0.25 * cell, ringRadius(7) - 0.25 * cell,
+                                      ringRadius(6) - 0.25 * cell, ringRadius(5) - 0.25 * cell};
+    std::array<int, 4> changedNear{0, 0, 0, 0};
+    for (int y = 0; y < base.height(); ++y) {
+        for (int x = 0; x < base.width(); ++x) {
+            if (base.pixel(x, y) == changed.pixel(x, y)) continue;
+            const double r = std::hypot(x - middle.x(), y - middle.y());
+            std::size_t nearest = 0;
+            for (std::size_t i = 1; i < rings.size(); ++i)
+                if (std::abs(r - rings[i]) < std::abs(r - rings[nearest])) nearest = i;
+            ++changedNear[nearest];
+        }
+    }
+    EXPECT_EQ(changedNear[0], 0) << "radius 8 has outlyingness 3.5, outside the band";
+    EXPECT_GT(changedNear[1], 20) << "radius 7 has outlyingness 1.5";
+    EXPECT_GT(changedNear[2], 20) << "radius 6 has outlyingness 1.5";
+    EXPECT_EQ(changedNear[3], 0) << "radius 5 has outlyingness 3.5";
+}

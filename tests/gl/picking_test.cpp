@@ -1,0 +1,87 @@
+// Picking: the id pass returns the member under a pixel, the front-most where members overlap,
+// and nothing on the background or where a member draws nothing.
+#include "tests/gl/sphere_scene.h"
+
+using namespace ensil;
+using test::spheres;
+using PickingTest = test::SphereSceneTest;
+
+namespace {
+constexpr glm::vec3 kRed{1, 0.2F, 0.2F};
+constexpr glm::vec3 kBlue{0.2F, 0.3F, 1};
+}  // namespace
+
+TEST_F(PickingTest, ReturnsTheMemberWhoseSilhouetteIsUnderThePixel) {
+    // Two spheres side by side (x = 9 and x = 22), seen along +y.
+    show(spheres({{9, 15.5F, 15.5F}, {22, 15.5F, 15.5F}}), {kRed, kBlue});
+    m_renderer.setAppearance({{kRed, true, false, 3}, {kBlue, true, false, 5}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    (void)draw();
+    const QPoint leftRim = project(display({9 - 7.9F, 15.5F, 15.5F}));
+    const QPoint rightRim = project(display({22 + 7.9F, 15.5F, 15.5F}));
+    const gl::PickResult left = m_renderer.pick(leftRim.x(), leftRim.y());
+    const gl::PickResult right = m_renderer.pick(rightRim.x(), rightRim.y());
+    EXPECT_EQ(left.member, 0);
+    EXPECT_EQ(left.cluster, 3);
+    EXPECT_EQ(right.member, 1);
+    EXPECT_EQ(right.cluster, 5);
+    // The faces of both spheres draw no silhouette, and the corner is background.
+    const QPoint face = project(display({9, 15.5F, 15.5F}));
+    EXPECT_EQ(m_renderer.pick(face.x(), face.y()).member, -1);
+    EXPECT_EQ(m_renderer.pick(2, 2).member, -1);
+    EXPECT_EQ(m_renderer.pick(2, 2).cluster, -1);
+    EXPECT_EQ(m_renderer.pick(-5, 10).member, -1) << "outside the view";
+}
+
+TEST_F(PickingTest, TheFrontMostMemberWinsWhateverTheDrawingOrder) {
+    // Sphere 0 nearer the camera (smaller y) than sphere 1, both on the view axis, drawn as
+    // opaque surfaces; then the same with the members listed the other way round.
+    const glm::vec3 nearCentre{15.5F, 12, 15.5F}, farCentre{15.5F, 19, 15.5F};
+    show(spheres({nearCentre, farCentre}), {kRed, kBlue});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
+    (void)draw();
+    const QPoint middle = project(display(nearCentre));
+    EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, 0);
+
+    show(spheres({farCentre, nearCentre}), {kBlue, kRed});
+    m_renderer.settings().showMean = false;
+    (void)draw();
+    EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, 1);
+}
+
+TEST_F(PickingTest, SelectedMembersArePickedOverTheirFaceAndHiddenOnesNever) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre, centre + glm::vec3(0.5F, 0, 0)}), {kRed, kBlue});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    (void)draw();
+    const QPoint face = project(display(centre));
+    EXPECT_EQ(m_renderer.pick(face.x(), face.y()).member, -1) << "silhouettes only";
+
+    m_renderer.setAppearance({{kRed, true, false}, {kBlue, true, true}});
+    (void)draw();
+    EXPECT_EQ(m_renderer.pick(face.x(), face.y()).member, 1) << "a selected member is solid";
+
+    m_renderer.setAppearance({{kRed, true, false}, {kBlue, false, true}});
+    (void)draw();
+    const QPoint rim = project(display(centre + glm::vec3(7.9F, 0, 0)));
+    EXPECT_EQ(m_renderer.pick(face.x(), face.y()).member, -1) << "hidden, though selected";
+    EXPECT_EQ(m_renderer.pick(rim.x(), rim.y()).member, 0) << "the visible one remains";
+}
+
+TEST_F(PickingTest, TheMeanOccludesMembersBehindItButIsNotAMember) {
+    // A small member sphere behind the big solid mean, and nothing in front of it.
+    show(spheres({{15.5F, 15.5F, 15.5F}, {15.5F, 15.5F, 15.5F}}, {0, -4}), {kRed, kBlue});
+    m_renderer.settings().showMean = true;
+    m_renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
+    (void)draw();
+    const QPoint middle = project(display({15.5F, 15.5F, 15.5F}));
+    EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, 0)
+        << "member 0 (radius 8) lies in front of the mean (radius 6)";
+    m_renderer.setAppearance({{kRed, false, false}, {kBlue, true, false}});
+    (void)draw();
+    EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, -1)
+        << "member 1 (radius 4) lies inside the mean";
+}
