@@ -10,6 +10,9 @@
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
 #include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <optional>
 
 #include "app/data_selection_options.h"
 #include "app/generate_command.h"
@@ -45,7 +48,21 @@ struct Options {
     QCommandLineOption azimuth{"azimuth", "Camera azimuth in degrees (default -75).", "A", "-75"};
     QCommandLineOption elevation{"elevation", "Camera elevation in degrees (default 30).", "E",
                                  "30"};
-    QCommandLineOption plane{"plane", "Cutting plane NX,NY,NZ,OFFSET (not available yet).", "P"};
+    QCommandLineOption plane{
+        "plane",
+        "Cutting plane with normal NX,NY,NZ (x east, y north, z up) at OFFSET across the data "
+        "box: -1 and 1 touch its far corners, 0 is its centre. The side the camera looks from "
+        "is cut away.",
+        "NX,NY,NZ,OFFSET"};
+    QCommandLineOption planeThickness{"plane-thickness",
+                                      "Width eps of the intersection curves (default 0.004).",
+                                      "EPS", "0.004"};
+    QCommandLineOption removal{"removal",
+                               "Density-based silhouette removal between o*_min and o*_max (in "
+                               "the variable's units squared).",
+                               "MIN,MAX"};
+    QCommandLineOption groupSize{"group-size", "Group size s_G of the removal (default 4).", "S",
+                                 "4"};
     QCommandLineOption frames{"frames", "Frames to time for frame_ms (default 20).", "N", "20"};
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
@@ -58,6 +75,19 @@ std::optional<gl::RenderMode> parseMode(const QString& name) {
     if (name == QLatin1String("surfaces")) return gl::RenderMode::Surfaces;
     if (name == QLatin1String("opaque")) return gl::RenderMode::OpaqueSurfaces;
     return std::nullopt;
+}
+
+// N comma-separated numbers, or nothing when the text is not exactly that.
+std::optional<std::vector<float>> parseNumbers(const QString& text, int count) {
+    const QStringList parts = text.split(QLatin1Char(','));
+    if (parts.size() != count) return std::nullopt;
+    std::vector<float> numbers;
+    for (const QString& part : parts) {
+        bool ok = false;
+        numbers.push_back(part.trimmed().toFloat(&ok));
+        if (!ok || !std::isfinite(numbers.back())) return std::nullopt;
+    }
+    return numbers;
 }
 
 // The offscreen OpenGL 4.1 context everything is drawn in. Throws std::runtime_error.
@@ -90,7 +120,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const Options o;
     parser.addOptions({o.iso, o.output, o.size, o.mode, o.clusters, o.linkage, o.mean, o.noMean,
                        o.thickness, o.exaggeration, o.azimuth, o.elevation, o.plane, o.frames,
-                       o.noCache, o.demo, o.json});
+                       o.planeThickness, o.removal, o.groupSize, o.noCache, o.demo, o.json});
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
     QString problem;
     const auto selection = selectionOptions.selection(parser, problem);
@@ -99,6 +129,12 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const float iso = parser.value(o.iso).toFloat(&isoOk);
     const auto mode = parseMode(parser.value(o.mode));
     const int frames = std::max(1, parser.value(o.frames).toInt());
+    const auto plane = parser.isSet(o.plane) ? parseNumbers(parser.value(o.plane), 4)
+                                             : std::optional<std::vector<float>>{};
+    const auto removal = parser.isSet(o.removal) ? parseNumbers(parser.value(o.removal), 2)
+                                                 : std::optional<std::vector<float>>{};
+    bool groupOk = false;
+    const int groupSize = parser.value(o.groupSize).toInt(&groupOk);
     if (!selection) {
         problem = problem.isEmpty() ? QStringLiteral("bad data selection") : problem;
     } else if (selection->paths.empty() != parser.isSet(o.demo)) {
@@ -112,8 +148,13 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         problem = QStringLiteral("--size must look like 1600x1000");
     } else if (!mode) {
         problem = QStringLiteral("--mode must be shaded, spaghetti, surfaces or opaque");
-    } else if (parser.isSet(o.plane)) {
-        problem = QStringLiteral("cutting planes are not available in this version yet");
+    } else if (parser.isSet(o.plane) &&
+               (!plane || glm::length(glm::vec3((*plane)[0], (*plane)[1], (*plane)[2])) == 0.0F)) {
+        problem = QStringLiteral("--plane must be NX,NY,NZ,OFFSET with a non-zero normal");
+    } else if (parser.isSet(o.removal) && (!removal || (*removal)[0] >= (*removal)[1])) {
+        problem = QStringLiteral("--removal must be MIN,MAX with MIN below MAX");
+    } else if (!groupOk || groupSize < 1) {
+        problem = QStringLiteral("--group-size must be a positive whole number");
     }
     if (!problem.isEmpty()) {
         err << "ensil render: " << problem << "\n";
@@ -168,6 +209,19 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         settings.mode = *mode;
         settings.showMean = !parser.isSet(o.noMean);
         settings.thickness = parser.value(o.thickness).toFloat();
+        settings.groupSize = groupSize;
+        if (removal) {
+            settings.removal = true;
+            settings.removalMin = (*removal)[0];
+            settings.removalMax = (*removal)[1];
+        }
+        if (plane) {
+            const data::DisplayFrame& frame = renderer.frame();
+            settings.plane = gl::CuttingPlane::acrossBox({(*plane)[0], (*plane)[1], (*plane)[2]},
+                                                         (*plane)[3], frame.boxMin(),
+                                                         frame.boxMax());
+            settings.plane.thickness = parser.value(o.planeThickness).toFloat();
+        }
 
         auto* f = QOpenGLContext::currentContext()->functions();
         std::vector<double> times;

@@ -2,6 +2,7 @@
 // surface, and each member's colour, visibility and selection. A value type; GUI thread.
 #pragma once
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -27,6 +28,23 @@ struct CuttingPlane {
         plane.normal = glm::normalize(normal);
         plane.offset = glm::dot(plane.normal, point);
         return plane;
+    }
+    // The plane with this normal placed across a box: position -1 touches the box's corner
+    // furthest against the normal, 0 passes through its centre, +1 touches the furthest corner
+    // along it. Unit-free, so it means the same for every grid and every normal.
+    static CuttingPlane acrossBox(const glm::vec3& normal, float position, const glm::vec3& boxMin,
+                                  const glm::vec3& boxMax) {
+        const glm::vec3 n = glm::normalize(normal);
+        const glm::vec3 halfSize = 0.5F * (boxMax - boxMin);
+        const float reach = glm::dot(glm::abs(n), halfSize);
+        return through(n, 0.5F * (boxMin + boxMax) + position * reach * n);
+    }
+    // Where this plane lies across the box, as acrossBox's position.
+    [[nodiscard]] float positionAcross(const glm::vec3& boxMin, const glm::vec3& boxMax) const {
+        const glm::vec3 halfSize = 0.5F * (boxMax - boxMin);
+        const float reach = glm::dot(glm::abs(normal), halfSize);
+        const float centre = glm::dot(normal, 0.5F * (boxMin + boxMax));
+        return reach > 0.0F ? (offset - centre) / reach : 0.0F;
     }
 };
 

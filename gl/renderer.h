@@ -12,6 +12,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -62,6 +63,12 @@ public:
     // where several overlap. Draws an id pass into the renderer's own framebuffer, limited to
     // the pixels searched; leaves framebuffer 0 bound. Context current.
     [[nodiscard]] PickResult pick(int x, int y, int radius = 3);
+    // Every member drawn in the rectangle between two corners (inclusive, clamped to the
+    // frame), front-most at each pixel: what brushing selects. Sorted, no repeats.
+    [[nodiscard]] std::vector<int> membersIn(int x0, int y0, int x1, int y1);
+    // A member to emphasise (hover): drawn lighter. -1 for none.
+    void setHighlightedMember(int member) { m_highlighted = member; }
+    [[nodiscard]] int highlightedMember() const { return m_highlighted; }
 
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
@@ -95,6 +102,10 @@ private:
     [[nodiscard]] bool translucentMode() const;
     QOpenGLShaderProgram& bindSurfaceProgram(const glm::mat4& viewProjection, bool pick);
     void drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass);
+    [[nodiscard]] bool canPick() const;
+    // Draws the id pass into the window (GL pixel rows, bottom-up) and reads the ids back,
+    // row by row: 0 for nothing, member + 1 otherwise.
+    std::vector<std::uint32_t> drawIds(int x0, int y0, int w, int h);
     void uploadFloorMap();
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
@@ -115,6 +126,7 @@ private:
     RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
     glm::ivec2 m_lastSize{0};  // the last frame's size, which picking draws at
+    int m_highlighted = -1;
 };
 
 }  // namespace ensil::gl

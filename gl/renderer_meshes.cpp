@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <limits>
 
@@ -146,7 +147,9 @@ void Renderer::drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass) {
             continue;
         }
         const int mode = a.selected ? kSolid : (opaque ? opaqueMode : translucentShaderMode);
-        setMember(static_cast<int>(m) + 1, m, mode, a.color);
+        const bool highlighted = static_cast<int>(m) == m_highlighted;
+        setMember(static_cast<int>(m) + 1, m, mode,
+                  highlighted ? glm::mix(a.color, glm::vec3(1.0F), 0.55F) : a.color);
         drawMesh(f, program, members[m]);
     }
 }
@@ -199,22 +202,13 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     program.release();
 }
 
-PickResult Renderer::pick(int x, int y, int radius) {
-    PickResult result;
-    if (!m_gpu || !m_hasGrid || m_lastSize.x <= 0 || m_lastSize.y <= 0) return result;
-    const int width = m_lastSize.x, height = m_lastSize.y;
-    if (x < 0 || y < 0 || x >= width || y >= height) return result;
+std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     GlFunctions& f = *m_gpu->f;
+    const int width = m_lastSize.x, height = m_lastSize.y;
     uploadMeshesIfChanged();
     if (m_axisTablesDirty) uploadAxisTables();
     m_gpu->targets.ensurePick(f, width, height);
-
-    // Only a small window around the pixel is drawn: picking on hover stays cheap.
-    radius = std::max(radius, 0);
-    const int glY = height - 1 - y;  // GL rows run bottom-up
-    const int x0 = std::max(x - radius, 0), y0 = std::max(glY - radius, 0);
-    const int w = std::min(x + radius, width - 1) - x0 + 1;
-    const int h = std::min(glY + radius, height - 1) - y0 + 1;
+    // Only the window asked for is drawn: picking on hover stays cheap.
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.pickFramebuffer());
     f.glViewport(0, 0, width, height);
     f.glEnable(GL_SCISSOR_TEST);
@@ -240,19 +234,41 @@ PickResult Renderer::pick(int x, int y, int radius) {
     f.glDisable(GL_SCISSOR_TEST);
     f.glEnable(GL_DITHER);
     f.glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    std::vector<std::uint32_t> ids(pixels.size() / 4);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        ids[i] = (std::uint32_t{pixels[4 * i]} << 16) | (std::uint32_t{pixels[4 * i + 1]} << 8) |
+                 std::uint32_t{pixels[4 * i + 2]};
+    }
+    return ids;
+}
+
+bool Renderer::canPick() const {
+    return m_gpu && m_hasGrid && m_lastSize.x > 0 && m_lastSize.y > 0;
+}
+
+PickResult Renderer::pick(int x, int y, int radius) {
+    PickResult result;
+    if (!canPick()) return result;
+    const int width = m_lastSize.x, height = m_lastSize.y;
+    if (x < 0 || y < 0 || x >= width || y >= height) return result;
+    radius = std::max(radius, 0);
+    const int glY = height - 1 - y;  // GL rows run bottom-up
+    const int x0 = std::max(x - radius, 0), y0 = std::max(glY - radius, 0);
+    const int w = std::min(x + radius, width - 1) - x0 + 1;
+    const int h = std::min(glY + radius, height - 1) - y0 + 1;
+    const std::vector<std::uint32_t> ids = drawIds(x0, y0, w, h);
 
     // The id nearest to the pixel wins; thin silhouettes need not be hit exactly.
     int bestDistance = std::numeric_limits<int>::max();
     for (int row = 0; row < h; ++row) {
         for (int col = 0; col < w; ++col) {
-            const std::uint8_t* p = &pixels[(static_cast<std::size_t>(row) * w + col) * 4];
-            const int id = (p[0] << 16) | (p[1] << 8) | p[2];
+            const std::uint32_t id = ids[static_cast<std::size_t>(row * w + col)];
             if (id == 0) continue;
             const int dx = x0 + col - x, dy = y0 + row - glY;
             const int distance = dx * dx + dy * dy;
             if (distance < bestDistance) {
                 bestDistance = distance;
-                result.member = id - 1;
+                result.member = static_cast<int>(id) - 1;
             }
         }
     }
@@ -260,6 +276,24 @@ PickResult Renderer::pick(int x, int y, int radius) {
         result.cluster = appearance(static_cast<std::size_t>(result.member)).cluster;
     }
     return result;
+}
+
+std::vector<int> Renderer::membersIn(int x0, int y0, int x1, int y1) {
+    if (!canPick()) return {};
+    const int width = m_lastSize.x, height = m_lastSize.y;
+    const int left = std::clamp(std::min(x0, x1), 0, width - 1);
+    const int right = std::clamp(std::max(x0, x1), 0, width - 1);
+    const int top = std::clamp(std::min(y0, y1), 0, height - 1);
+    const int bottom = std::clamp(std::max(y0, y1), 0, height - 1);
+    const std::vector<std::uint32_t> ids =
+        drawIds(left, height - 1 - bottom, right - left + 1, bottom - top + 1);
+    std::vector<int> members;
+    for (const std::uint32_t id : ids) {
+        if (id != 0) members.push_back(static_cast<int>(id) - 1);
+    }
+    std::sort(members.begin(), members.end());
+    members.erase(std::unique(members.begin(), members.end()), members.end());
+    return members;
 }
 
 }  // namespace ensil::gl

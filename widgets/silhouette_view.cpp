@@ -2,14 +2,24 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QRubberBand>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <cmath>
 
 namespace ensil::ui {
+namespace {
+// Long enough to skip the picks of a cursor in motion, short enough to feel immediate.
+constexpr int kHoverDelayMs = 40;
+}  // namespace
 
 SilhouetteView::SilhouetteView(QWidget* parent) : QOpenGLWidget(parent) {
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(200, 150);
+    setMouseTracking(true);
+    m_hoverTimer.setSingleShot(true);
+    m_hoverTimer.setInterval(kHoverDelayMs);
+    connect(&m_hoverTimer, &QTimer::timeout, this, &SilhouetteView::pickHovered);
 }
 
 SilhouetteView::~SilhouetteView() {
@@ -55,8 +65,37 @@ void SilhouetteView::resetCamera() {
     update();
 }
 
+QPoint SilhouetteView::toFramebuffer(QPoint position) const {
+    const qreal ratio = devicePixelRatioF();
+    return {static_cast<int>(std::lround(position.x() * ratio)),
+            static_cast<int>(std::lround(position.y() * ratio))};
+}
+
+gl::PickResult SilhouetteView::pickAt(QPoint position) {
+    if (!m_renderer.isInitialized()) return {};
+    const QPoint p = toFramebuffer(position);
+    makeCurrent();
+    const gl::PickResult result = m_renderer.pick(p.x(), p.y());
+    doneCurrent();
+    return result;
+}
+
+QList<int> SilhouetteView::membersInside(const QRect& rectangle) {
+    if (!m_renderer.isInitialized()) return {};
+    const QPoint a = toFramebuffer(rectangle.topLeft());
+    const QPoint b = toFramebuffer(rectangle.bottomRight());
+    makeCurrent();
+    const std::vector<int> members = m_renderer.membersIn(a.x(), a.y(), b.x(), b.y());
+    doneCurrent();
+    return {members.begin(), members.end()};
+}
+
 void SilhouetteView::mousePressEvent(QMouseEvent* event) {
     m_lastMouse = event->position().toPoint();
+    m_pressPosition = m_lastMouse;
+    m_pressButton = event->button();
+    m_dragged = false;
+    m_hoverTimer.stop();
     event->accept();
 }
 
@@ -64,6 +103,19 @@ void SilhouetteView::mouseMoveEvent(QMouseEvent* event) {
     const QPoint pos = event->position().toPoint();
     const QPoint delta = pos - m_lastMouse;
     m_lastMouse = pos;
+    if (event->buttons() == Qt::NoButton) {
+        m_hoverPosition = pos;
+        m_hoverTimer.start();
+        return;
+    }
+    if ((pos - m_pressPosition).manhattanLength() >= kClickSlop) m_dragged = true;
+    if (event->buttons() & Qt::RightButton) {
+        if (!m_dragged) return;
+        if (m_rubberBand == nullptr) m_rubberBand = new QRubberBand(QRubberBand::Rectangle, this);
+        m_rubberBand->setGeometry(QRect(m_pressPosition, pos).normalized());
+        m_rubberBand->show();
+        return;
+    }
     const bool panning =
         (event->buttons() & Qt::MiddleButton) ||
         ((event->buttons() & Qt::LeftButton) && (event->modifiers() & Qt::ShiftModifier));
@@ -76,6 +128,50 @@ void SilhouetteView::mouseMoveEvent(QMouseEvent* event) {
         return;
     }
     update();
+}
+
+void SilhouetteView::mouseReleaseEvent(QMouseEvent* event) {
+    const QPoint pos = event->position().toPoint();
+    const Qt::MouseButton button = event->button();
+    if (button != m_pressButton) return;
+    m_pressButton = Qt::NoButton;
+    if (button == Qt::LeftButton && !m_dragged) {
+        emit memberClicked(pickAt(pos).member, event->modifiers());
+    } else if (button == Qt::RightButton && m_dragged) {
+        if (m_rubberBand != nullptr) m_rubberBand->hide();
+        emit membersBrushed(membersInside(QRect(m_pressPosition, pos).normalized()),
+                            event->modifiers());
+    }
+    event->accept();
+}
+
+void SilhouetteView::pickHovered() {
+    if (!underMouse()) return;
+    const gl::PickResult hit = pickAt(m_hoverPosition);
+    setHovered(hit.member, m_hoverPosition, hit.cluster);
+}
+
+void SilhouetteView::setHovered(int member, QPoint position, int cluster) {
+    if (member >= 0) {
+        const QString name = member < m_memberNames.size() && !m_memberNames[member].isEmpty()
+                                 ? m_memberNames[member]
+                                 : tr("member %1").arg(member);
+        const QString text = cluster >= 0 ? tr("%1\ncluster %2").arg(name).arg(cluster + 1) : name;
+        QToolTip::showText(mapToGlobal(position), text, this);
+    } else {
+        QToolTip::hideText();
+    }
+    if (member == m_hovered) return;
+    m_hovered = member;
+    m_renderer.setHighlightedMember(member);
+    update();
+    emit memberHovered(member);
+}
+
+void SilhouetteView::leaveEvent(QEvent* event) {
+    m_hoverTimer.stop();
+    setHovered(-1, {}, -1);
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void SilhouetteView::wheelEvent(QWheelEvent* event) {

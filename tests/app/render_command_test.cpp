@@ -52,3 +52,66 @@ TEST(RenderCommand, WritesThePictureWithoutAWindowAndReportsFrameTime) {
     EXPECT_GT(clusterPixels, 50);
     image.save(test::testOutputDir() + "/render_command_era5.png");
 }
+
+namespace {
+// Renders era5_eda_members.nc's temperature at 260 K, seen from above, with extra options;
+// returns the image (null on failure, with the error in `error`).
+QImage renderEra5(const QStringList& extra, QString* error, int* exitCode = nullptr) {
+    test::TempDir dir;
+    const QString png = QString::fromStdString(dir.file("out.png"));
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    QStringList args{"ensil",   "render",   ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                     "--var",   "t",        "--iso",
+                     "260",     "--out",    png,
+                     "--size",  "320x240",  "--frames",
+                     "1",       "--no-mean", "--elevation",
+                     "60",      "--no-cache"};
+    args += extra;
+    const int code = app::runCommandLine(args, out, err).exitCode;
+    err.flush();
+    if (exitCode != nullptr) *exitCode = code;
+    *error = errText;
+    return code == 0 ? QImage(png) : QImage();
+}
+}  // namespace
+
+TEST(RenderCommand, APlaneAtTheFarCornerCutsNothingAndOneThroughTheMiddleCutsTheNearSide) {
+    QString error;
+    const QImage whole = renderEra5({}, &error);
+    ASSERT_FALSE(whole.isNull()) << error.toStdString();
+    // Above the top of the box by more than eps (position 1 touches it, and surfaces that
+    // reach the top level draw their intersection curves there): nothing is cut or drawn.
+    const QImage untouched = renderEra5({"--plane", "0,0,1,1.2"}, &error);
+    ASSERT_FALSE(untouched.isNull()) << error.toStdString();
+    EXPECT_LT(test::differingFraction(whole, untouched, 8), 0.001);
+    // Through the middle, the upper half (the viewer's side, looking from above) is removed
+    // and the intersection curves are drawn: the picture changes a lot.
+    const QImage cut = renderEra5({"--plane", "0,0,1,0", "--plane-thickness", "0.01"}, &error);
+    ASSERT_FALSE(cut.isNull()) << error.toStdString();
+    EXPECT_GT(test::differingFraction(whole, cut, 24), 0.01);
+    cut.save(test::testOutputDir() + "/render_command_era5_plane.png");
+}
+
+TEST(RenderCommand, RemovalOverTheWholeRangeThinsTheSilhouettes) {
+    QString error;
+    const QImage whole = renderEra5({"--thickness", "0.02"}, &error);
+    ASSERT_FALSE(whole.isNull()) << error.toStdString();
+    const QImage thinned =
+        renderEra5({"--thickness", "0.02", "--removal", "0,1e9", "--group-size", "8"}, &error);
+    ASSERT_FALSE(thinned.isNull()) << error.toStdString();
+    EXPECT_GT(test::differingFraction(whole, thinned, 24), 0.002);
+}
+
+TEST(RenderCommand, RefusesMalformedPlaneRemovalAndGroupSize) {
+    for (const QStringList& bad :
+         {QStringList{"--plane", "0,0,0,0.5"}, QStringList{"--plane", "0,0,1"},
+          QStringList{"--plane", "a,b,c,d"}, QStringList{"--removal", "5,1"},
+          QStringList{"--group-size", "0"}}) {
+        QString error;
+        int code = 0;
+        EXPECT_TRUE(renderEra5(bad, &error, &code).isNull());
+        EXPECT_EQ(code, 2) << bad.join(' ').toStdString();
+        EXPECT_TRUE(error.contains(bad[0])) << error.toStdString();
+    }
+}

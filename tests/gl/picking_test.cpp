@@ -85,3 +85,21 @@ TEST_F(PickingTest, TheMeanOccludesMembersBehindItButIsNotAMember) {
     EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, -1)
         << "member 1 (radius 4) lies inside the mean";
 }
+
+TEST_F(PickingTest, BrushingCollectsTheMembersDrawnInARectangle) {
+    show(spheres({{9, 15.5F, 15.5F}, {22, 15.5F, 15.5F}}), {kRed, kBlue});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.1F;
+    (void)draw();
+    const QPoint leftRim = project(display({9 - 7.9F, 15.5F, 15.5F}));
+    const QPoint rightRim = project(display({22 + 7.9F, 15.5F, 15.5F}));
+    EXPECT_EQ(m_renderer.membersIn(0, 0, kWidth - 1, kHeight - 1), (std::vector<int>{0, 1}));
+    EXPECT_EQ(m_renderer.membersIn(leftRim.x() - 4, leftRim.y() - 4, leftRim.x() + 4,
+                                   leftRim.y() + 4),
+              (std::vector<int>{0}));
+    EXPECT_EQ(m_renderer.membersIn(rightRim.x() + 4, rightRim.y() + 4, rightRim.x() - 4,
+                                   rightRim.y() - 4),
+              (std::vector<int>{1}))
+        << "corners in any order";
+    EXPECT_TRUE(m_renderer.membersIn(0, 0, 3, 3).empty());
+}
