@@ -71,9 +71,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     setCentralWidget(m_view);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     createDocks();
-    createMenus();
     createStatusBar();
     createToolbar();
+    createRenderDocks();
+    createMenus();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -131,6 +132,9 @@ void MainWindow::createMenus() {
     connect(fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? showFullScreen() : showNormal(); });
     viewMenu->addSeparator();
+    viewMenu->addActions(m_modeActions);
+    viewMenu->addAction(m_planeAction);
+    viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         viewMenu->addAction(dock->toggleViewAction());
     }
@@ -166,13 +170,8 @@ void MainWindow::createToolbar() {
         settings.showMean = shown;
         m_view->update();
     });
-    connect(m_toolbar, &ui::RenderToolbar::verticalExaggerationChanged, this, [this](double f) {
-        m_view->renderer().setVerticalExaggeration(static_cast<float>(f));
-        // Normals and curvatures live in display space: rebuild them (the meshes come from
-        // the cache when this exaggeration was seen before).
-        m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
-        m_view->update();
-    });
+    connect(m_toolbar, &ui::RenderToolbar::verticalExaggerationChanged, this,
+            &MainWindow::setVerticalExaggeration);
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, m_session,
             &IsovalueSession::setClusterCount);
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
@@ -365,6 +364,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
+    updatePlaneBox();
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
     m_view->update();

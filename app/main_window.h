@@ -20,11 +20,14 @@ class QProgressBar;
 class QToolButton;
 class QLabel;
 class QMenu;
+class QAction;
 
 namespace ensil::ui {
 class SilhouetteView;
 class EnsembleInfoPanel;
 class RenderToolbar;
+class RenderPanel;
+class CuttingPlanePanel;
 }  // namespace ensil::ui
 
 namespace ensil::app {
@@ -46,6 +49,8 @@ public:
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
     [[nodiscard]] ui::EnsembleInfoPanel* infoPanel() const { return m_info; }
     [[nodiscard]] ui::RenderToolbar* renderToolbar() const { return m_toolbar; }
+    [[nodiscard]] ui::RenderPanel* renderPanel() const { return m_renderPanel; }
+    [[nodiscard]] ui::CuttingPlanePanel* cuttingPlanePanel() const { return m_planePanel; }
     [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
@@ -70,6 +75,9 @@ private:
     void rebuildRecentMenu();
     void createMenus();
     void createDocks();
+    void createRenderDocks();  // main_window_render_docks.cpp
+    void setVerticalExaggeration(double factor);
+    void updatePlaneBox();
     void createStatusBar();
     void onLoadFailed(const std::exception_ptr& error, bool cancelled);
     void askForMemberDimension(const data::Error& error);
@@ -84,6 +92,10 @@ private:
     QLabel* m_statusText = nullptr;
     QMenu* m_recentMenu = nullptr;
     ui::RenderToolbar* m_toolbar = nullptr;
+    ui::RenderPanel* m_renderPanel = nullptr;
+    ui::CuttingPlanePanel* m_planePanel = nullptr;
+    QList<QAction*> m_modeActions;  // keys 1 to 4
+    QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;
     std::string m_loadingKey;  // identity of the data being loaded, for the mesh cache
     BackgroundJob<EnsembleOverview> m_loader{this};

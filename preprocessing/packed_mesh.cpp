@@ -99,4 +99,18 @@ glm::vec3 unpackPosition(const PackedMesh& mesh, const PackedVertex& v) {
     return mesh.boundsMin + t * (mesh.boundsMax - mesh.boundsMin);
 }
 
+float maximumOutlyingness(const data::MeshSet& meshes) {
+    float maximum = 0.0F;
+    for (const PackedMesh& mesh : meshes.members) {
+        // Finite non-negative halves (bit patterns below 0x7C00, the first infinity) order
+        // like their bits.
+        std::uint16_t largest = 0;
+        for (const PackedVertex& v : mesh.vertices) {
+            if (v.outlyingness < 0x7C00U) largest = std::max(largest, v.outlyingness);
+        }
+        maximum = std::max(maximum, unpackHalf(largest) * mesh.outlyingnessScale);
+    }
+    return maximum;
+}
+
 }  // namespace ensil::prep

@@ -29,4 +29,8 @@ glm::vec2 octahedralEncode(const glm::vec3& unit);  // into [-1, 1]^2
 glm::vec3 octahedralDecode(glm::vec2 e);
 glm::vec3 unpackUnitVector(const std::int16_t e[2]);
 
+// The largest outlyingness stored in any member's mesh (0 for none): the top of the range the
+// density-based removal thresholds are chosen from.
+float maximumOutlyingness(const data::MeshSet& meshes);
+
 }  // namespace ensil::prep

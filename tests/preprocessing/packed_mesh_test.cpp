@@ -90,3 +90,22 @@ TEST(PackedMesh, PositionsAndAttributesRoundTripWithinTheStatedErrors) {
         ASSERT_LT(angle(prep::unpackUnitVector(p.direction), attr.principalDirections[v]), 2e-4);
     }
 }
+
+TEST(PackedMesh, MaximumOutlyingnessIsTheLargestFiniteValueOverAllMembersScaled) {
+    data::MeshSet set;
+    EXPECT_EQ(prep::maximumOutlyingness(set), 0.0F);
+    set.members.resize(2);
+    for (const float o : {0.5F, 3.0F, 1.25F}) {
+        prep::PackedVertex v{};
+        v.outlyingness = prep::packHalf(o);
+        set.members[0].vertices.push_back(v);
+    }
+    prep::PackedVertex infinite{};
+    infinite.outlyingness = 0x7C00;  // +inf: not a value the removal range should reach
+    set.members[1].vertices.push_back(infinite);
+    prep::PackedVertex two{};
+    two.outlyingness = prep::packHalf(2.0F);
+    set.members[1].vertices.push_back(two);
+    set.members[1].outlyingnessScale = 4.0F;  // 2 x 4 = 8 beats member 0's 3
+    EXPECT_FLOAT_EQ(prep::maximumOutlyingness(set), 8.0F);
+}

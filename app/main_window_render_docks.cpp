@@ -1,0 +1,124 @@
+// The rendering and cutting plane docks of the main window, and what keeps them in step with
+// the renderer: every edit is applied to the renderer's settings and repaints the view.
+#include <QAction>
+#include <QDockWidget>
+#include <QSignalBlocker>
+#include <QKeySequence>
+#include <QMenu>
+#include <QMenuBar>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "preprocessing/packed_mesh.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/render_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+namespace {
+// Where each level of the grid's axes lies across the display box, for the plane panel.
+std::array<ui::PlaneAxis, 3> planeAxes(const data::Grid& grid, const data::DisplayFrame& frame) {
+    std::array<ui::PlaneAxis, 3> axes;
+    const glm::vec3 centre = frame.center(), half = 0.5F * (frame.boxMax() - frame.boxMin());
+    for (int a = 0; a < 3; ++a) {
+        ui::PlaneAxis& axis = axes[static_cast<std::size_t>(a)];
+        const data::Axis& source = grid.axis(a);
+        axis.name = QString::fromStdString(source.name);
+        axis.units = QString::fromStdString(source.units);
+        axis.values = source.values;
+        for (const double d : frame.axisTable(a)) {
+            axis.positions.push_back(half[a] > 0.0F ? (d - centre[a]) / half[a] : 0.0);
+        }
+    }
+    return axes;
+}
+}  // namespace
+
+void MainWindow::createRenderDocks() {
+    gl::Renderer& renderer = m_view->renderer();
+    m_renderPanel = new ui::RenderPanel;
+    m_renderPanel->setSettings(renderer.settings());
+    auto* renderDock = new QDockWidget(tr("Rendering"), this);
+    renderDock->setObjectName(QStringLiteral("renderingDock"));
+    renderDock->setWidget(m_renderPanel);
+    addDockWidget(Qt::LeftDockWidgetArea, renderDock);
+
+    m_planePanel = new ui::CuttingPlanePanel;
+    auto* planeDock = new QDockWidget(tr("Cutting Plane"), this);
+    planeDock->setObjectName(QStringLiteral("cuttingPlaneDock"));
+    planeDock->setWidget(m_planePanel);
+    addDockWidget(Qt::LeftDockWidgetArea, planeDock);
+
+    connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, [this] {
+        gl::RenderSettings& settings = m_view->renderer().settings();
+        settings = m_renderPanel->applyTo(settings);
+        m_view->update();
+    });
+    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this,
+            &MainWindow::setVerticalExaggeration);
+    connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, [this](bool orthographic) {
+        m_view->renderer().camera().setProjection(orthographic ? gl::Camera::Projection::Orthographic
+                                                               : gl::Camera::Projection::Perspective);
+        m_view->update();
+    });
+    connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, [this](const QColor& c) {
+        m_view->renderer().setBackground(
+            {static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
+             static_cast<float>(c.blueF()), 1.0F});
+        m_view->update();
+    });
+    connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
+        m_view->renderer().settings().plane = m_planePanel->plane();
+        m_view->update();
+    });
+    // Keys 1 to 4 switch the mode; Ctrl+Shift+P toggles the plane.
+    const QStringList modes{tr("Shaded Silhouettes"), tr("3D Spaghetti Plot"),
+                            tr("Semi-Transparent Surfaces"), tr("Opaque Surfaces")};
+    for (int m = 0; m < modes.size(); ++m) {
+        auto* action = new QAction(modes[m], this);
+        action->setShortcut(QKeySequence(Qt::Key_1 + m));
+        connect(action, &QAction::triggered, this,
+                [this, m] { m_renderPanel->setMode(static_cast<gl::RenderMode>(m)); });
+        m_modeActions.push_back(action);
+    }
+    m_planeAction = new QAction(tr("&Cutting Plane"), this);
+    m_planeAction->setCheckable(true);
+    m_planeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
+    connect(m_planeAction, &QAction::toggled, m_planePanel, &ui::CuttingPlanePanel::setCutting);
+    connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
+        const QSignalBlocker block(m_planeAction);
+        m_planeAction->setChecked(m_planePanel->cutting());
+    });
+
+    // The removal thresholds range over the outlyingness of the meshes on screen.
+    connect(m_session, &IsovalueSession::finished, this, [this] {
+        const auto& meshes = m_view->renderer().meshes();
+        if (!meshes || !m_overview) return;
+        const QString units = QString::fromStdString(m_overview->ensemble->units);
+        m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes),
+                                            units.isEmpty() ? QString() : units + QStringLiteral("\u00b2"));
+    });
+}
+
+void MainWindow::setVerticalExaggeration(double factor) {
+    m_renderPanel->setVerticalExaggeration(factor);
+    m_view->renderer().setVerticalExaggeration(static_cast<float>(factor));
+    updatePlaneBox();
+    // Normals and curvatures live in display space: rebuild them (the meshes come from the
+    // cache when this exaggeration was seen before).
+    if (m_overview) m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
+    m_view->update();
+}
+
+void MainWindow::updatePlaneBox() {
+    if (!m_overview) return;
+    const data::DisplayFrame& frame = m_view->renderer().frame();
+    // The plane keeps its place across the box when the box changes shape.
+    const double position = m_planePanel->position();
+    m_planePanel->setBox(frame.boxMin(), frame.boxMax(), planeAxes(m_overview->ensemble->grid, frame));
+    m_planePanel->setPosition(position);
+    m_view->renderer().settings().plane = m_planePanel->plane();
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,62 @@
+// The rendering and cutting plane docks drive the renderer of the main window's view.
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/render_panel.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
+    const test::TempDir cache;
+    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(cache.path().string()));
+    app::MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window)) << "shortcuts need an active window";
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
+    ASSERT_TRUE(loaded.wait(30000));
+    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+    gl::Renderer& renderer = window.view()->renderer();
+
+    // Keys 1 to 4 switch the mode, as the panel does.
+    window.view()->setFocus();
+    QTest::keyClick(window.view(), Qt::Key_2);
+    EXPECT_EQ(renderer.settings().mode, gl::RenderMode::Spaghetti);
+    window.renderPanel()->setMode(gl::RenderMode::Surfaces);
+    EXPECT_EQ(renderer.settings().mode, gl::RenderMode::Surfaces);
+
+    // The removal range was taken from the meshes: its top is their largest outlyingness.
+    auto* removalMax = window.renderPanel()->findChild<QDoubleSpinBox*>("removalMax");
+    ASSERT_NE(removalMax, nullptr);
+    EXPECT_GT(removalMax->maximum(), 0.0);
+    EXPECT_TRUE(removalMax->suffix().contains(QChar(0x00b2))) << "units squared";
+
+    // A horizontal plane at the 500 hPa level, typed in hPa, lands at that level's height.
+    ui::CuttingPlanePanel& plane = *window.cuttingPlanePanel();
+    plane.setOrientation(ui::CuttingPlanePanel::AlongZ);
+    plane.findChild<QDoubleSpinBox*>("dataValue")->setValue(500.0);
+    QTest::keyClick(window.view(), Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+    const data::DisplayFrame& frame = renderer.frame();
+    const data::Grid& grid = window.overview()->ensemble->grid;
+    const float z500 = frame.toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;
+    EXPECT_TRUE(renderer.settings().plane.enabled);
+    EXPECT_NEAR(renderer.settings().plane.offset, z500, 0.002F);
+
+    // Stretching the vertical keeps the plane at 500 hPa.
+    window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration")->setValue(2.0);
+    const float stretched = renderer.frame().toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;
+    EXPECT_NEAR(stretched, 2.0F * z500, 1e-4F);
+    EXPECT_NEAR(renderer.settings().plane.offset, stretched, 0.004F);
+    EXPECT_NEAR(plane.dataPosition(), 500.0, 2.0);
+}

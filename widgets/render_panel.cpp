@@ -1,0 +1,231 @@
+#include "widgets/render_panel.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QPixmap>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <initializer_list>
+#include <utility>
+#include <cmath>
+
+namespace ensil::ui {
+namespace {
+// Enough decimals to step through a hundredth of the range.
+int decimalsFor(double span) {
+    return std::clamp(static_cast<int>(std::ceil(-std::log10(std::max(span, 1e-12) / 100.0))), 0,
+                      6);
+}
+}  // namespace
+
+RenderPanel::RenderPanel(QWidget* parent)
+    : QWidget(parent),
+      m_mode(new QComboBox(this)),
+      m_thickness(new QDoubleSpinBox(this)),
+      m_opacity(new QDoubleSpinBox(this)),
+      m_mean(new QCheckBox(tr("Show the mean member"), this)),
+      m_removal(new QGroupBox(tr("Density-based removal"), this)),
+      m_removalMin(new QDoubleSpinBox(m_removal)),
+      m_removalMax(new QDoubleSpinBox(m_removal)),
+      m_groupSize(new QSpinBox(m_removal)),
+      m_exaggeration(new QDoubleSpinBox(this)),
+      m_projection(new QComboBox(this)),
+      m_backgroundButton(new QToolButton(this)) {
+    for (auto [widget, name] : std::initializer_list<std::pair<QWidget*, const char*>>{
+             {m_mode, "mode"}, {m_thickness, "thickness"}, {m_opacity, "opacity"},
+             {m_mean, "mean"}, {m_removal, "removal"}, {m_removalMin, "removalMin"},
+             {m_removalMax, "removalMax"}, {m_groupSize, "groupSize"},
+             {m_exaggeration, "exaggeration"}, {m_projection, "projection"},
+             {m_backgroundButton, "background"}}) {
+        widget->setObjectName(QLatin1String(name));
+    }
+    auto* form = new QFormLayout;
+    m_mode->addItems({tr("Shaded silhouettes"), tr("3D spaghetti plot"),
+                      tr("Semi-transparent surfaces"), tr("Opaque surfaces")});
+    m_mode->setToolTip(tr("How members are drawn (keys 1 to 4 in the view)"));
+    form->addRow(tr("Mode"), m_mode);
+    m_thickness->setRange(0.001, 0.1);
+    m_thickness->setDecimals(3);
+    m_thickness->setSingleStep(0.001);
+    m_thickness->setToolTip(
+        tr("Silhouette thickness tau, in units of the data box's width: thicker shows more of "
+           "each member where it curves away"));
+    form->addRow(tr("Thickness \u03c4"), m_thickness);
+    m_opacity->setRange(0.02, 1.0);
+    m_opacity->setDecimals(2);
+    m_opacity->setSingleStep(0.05);
+    m_opacity->setToolTip(tr("Opacity of each member in the semi-transparent surfaces mode"));
+    form->addRow(tr("Surface opacity"), m_opacity);
+    m_mean->setToolTip(tr("The mean member's isosurface as a solid gray surface, for context"));
+    form->addRow(m_mean);
+
+    m_removal->setCheckable(true);
+    m_removal->setToolTip(
+        tr("Thins silhouettes where members agree: members are split into groups of s_G, and "
+           "each group fades out over its own slice of [o*min, o*max] of outlyingness"));
+    auto* removalForm = new QFormLayout(m_removal);
+    for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) box->setRange(0.0, 1.0);
+    removalForm->addRow(tr("o*min"), m_removalMin);
+    removalForm->addRow(tr("o*max"), m_removalMax);
+    m_groupSize->setRange(1, 64);
+    m_groupSize->setToolTip(tr("Group size s_G: how many slices the range is cut into"));
+    removalForm->addRow(tr("Group size s_G"), m_groupSize);
+
+    auto* sceneForm = new QFormLayout;
+    m_exaggeration->setRange(0.1, 50.0);
+    m_exaggeration->setDecimals(1);
+    m_exaggeration->setSingleStep(0.5);
+    m_exaggeration->setValue(1.0);
+    m_exaggeration->setKeyboardTracking(false);
+    m_exaggeration->setToolTip(
+        tr("Stretches the vertical axis (flat atmospheric grids); the surfaces are rebuilt"));
+    sceneForm->addRow(tr("Vertical exaggeration"), m_exaggeration);
+    m_projection->addItems({tr("Perspective"), tr("Orthographic")});
+    sceneForm->addRow(tr("Projection"), m_projection);
+    m_backgroundButton->setToolTip(tr("Choose the view's background colour"));
+    sceneForm->addRow(tr("Background"), m_backgroundButton);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(m_removal);
+    layout->addLayout(sceneForm);
+    layout->addStretch(1);
+
+    setSettings(gl::RenderSettings{});
+    setBackground(QColor::fromRgbF(0.11F, 0.12F, 0.14F));
+
+    const auto edited = [this] {
+        updateEnabled();
+        emit settingsEdited();
+    };
+    connect(m_mode, &QComboBox::currentIndexChanged, this, edited);
+    connect(m_thickness, &QDoubleSpinBox::valueChanged, this, edited);
+    connect(m_opacity, &QDoubleSpinBox::valueChanged, this, edited);
+    connect(m_mean, &QCheckBox::toggled, this, edited);
+    connect(m_removal, &QGroupBox::toggled, this, edited);
+    connect(m_groupSize, &QSpinBox::valueChanged, this, edited);
+    // The thresholds keep o*min below o*max by pushing the other one along.
+    connect(m_removalMin, &QDoubleSpinBox::valueChanged, this, [this, edited](double v) {
+        if (m_removalMax->value() <= v) {
+            const QSignalBlocker block(m_removalMax);
+            m_removalMax->setValue(std::min(v + m_removalMin->singleStep(), m_removalMax->maximum()));
+        }
+        edited();
+    });
+    connect(m_removalMax, &QDoubleSpinBox::valueChanged, this, [this, edited](double v) {
+        if (m_removalMin->value() >= v) {
+            const QSignalBlocker block(m_removalMin);
+            m_removalMin->setValue(std::max(v - m_removalMax->singleStep(), 0.0));
+        }
+        edited();
+    });
+    connect(m_exaggeration, &QDoubleSpinBox::valueChanged, this,
+            &RenderPanel::verticalExaggerationChanged);
+    connect(m_projection, &QComboBox::currentIndexChanged, this,
+            [this](int index) { emit projectionChanged(index == 1); });
+    connect(m_backgroundButton, &QToolButton::clicked, this, &RenderPanel::chooseBackground);
+}
+
+void RenderPanel::setSettings(const gl::RenderSettings& settings) {
+    const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
+        b6(m_removalMin), b7(m_removalMax), b8(m_groupSize);
+    m_mode->setCurrentIndex(static_cast<int>(settings.mode));
+    m_thickness->setValue(settings.thickness);
+    m_opacity->setValue(settings.surfaceAlpha);
+    m_mean->setChecked(settings.showMean);
+    m_removal->setChecked(settings.removal);
+    // Widen the ranges if needed, so the values are shown as they are.
+    for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) {
+        box->setMaximum(std::max({box->maximum(), double(settings.removalMin),
+                                  double(settings.removalMax)}));
+    }
+    m_removalMin->setValue(settings.removalMin);
+    m_removalMax->setValue(settings.removalMax);
+    m_groupSize->setValue(settings.groupSize);
+    updateEnabled();
+}
+
+gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
+    settings.mode = static_cast<gl::RenderMode>(m_mode->currentIndex());
+    settings.thickness = static_cast<float>(m_thickness->value());
+    settings.surfaceAlpha = static_cast<float>(m_opacity->value());
+    settings.showMean = m_mean->isChecked();
+    settings.removal = m_removal->isChecked();
+    settings.removalMin = static_cast<float>(m_removalMin->value());
+    settings.removalMax = static_cast<float>(m_removalMax->value());
+    settings.groupSize = m_groupSize->value();
+    return settings;
+}
+
+void RenderPanel::setMode(gl::RenderMode mode) { m_mode->setCurrentIndex(static_cast<int>(mode)); }
+
+void RenderPanel::setOutlyingnessRange(double maximum, const QString& unitsSquared) {
+    maximum = std::max(maximum, 1e-9);
+    const bool firstRange = m_removalMax->maximum() <= 1.0 && m_removalMax->value() == 1.0;
+    for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) {
+        const QSignalBlocker block(box);
+        box->setDecimals(decimalsFor(maximum));
+        box->setMaximum(maximum);
+        box->setSingleStep(maximum / 100.0);
+        box->setSuffix(unitsSquared.isEmpty() ? QString() : QLatin1Char(' ') + unitsSquared);
+    }
+    if (firstRange) {
+        // A first sensible band: the lower half, where members agree most.
+        const QSignalBlocker b1(m_removalMin), b2(m_removalMax);
+        m_removalMin->setValue(0.0);
+        m_removalMax->setValue(maximum / 2.0);
+    }
+}
+
+void RenderPanel::setVerticalExaggeration(double factor) {
+    const QSignalBlocker block(m_exaggeration);
+    m_exaggeration->setValue(factor);
+}
+
+double RenderPanel::verticalExaggeration() const { return m_exaggeration->value(); }
+
+void RenderPanel::setOrthographic(bool orthographic) {
+    const QSignalBlocker block(m_projection);
+    m_projection->setCurrentIndex(orthographic ? 1 : 0);
+}
+
+bool RenderPanel::orthographic() const { return m_projection->currentIndex() == 1; }
+
+void RenderPanel::setBackground(const QColor& colour) {
+    m_background = colour;
+    showBackground();
+}
+
+void RenderPanel::chooseBackground() {
+    const QColor chosen = QColorDialog::getColor(m_background, this, tr("Background"));
+    if (!chosen.isValid() || chosen == m_background) return;
+    setBackground(chosen);
+    emit backgroundChanged(chosen);
+}
+
+void RenderPanel::showBackground() {
+    QPixmap swatch(32, 16);
+    swatch.fill(m_background);
+    m_backgroundButton->setIcon(QIcon(swatch));
+    m_backgroundButton->setIconSize(swatch.size());
+    m_backgroundButton->setText(m_background.name());
+    m_backgroundButton->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+}
+
+void RenderPanel::updateEnabled() {
+    const auto mode = static_cast<gl::RenderMode>(m_mode->currentIndex());
+    const bool silhouettes =
+        mode == gl::RenderMode::ShadedSilhouettes || mode == gl::RenderMode::Spaghetti;
+    m_thickness->setEnabled(silhouettes);
+    m_opacity->setEnabled(mode == gl::RenderMode::Surfaces);
+    m_removal->setEnabled(mode != gl::RenderMode::OpaqueSurfaces);
+}
+
+}  // namespace ensil::ui
