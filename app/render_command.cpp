@@ -9,6 +9,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -63,6 +64,8 @@ struct Options {
                                "MIN,MAX"};
     QCommandLineOption groupSize{"group-size", "Group size s_G of the removal (default 4).", "S",
                                  "4"};
+    QCommandLineOption noLabels{"no-labels",
+                                "Leave out the axis labels and the cluster legend."};
     QCommandLineOption frames{"frames", "Frames to time for frame_ms (default 20).", "N", "20"};
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
@@ -120,7 +123,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const Options o;
     parser.addOptions({o.iso, o.output, o.size, o.mode, o.clusters, o.linkage, o.mean, o.noMean,
                        o.thickness, o.exaggeration, o.azimuth, o.elevation, o.plane, o.frames,
-                       o.planeThickness, o.removal, o.groupSize, o.noCache, o.demo, o.json});
+                       o.planeThickness, o.removal, o.groupSize, o.noLabels, o.noCache, o.demo, o.json});
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
     QString problem;
     const auto selection = selectionOptions.selection(parser, problem);
@@ -233,7 +236,13 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
             times.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
         }
         std::sort(times.begin(), times.end());
-        const QImage image = target.toImage();
+        QImage image = target.toImage();
+        if (!parser.isSet(o.noLabels)) {
+            QPainter painter(&image);
+            gl::paintOverlay(painter,
+                             renderer.overlay(static_cast<int>(width), static_cast<int>(height)),
+                             1.0);
+        }
         const std::size_t gpuBytes = renderer.gpuBytes();
         renderer.releaseGpuResources();
         if (!image.save(parser.value(o.output))) {

@@ -103,6 +103,23 @@ void Renderer::releaseGpuResources() {
     m_gpu.reset();
 }
 
+ViewOverlay Renderer::overlay(int width, int height) const {
+    OverlayInput in;
+    in.grid = m_hasGrid ? &m_grid : nullptr;
+    in.frame = &m_frame;
+    in.viewProjection =
+        m_camera.viewProjection(static_cast<float>(width) / static_cast<float>(std::max(height, 1)));
+    in.eye = m_camera.eye();
+    in.width = width;
+    in.height = height;
+    in.appearance = m_meshes ? &m_appearance : nullptr;
+    in.showMean = m_settings.showMean && m_meshes && !m_meshes->mean.vertices.empty();
+    in.showAxes = m_settings.showAxes;
+    in.showLegend = m_settings.showLegend;
+    in.background = glm::vec3(m_background);
+    return computeOverlay(in);
+}
+
 void Renderer::setGrid(const data::Grid& grid) {
     m_grid = grid;
     m_hasGrid = true;

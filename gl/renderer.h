@@ -21,6 +21,7 @@
 #include "data/packed_mesh.h"
 #include "gl/camera.h"
 #include "gl/render_settings.h"
+#include "gl/view_overlay.h"
 
 class QOpenGLShaderProgram;
 
@@ -69,6 +70,9 @@ public:
     // A member to emphasise (hover): drawn lighter. -1 for none.
     void setHighlightedMember(int member) { m_highlighted = member; }
     [[nodiscard]] int highlightedMember() const { return m_highlighted; }
+
+    // The labels and legend to paint over a frame of this size (see gl/view_overlay.h).
+    [[nodiscard]] ViewOverlay overlay(int width, int height) const;
 
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);

@@ -31,6 +31,8 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_thickness(new QDoubleSpinBox(this)),
       m_opacity(new QDoubleSpinBox(this)),
       m_mean(new QCheckBox(tr("Show the mean member"), this)),
+      m_axes(new QCheckBox(tr("Axis labels"), this)),
+      m_legend(new QCheckBox(tr("Cluster legend"), this)),
       m_removal(new QGroupBox(tr("Density-based removal"), this)),
       m_removalMin(new QDoubleSpinBox(m_removal)),
       m_removalMax(new QDoubleSpinBox(m_removal)),
@@ -40,7 +42,7 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_backgroundButton(new QToolButton(this)) {
     for (auto [widget, name] : std::initializer_list<std::pair<QWidget*, const char*>>{
              {m_mode, "mode"}, {m_thickness, "thickness"}, {m_opacity, "opacity"},
-             {m_mean, "mean"}, {m_removal, "removal"}, {m_removalMin, "removalMin"},
+             {m_mean, "mean"}, {m_axes, "axes"}, {m_legend, "legend"}, {m_removal, "removal"}, {m_removalMin, "removalMin"},
              {m_removalMax, "removalMax"}, {m_groupSize, "groupSize"},
              {m_exaggeration, "exaggeration"}, {m_projection, "projection"},
              {m_backgroundButton, "background"}}) {
@@ -91,6 +93,10 @@ RenderPanel::RenderPanel(QWidget* parent)
     sceneForm->addRow(tr("Projection"), m_projection);
     m_backgroundButton->setToolTip(tr("Choose the view's background colour"));
     sceneForm->addRow(tr("Background"), m_backgroundButton);
+    m_axes->setToolTip(tr("Tick labels in data units along the edges of the data box"));
+    sceneForm->addRow(m_axes);
+    m_legend->setToolTip(tr("The cluster colours and sizes in the view's corner"));
+    sceneForm->addRow(m_legend);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -109,6 +115,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_thickness, &QDoubleSpinBox::valueChanged, this, edited);
     connect(m_opacity, &QDoubleSpinBox::valueChanged, this, edited);
     connect(m_mean, &QCheckBox::toggled, this, edited);
+    connect(m_axes, &QCheckBox::toggled, this, edited);
+    connect(m_legend, &QCheckBox::toggled, this, edited);
     connect(m_removal, &QGroupBox::toggled, this, edited);
     connect(m_groupSize, &QSpinBox::valueChanged, this, edited);
     // The thresholds keep o*min below o*max by pushing the other one along.
@@ -135,7 +143,9 @@ RenderPanel::RenderPanel(QWidget* parent)
 
 void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
-        b6(m_removalMin), b7(m_removalMax), b8(m_groupSize);
+        b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend);
+    m_axes->setChecked(settings.showAxes);
+    m_legend->setChecked(settings.showLegend);
     m_mode->setCurrentIndex(static_cast<int>(settings.mode));
     m_thickness->setValue(settings.thickness);
     m_opacity->setValue(settings.surfaceAlpha);
@@ -157,6 +167,8 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.thickness = static_cast<float>(m_thickness->value());
     settings.surfaceAlpha = static_cast<float>(m_opacity->value());
     settings.showMean = m_mean->isChecked();
+    settings.showAxes = m_axes->isChecked();
+    settings.showLegend = m_legend->isChecked();
     settings.removal = m_removal->isChecked();
     settings.removalMin = static_cast<float>(m_removalMin->value());
     settings.removalMax = static_cast<float>(m_removalMax->value());

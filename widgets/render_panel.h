@@ -1,5 +1,5 @@
 // The rendering panel: how members are drawn (mode, silhouette thickness tau, surface
-// opacity, the mean surface), density-based silhouette removal (o*_min, o*_max, group size
+// opacity, the mean surface, axis labels and legend), density-based silhouette removal (o*_min, o*_max, group size
 // s_G), vertical exaggeration, projection and background. It edits a gl::RenderSettings value
 // and says when the user changed it; it knows nothing of the renderer. GUI thread only.
 #pragma once
@@ -57,6 +57,8 @@ private:
     QDoubleSpinBox* m_thickness;
     QDoubleSpinBox* m_opacity;
     QCheckBox* m_mean;
+    QCheckBox* m_axes;
+    QCheckBox* m_legend;
     QGroupBox* m_removal;
     QDoubleSpinBox* m_removalMin;
     QDoubleSpinBox* m_removalMax;

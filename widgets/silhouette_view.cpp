@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPainter>
 #include <QRubberBand>
 #include <QToolTip>
 #include <QWheelEvent>
@@ -56,8 +57,12 @@ void SilhouetteView::initializeGL() {
 void SilhouetteView::paintGL() {
     if (!m_renderer.isInitialized()) return;
     const qreal ratio = devicePixelRatioF();
-    m_renderer.render(defaultFramebufferObject(), static_cast<int>(std::lround(width() * ratio)),
-                      static_cast<int>(std::lround(height() * ratio)));
+    const int w = static_cast<int>(std::lround(width() * ratio));
+    const int h = static_cast<int>(std::lround(height() * ratio));
+    m_renderer.render(defaultFramebufferObject(), w, h);
+    const gl::ViewOverlay overlay = m_renderer.overlay(w, h);
+    QPainter painter(this);
+    gl::paintOverlay(painter, overlay, ratio);
 }
 
 void SilhouetteView::resetCamera() {

@@ -22,6 +22,8 @@ gl::RenderSettings unusual() {
     s.removalMin = 2.5F;
     s.removalMax = 40.0F;
     s.groupSize = 7;
+    s.showAxes = false;
+    s.showLegend = false;
     return s;
 }
 }  // namespace
@@ -42,6 +44,8 @@ TEST(RenderPanel, ShowsSettingsWithoutSignallingAndWritesThemBack) {
     EXPECT_FLOAT_EQ(back.removalMin, 2.5F);
     EXPECT_FLOAT_EQ(back.removalMax, 40.0F);
     EXPECT_EQ(back.groupSize, 7);
+    EXPECT_FALSE(back.showAxes);
+    EXPECT_FALSE(back.showLegend);
     EXPECT_TRUE(back.plane.enabled);
 }
 

@@ -1,0 +1,183 @@
+#include "gl/view_overlay.h"
+
+#include <QFont>
+#include <QFontMetricsF>
+#include <QPainter>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <map>
+
+#include "gl/axis_ticks.h"
+#include "gl/palette.h"
+
+namespace ensil::gl {
+namespace {
+constexpr float kTickOffsetPx = 8.0F;    // from the edge to a tick label
+constexpr float kTitleOffsetPx = 30.0F;  // from the edge to the axis title
+
+struct Projector {
+    glm::mat4 viewProjection;
+    float width, height;
+    // Pixel position (top-left origin) and whether the point is in front of the camera.
+    [[nodiscard]] std::pair<glm::vec2, bool> operator()(const glm::vec3& p) const {
+        const glm::vec4 c = viewProjection * glm::vec4(p, 1.0F);
+        if (c.w <= 1e-6F) return {{0.0F, 0.0F}, false};
+        return {{(c.x / c.w * 0.5F + 0.5F) * width, (0.5F - c.y / c.w * 0.5F) * height}, true};
+    }
+};
+
+QString axisTitle(const data::Axis& axis) {
+    const QString name = QString::fromStdString(axis.name);
+    return axis.units.empty() ? name
+                              : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(axis.units));
+}
+
+// Tick labels and the title of axis `a` along the box edge through `corner` parallel to it.
+void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector& project,
+               const glm::vec2& centrePx, std::vector<OverlayLabel>& labels) {
+    const data::Axis& axis = in.grid->axis(a);
+    const auto place = [&](float displayCoordinate, QString text, float offset, bool title) {
+        glm::vec3 p = corner;
+        p[a] = displayCoordinate;
+        const auto [pixel, visible] = project(p);
+        if (!visible) return;
+        glm::vec2 away = pixel - centrePx;
+        away = glm::length(away) > 1e-3F ? glm::normalize(away) : glm::vec2(0.0F, 1.0F);
+        labels.push_back({pixel + offset * away, away, std::move(text), title});
+    };
+    const glm::dvec3 origin{in.grid->x().front(), in.grid->y().front(), in.grid->z().front()};
+    for (const double tick : niceTicks(axis.minValue(), axis.maxValue())) {
+        glm::dvec3 point = origin;
+        point[a] = tick;
+        place(in.frame->toDisplay(point)[a], formatTick(tick), kTickOffsetPx, false);
+    }
+    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis),
+          kTitleOffsetPx, true);
+}
+}  // namespace
+
+QString formatTick(double value) {
+    if (value == 0.0) return QStringLiteral("0");
+    const double magnitude = std::abs(value);
+    if (magnitude >= 1e-3 && magnitude < 1e6) {
+        QString text = QString::number(value, 'f', 6);
+        while (text.endsWith(QLatin1Char('0'))) text.chop(1);
+        if (text.endsWith(QLatin1Char('.'))) text.chop(1);
+        return text;
+    }
+    return QString::number(value, 'g', 4);
+}
+
+ViewOverlay computeOverlay(const OverlayInput& in) {
+    ViewOverlay overlay;
+    const float luminance = glm::dot(in.background, glm::vec3(0.2126F, 0.7152F, 0.0722F));
+    overlay.text = luminance > 0.5F ? QColor(30, 30, 30) : QColor(225, 225, 225);
+    if (in.width <= 0 || in.height <= 0) return overlay;
+
+    if (in.showAxes && in.grid != nullptr && in.frame != nullptr) {
+        const Projector project{in.viewProjection, static_cast<float>(in.width),
+                                static_cast<float>(in.height)};
+        const glm::vec3 lo = in.frame->boxMin(), hi = in.frame->boxMax();
+        const glm::vec2 centrePx = project(0.5F * (lo + hi)).first;
+        // x along the bottom edge on the viewer's side in y, y along the bottom edge on the
+        // viewer's side in x, z up the vertical edge furthest left on screen.
+        const float nearY = std::abs(in.eye.y - lo.y) < std::abs(in.eye.y - hi.y) ? lo.y : hi.y;
+        const float nearX = std::abs(in.eye.x - lo.x) < std::abs(in.eye.x - hi.x) ? lo.x : hi.x;
+        labelAxis(0, {lo.x, nearY, lo.z}, in, project, centrePx, overlay.labels);
+        labelAxis(1, {nearX, lo.y, lo.z}, in, project, centrePx, overlay.labels);
+        glm::vec3 left{lo.x, lo.y, lo.z};
+        float leftmost = std::numeric_limits<float>::max();
+        for (const float x : {lo.x, hi.x}) {
+            for (const float y : {lo.y, hi.y}) {
+                const float px = project({x, y, lo.z}).first.x;
+                if (px < leftmost) {
+                    leftmost = px;
+                    left = {x, y, lo.z};
+                }
+            }
+        }
+        labelAxis(2, left, in, project, centrePx, overlay.labels);
+    }
+
+    if (in.showLegend && in.appearance != nullptr) {
+        std::map<int, std::pair<glm::vec3, int>> clusters;  // label -> colour, visible members
+        for (const MemberAppearance& a : *in.appearance) {
+            if (a.cluster < 0) continue;
+            auto [it, added] = clusters.try_emplace(a.cluster, a.color, 0);
+            if (a.visible) ++it->second.second;
+        }
+        for (const auto& [cluster, entry] : clusters) {
+            const int n = entry.second;
+            overlay.legend.push_back(
+                {clusterColor(cluster),
+                 n == 1 ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)
+                        : QStringLiteral("Cluster %1 \u00b7 %2 members").arg(cluster + 1).arg(n)});
+        }
+        if (in.showMean) overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});
+    }
+    return overlay;
+}
+
+void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio) {
+    if (overlay.labels.empty() && overlay.legend.empty()) return;
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    const auto scale = static_cast<float>(1.0 / std::max(pixelRatio, 1e-3));
+    QFont font = painter.font();
+    font.setPointSizeF(9.0);
+    QFont titleFont = font;
+    titleFont.setBold(true);
+    // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
+    // placed keeps its place and later ones that would overlap it are left out.
+    std::vector<QRectF> placed;
+    for (const OverlayLabel& label : overlay.labels) {
+        painter.setFont(label.title ? titleFont : font);
+        const QFontMetricsF metrics(painter.font());
+        const QSizeF size = metrics.size(Qt::TextSingleLine, label.text);
+        // The anchor sits on the label's side facing the box: a label pushed right starts at
+        // the anchor, one pushed left ends there, and likewise vertically.
+        const glm::vec2 p = label.pixel * scale;
+        const double x = p.x - 0.5 * size.width() * (1.0 - label.direction.x);
+        const double y = p.y - 0.5 * size.height() * (1.0 - label.direction.y);
+        const QRectF rect(QPointF(x, y), size);
+        if (std::any_of(placed.begin(), placed.end(),
+                        [&](const QRectF& other) { return other.intersects(rect); })) {
+            continue;
+        }
+        placed.push_back(rect);
+        painter.setPen(overlay.text);
+        painter.drawText(rect, Qt::AlignCenter, label.text);
+    }
+    if (!overlay.legend.empty()) {
+        painter.setFont(font);
+        const QFontMetricsF metrics(font);
+        const double row = metrics.height() + 4.0, swatch = metrics.height() - 2.0;
+        double textWidth = 0.0;
+        for (const LegendEntry& e : overlay.legend) {
+            textWidth = std::max(textWidth, metrics.horizontalAdvance(e.text));
+        }
+        const double margin = 10.0, pad = 6.0;
+        const QRectF box(margin, margin, pad * 3 + swatch + textWidth,
+                         pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
+        QColor panel = overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(panel);
+        painter.drawRoundedRect(box, 4.0, 4.0);
+        double y = box.top() + pad;
+        for (const LegendEntry& e : overlay.legend) {
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(QColor::fromRgbF(e.color.r, e.color.g, e.color.b));
+            painter.drawRect(QRectF(box.left() + pad, y + 1.0, swatch, swatch));
+            painter.setPen(overlay.text);
+            painter.drawText(QRectF(box.left() + 2 * pad + swatch, y, textWidth + 2.0, row),
+                             Qt::AlignLeft | Qt::AlignTop, e.text);
+            y += row;
+        }
+    }
+    painter.restore();
+}
+
+}  // namespace ensil::gl

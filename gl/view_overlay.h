@@ -1,0 +1,63 @@
+// What is written over the 3D picture: tick labels in data units along three edges of the data
+// box (the edges nearest the viewer), the axis titles, and a legend of cluster colours. Computed
+// from the camera and the frame (projected to pixels), painted with QPainter, so the window and
+// headless rendering (`ensil render`) show the same labels. GUI thread or the render thread.
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "data/display_frame.h"
+#include "data/grid.h"
+#include "gl/render_settings.h"
+
+class QPainter;
+
+namespace ensil::gl {
+
+struct OverlayLabel {
+    glm::vec2 pixel{0.0F};        // where the label's anchor lies, top-left origin
+    glm::vec2 direction{0.0F};    // unit screen direction the label is pushed away from the box
+    QString text;
+    bool title = false;           // an axis title rather than a tick value
+};
+
+struct LegendEntry {
+    glm::vec3 color{0.0F};
+    QString text;
+};
+
+struct ViewOverlay {
+    std::vector<OverlayLabel> labels;
+    std::vector<LegendEntry> legend;
+    QColor text;  // readable on the background
+};
+
+struct OverlayInput {
+    const data::Grid* grid = nullptr;
+    const data::DisplayFrame* frame = nullptr;
+    glm::mat4 viewProjection{1.0F};
+    glm::vec3 eye{0.0F};
+    int width = 0;
+    int height = 0;
+    const std::vector<MemberAppearance>* appearance = nullptr;
+    bool showMean = false;
+    bool showAxes = true;
+    bool showLegend = true;
+    glm::vec3 background{0.0F};
+};
+
+ViewOverlay computeOverlay(const OverlayInput& input);
+
+// Paints the overlay on a device `logicalSize` big whose pixels are `pixelRatio` device pixels
+// (labels were computed in device pixels).
+void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio);
+
+// Formats a tick value compactly: no trailing zeros, no exponent for everyday magnitudes.
+QString formatTick(double value);
+
+}  // namespace ensil::gl

@@ -1,0 +1,138 @@
+// Axis ticks, tick formatting and the overlay's labels and legend.
+#include "gl/view_overlay.h"
+
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QPainter>
+#include <algorithm>
+
+#include "gl/axis_ticks.h"
+#include "gl/camera.h"
+#include "gl/palette.h"
+
+using namespace ensil;
+
+TEST(AxisTicks, AreRoundNumbersCoveringTheRangeInEitherOrder) {
+    // 120 / 5 = 24 rounds up to steps of 25.
+    EXPECT_EQ(gl::niceTicks(-80.0, 40.0), (std::vector<double>{-75, -50, -25, 0, 25}));
+    EXPECT_EQ(gl::niceTicks(1000.0, 100.0), (std::vector<double>{200, 400, 600, 800, 1000}));
+    EXPECT_EQ(gl::niceTicks(0.0, 1.0), (std::vector<double>{0, 0.2, 0.4, 0.6000000000000001, 0.8, 1}));
+    EXPECT_EQ(gl::niceTicks(0.0, 10.0, 4), (std::vector<double>{0, 2.5, 5, 7.5, 10}));
+    EXPECT_TRUE(gl::niceTicks(3.0, 3.0).empty());
+    EXPECT_TRUE(gl::niceTicks(0.0, std::numeric_limits<double>::infinity()).empty());
+}
+
+TEST(AxisTicks, FormattingDropsTrailingZerosAndKeepsTinyAndHugeValuesShort) {
+    EXPECT_EQ(gl::formatTick(0.6000000000000001), QStringLiteral("0.6"));
+    EXPECT_EQ(gl::formatTick(-80.0), QStringLiteral("-80"));
+    EXPECT_EQ(gl::formatTick(0.0), QStringLiteral("0"));
+    EXPECT_EQ(gl::formatTick(2.5e-5), QStringLiteral("2.5e-05"));
+    EXPECT_EQ(gl::formatTick(1.5e7), QStringLiteral("1.5e+07"));
+}
+
+namespace {
+struct Scene {
+    data::Grid grid{data::makeUniformAxis("lon", "degrees_east", -80, 40, 121),
+                    data::makeUniformAxis("lat", "degrees_north", 25, 75, 51),
+                    data::makeUniformAxis("height", "m", 0, 10000, 11)};
+    data::DisplayFrame frame{grid, 1.0F};
+    gl::Camera camera;
+    std::vector<gl::MemberAppearance> look = gl::clusterAppearance({0, 1, 1, 0, 1});
+    gl::OverlayInput input(int width = 800, int height = 600) {
+        camera.reset(frame.center(), 0.5F * glm::length(frame.boxMax()));
+        gl::OverlayInput in;
+        in.grid = &grid;
+        in.frame = &frame;
+        in.viewProjection = camera.viewProjection(float(width) / height);
+        in.eye = camera.eye();
+        in.width = width;
+        in.height = height;
+        in.appearance = &look;
+        in.showMean = true;
+        return in;
+    }
+};
+
+bool hasLabel(const gl::ViewOverlay& o, const QString& text) {
+    return std::any_of(o.labels.begin(), o.labels.end(),
+                       [&](const gl::OverlayLabel& l) { return l.text == text; });
+}
+}  // namespace
+
+TEST(ViewOverlay, LabelsTheThreeAxesInDataUnitsOnScreenAndAwayFromTheBox) {
+    Scene scene;
+    const gl::ViewOverlay o = gl::computeOverlay(scene.input());
+    for (const char* text : {"-75", "25", "30", "70", "0", "10000", "lon (degrees_east)",
+                             "lat (degrees_north)", "height (m)"}) {
+        EXPECT_TRUE(hasLabel(o, QString::fromLatin1(text))) << text;
+    }
+    // Every label lies in the picture.
+    for (const gl::OverlayLabel& l : o.labels) {
+        EXPECT_GT(l.pixel.x, 0.0F) << l.text.toStdString();
+        EXPECT_LT(l.pixel.x, 800.0F) << l.text.toStdString();
+        EXPECT_GT(l.pixel.y, 0.0F) << l.text.toStdString();
+        EXPECT_LT(l.pixel.y, 600.0F) << l.text.toStdString();
+    }
+    // The default camera looks from the south: longitude ticks run along the bottom edge on
+    // the viewer's side (south), left to right, below the box's centre on screen.
+    const auto at = [&](const char* text) {
+        return std::find_if(o.labels.begin(), o.labels.end(),
+                            [&](const gl::OverlayLabel& l) { return l.text == text; })
+            ->pixel;
+    };
+    EXPECT_LT(at("-75").x, at("-25").x);
+    EXPECT_GT(at("-25").y, 300.0F);
+    // Off: nothing to label.
+    gl::OverlayInput off = scene.input();
+    off.showAxes = false;
+    off.showLegend = false;
+    EXPECT_TRUE(gl::computeOverlay(off).labels.empty());
+    EXPECT_TRUE(gl::computeOverlay(off).legend.empty());
+}
+
+TEST(ViewOverlay, TheLegendCountsVisibleMembersPerClusterAndNamesTheMean) {
+    Scene scene;
+    scene.look[4].visible = false;
+    const gl::ViewOverlay o = gl::computeOverlay(scene.input());
+    ASSERT_EQ(o.legend.size(), 3u);
+    EXPECT_EQ(o.legend[0].text, QStringLiteral("Cluster 1 \u00b7 2 members"));
+    EXPECT_EQ(o.legend[0].color, gl::clusterColor(0));
+    EXPECT_EQ(o.legend[1].text, QStringLiteral("Cluster 2 \u00b7 2 members"));
+    EXPECT_EQ(o.legend[2].text, QStringLiteral("Mean member"));
+}
+
+TEST(ViewOverlay, TextIsLightOnDarkBackgroundsAndDarkOnLightOnes) {
+    Scene scene;
+    gl::OverlayInput in = scene.input();
+    in.background = {0.1F, 0.1F, 0.12F};
+    EXPECT_GT(gl::computeOverlay(in).text.lightness(), 180);
+    in.background = {0.95F, 0.95F, 0.95F};
+    EXPECT_LT(gl::computeOverlay(in).text.lightness(), 80);
+}
+
+TEST(ViewOverlay, PaintsTheLegendSwatchesAndTextIntoTheImage) {
+    Scene scene;
+    const gl::ViewOverlay o = gl::computeOverlay(scene.input());
+    QImage image(800, 600, QImage::Format_RGB32);
+    image.fill(Qt::black);
+    {
+        QPainter painter(&image);
+        gl::paintOverlay(painter, o, 1.0);
+    }
+    // The legend's first swatch, in the top-left corner, has cluster 1's colour.
+    const glm::vec3 c = gl::clusterColor(0);
+    bool swatch = false;
+    for (int y = 10; y < 40 && !swatch; ++y)
+        for (int x = 10; x < 40 && !swatch; ++x) {
+            const QColor p = image.pixelColor(x, y);
+            swatch = std::abs(p.red() - int(c.r * 255)) < 3 && std::abs(p.green() - int(c.g * 255)) < 3 &&
+                     std::abs(p.blue() - int(c.b * 255)) < 3;
+        }
+    EXPECT_TRUE(swatch);
+    // Text was drawn somewhere below the legend (tick labels): light pixels exist there.
+    int light = 0;
+    for (int y = 150; y < 600; ++y)
+        for (int x = 0; x < 800; ++x) light += image.pixelColor(x, y).lightness() > 150 ? 1 : 0;
+    EXPECT_GT(light, 200);
+}
