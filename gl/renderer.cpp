@@ -57,7 +57,8 @@ void Renderer::initialize() {
     gpu->shaders.program(QStringLiteral("floor_map"));
     gpu->shaders.program(QStringLiteral("surface"));
     gpu->shaders.program(QStringLiteral("composite"));
-    gpu->shaders.program(QStringLiteral("present"), QStringLiteral("composite"));
+    gpu->shaders.program(QStringLiteral("present"), {QStringLiteral("composite"), {}, {}});
+    gpu->shaders.program(QStringLiteral("silhouette"), kSilhouetteShaderFiles);
 
     f.glGenVertexArrays(1, &gpu->boxVao);
     f.glGenBuffers(1, &gpu->boxVbo);

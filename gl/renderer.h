@@ -104,8 +104,17 @@ private:
     void uploadMeshesIfChanged();
     [[nodiscard]] MemberAppearance appearance(std::size_t member) const;
     [[nodiscard]] bool translucentMode() const;
-    QOpenGLShaderProgram& bindSurfaceProgram(const glm::mat4& viewProjection, bool pick);
-    void drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass);
+    // The two isosurface programs, both set up for this frame: every triangle, and only those
+    // that may hold a silhouette (the same one when culling is off); `bound` is the one in use.
+    struct SurfacePrograms {
+        QOpenGLShaderProgram* full;
+        QOpenGLShaderProgram* culled;
+        QOpenGLShaderProgram* bound = nullptr;
+    };
+    SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, bool pick);
+    void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,
+                                 bool pick);
+    void drawMemberPass(SurfacePrograms& programs, MemberPass pass);
     [[nodiscard]] bool canPick() const;
     // Draws the id pass into the window (GL pixel rows, bottom-up) and reads the ids back,
     // row by row: 0 for nothing, member + 1 otherwise.

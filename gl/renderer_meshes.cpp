@@ -72,10 +72,25 @@ MemberAppearance Renderer::appearance(std::size_t member) const {
     return member < m_appearance.size() ? m_appearance[member] : MemberAppearance{};
 }
 
-QOpenGLShaderProgram& Renderer::bindSurfaceProgram(const glm::mat4& viewProjection, bool pick) {
+Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection,
+                                                        bool pick) {
+    SurfacePrograms programs{&m_gpu->shaders.program(QStringLiteral("surface")),
+                             &m_gpu->shaders.program(QStringLiteral("silhouette"),
+                                                     kSilhouetteShaderFiles)};
+    if (!m_settings.silhouetteCulling) programs.culled = programs.full;
+    programs.culled->bind();
+    configureSurfaceProgram(*programs.culled, viewProjection, pick);
+    if (programs.full != programs.culled) {
+        programs.full->bind();
+        configureSurfaceProgram(*programs.full, viewProjection, pick);
+    }
+    programs.bound = programs.full;
+    return programs;
+}
+
+void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
+                                       const glm::mat4& viewProjection, bool pick) {
     GlFunctions& f = *m_gpu->f;
-    QOpenGLShaderProgram& program = m_gpu->shaders.program(QStringLiteral("surface"));
-    program.bind();
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
                          glm::value_ptr(viewProjection));
     const glm::vec3 eye = m_camera.eye();
@@ -113,7 +128,6 @@ QOpenGLShaderProgram& Renderer::bindSurfaceProgram(const glm::mat4& viewProjecti
     f.glActiveTexture(GL_TEXTURE1);
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->axisTables);
     f.glActiveTexture(GL_TEXTURE0);
-    return program;
 }
 
 bool Renderer::translucentMode() const {
@@ -121,14 +135,24 @@ bool Renderer::translucentMode() const {
            m_settings.mode == RenderMode::Surfaces;
 }
 
-void Renderer::drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass) {
+void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
     GlFunctions& f = *m_gpu->f;
     const std::vector<GpuMesh>& members = m_gpu->meshes.members();
+    QOpenGLShaderProgram* program = programs.bound;
+    // The silhouette modes draw through the culling geometry shader; solid and semi-transparent
+    // surfaces need every triangle.
     const auto setMember = [&](int pickId, std::size_t m, int mode, const glm::vec3& colour) {
-        program.setUniformValue("u_mode", mode);
-        program.setUniformValue("u_memberIndex", static_cast<int>(m));
-        program.setUniformValue("u_pickId", pickId);
-        program.setUniformValue("u_color", colour.x, colour.y, colour.z);
+        QOpenGLShaderProgram* wanted =
+            mode == kShaded || mode == kSpaghetti ? programs.culled : programs.full;
+        if (wanted != program) {
+            program = wanted;
+            program->bind();
+            programs.bound = program;
+        }
+        program->setUniformValue("u_mode", mode);
+        program->setUniformValue("u_memberIndex", static_cast<int>(m));
+        program->setUniformValue("u_pickId", pickId);
+        program->setUniformValue("u_color", colour.x, colour.y, colour.z);
     };
     const bool translucent = translucentMode();
     const int translucentShaderMode =
@@ -136,7 +160,7 @@ void Renderer::drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass) {
     const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
     if (pass != MemberPass::Translucent && m_settings.showMean) {
         setMember(0, 0, kSolid, kMeanSurfaceColor);
-        drawMesh(f, program, m_gpu->meshes.mean());
+        drawMesh(f, *program, m_gpu->meshes.mean());
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
         const MemberAppearance a = appearance(m);
@@ -150,7 +174,7 @@ void Renderer::drawMemberPass(QOpenGLShaderProgram& program, MemberPass pass) {
         const bool highlighted = static_cast<int>(m) == m_highlighted;
         setMember(static_cast<int>(m) + 1, m, mode,
                   highlighted ? glm::mix(a.color, glm::vec3(1.0F), 0.55F) : a.color);
-        drawMesh(f, program, members[m]);
+        drawMesh(f, *program, members[m]);
     }
 }
 
@@ -159,11 +183,11 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     uploadMeshesIfChanged();
     if (m_gpu->meshes.members().empty() && m_gpu->meshes.mean().vao == 0) return;
 
-    QOpenGLShaderProgram& program = bindSurfaceProgram(viewProjection, false);
+    SurfacePrograms programs = bindSurfacePrograms(viewProjection, false);
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
-    drawMemberPass(program, MemberPass::Opaque);
+    drawMemberPass(programs, MemberPass::Opaque);
 
     if (translucentMode()) {
         // Accumulate every unselected visible member, testing but not writing depth.
@@ -177,7 +201,8 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         f.glEnable(GL_BLEND);
         f.glBlendFunci(0, GL_ONE, GL_ONE);
         f.glBlendFunci(1, GL_ZERO, GL_ONE_MINUS_SRC_COLOR);
-        drawMemberPass(program, MemberPass::Translucent);
+        programs.bound->bind();
+        drawMemberPass(programs, MemberPass::Translucent);
         f.glDepthMask(GL_TRUE);
 
         // Composite over the opaque scene.
@@ -199,7 +224,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         f.glActiveTexture(GL_TEXTURE0);
     }
     f.glBindVertexArray(0);
-    program.release();
+    programs.bound->release();
 }
 
 std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
@@ -222,10 +247,10 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     f.glDisable(GL_BLEND);
     f.glDisable(GL_DITHER);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    QOpenGLShaderProgram& program = bindSurfaceProgram(m_camera.viewProjection(aspect), true);
-    drawMemberPass(program, MemberPass::All);
+    SurfacePrograms programs = bindSurfacePrograms(m_camera.viewProjection(aspect), true);
+    drawMemberPass(programs, MemberPass::All);
     f.glBindVertexArray(0);
-    program.release();
+    programs.bound->release();
 
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) *
                                      4);

@@ -16,7 +16,7 @@ QByteArray ShaderLibrary::source(const QString& file) {
     return f.readAll();
 }
 
-QOpenGLShaderProgram& ShaderLibrary::program(const QString& name, const QString& vertex) {
+QOpenGLShaderProgram& ShaderLibrary::program(const QString& name, const ShaderFiles& files) {
     auto found = m_programs.find(name);
     if (found != m_programs.end()) return *found->second;
 
@@ -27,8 +27,13 @@ QOpenGLShaderProgram& ShaderLibrary::program(const QString& name, const QString&
                               program->log().toStdString());
         }
     };
-    compile(QOpenGLShader::Vertex, (vertex.isEmpty() ? name : vertex) + QStringLiteral(".vert"));
-    compile(QOpenGLShader::Fragment, name + QStringLiteral(".frag"));
+    compile(QOpenGLShader::Vertex,
+            (files.vertex.isEmpty() ? name : files.vertex) + QStringLiteral(".vert"));
+    if (!files.geometry.isEmpty()) {
+        compile(QOpenGLShader::Geometry, files.geometry + QStringLiteral(".geom"));
+    }
+    compile(QOpenGLShader::Fragment,
+            (files.fragment.isEmpty() ? name : files.fragment) + QStringLiteral(".frag"));
     if (!program->link()) {
         throw ShaderError("shader program '" + name.toStdString() + "' does not link:\n" +
                           program->log().toStdString());

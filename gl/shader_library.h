@@ -17,12 +17,20 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The files of a program, without their extensions; an empty vertex or fragment name means
+// the program's own name, an empty geometry name no geometry shader.
+struct ShaderFiles {
+    QString vertex;
+    QString geometry;
+    QString fragment;
+};
+
 class ShaderLibrary {
 public:
-    // Returns the program built from VERTEX.vert (NAME.vert when vertex is empty) and
-    // NAME.frag, compiling it on first use. Throws ShaderError with the compiler's log if it
-    // does not compile or link.
-    QOpenGLShaderProgram& program(const QString& name, const QString& vertex = {});
+    // Returns the program built from VERTEX.vert, GEOMETRY.geom (if named) and FRAGMENT.frag,
+    // compiling it on first use. Throws ShaderError with the compiler's log if it does not
+    // compile or link.
+    QOpenGLShaderProgram& program(const QString& name, const ShaderFiles& files = {});
     // Destroys every program; the context that created them must be current.
     void clear() { m_programs.clear(); }
 

@@ -6,11 +6,13 @@
 // needs one pass, no sorting. Modes 1 and 3 are opaque.
 // With u_pick set, every fragment the mode would draw writes the member's id instead (the
 // picking pass; opaque, depth-tested, so the front-most member wins).
-in vec3 v_position;
-in vec3 v_normal;
-in vec3 v_direction;
-in vec2 v_kappa;
-in float v_outlyingness;
+in Surface {
+    vec3 position;
+    vec3 normal;
+    vec3 direction;
+    vec2 kappa;
+    float outlyingness;
+} v_in;
 
 uniform int u_mode;
 uniform vec3 u_eye;
@@ -38,11 +40,11 @@ const float kEpsilon = 1e-4;
 float silhouetteCoefficient(vec3 v, vec3 n) {
     // Curvature along the view direction (Euler's formula).
     vec3 w = v - dot(n, v) * n;
-    float kappaV = v_kappa.x;
+    float kappaV = v_in.kappa.x;
     float lw = length(w);
     if (lw > 1e-6) {
-        float c = dot(w / lw, normalize(v_direction));
-        kappaV = v_kappa.x * c * c + v_kappa.y * (1.0 - c * c);
+        float c = dot(w / lw, normalize(v_in.direction));
+        kappaV = v_in.kappa.x * c * c + v_in.kappa.y * (1.0 - c * c);
     }
     // Convex and concave parts are outlined alike: the thickness uses |kappa_v|.
     float t = clamp(u_tau * abs(kappaV), kEpsilon, 1.0);
@@ -55,7 +57,7 @@ float removalFactor() {
     float step = (u_removalMax - u_removalMin) / float(u_groupSize);
     float lo = u_removalMin + float(group) * step;
     float hi = u_removalMin + float(group + 1) * step;
-    return clamp((v_outlyingness - lo) / max(hi - lo, 1e-20), 0.0, 1.0);
+    return clamp((v_in.outlyingness - lo) / max(hi - lo, 1e-20), 0.0, 1.0);
 }
 
 // The intersection curve's coefficient, like sigma: 0 on the plane, 1 at eps behind it, above 1
@@ -91,12 +93,12 @@ void writeTranslucent(vec3 colour, float alpha) {
 void main() {
     float behindPlane = u_planeEpsilon * 2.0;
     if (u_planeEnabled) {
-        float side = dot(u_plane.xyz, v_position) - u_plane.w;
+        float side = dot(u_plane.xyz, v_in.position) - u_plane.w;
         if (side > 0.0) discard;
         behindPlane = -side;
     }
-    vec3 n = normalize(v_normal);
-    vec3 v = u_orthographic ? -u_viewDirection : normalize(u_eye - v_position);
+    vec3 n = normalize(v_in.normal);
+    vec3 v = u_orthographic ? -u_viewDirection : normalize(u_eye - v_in.position);
     if (u_mode == 3) {
         writeOpaque(lit(u_color, v, n));
         return;

@@ -15,11 +15,13 @@ uniform sampler2D u_axisTables;
 uniform ivec3 u_axisSize;
 uniform float u_outlyingnessScale;
 
-out vec3 v_position;
-out vec3 v_normal;
-out vec3 v_direction;
-out vec2 v_kappa;
-out float v_outlyingness;
+out Surface {
+    vec3 position;
+    vec3 normal;
+    vec3 direction;
+    vec2 kappa;
+    float outlyingness;
+} v;
 
 float displayCoordinate(int axis, float index) {
     int last = u_axisSize[axis] - 1;
@@ -40,11 +42,11 @@ vec3 octahedralDecode(vec2 e) {
 
 void main() {
     vec3 index = mix(u_boundsMin, u_boundsMax, a_position);
-    v_position = vec3(displayCoordinate(0, index.x), displayCoordinate(1, index.y),
+    v.position = vec3(displayCoordinate(0, index.x), displayCoordinate(1, index.y),
                       displayCoordinate(2, index.z));
-    v_normal = octahedralDecode(a_normal);
-    v_direction = octahedralDecode(a_direction);
-    v_kappa = a_kappa;
-    v_outlyingness = a_outlyingness * u_outlyingnessScale;
-    gl_Position = u_viewProjection * vec4(v_position, 1.0);
+    v.normal = octahedralDecode(a_normal);
+    v.direction = octahedralDecode(a_direction);
+    v.kappa = a_kappa;
+    v.outlyingness = a_outlyingness * u_outlyingnessScale;
+    gl_Position = u_viewProjection * vec4(v.position, 1.0);
 }

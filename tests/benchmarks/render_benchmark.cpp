@@ -20,6 +20,7 @@
 #include "preprocessing/clustering.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/packed_mesh.h"
 #include "preprocessing/similarity.h"
 #include "timing.h"
 
@@ -84,6 +85,27 @@ int main(int argc, char** argv) {
     const double shaded = time(ensil::gl::RenderMode::ShadedSilhouettes);
     const double spaghetti = time(ensil::gl::RenderMode::Spaghetti);
     const double surfaces = time(ensil::gl::RenderMode::Surfaces);
+    // What the geometry shader's culling of triangles far from silhouettes saves.
+    r.settings().silhouetteCulling = false;
+    const double shadedUnculled = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    const double spaghettiUnculled = time(ensil::gl::RenderMode::Spaghetti);
+    r.settings().silhouetteCulling = true;
+    // A cutting plane through the middle, and the removal over the lower half of outlyingness.
+    const auto& frame = r.frame();
+    r.settings().plane = ensil::gl::CuttingPlane::acrossBox({0.0F, 1.0F, 0.0F}, 0.0F,
+                                                            frame.boxMin(), frame.boxMax());
+    const double shadedPlane = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    r.settings().plane.enabled = false;
+    r.settings().removal = true;
+    r.settings().removalMin = 0.0F;
+    r.settings().removalMax = 0.5F * ensil::prep::maximumOutlyingness(*set);
+    const double shadedRemoval = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    r.settings().removal = false;
+    // Five members selected: drawn as solid surfaces over the silhouettes.
+    auto look = ensil::gl::clusterAppearance(ensil::prep::clusterLabels(tree, 5));
+    for (std::size_t m = 0; m < 5 && m < look.size(); ++m) look[m].selected = true;
+    r.setAppearance(look);
+    const double shadedSelection = time(ensil::gl::RenderMode::ShadedSilhouettes);
     std::printf("renderer: %s\n", renderer);
     std::printf(
         "scene: %zu meshes, %zu triangles, %.2f MiB on the GPU, %d x %d, median of %d frames\n",
@@ -96,6 +118,16 @@ int main(int argc, char** argv) {
                 spaghetti / opaque);
     std::printf("  semi-transparent surfaces       %8.2f ms  (%.2fx)\n", surfaces,
                 surfaces / opaque);
+    std::printf("  shaded, no triangle culling     %8.2f ms  (%.2fx)\n", shadedUnculled,
+                shadedUnculled / opaque);
+    std::printf("  spaghetti, no triangle culling  %8.2f ms  (%.2fx)\n", spaghettiUnculled,
+                spaghettiUnculled / opaque);
+    std::printf("  shaded with a cutting plane     %8.2f ms  (%.2fx)\n", shadedPlane,
+                shadedPlane / opaque);
+    std::printf("  shaded with removal             %8.2f ms  (%.2fx)\n", shadedRemoval,
+                shadedRemoval / opaque);
+    std::printf("  shaded, 5 members selected      %8.2f ms  (%.2fx)\n", shadedSelection,
+                shadedSelection / opaque);
     r.releaseGpuResources();
     return 0;
 }

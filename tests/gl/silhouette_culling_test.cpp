@@ -1,0 +1,81 @@
+// The geometry shader that drops triangles far from any silhouette must not change the picture:
+// real meshes of varied curvature (the demo ensemble), every silhouette mode, thin and thick
+// tau, with and without a cutting plane, drawn with culling on and off.
+#include <gtest/gtest.h>
+
+#include "data/demo_ensemble.h"
+#include "gl/palette.h"
+#include "gl/renderer.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/offscreen_gl.h"
+
+using namespace ensil;
+
+namespace {
+class SilhouetteCullingTest : public test::OffscreenGlTest {
+protected:
+    void SetUp() override {
+        test::OffscreenGlTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        m_renderer.initialize();
+        const auto demo = data::makeDemoEnsemble({.members = 8, .nx = 96, .ny = 48, .nz = 12, .seed = 2});
+        const data::Ensemble& e = demo.ensemble;
+        prep::PipelineOptions options;
+        options.isovalue = 30.0F;
+        auto built = prep::buildIsovalueMeshes(e, prep::computeEnsembleMoments(e),
+                                               data::DisplayFrame(e.grid, 3.0F), options);
+        auto set = std::make_shared<data::MeshSet>();
+        set->members = std::move(built.members);
+        set->mean = std::move(built.mean);
+        m_renderer.setGrid(e.grid);
+        m_renderer.setVerticalExaggeration(3.0F);
+        m_renderer.setMeshes(set);
+        std::vector<int> labels(e.memberCount());
+        for (std::size_t m = 0; m < labels.size(); ++m) labels[m] = static_cast<int>(m % 4);
+        m_renderer.setAppearance(gl::clusterAppearance(labels));
+        m_renderer.settings().showMean = false;
+    }
+    void TearDown() override {
+        if (m_renderer.isInitialized()) m_renderer.releaseGpuResources();
+        test::OffscreenGlTest::TearDown();
+    }
+    // Fraction of pixels that differ by more than 2/255 between culling on and off.
+    double cullingDifference() {
+        m_renderer.settings().silhouetteCulling = false;
+        m_renderer.render(framebuffer(), kWidth, kHeight);
+        const QImage all = grab();
+        m_renderer.settings().silhouetteCulling = true;
+        m_renderer.render(framebuffer(), kWidth, kHeight);
+        const QImage culled = grab();
+        QImage empty(all.size(), all.format());
+        const glm::vec4 bg = gl::Renderer::kDefaultBackground;
+        empty.fill(QColor::fromRgbF(bg.r, bg.g, bg.b));
+        EXPECT_GT(test::differingFraction(all, empty, 8), 0.02) << "silhouettes should be drawn";
+        return test::differingFraction(all, culled, 2);
+    }
+    gl::Renderer m_renderer;
+};
+}  // namespace
+
+TEST_F(SilhouetteCullingTest, ShadedAndSpaghettiLookTheSameWithAndWithoutCulling) {
+    for (const gl::RenderMode mode : {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
+        for (const float tau : {0.003F, 0.02F, 0.1F}) {
+            m_renderer.settings().mode = mode;
+            m_renderer.settings().thickness = tau;
+            EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode) << " tau " << tau;
+        }
+    }
+}
+
+TEST_F(SilhouetteCullingTest, PlaneCurvesSurviveCulling) {
+    const data::DisplayFrame& frame = m_renderer.frame();
+    m_renderer.settings().plane =
+        gl::CuttingPlane::acrossBox({0.3F, 1.0F, 0.2F}, 0.1F, frame.boxMin(), frame.boxMax());
+    m_renderer.settings().plane.thickness = 0.01F;
+    m_renderer.camera().setAngles(-60.0F, 40.0F);
+    EXPECT_LE(cullingDifference(), 2e-4);
+    m_renderer.camera().setProjection(gl::Camera::Projection::Orthographic);
+    EXPECT_LE(cullingDifference(), 2e-4);
+}
