@@ -104,6 +104,10 @@ private:
     void uploadMeshesIfChanged();
     [[nodiscard]] MemberAppearance appearance(std::size_t member) const;
     [[nodiscard]] bool translucentMode() const;
+    // The data box's bounding rectangle on screen (x, y, width, height in GL pixels, clamped to
+    // the frame); the whole frame when the camera is inside the box.
+    [[nodiscard]] glm::ivec4 screenRectangle(const glm::mat4& viewProjection, int width,
+                                             int height) const;
     // The two isosurface programs, both set up for this frame: every triangle, and only those
     // that may hold a silhouette (the same one when culling is off); `bound` is the one in use.
     struct SurfacePrograms {

@@ -130,6 +130,27 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     f.glActiveTexture(GL_TEXTURE0);
 }
 
+glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width,
+                                     int height) const {
+    const glm::vec3 lo = m_frame.boxMin(), hi = m_frame.boxMax();
+    glm::vec2 minimum(std::numeric_limits<float>::max()), maximum(-minimum);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 p = viewProjection * glm::vec4((corner & 1) ? hi.x : lo.x,
+                                                       (corner & 2) ? hi.y : lo.y,
+                                                       (corner & 4) ? hi.z : lo.z, 1.0F);
+        if (p.w <= 1e-6F) return {0, 0, width, height};  // the camera is inside the box
+        const glm::vec2 pixel = (glm::vec2(p) / p.w * 0.5F + 0.5F) * glm::vec2(width, height);
+        minimum = glm::min(minimum, pixel);
+        maximum = glm::max(maximum, pixel);
+    }
+    // A pixel of margin for rounding; clamped to the frame.
+    const glm::ivec2 lower = glm::clamp(glm::ivec2(glm::floor(minimum)) - 1, glm::ivec2(0),
+                                        glm::ivec2(width, height));
+    const glm::ivec2 upper = glm::clamp(glm::ivec2(glm::ceil(maximum)) + 1, glm::ivec2(0),
+                                        glm::ivec2(width, height));
+    return {lower.x, lower.y, upper.x - lower.x, upper.y - lower.y};
+}
+
 bool Renderer::translucentMode() const {
     return m_settings.mode == RenderMode::ShadedSilhouettes ||
            m_settings.mode == RenderMode::Surfaces;
@@ -190,6 +211,11 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     drawMemberPass(programs, MemberPass::Opaque);
 
     if (translucentMode()) {
+        // Every isosurface lies inside the data box: the transparency targets are cleared,
+        // drawn and composited only over the box's rectangle on screen.
+        const glm::ivec4 box = screenRectangle(viewProjection, width, height);
+        f.glEnable(GL_SCISSOR_TEST);
+        f.glScissor(box.x, box.y, box.z, box.w);
         // Accumulate every unselected visible member, testing but not writing depth.
         f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.transparencyFramebuffer());
         f.glViewport(0, 0, width, height);
@@ -220,6 +246,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         f.glBindVertexArray(m_gpu->emptyVao);
         f.glDrawArrays(GL_TRIANGLES, 0, 3);
         f.glDisable(GL_BLEND);
+        f.glDisable(GL_SCISSOR_TEST);
         f.glEnable(GL_DEPTH_TEST);
         f.glActiveTexture(GL_TEXTURE0);
     }
