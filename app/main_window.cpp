@@ -74,6 +74,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createStatusBar();
     createToolbar();
     createRenderDocks();
+    createAnimation();
     createMenus();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
@@ -364,6 +365,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
+    m_view->setMemberNames(memberNames());
     updatePlaneBox();
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -28,6 +29,7 @@ class EnsembleInfoPanel;
 class RenderToolbar;
 class RenderPanel;
 class CuttingPlanePanel;
+class AnimationBar;
 }  // namespace ensil::ui
 
 namespace ensil::app {
@@ -51,6 +53,7 @@ public:
     [[nodiscard]] ui::RenderToolbar* renderToolbar() const { return m_toolbar; }
     [[nodiscard]] ui::RenderPanel* renderPanel() const { return m_renderPanel; }
     [[nodiscard]] ui::CuttingPlanePanel* cuttingPlanePanel() const { return m_planePanel; }
+    [[nodiscard]] ui::AnimationBar* animationBar() const { return m_animation; }
     [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
@@ -77,6 +80,10 @@ private:
     void createDocks();
     void createRenderDocks();  // main_window_render_docks.cpp
     void setVerticalExaggeration(double factor);
+    void createAnimation();  // main_window_animation.cpp
+    [[nodiscard]] std::vector<int> animationSequence() const;
+    void chooseAnimationSequence();
+    [[nodiscard]] QStringList memberNames() const;
     void updatePlaneBox();
     void createStatusBar();
     void onLoadFailed(const std::exception_ptr& error, bool cancelled);
@@ -94,6 +101,7 @@ private:
     ui::RenderToolbar* m_toolbar = nullptr;
     ui::RenderPanel* m_renderPanel = nullptr;
     ui::CuttingPlanePanel* m_planePanel = nullptr;
+    ui::AnimationBar* m_animation = nullptr;
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;

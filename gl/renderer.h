@@ -74,6 +74,11 @@ public:
     // The labels and legend to paint over a frame of this size (see gl/view_overlay.h).
     [[nodiscard]] ViewOverlay overlay(int width, int height) const;
 
+    // The member the animation shows (-1: none): drawn as a solid surface while the selection
+    // is drawn as silhouettes, so one solid member is seen at a time.
+    void setAnimatedMember(int member) { m_animated = member; }
+    [[nodiscard]] int animatedMember() const { return m_animated; }
+
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
@@ -85,6 +90,7 @@ public:
     void setAppearance(std::vector<MemberAppearance> appearance) {
         m_appearance = std::move(appearance);
     }
+    [[nodiscard]] const std::vector<MemberAppearance>& appearances() const { return m_appearance; }
     [[nodiscard]] RenderSettings& settings() { return m_settings; }
     // Bytes of mesh data on the GPU now.
     [[nodiscard]] std::size_t gpuBytes() const;
@@ -144,6 +150,7 @@ private:
     glm::vec4 m_background = kDefaultBackground;
     glm::ivec2 m_lastSize{0};  // the last frame's size, which picking draws at
     int m_highlighted = -1;
+    int m_animated = -1;
 };
 
 }  // namespace ensil::gl

@@ -184,8 +184,10 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         drawMesh(f, *program, m_gpu->meshes.mean());
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
-        const MemberAppearance a = appearance(m);
-        if (!a.visible) continue;
+        MemberAppearance a = appearance(m);
+        const bool animated = static_cast<int>(m) == m_animated;
+        if (m_animated >= 0) a.selected = animated;
+        if (!a.visible && !animated) continue;
         const bool opaque = a.selected || !translucent;
         if ((pass == MemberPass::Opaque && !opaque) ||
             (pass == MemberPass::Translucent && opaque)) {

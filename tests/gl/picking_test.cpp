@@ -103,3 +103,21 @@ TEST_F(PickingTest, BrushingCollectsTheMembersDrawnInARectangle) {
         << "corners in any order";
     EXPECT_TRUE(m_renderer.membersIn(0, 0, 3, 3).empty());
 }
+
+TEST_F(PickingTest, TheAnimatedMemberIsTheOnlySolidOneEvenWhenHidden) {
+    // Two spheres side by side; member 1 selected, member 0 hidden and animated.
+    show(spheres({{9, 15.5F, 15.5F}, {22, 15.5F, 15.5F}}), {kRed, kBlue});
+    m_renderer.setAppearance({{kRed, false, false, 0}, {kBlue, true, true, 1}});
+    m_renderer.settings().showMean = false;
+    m_renderer.setAnimatedMember(0);
+    (void)draw();
+    const QPoint left = project(display({9, 15.5F, 15.5F}));
+    const QPoint right = project(display({22, 15.5F, 15.5F}));
+    EXPECT_EQ(m_renderer.pick(left.x(), left.y(), 0).member, 0) << "animated: solid face";
+    EXPECT_EQ(m_renderer.pick(right.x(), right.y(), 0).member, -1)
+        << "the selection is drawn as a silhouette while animating";
+    m_renderer.setAnimatedMember(-1);
+    (void)draw();
+    EXPECT_EQ(m_renderer.pick(left.x(), left.y(), 0).member, -1) << "hidden again";
+    EXPECT_EQ(m_renderer.pick(right.x(), right.y(), 0).member, 1) << "selected: solid again";
+}

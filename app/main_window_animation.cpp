@@ -1,0 +1,72 @@
+// The animation of the main window: which members it steps through (the selected ones, or every
+// visible one when none is selected, in cluster then similarity order) and showing the current
+// one as a solid surface in the view.
+#include <QStatusBar>
+#include <algorithm>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "preprocessing/clustering.h"
+#include "widgets/animation_bar.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+
+void MainWindow::createAnimation() {
+    m_animation = new ui::AnimationBar(this);
+    addToolBar(Qt::TopToolBarArea, m_animation);
+    connect(m_animation, &ui::AnimationBar::sequenceWanted, this,
+            &MainWindow::chooseAnimationSequence);
+    connect(m_animation, &ui::AnimationBar::memberShown, this, [this](int member) {
+        m_view->renderer().setAnimatedMember(member);
+        m_view->update();
+    });
+    // A new isovalue or a new clustering changes the order: the next play computes it again.
+    const auto forget = [this] { m_animation->setSequence({}); };
+    connect(m_session, &IsovalueSession::finished, this, forget);
+    connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this, forget);
+}
+
+std::vector<int> MainWindow::animationSequence() const {
+    const IsovalueResult* result = m_session->result();
+    if (result == nullptr || result->tree.memberCount == 0) return {};
+    const std::vector<int> labels = m_session->labels();
+    const int k = labels.empty() ? 1 : *std::max_element(labels.begin(), labels.end()) + 1;
+    const std::vector<int> order = prep::animationOrder(result->tree, result->distances, k);
+    const std::vector<gl::MemberAppearance>& look = m_view->renderer().appearances();
+    const auto at = [&](int m) {
+        return static_cast<std::size_t>(m) < look.size() ? look[static_cast<std::size_t>(m)]
+                                                         : gl::MemberAppearance{};
+    };
+    const bool anySelected =
+        std::any_of(look.begin(), look.end(), [](const gl::MemberAppearance& a) {
+            return a.selected && a.visible;
+        });
+    std::vector<int> sequence;
+    for (const int m : order) {
+        const gl::MemberAppearance a = at(m);
+        if (a.visible && (a.selected || !anySelected)) sequence.push_back(m);
+    }
+    return sequence;
+}
+
+QStringList MainWindow::memberNames() const {
+    QStringList names;
+    if (!m_overview) return names;
+    for (const data::Member& member : m_overview->ensemble->members) {
+        names.push_back(QString::fromStdString(member.name));
+    }
+    return names;
+}
+
+void MainWindow::chooseAnimationSequence() {
+    std::vector<int> sequence = animationSequence();
+    if (sequence.empty()) {
+        statusBar()->showMessage(tr("Nothing to animate yet: load an ensemble first."), 4000);
+        return;
+    }
+    m_animation->setSequence(std::move(sequence), memberNames());
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,62 @@
+// The animation in the main window: play steps through the visible members in cluster then
+// similarity order, each shown as the renderer's animated (solid) member; a selection limits it.
+#include <gtest/gtest.h>
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "preprocessing/clustering.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/animation_bar.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+TEST(MainWindowAnimation, PlaysTheMembersInClusterThenSimilarityOrder) {
+    const test::TempDir cache;
+    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(cache.path().string()));
+    app::MainWindow window;
+    window.resize(900, 600);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 9});
+    ASSERT_TRUE(loaded.wait(30000));
+    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+
+    ui::AnimationBar& bar = *window.animationBar();
+    gl::Renderer& renderer = window.view()->renderer();
+    bar.setFramesPerSecond(30.0);
+    bar.setLoop(false);
+    QSignalSpy shown(&bar, &ui::AnimationBar::memberShown);
+    bar.play();
+    QTRY_VERIFY_WITH_TIMEOUT(!bar.isPlaying(), 5000);
+    const app::IsovalueResult& result = *window.isovalueSession()->result();
+    const std::vector<int> labels = window.isovalueSession()->labels();
+    const int k = *std::max_element(labels.begin(), labels.end()) + 1;
+    const std::vector<int> expected = prep::animationOrder(result.tree, result.distances, k);
+    std::vector<int> played;
+    for (const auto& call : shown) played.push_back(call[0].toInt());
+    EXPECT_EQ(played, expected);
+    EXPECT_EQ(renderer.animatedMember(), expected.back());
+
+    // With members 1 and 4 selected, only they are played.
+    auto look = renderer.appearances();
+    look[1].selected = look[4].selected = true;
+    renderer.setAppearance(look);
+    bar.stop();
+    EXPECT_EQ(renderer.animatedMember(), -1);
+    bar.setSequence({});
+    shown.clear();
+    bar.step(1);
+    bar.step(1);
+    std::vector<int> selectedOrder;
+    for (const int m : expected)
+        if (m == 1 || m == 4) selectedOrder.push_back(m);
+    ASSERT_EQ(shown.count(), 2);
+    EXPECT_EQ(shown[0][0].toInt(), selectedOrder[0]);
+    EXPECT_EQ(shown[1][0].toInt(), selectedOrder[1]);
+}
