@@ -1,0 +1,211 @@
+// Project files: what is saved comes back, paths travel with the project, bad files are
+// refused with the line or field and the reason, newer formats are refused, and a failed write
+// leaves the previous file as it was.
+#include "app/project.h"
+
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QFile>
+#include <csignal>
+#include <sys/resource.h>
+
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+namespace {
+app::Project sample(const QString& dataFile) {
+    app::Project p;
+    p.data.paths = {dataFile.toStdString()};
+    p.data.variable = "t";
+    p.data.memberDimension = "number";
+    p.data.timeIndex = 2;
+    p.isovalue = 261.5F;
+    p.camera = app::ProjectCamera{-40.0F, 55.0F, 2.25F, {0.4F, 0.3F, 0.05F}, true};
+    p.render.mode = gl::RenderMode::Spaghetti;
+    p.render.thickness = 0.011F;
+    p.render.surfaceAlpha = 0.4F;
+    p.render.showMean = false;
+    p.render.showLegend = false;
+    p.render.removal = true;
+    p.render.removalMin = 1.5F;
+    p.render.removalMax = 7.0F;
+    p.render.groupSize = 3;
+    p.render.plane = gl::CuttingPlane::through({0, 1, 0}, {0.5F, 0.2F, 0.1F});
+    p.render.plane.thickness = 0.006F;
+    p.verticalExaggeration = 4.0F;
+    p.background = {1.0F, 1.0F, 0.9F};
+    p.clusters = 3;
+    p.linkage = "ward";
+    p.hiddenClusters = {2};
+    p.hiddenMembers = {0, 7};
+    p.selection = {3, 4};
+    p.windowState = QByteArray("\x01\x02state", 7);
+    p.windowGeometry = QByteArray("geometry");
+    return p;
+}
+
+QString writeText(const test::TempDir& dir, const char* name, const QByteArray& text) {
+    const QString path = QString::fromStdString(dir.file(name));
+    QFile f(path);
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    return path;
+}
+}  // namespace
+
+TEST(Project, EverythingSavedComesBack) {
+    const test::TempDir dir;
+    const QString data = writeText(dir, "members.nc", "not read here");
+    const QString path = QString::fromStdString(dir.file("session.ensil"));
+    app::saveProject(sample(data), path);
+    const app::Project p = app::loadProject(path);
+    const app::Project e = sample(data);
+    EXPECT_EQ(p.data.paths, e.data.paths);
+    EXPECT_EQ(p.data.variable, "t");
+    EXPECT_EQ(p.data.memberDimension, "number");
+    EXPECT_EQ(p.data.timeIndex, 2u);
+    ASSERT_TRUE(p.isovalue);
+    EXPECT_FLOAT_EQ(*p.isovalue, 261.5F);
+    ASSERT_TRUE(p.camera);
+    EXPECT_FLOAT_EQ(p.camera->azimuth, -40.0F);
+    EXPECT_FLOAT_EQ(p.camera->elevation, 55.0F);
+    EXPECT_FLOAT_EQ(p.camera->distance, 2.25F);
+    EXPECT_FLOAT_EQ(p.camera->target.y, 0.3F);
+    EXPECT_TRUE(p.camera->orthographic);
+    EXPECT_EQ(p.render.mode, gl::RenderMode::Spaghetti);
+    EXPECT_FLOAT_EQ(p.render.thickness, 0.011F);
+    EXPECT_FLOAT_EQ(p.render.surfaceAlpha, 0.4F);
+    EXPECT_FALSE(p.render.showMean);
+    EXPECT_TRUE(p.render.showAxes);
+    EXPECT_FALSE(p.render.showLegend);
+    EXPECT_TRUE(p.render.removal);
+    EXPECT_FLOAT_EQ(p.render.removalMin, 1.5F);
+    EXPECT_FLOAT_EQ(p.render.removalMax, 7.0F);
+    EXPECT_EQ(p.render.groupSize, 3);
+    EXPECT_TRUE(p.render.plane.enabled);
+    EXPECT_FLOAT_EQ(p.render.plane.normal.y, 1.0F);
+    EXPECT_FLOAT_EQ(p.render.plane.offset, 0.2F);
+    EXPECT_FLOAT_EQ(p.render.plane.thickness, 0.006F);
+    EXPECT_FLOAT_EQ(p.verticalExaggeration, 4.0F);
+    EXPECT_FLOAT_EQ(p.background.z, 0.9F);
+    EXPECT_EQ(p.clusters, 3);
+    EXPECT_EQ(p.linkage, "ward");
+    EXPECT_EQ(p.hiddenClusters, e.hiddenClusters);
+    EXPECT_EQ(p.hiddenMembers, e.hiddenMembers);
+    EXPECT_EQ(p.selection, e.selection);
+    EXPECT_EQ(p.windowState, e.windowState);
+    EXPECT_EQ(p.windowGeometry, e.windowGeometry);
+}
+
+TEST(Project, DataPathsAreRelativeSoTheProjectCanMoveWithItsData) {
+    const test::TempDir dir;
+    QDir(QString::fromStdString(dir.path().string())).mkpath("a/data");
+    const QString data = writeText(dir, "a/data/members.nc", "x");
+    const QString path = QString::fromStdString(dir.file("a/session.ensil"));
+    app::saveProject(sample(data), path);
+    QFile saved(path);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(saved.readAll().contains("\"path\": \"data/members.nc\""));
+    // Move the folder: the project finds the data beside it, not at the old absolute path.
+    const QString root = QString::fromStdString(dir.path().string());
+    ASSERT_TRUE(QDir(root).rename("a", "b"));
+    const app::Project moved = app::loadProject(root + "/b/session.ensil");
+    EXPECT_EQ(QString::fromStdString(moved.data.paths.front()), root + "/b/data/members.nc");
+}
+
+TEST(Project, AMinimalFileOpensWithDefaultsForEverythingLeftOut) {
+    const test::TempDir dir;
+    const app::Project p = app::projectFromJson(
+        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {"members": 8}}})",
+        QDir(QString::fromStdString(dir.path().string())));
+    EXPECT_TRUE(p.demo);
+    EXPECT_EQ(p.demoParams.members, 8u);
+    EXPECT_FALSE(p.isovalue);
+    EXPECT_FALSE(p.camera);
+    EXPECT_EQ(p.render.mode, gl::RenderMode::ShadedSilhouettes);
+    EXPECT_EQ(p.clusters, 5);
+}
+
+TEST(Project, ANewerFormatIsRefusedSayingSo) {
+    try {
+        (void)app::projectFromJson(
+            R"({"format": "ensil project", "schema_version": 7, "written_by": "ensil 9.0.0",
+                "data": {"demo": {}}})",
+            QDir::temp());
+        FAIL() << "a newer format must be refused";
+    } catch (const app::ProjectError& e) {
+        EXPECT_TRUE(std::string(e.what()).find("newer ensil (ensil 9.0.0") != std::string::npos)
+            << e.what();
+        EXPECT_TRUE(std::string(e.what()).find("Update ensil") != std::string::npos) << e.what();
+    }
+}
+
+TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
+    const auto error = [](const char* json) -> std::pair<std::string, int> {
+        try {
+            (void)app::projectFromJson(json, QDir::temp());
+        } catch (const app::ProjectError& e) {
+            return {e.what(), e.line()};
+        }
+        return {"accepted", -1};
+    };
+    const auto [syntax, line] =
+        error("{\n  \"format\": \"ensil project\",\n  \"schema_version\": 1\n  \"data\": {}\n}");
+    EXPECT_EQ(line, 4) << syntax;
+    EXPECT_TRUE(syntax.find("line 4") != std::string::npos) << syntax;
+    EXPECT_EQ(error(R"({"format": "something else"})").first.find("not an ensil project") !=
+                  std::string::npos,
+              true);
+    const std::string thickness = error(
+        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "rendering": {"thickness": "thick"}})").first;
+    EXPECT_EQ(thickness, "rendering.thickness must be a number");
+    const std::string band = error(
+        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "rendering": {"removal": {"min": 5, "max": 2}}})").first;
+    EXPECT_EQ(band, "rendering.removal.min must be below max");
+    const std::string members = error(
+        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "members": {"selected": [1, -2]}})").first;
+    EXPECT_EQ(members, "members.selected must be a list of indices (whole numbers from 0)");
+    EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 1, "data": {}})").first,
+              "data.files is missing: name the data files or the demo");
+}
+
+TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {
+    const test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("session.ensil"));
+    app::Project small;
+    small.demo = true;
+    app::saveProject(small, path);
+    QFile before(path);
+    ASSERT_TRUE(before.open(QIODevice::ReadOnly));
+    const QByteArray original = before.readAll();
+    before.close();
+
+    // A disk that fills up: no file may grow past 200 bytes while saving a bigger project.
+    app::Project big = sample(QString::fromStdString(dir.file("members.nc")));
+    big.windowState = QByteArray(4096, 'x');
+    std::signal(SIGXFSZ, SIG_IGN);
+    rlimit previous{};
+    getrlimit(RLIMIT_FSIZE, &previous);
+    rlimit limited = previous;
+    limited.rlim_cur = 200;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+    bool refused = false;
+    try {
+        app::saveProject(big, path);
+    } catch (const app::ProjectError& e) {
+        refused = true;
+        EXPECT_TRUE(std::string(e.what()).find("as it was") != std::string::npos) << e.what();
+    }
+    setrlimit(RLIMIT_FSIZE, &previous);
+    EXPECT_TRUE(refused);
+    QFile after(path);
+    ASSERT_TRUE(after.open(QIODevice::ReadOnly));
+    EXPECT_EQ(after.readAll(), original);
+    EXPECT_EQ(QDir(QString::fromStdString(dir.path().string())).entryList(QDir::Files).size(), 1)
+        << "no temporary file is left behind";
+}
