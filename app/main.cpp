@@ -54,8 +54,12 @@ int main(int argc, char* argv[]) {
     setApplicationIdentity();
     ensil::app::MainWindow window;
     window.show();
-    if (outcome.workbench->selection.paths.empty()) {
+    const auto& paths = outcome.workbench->selection.paths;
+    if (paths.empty()) {
         window.loadDemo();
+    } else if (paths.size() == 1 &&
+               QString::fromStdString(paths.front()).endsWith(QLatin1String(".ensil"))) {
+        window.openProject(QString::fromStdString(paths.front()));
     } else {
         window.openFiles(outcome.workbench->selection);
     }

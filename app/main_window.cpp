@@ -21,6 +21,7 @@
 
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
+#include "app/project_renderer.h"
 #include "app/version.h"
 #include "data/error.h"
 #include "widgets/ensemble_info_panel.h"
@@ -84,6 +85,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
                                   .arg(message));
     });
 
+    m_locateMissingFile = [this](const QString& missing) {
+        return locateMissingFileWithDialog(missing);
+    };
     QSettings settings;
     resize(1400, 900);
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -111,6 +115,8 @@ void MainWindow::createMenus() {
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addAction(tr("Open &Demo Ensemble"), this, [this] { loadDemo(); });
+    file->addSeparator();
+    createProjectActions(file);
     file->addSeparator();
     QAction* screenshot = file->addAction(tr("Save &Screenshot..."), this, [this] {
         const QString path = QFileDialog::getSaveFileName(
@@ -214,10 +220,8 @@ void MainWindow::setIdle(const QString& message) {
 
 void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
     m_requested.reset();
-    const std::string key = "demo members=" + std::to_string(params.members) +
-                            " grid=" + std::to_string(params.nx) + "x" + std::to_string(params.ny) +
-                            "x" + std::to_string(params.nz) +
-                            " seed=" + std::to_string(params.seed);
+    m_requestedDemo = params;
+    const std::string key = demoSourceKey(params);
     startLoading(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
                      .arg(params.members)
                      .arg(params.nx)
@@ -234,6 +238,7 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
                              : tr("%1 files").arg(selection.paths.size());
     rememberRecent(selection);
     m_requested = selection;
+    m_requestedDemo.reset();
     startLoading(tr("Reading %1...").arg(name), data::sourceIdentity(selection),
                  [selection](const std::stop_token& stop, const data::Progress& progress) {
                      return data::openEnsemble(selection, stop, progress);
@@ -311,6 +316,8 @@ void MainWindow::cancelLoading() {
 }
 
 void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
+    const bool retrying = !cancelled && error && m_requested;  // see askForMemberDimension
+    if (!retrying) m_pendingProject.reset();  // a project whose data did not load is not applied
     if (cancelled || !error) {
         setIdle(tr("Loading cancelled"));
         if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
@@ -362,6 +369,9 @@ void MainWindow::askForMemberDimension(const data::Error& error) {
 
 void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_overview = std::move(overview);
+    m_shownSelection = m_requested;
+    m_shownDemo = m_requestedDemo;
+    if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
@@ -373,14 +383,18 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_info->showFacts(describeEnsemble(*m_overview));
     // Show isosurfaces right away, at an isovalue worth looking at.
     const prep::FieldStatistics& stats = m_overview->statistics;
-    const float iso = defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+    float iso = defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+    int clusters = std::min<int>(5, static_cast<int>(e.memberCount()));
+    if (m_pendingProject) {
+        applyPendingProjectView();
+        if (m_pendingProject->isovalue) iso = *m_pendingProject->isovalue;
+        clusters = std::clamp(m_pendingProject->clusters, 1, static_cast<int>(e.memberCount()));
+        m_session->setClusterCount(clusters);
+    }
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
-    m_toolbar->setMemberCount(static_cast<int>(e.memberCount()),
-                              std::min<int>(5, static_cast<int>(e.memberCount())));
+    m_toolbar->setMemberCount(static_cast<int>(e.memberCount()), clusters);
     m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
-    setWindowTitle(QStringLiteral("%1 - %2 - ensil")
-                       .arg(QString::fromStdString(e.variable))
-                       .arg(QString::fromStdString(e.source)));
+    updateWindowTitle();
     setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6")
                 .arg(QString::fromStdString(e.source))
                 .arg(e.memberCount())
@@ -393,8 +407,9 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
 }
 
-bool MainWindow::saveScreenshot(const QString& path, QString* error) {
-    const QImage image = m_view->grabFramebuffer();
+bool MainWindow::saveScreenshot(const QString& path, QString* error, QSize size) {
+    const QImage image =
+        size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
     if (image.isNull() || !image.save(path)) {
         if (error != nullptr) *error = tr("Could not write '%1'.").arg(path);
         return false;

@@ -13,6 +13,7 @@
 
 #include "app/background_job.h"
 #include "app/ensemble_overview.h"
+#include "app/project.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
@@ -58,11 +59,25 @@ public:
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
 
-    // Saves the view (without the UI) as an image; returns false with a message on failure.
-    bool saveScreenshot(const QString& path, QString* error = nullptr);
+    // Saves the view (without the UI) as an image, at the view's size or any other; returns
+    // false with a message on failure.
+    bool saveScreenshot(const QString& path, QString* error = nullptr, QSize size = {});
+
+    // Project files (main_window_project.cpp). Opening validates the whole file first and
+    // changes nothing when it is refused; projectOpened() follows once it is applied.
+    bool openProject(const QString& path);
+    bool saveProjectTo(const QString& path, QString* error = nullptr);
+    [[nodiscard]] Project captureProject() const;
+    [[nodiscard]] QString projectPath() const { return m_projectPath; }
+    // Who is asked where a project's missing data file went (a file dialog by default);
+    // an empty answer cancels opening.
+    void setMissingFileLocator(std::function<QString(const QString&)> locate) {
+        m_locateMissingFile = std::move(locate);
+    }
 
 signals:
     void ensembleLoaded();
+    void projectOpened();
     void loadingFailed(const QString& message);
 
 protected:
@@ -91,6 +106,15 @@ private:
     void showOverview(std::unique_ptr<EnsembleOverview> overview);
     void setBusy(const QString& what);
     void setIdle(const QString& message);
+    void createProjectActions(QMenu* file);
+    void chooseProjectPathAndSave();
+    void saveProjectReporting(const QString& path);
+    QString locateMissingFileWithDialog(const QString& missing);
+    void applyPendingProjectView();
+    void applyPendingProjectMembers();
+    void rememberRecentProject(const QString& path);
+    void rebuildRecentProjectsMenu();
+    void updateWindowTitle();
 
     ui::SilhouetteView* m_view;
     ui::EnsembleInfoPanel* m_info = nullptr;
@@ -109,6 +133,16 @@ private:
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
+    std::optional<data::DemoEnsembleParams> m_requestedDemo;
+    // What is on screen, for the project file.
+    std::optional<data::DataSelection> m_shownSelection;
+    std::optional<data::DemoEnsembleParams> m_shownDemo;
+    // A project being opened: applied when its data has loaded and its surfaces are built.
+    std::unique_ptr<Project> m_pendingProject;
+    QString m_pendingProjectPath;
+    QString m_projectPath;
+    QMenu* m_recentProjectsMenu = nullptr;
+    std::function<QString(const QString&)> m_locateMissingFile;
 };
 
 }  // namespace ensil::app

@@ -17,7 +17,8 @@
 
 #include "app/data_selection_options.h"
 #include "app/generate_command.h"
-#include "app/isovalue_job.h"
+#include "app/project.h"
+#include "app/project_renderer.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
@@ -93,24 +94,6 @@ std::optional<std::vector<float>> parseNumbers(const QString& text, int count) {
     return numbers;
 }
 
-// The offscreen OpenGL 4.1 context everything is drawn in. Throws std::runtime_error.
-class OffscreenContext {
-public:
-    OffscreenContext() {
-        const QSurfaceFormat format = gl::preferredSurfaceFormat(0);
-        m_surface.setFormat(format);
-        m_surface.create();
-        m_context.setFormat(format);
-        if (!m_context.create() || !m_context.makeCurrent(&m_surface)) {
-            throw std::runtime_error("cannot create an OpenGL 4.1 context for rendering");
-        }
-    }
-
-private:
-    QOffscreenSurface m_surface;
-    QOpenGLContext m_context;
-};
-
 }  // namespace
 
 int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -159,116 +142,90 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     } else if (!groupOk || groupSize < 1) {
         problem = QStringLiteral("--group-size must be a positive whole number");
     }
+    const bool fromProject = selection && selection->paths.size() == 1 &&
+                             QString::fromStdString(selection->paths.front())
+                                 .endsWith(QLatin1String(".ensil"));
+    if (fromProject) {
+        // The project defines the picture; only where it goes and how big it is may be given.
+        problem.clear();
+        for (const QCommandLineOption* scene :
+             {&o.iso, &o.mode, &o.clusters, &o.linkage, &o.mean, &o.noMean, &o.thickness,
+              &o.exaggeration, &o.azimuth, &o.elevation, &o.plane, &o.planeThickness, &o.removal,
+              &o.groupSize, &o.demo}) {
+            if (parser.isSet(*scene)) {
+                problem = QStringLiteral("--%1 comes from the project; change it in the "
+                                         "workbench and save the project")
+                              .arg(scene->names().front());
+            }
+        }
+        if (problem.isEmpty() && !parser.isSet(o.output)) {
+            problem = QStringLiteral("say where to write the image with --out FILE.png");
+        } else if (problem.isEmpty() && !parseGridSize(parser.value(o.size) + QStringLiteral("x2"),
+                                                       width, height, ignored)) {
+            problem = QStringLiteral("--size must look like 1600x1000");
+        }
+    }
     if (!problem.isEmpty()) {
         err << "ensil render: " << problem << "\n";
         return 2;
     }
     try {
-        const data::DemoEnsembleParams demoParams;
-        const data::Ensemble ensemble = parser.isSet(o.demo)
-                                            ? data::makeDemoEnsemble(demoParams).ensemble
-                                            : data::openEnsemble(*selection);
-        const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
-        if (iso <= stats.minimum || iso >= stats.maximum) {
-            err << "ensil render: isovalue " << iso << " is outside the values (" << stats.minimum
-                << " .. " << stats.maximum << " " << QString::fromStdString(ensemble.units)
-                << ")\n";
-            return 1;
+        RenderRequest request;
+        request.width = static_cast<int>(width);
+        request.height = static_cast<int>(height);
+        request.frames = frames;
+        request.useCache = !parser.isSet(o.noCache);
+        request.labels = !parser.isSet(o.noLabels);
+        Project project;
+        if (fromProject) {
+            project = loadProject(QString::fromStdString(selection->paths.front()));
+        } else {
+            project.demo = parser.isSet(o.demo);
+            if (!project.demo) project.data = *selection;
+            project.isovalue = iso;
+            project.clusters = parser.value(o.clusters).toInt();
+            project.linkage = parser.value(o.linkage).toLower().toStdString();
+            project.verticalExaggeration = parser.value(o.exaggeration).toFloat();
+            gl::RenderSettings& settings = project.render;
+            settings.mode = *mode;
+            settings.showMean = !parser.isSet(o.noMean);
+            settings.thickness = parser.value(o.thickness).toFloat();
+            settings.groupSize = groupSize;
+            if (removal) {
+                settings.removal = true;
+                settings.removalMin = (*removal)[0];
+                settings.removalMax = (*removal)[1];
+            }
+            if (plane) {
+                settings.plane.enabled = true;
+                settings.plane.thickness = parser.value(o.planeThickness).toFloat();
+                request.planeAcrossBox = glm::vec4((*plane)[0], (*plane)[1], (*plane)[2], (*plane)[3]);
+            }
+            request.azimuth = parser.value(o.azimuth).toFloat();
+            request.elevation = parser.value(o.elevation).toFloat();
         }
-        const int k = std::clamp(parser.value(o.clusters).toInt(), 1,
-                                 static_cast<int>(ensemble.memberCount()));
-        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(ensemble);
-        IsovalueJobInput job;
-        job.ensemble = &ensemble;
-        job.moments = &moments;
-        job.options.isovalue = iso;
-        job.verticalExaggeration = parser.value(o.exaggeration).toFloat();
-        job.linkage = prep::parseLinkage(parser.value(o.linkage).toStdString());
-        if (!parser.isSet(o.noCache)) job.cacheDirectory = defaultMeshCacheDirectory();
-        job.sourceKey = parser.isSet(o.demo)
-                            ? "demo members=" + std::to_string(demoParams.members) +
-                                  " seed=" + std::to_string(demoParams.seed)
-                            : data::sourceIdentity(*selection);
-        IsovalueOutcome outcome = runIsovalueJob(job);
-
-        const OffscreenContext context;
-        QOpenGLFramebufferObject target(static_cast<int>(width), static_cast<int>(height),
-                                        QOpenGLFramebufferObject::CombinedDepthStencil);
-        gl::Renderer renderer;
-        renderer.initialize();
-        renderer.setGrid(ensemble.grid);
-        renderer.setVerticalExaggeration(job.verticalExaggeration);
-        renderer.camera().setAngles(parser.value(o.azimuth).toFloat(),
-                                    parser.value(o.elevation).toFloat());
-        renderer.setFloorMap(
-            gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
-        auto set = std::make_shared<data::MeshSet>();
-        set->isovalue = iso;
-        set->members = std::move(outcome.meshes.members);
-        set->mean = std::move(outcome.meshes.mean);
-        renderer.setMeshes(set);
-        renderer.setAppearance(gl::clusterAppearance(prep::clusterLabels(outcome.tree, k)));
-        gl::RenderSettings& settings = renderer.settings();
-        settings.mode = *mode;
-        settings.showMean = !parser.isSet(o.noMean);
-        settings.thickness = parser.value(o.thickness).toFloat();
-        settings.groupSize = groupSize;
-        if (removal) {
-            settings.removal = true;
-            settings.removalMin = (*removal)[0];
-            settings.removalMax = (*removal)[1];
-        }
-        if (plane) {
-            const data::DisplayFrame& frame = renderer.frame();
-            settings.plane = gl::CuttingPlane::acrossBox({(*plane)[0], (*plane)[1], (*plane)[2]},
-                                                         (*plane)[3], frame.boxMin(),
-                                                         frame.boxMax());
-            settings.plane.thickness = parser.value(o.planeThickness).toFloat();
-        }
-
-        auto* f = QOpenGLContext::currentContext()->functions();
-        std::vector<double> times;
-        for (int i = 0; i < frames; ++i) {
-            QElapsedTimer timer;
-            timer.start();
-            renderer.render(target.handle(), static_cast<int>(width), static_cast<int>(height));
-            f->glFinish();  // count the GPU's work, not only the submission
-            times.push_back(static_cast<double>(timer.nsecsElapsed()) * 1e-6);
-        }
-        std::sort(times.begin(), times.end());
-        QImage image = target.toImage();
-        if (!parser.isSet(o.noLabels)) {
-            QPainter painter(&image);
-            gl::paintOverlay(painter,
-                             renderer.overlay(static_cast<int>(width), static_cast<int>(height)),
-                             1.0);
-        }
-        const std::size_t gpuBytes = renderer.gpuBytes();
-        renderer.releaseGpuResources();
-        if (!image.save(parser.value(o.output))) {
+        const RenderOutcome result = renderProject(project, request);
+        if (!result.image.save(parser.value(o.output))) {
             err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";
             return 1;
         }
-        const double frameMs = times[times.size() / 2];
         if (parser.isSet(o.json)) {
-            const QJsonObject result{{"frame_ms", frameMs},
-                                     {"gpu_bytes", static_cast<qint64>(gpuBytes)},
-                                     {"width", static_cast<qint64>(width)},
-                                     {"height", static_cast<qint64>(height)},
-                                     {"frames", frames},
-                                     {"isovalue", iso},
-                                     {"triangles", static_cast<qint64>(outcome.meshes.triangles)},
-                                     {"members", static_cast<qint64>(ensemble.memberCount())}};
-            out << QJsonDocument(result).toJson(QJsonDocument::Compact) << "\n";
+            const QJsonObject json{{"frame_ms", result.frameMs},
+                                   {"gpu_bytes", static_cast<qint64>(result.gpuBytes)},
+                                   {"width", static_cast<qint64>(width)},
+                                   {"height", static_cast<qint64>(height)},
+                                   {"frames", frames},
+                                   {"isovalue", result.isovalue},
+                                   {"triangles", static_cast<qint64>(result.triangles)},
+                                   {"members", static_cast<qint64>(result.members)}};
+            out << QJsonDocument(json).toJson(QJsonDocument::Compact) << "\n";
         } else {
             out << "wrote " << parser.value(o.output) << ": " << width << " x " << height << ", "
-                << ensemble.memberCount() << " members at " << iso << ", median frame "
-                << QString::number(frameMs, 'f', 1) << " ms over " << frames << " frames\n";
+                << result.members << " members at " << result.isovalue << ", median frame "
+                << QString::number(result.frameMs, 'f', 1) << " ms over " << frames
+                << " frames\n";
         }
         return 0;
-    } catch (const data::Error& e) {
-        err << "ensil render: " << e.what() << "\n";
-        return 1;
     } catch (const std::exception& e) {
         err << "ensil render: " << e.what() << "\n";
         return 1;

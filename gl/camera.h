@@ -24,6 +24,9 @@ public:
 
     void setAngles(float azimuthDeg, float elevationDeg);
     void setProjection(Projection p) { m_projection = p; }
+    // Restores a saved view (after fit, which sets the depth range for the scene).
+    void setTarget(const glm::vec3& target) { m_target = target; }
+    void setDistance(float distance) { m_distance = distance; }
 
     [[nodiscard]] float azimuth() const { return m_azimuth; }
     [[nodiscard]] float elevation() const { return m_elevation; }

@@ -92,6 +92,7 @@ public:
     }
     [[nodiscard]] const std::vector<MemberAppearance>& appearances() const { return m_appearance; }
     [[nodiscard]] RenderSettings& settings() { return m_settings; }
+    [[nodiscard]] const RenderSettings& settings() const { return m_settings; }
     // Bytes of mesh data on the GPU now.
     [[nodiscard]] std::size_t gpuBytes() const;
     void setBackground(const glm::vec4& color) { m_background = color; }

@@ -2,6 +2,7 @@
 
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QPainter>
 #include <QRubberBand>
 #include <QToolTip>
@@ -63,6 +64,23 @@ void SilhouetteView::paintGL() {
     const gl::ViewOverlay overlay = m_renderer.overlay(w, h);
     QPainter painter(this);
     gl::paintOverlay(painter, overlay, ratio);
+}
+
+QImage SilhouetteView::renderImage(const QSize& size) {
+    if (!m_renderer.isInitialized() || size.isEmpty()) return {};
+    makeCurrent();
+    QImage image;
+    {
+        QOpenGLFramebufferObject target(size, QOpenGLFramebufferObject::CombinedDepthStencil);
+        m_renderer.render(target.handle(), size.width(), size.height());
+        image = target.toImage();
+    }
+    // The picks answer for the window's frame, not this one: draw the window's again.
+    doneCurrent();
+    update();
+    QPainter painter(&image);
+    gl::paintOverlay(painter, m_renderer.overlay(size.width(), size.height()), 1.0);
+    return image;
 }
 
 void SilhouetteView::resetCamera() {

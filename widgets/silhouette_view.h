@@ -8,6 +8,7 @@
 // happens when the widget is re-parented (docking, fullscreen), not only in the destructor.
 #pragma once
 
+#include <QImage>
 #include <QList>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -35,6 +36,10 @@ public:
 
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
     void setMemberNames(QStringList names) { m_memberNames = std::move(names); }
+
+    // The picture of the view at any size, without the UI, labels and legend included; null
+    // when OpenGL is not available.
+    [[nodiscard]] QImage renderImage(const QSize& size);
 
     // The member drawn at (or within a few pixels of) a point in widget coordinates, with
     // its cluster; -1 for background. Draws an id pass, so it costs about one frame.

@@ -8,6 +8,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
+#include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/animation_bar.h"
 #include "widgets/silhouette_view.h"
@@ -15,8 +16,7 @@
 using namespace ensil;
 
 TEST(MainWindowAnimation, PlaysTheMembersInClusterThenSimilarityOrder) {
-    const test::TempDir cache;
-    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(cache.path().string()));
+    const test::ScopedCacheHome cache;
     app::MainWindow window;
     window.resize(900, 600);
     window.show();

@@ -7,6 +7,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
@@ -15,8 +16,7 @@
 using namespace ensil;
 
 TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
-    const test::TempDir cache;
-    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(cache.path().string()));
+    const test::ScopedCacheHome cache;
     app::MainWindow window;
     window.resize(1000, 700);
     window.show();

@@ -11,6 +11,7 @@
 
 #include "app/isovalue_session.h"
 #include "tests/support/image_compare.h"
+#include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/render_toolbar.h"
@@ -123,7 +124,7 @@ TEST(MainWindow, AsksWhichDimensionHoldsTheMembersWhenTheFileDoesNotSay) {
 }
 
 TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
-    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(ensil::test::TempDir().path().string()));
+    const ensil::test::ScopedCacheHome cache;
     app::MainWindow window;
     window.resize(900, 600);
     window.show();

@@ -1,0 +1,232 @@
+// Project files in the main window: what a project captures of the session, opening one
+// (validated whole first, missing data files located by the user, then applied once its data
+// has loaded), saving (atomic), and the recent projects menu.
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "app/member_appearance.h"
+#include "app/project.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/render_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+namespace {
+constexpr int kRecentProjects = 10;
+const QString kRecentKey = QStringLiteral("recentProjects");
+const QString kFilter = QStringLiteral("ensil projects (*.ensil)");
+}  // namespace
+
+void MainWindow::createProjectActions(QMenu* file) {
+    // A project's visibility and selection apply to its members once their surfaces are built.
+    connect(m_session, &IsovalueSession::finished, this, &MainWindow::applyPendingProjectMembers);
+    connect(m_session, &IsovalueSession::failed, this, [this] { m_pendingProject.reset(); });
+    file->addAction(tr("Open &Project..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), this,
+                    [this] {
+                        const QString path = QFileDialog::getOpenFileName(
+                            this, tr("Open Project"), QSettings().value("project/lastFolder").toString(),
+                            kFilter);
+                        if (!path.isEmpty()) openProject(path);
+                    });
+    m_recentProjectsMenu = file->addMenu(tr("Recent Projects"));
+    rebuildRecentProjectsMenu();
+    file->addAction(tr("&Save Project"), QKeySequence::Save, this, [this] {
+        if (m_projectPath.isEmpty()) {
+            chooseProjectPathAndSave();
+        } else {
+            saveProjectReporting(m_projectPath);
+        }
+    });
+    file->addAction(tr("Save Project &As..."), QKeySequence::SaveAs, this,
+                    &MainWindow::chooseProjectPathAndSave);
+}
+
+void MainWindow::chooseProjectPathAndSave() {
+    QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Project"),
+        m_projectPath.isEmpty() ? QSettings().value("project/lastFolder").toString() +
+                                      QStringLiteral("/session.ensil")
+                                : m_projectPath,
+        kFilter);
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".ensil");
+    saveProjectReporting(path);
+}
+
+void MainWindow::saveProjectReporting(const QString& path) {
+    QString error;
+    if (!saveProjectTo(path, &error)) QMessageBox::warning(this, tr("Project not saved"), error);
+}
+
+Project MainWindow::captureProject() const {
+    Project p;
+    if (m_shownDemo) {
+        p.demo = true;
+        p.demoParams = *m_shownDemo;
+    } else if (m_shownSelection) {
+        p.data = *m_shownSelection;
+    }
+    gl::Renderer& renderer = m_view->renderer();
+    if (m_session->result() != nullptr) p.isovalue = static_cast<float>(m_toolbar->isovalue());
+    const gl::Camera& camera = renderer.camera();
+    p.camera = ProjectCamera{camera.azimuth(), camera.elevation(), camera.distance(),
+                             camera.target(),
+                             camera.projection() == gl::Camera::Projection::Orthographic};
+    p.render = renderer.settings();
+    p.verticalExaggeration = renderer.frame().verticalExaggeration();
+    const QColor bg = m_renderPanel->background();
+    p.background = {bg.redF(), bg.greenF(), bg.blueF()};
+    p.clusters = m_toolbar->clusterCount();
+    for (std::size_t m = 0; m < renderer.appearances().size(); ++m) {
+        const gl::MemberAppearance& a = renderer.appearances()[m];
+        if (!a.visible) p.hiddenMembers.push_back(static_cast<int>(m));
+        if (a.selected) p.selection.push_back(static_cast<int>(m));
+    }
+    p.windowGeometry = saveGeometry();
+    p.windowState = saveState();
+    return p;
+}
+
+bool MainWindow::saveProjectTo(const QString& path, QString* error) {
+    if (!m_overview) {
+        if (error != nullptr) *error = tr("There is nothing to save yet: load an ensemble first.");
+        return false;
+    }
+    try {
+        saveProject(captureProject(), path);
+    } catch (const ProjectError& e) {
+        if (error != nullptr) *error = QString::fromStdString(e.what());
+        return false;
+    }
+    m_projectPath = path;
+    rememberRecentProject(path);
+    statusBar()->showMessage(tr("Saved the project to %1").arg(path), 4000);
+    updateWindowTitle();
+    return true;
+}
+
+bool MainWindow::openProject(const QString& path) {
+    Project project;
+    try {
+        project = loadProject(path);
+    } catch (const ProjectError& e) {
+        const QString message = QString::fromStdString(e.what());
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the project"),
+                                    message + tr("\n\nNothing was changed."), QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+        emit loadingFailed(message);
+        return false;
+    }
+    // Data files that moved: the user points at them, or nothing changes.
+    for (std::string& file : project.data.paths) {
+        const QString missing = QString::fromStdString(file);
+        if (QFileInfo::exists(missing)) continue;
+        const QString found = m_locateMissingFile ? m_locateMissingFile(missing) : QString();
+        if (found.isEmpty()) {
+            const QString message = tr("The project's data file %1 was not found; opening was "
+                                       "cancelled and nothing changed.")
+                                        .arg(missing);
+            setIdle(message);
+            emit loadingFailed(message);
+            return false;
+        }
+        file = found.toStdString();
+    }
+    QSettings().setValue("project/lastFolder", QFileInfo(path).absolutePath());
+    m_pendingProject = std::make_unique<Project>(project);
+    m_pendingProjectPath = path;
+    if (!project.windowState.isEmpty()) restoreState(project.windowState);
+    if (project.demo) {
+        loadDemo(project.demoParams);
+    } else {
+        openFiles(project.data);
+    }
+    return true;
+}
+
+QString MainWindow::locateMissingFileWithDialog(const QString& missing) {
+    QMessageBox::information(
+        this, tr("Data file not found"),
+        tr("The project's data file\n%1\nis not there any more. Please show where it is now.")
+            .arg(missing));
+    return QFileDialog::getOpenFileName(this, tr("Locate %1").arg(QFileInfo(missing).fileName()),
+                                        QFileInfo(missing).absolutePath());
+}
+
+void MainWindow::applyPendingProjectView() {
+    if (!m_pendingProject) return;
+    const Project& p = *m_pendingProject;
+    gl::Renderer& renderer = m_view->renderer();
+    renderer.setVerticalExaggeration(p.verticalExaggeration);
+    m_renderPanel->setVerticalExaggeration(p.verticalExaggeration);
+    renderer.settings() = p.render;
+    m_renderPanel->setSettings(p.render);
+    m_renderPanel->setBackground(QColor::fromRgbF(p.background.r, p.background.g, p.background.b));
+    renderer.setBackground({p.background, 1.0F});
+    if (p.camera) {
+        gl::Camera& camera = renderer.camera();
+        camera.setAngles(p.camera->azimuth, p.camera->elevation);
+        camera.setTarget(p.camera->target);
+        camera.setDistance(p.camera->distance);
+        camera.setProjection(p.camera->orthographic ? gl::Camera::Projection::Orthographic
+                                                    : gl::Camera::Projection::Perspective);
+        m_renderPanel->setOrthographic(p.camera->orthographic);
+    }
+    updatePlaneBox();
+    m_planePanel->setPlane(p.render.plane);
+    renderer.settings().plane = p.render.plane;
+}
+
+void MainWindow::applyPendingProjectMembers() {
+    if (!m_pendingProject) return;
+    const Project p = *m_pendingProject;
+    m_pendingProject.reset();
+    m_view->renderer().setAppearance(memberAppearance(m_session->labels(), p));
+    m_view->update();
+    m_projectPath = m_pendingProjectPath;
+    rememberRecentProject(m_projectPath);
+    updateWindowTitle();
+    emit projectOpened();
+}
+
+void MainWindow::rememberRecentProject(const QString& path) {
+    QSettings settings;
+    QStringList recent = settings.value(kRecentKey).toStringList();
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    recent.removeAll(absolute);
+    recent.prepend(absolute);
+    while (recent.size() > kRecentProjects) recent.removeLast();
+    settings.setValue(kRecentKey, recent);
+    rebuildRecentProjectsMenu();
+}
+
+void MainWindow::rebuildRecentProjectsMenu() {
+    if (m_recentProjectsMenu == nullptr) return;
+    m_recentProjectsMenu->clear();
+    const QStringList recent = QSettings().value(kRecentKey).toStringList();
+    for (const QString& path : recent) {
+        m_recentProjectsMenu->addAction(QFileInfo(path).fileName() + QStringLiteral("  (") +
+                                            QFileInfo(path).absolutePath() + QLatin1Char(')'),
+                                        this, [this, path] { openProject(path); });
+    }
+    m_recentProjectsMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::updateWindowTitle() {
+    if (!m_overview) return;
+    const data::Ensemble& e = *m_overview->ensemble;
+    QString title = QStringLiteral("%1 - %2").arg(QString::fromStdString(e.variable),
+                                                   QString::fromStdString(e.source));
+    if (!m_projectPath.isEmpty()) title = QFileInfo(m_projectPath).fileName() + " - " + title;
+    setWindowTitle(title + QStringLiteral(" - ensil"));
+}
+
+}  // namespace ensil::app

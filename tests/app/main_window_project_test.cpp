@@ -1,0 +1,177 @@
+// Projects in the workbench: a saved session comes back as it was, the headless renderer draws
+// a project as the workbench shows it, a refused project changes nothing, and a moved data
+// file is located by the user.
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTextStream>
+
+#include "app/command_line.h"
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/scoped_cache_home.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/render_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+namespace {
+constexpr data::DemoEnsembleParams kSmallDemo{.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5};
+
+class ProjectWindow : public ::testing::Test {
+protected:
+    // A window showing something: waits until its surfaces are built.
+    static void waitBuilt(app::MainWindow& window, const std::function<void()>& start) {
+        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+        start();
+        ASSERT_TRUE(built.wait(60000)) << "no surfaces were built";
+    }
+    static void show(app::MainWindow& window) {
+        window.resize(900, 600);
+        window.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    }
+    test::ScopedCacheHome m_cache;
+    test::TempDir m_dir;
+};
+}  // namespace
+
+TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
+    const QString path = QString::fromStdString(m_dir.file("demo.ensil"));
+    gl::RenderSettings saved;
+    gl::Camera savedCamera;
+    {
+        app::MainWindow window;
+        show(window);
+        waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+        gl::Renderer& r = window.view()->renderer();
+        window.renderPanel()->setMode(gl::RenderMode::Spaghetti);
+        r.camera().orbit(40.0F, -25.0F);
+        r.camera().zoom(1.3F);
+        window.cuttingPlanePanel()->setOrientation(ui::CuttingPlanePanel::AlongY);
+        window.cuttingPlanePanel()->setPosition(0.25);
+        window.cuttingPlanePanel()->setCutting(true);
+        saved = r.settings();
+        savedCamera = r.camera();
+        QString error;
+        ASSERT_TRUE(window.saveProjectTo(path, &error)) << error.toStdString();
+        EXPECT_TRUE(window.windowTitle().startsWith("demo.ensil")) << window.windowTitle().toStdString();
+    }
+    app::MainWindow window;
+    show(window);
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    ASSERT_TRUE(window.openProject(path));
+    ASSERT_TRUE(opened.wait(60000));
+    const gl::Renderer& r = window.view()->renderer();
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), kSmallDemo.members);
+    EXPECT_EQ(r.settings().mode, gl::RenderMode::Spaghetti);
+    EXPECT_TRUE(r.settings().plane.enabled);
+    EXPECT_NEAR(r.settings().plane.offset, saved.plane.offset, 1e-5F);
+    EXPECT_FLOAT_EQ(r.settings().plane.normal.y, 1.0F);
+    EXPECT_NEAR(r.camera().azimuth(), savedCamera.azimuth(), 1e-4F);
+    EXPECT_NEAR(r.camera().elevation(), savedCamera.elevation(), 1e-4F);
+    EXPECT_NEAR(r.camera().distance(), savedCamera.distance(), 1e-5F);
+    EXPECT_EQ(window.projectPath(), path);
+    EXPECT_NEAR(window.cuttingPlanePanel()->position(), 0.25, 1e-3);
+}
+
+TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
+    const QString path = QString::fromStdString(m_dir.file("same.ensil"));
+    app::MainWindow window;
+    show(window);
+    waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+    window.view()->renderer().camera().orbit(-30.0F, 10.0F);
+    window.cuttingPlanePanel()->setOrientation(ui::CuttingPlanePanel::AlongX);
+    window.cuttingPlanePanel()->setPosition(-0.1);
+    window.cuttingPlanePanel()->setCutting(true);
+    ASSERT_TRUE(window.saveProjectTo(path));
+    const QString shown = QString::fromStdString(m_dir.file("workbench.png"));
+    ASSERT_TRUE(window.saveScreenshot(shown, nullptr, QSize(480, 320)));
+
+    const QString rendered = QString::fromStdString(m_dir.file("render.png"));
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    const int code =
+        app::runCommandLine({"ensil", "render", path, "--out", rendered, "--size", "480x320"}, out, err)
+            .exitCode;
+    err.flush();
+    ASSERT_EQ(code, 0) << errText.toStdString();
+    const QImage a(shown), b(rendered);
+    ASSERT_EQ(a.size(), QSize(480, 320));
+    ASSERT_EQ(b.size(), a.size());
+    QImage diff;
+    EXPECT_LT(test::differingFraction(a, b, 8, &diff), 0.001);
+    a.save(test::testOutputDir() + "/project_workbench.png");
+    b.save(test::testOutputDir() + "/project_render.png");
+
+    // Scene options cannot override the project.
+    outText.clear();
+    errText.clear();
+    EXPECT_EQ(app::runCommandLine({"ensil", "render", path, "--out", rendered, "--mode", "opaque"},
+                                  out, err)
+                  .exitCode,
+              2);
+    err.flush();
+    EXPECT_TRUE(errText.contains("--mode comes from the project")) << errText.toStdString();
+}
+
+TEST_F(ProjectWindow, ARefusedProjectChangesNothing) {
+    app::MainWindow window;
+    show(window);
+    waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+    const auto before = window.view()->renderer().settings();
+    const QString path = QString::fromStdString(m_dir.file("broken.ensil"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+                "rendering": {"mode": "shaded", "thickness": -3}})");
+    f.close();
+    QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
+    EXPECT_FALSE(window.openProject(path));
+    ASSERT_EQ(failed.count(), 1);
+    EXPECT_TRUE(failed[0][0].toString().contains("rendering.thickness must lie between"))
+        << failed[0][0].toString().toStdString();
+    EXPECT_FALSE(window.isLoading());
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), kSmallDemo.members);
+    EXPECT_FLOAT_EQ(window.view()->renderer().settings().thickness, before.thickness);
+}
+
+TEST_F(ProjectWindow, AMovedDataFileIsLocatedByTheUser) {
+    // A real file saved in a project, then moved where the project cannot find it.
+    const QString original = QString::fromStdString(m_dir.file("era5.nc"));
+    ASSERT_TRUE(QFile::copy(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", original));
+    const QString path = QString::fromStdString(m_dir.file("era5.ensil"));
+    {
+        app::MainWindow window;
+        show(window);
+        data::DataSelection selection;
+        selection.paths = {original.toStdString()};
+        selection.variable = "t";
+        waitBuilt(window, [&] { window.openFiles(selection); });
+        ASSERT_TRUE(window.saveProjectTo(path));
+    }
+    const QString moved = QString::fromStdString(m_dir.file("elsewhere.nc"));
+    ASSERT_TRUE(QFile::rename(original, moved));
+
+    app::MainWindow window;
+    show(window);
+    QStringList asked;
+    window.setMissingFileLocator([&](const QString& missing) {
+        asked << missing;
+        return asked.size() == 1 ? QString() : moved;  // first: the user cancels
+    });
+    EXPECT_FALSE(window.openProject(path)) << "cancelled: nothing is opened";
+    EXPECT_FALSE(window.isLoading());
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    EXPECT_TRUE(window.openProject(path));
+    ASSERT_TRUE(opened.wait(60000));
+    ASSERT_EQ(asked.size(), 2);
+    EXPECT_EQ(asked[0], original);
+    EXPECT_EQ(window.overview()->ensemble->variable, "t");
+}
