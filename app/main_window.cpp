@@ -21,9 +21,11 @@
 
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
+#include "app/open_data_flow.h"
 #include "app/version.h"
 #include "data/error.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
@@ -267,9 +269,13 @@ void MainWindow::chooseFiles() {
            "All files (*)"));
     if (files.isEmpty()) return;
     settings.setValue(QStringLiteral("open/lastFolder"), QFileInfo(files.front()).absolutePath());
-    data::DataSelection selection;
-    for (const QString& f : files) selection.paths.push_back(f.toStdString());
-    openFiles(selection);
+    chooseData(files);
+}
+
+ui::OpenDataDialog* MainWindow::chooseData(const QStringList& files) {
+    ui::OpenDataDialog* dialog = showOpenDataDialog(files, this);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { openFiles(dialog->selection()); });
+    return dialog;
 }
 
 void MainWindow::rememberRecent(const data::DataSelection& selection) {
@@ -376,6 +382,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_toolbar->setMemberCount(static_cast<int>(e.memberCount()),
                               std::min<int>(5, static_cast<int>(e.memberCount())));
     m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
+    m_toolbar->setIsovalueHistogram(stats.histogram);
     setWindowTitle(QStringLiteral("%1 - %2 - ensil")
                        .arg(QString::fromStdString(e.variable))
                        .arg(QString::fromStdString(e.source)));

@@ -25,6 +25,7 @@ namespace ensil::ui {
 class SilhouetteView;
 class EnsembleInfoPanel;
 class RenderToolbar;
+class OpenDataDialog;
 }  // namespace ensil::ui
 
 namespace ensil::app {
@@ -41,6 +42,9 @@ public:
     // ensemble on screen stays until the new one is ready, and stays if loading fails.
     void loadDemo(const data::DemoEnsembleParams& params = {});
     void openFiles(const data::DataSelection& selection);
+    // Shows what the files hold (variables, member dimension, time index) and opens them with
+    // the user's choices when the dialog is accepted. The dialog deletes itself when closed.
+    ui::OpenDataDialog* chooseData(const QStringList& files);
     void cancelLoading();
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
