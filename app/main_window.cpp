@@ -22,6 +22,7 @@
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
+#include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
 #include "widgets/ensemble_info_panel.h"
@@ -279,36 +280,19 @@ ui::OpenDataDialog* MainWindow::chooseData(const QStringList& files) {
 }
 
 void MainWindow::rememberRecent(const data::DataSelection& selection) {
-    QStringList entry;
-    for (const auto& p : selection.paths) {
-        entry << QFileInfo(QString::fromStdString(p)).absoluteFilePath();
-    }
     QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    const QString key = entry.join(QLatin1Char('\n'));
-    recent.removeAll(key);
-    recent.prepend(key);
-    while (recent.size() > 10) recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
+    rememberSelection(settings, selection);
     rebuildRecentMenu();
 }
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& key : recent) {
-        const QStringList paths = key.split(QLatin1Char('\n'));
-        const QString label = paths.size() == 1 ? paths.front()
-                                                : tr("%1 files in %2")
-                                                      .arg(paths.size())
-                                                      .arg(QFileInfo(paths.front()).absolutePath());
-        m_recentMenu->addAction(label, this, [this, paths] {
-            data::DataSelection selection;
-            for (const QString& p : paths) selection.paths.push_back(p.toStdString());
-            openFiles(selection);
-        });
+    const std::vector<RecentSelection> recent = recentSelections(QSettings());
+    for (const RecentSelection& entry : recent) {
+        m_recentMenu->addAction(entry.label, this,
+                                [this, selection = entry.selection] { openFiles(selection); });
     }
-    m_recentMenu->setEnabled(!recent.isEmpty());
+    m_recentMenu->setEnabled(!recent.empty());
 }
 
 void MainWindow::cancelLoading() {
