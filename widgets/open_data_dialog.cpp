@@ -51,6 +51,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     m_timeIndex->setKeyboardTracking(false);
     m_timeIndex->setToolTip(
         tr("Index taken along every other non-spatial dimension, such as time"));
+    m_details->setObjectName(QStringLiteral("openDataDetails"));
     m_details->setWordWrap(true);
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_error->setObjectName(QStringLiteral("openDataError"));

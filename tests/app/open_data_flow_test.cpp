@@ -47,6 +47,8 @@ TEST(OpenDataFlow, ChoosesVariableAndTimeIndexThenLoadsThem) {
     EXPECT_EQ(itemNamed(list, "t")->text(3), "Temperature");
     EXPECT_TRUE(dialog->memberDimensionBox()->currentText().startsWith("number"));
     EXPECT_EQ(dialog->timeIndexBox()->maximum(), 3);
+    QTest::qWait(50);  // let the layout follow the new details before the picture is taken
+    dialog->grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/open_data_dialog.png"));
 
     list->setCurrentItem(itemNamed(list, "t"));
     ASSERT_TRUE(waitForProbe(dialog));

@@ -80,6 +80,11 @@ TEST(OpenDataDialog, ListsTheVariablesAndOffersTheDetectedChoices) {
 
     EXPECT_TRUE(dialog.timeIndexBox()->isEnabled());
     EXPECT_EQ(dialog.timeIndexBox()->maximum(), 3);
+    const QString details = dialog.findChild<QLabel*>("openDataDetails")->text();
+    EXPECT_TRUE(details.contains("10 members of t on a 120 x 61 x 2 grid"))
+        << details.toStdString();
+    EXPECT_TRUE(details.contains("Fixed: time = 0 of 4 (2017-01-01T00:00)"))
+        << details.toStdString();
     EXPECT_TRUE(okButton(dialog)->isEnabled());
     const data::DataSelection chosen = dialog.selection();
     EXPECT_EQ(chosen.variable, "t");
