@@ -122,3 +122,17 @@ TEST(DataProbe, AMissingFileIsNamed) {
     const ui::DataProbe probe = app::probeData(selection);
     EXPECT_TRUE(probe.error.contains("/nonexistent/run_01.nc")) << probe.error.toStdString();
 }
+
+TEST(DataProbe, VtkFilesAreOneMemberEachWithNothingToChooseAlong) {
+    data::DataSelection selection = fileSelection("ironProt.vtk");
+    selection.paths.push_back(selection.paths.front());
+    const ui::DataProbe probe = app::probeData(selection);
+    ASSERT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
+    EXPECT_EQ(probe.format, "VTK legacy");
+    EXPECT_EQ(probe.variable, "scalars");
+    EXPECT_EQ(probe.members, 2);
+    EXPECT_TRUE(probe.memberDimension.isEmpty());
+    EXPECT_TRUE(probe.memberDimensionChoices.isEmpty()) << "z, y and x are the grid's axes";
+    EXPECT_EQ(probe.timeSteps, 0);
+    EXPECT_EQ(probe.grid, "68 x 68 x 68");
+}
