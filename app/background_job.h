@@ -1,10 +1,12 @@
 // Runs one job at a time on Qt's thread pool and hands its result back on the GUI thread. A
 // job is a function (stop token, progress) -> T that captures its inputs by value. Starting a
 // new job cancels the running one and drops its result (the user changed the isovalue
-// meanwhile); cancel() asks the running job to stop. Callbacks run on the GUI thread, through
+// meanwhile); cancel() asks the running job to stop. Jobs run at a lower priority than the GUI
+// thread (app/worker_priority.h). Callbacks run on the GUI thread, through
 // QFutureWatcher's queued signals. GUI thread only; wait() before destroying what callbacks use.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QPromise>
 #include <QtConcurrent/QtConcurrentRun>
@@ -13,6 +15,7 @@
 #include <memory>
 #include <stop_token>
 
+#include "app/worker_priority.h"
 #include "data/job.h"
 
 namespace ensil::app {
@@ -25,11 +28,15 @@ public:
     using Failed = std::function<void(std::exception_ptr error, bool cancelled)>;
     using Progressed = std::function<void(double)>;
     static constexpr int kSteps = 1000;
+    // A progress bar step repaints the whole window, tens of ms with a software OpenGL; Qt
+    // reports up to 25 steps a second, which kept the GUI thread busy most of the time.
+    static constexpr int kProgressIntervalMs = 200;
 
     explicit BackgroundJob(QObject* context) {
         QObject::connect(&m_watcher, &QFutureWatcher<T>::progressValueChanged, context,
                          [this](int value) {
-                             if (m_progressed) m_progressed(static_cast<double>(value) / kSteps);
+                             if (!m_progressed || !progressDue()) return;
+                             m_progressed(static_cast<double>(value) / kSteps);
                          });
         QObject::connect(&m_watcher, &QFutureWatcher<T>::finished, context, [this] { finish(); });
     }
@@ -48,6 +55,7 @@ public:
         auto stop = std::make_shared<std::stop_source>();
         m_stop = stop;
         m_watcher.setFuture(QtConcurrent::run([work = std::move(work), stop](QPromise<T>& promise) {
+            lowerThisThreadPriority();  // the GUI thread must not wait for a core
             promise.setProgressRange(0, kSteps);
             promise.addResult(work(stop->get_token(), [&promise](double f) {
                 promise.setProgressValue(static_cast<int>(f * kSteps));
@@ -68,6 +76,15 @@ public:
     }
 
 private:
+    // True at most once every kProgressIntervalMs.
+    bool progressDue() {
+        if (m_progressClock.isValid() && m_progressClock.elapsed() < kProgressIntervalMs) {
+            return false;
+        }
+        m_progressClock.start();
+        return true;
+    }
+
     void finish() {
         QFuture<T> future = m_watcher.future();
         const bool cancelled = m_stop && m_stop->stop_requested();
@@ -88,6 +105,7 @@ private:
     Done m_done;
     Failed m_failed;
     Progressed m_progressed;
+    QElapsedTimer m_progressClock;
 };
 
 }  // namespace ensil::app

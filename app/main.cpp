@@ -10,6 +10,7 @@
 #include "app/command_line.h"
 #include "app/main_window.h"
 #include "app/version.h"
+#include "app/workbench_surface_format.h"
 #include "gl/surface_format.h"
 
 namespace {
@@ -49,7 +50,7 @@ int main(int argc, char* argv[]) {
     if (!outcome.workbench) return outcome.exitCode;
 
     // The default format must be set before the QApplication exists.
-    QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());
     QApplication app(argc, argv);
     setApplicationIdentity();
     ensil::app::MainWindow window;

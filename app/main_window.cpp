@@ -22,9 +22,12 @@
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
 #include "app/project_renderer.h"
+#include "app/open_data_flow.h"
+#include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
@@ -272,42 +275,29 @@ void MainWindow::chooseFiles() {
            "All files (*)"));
     if (files.isEmpty()) return;
     settings.setValue(QStringLiteral("open/lastFolder"), QFileInfo(files.front()).absolutePath());
-    data::DataSelection selection;
-    for (const QString& f : files) selection.paths.push_back(f.toStdString());
-    openFiles(selection);
+    chooseData(files);
+}
+
+ui::OpenDataDialog* MainWindow::chooseData(const QStringList& files) {
+    ui::OpenDataDialog* dialog = showOpenDataDialog(files, this);
+    connect(dialog, &QDialog::accepted, this, [this, dialog] { openFiles(dialog->selection()); });
+    return dialog;
 }
 
 void MainWindow::rememberRecent(const data::DataSelection& selection) {
-    QStringList entry;
-    for (const auto& p : selection.paths) {
-        entry << QFileInfo(QString::fromStdString(p)).absoluteFilePath();
-    }
     QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    const QString key = entry.join(QLatin1Char('\n'));
-    recent.removeAll(key);
-    recent.prepend(key);
-    while (recent.size() > 10) recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
+    rememberSelection(settings, selection);
     rebuildRecentMenu();
 }
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& key : recent) {
-        const QStringList paths = key.split(QLatin1Char('\n'));
-        const QString label = paths.size() == 1 ? paths.front()
-                                                : tr("%1 files in %2")
-                                                      .arg(paths.size())
-                                                      .arg(QFileInfo(paths.front()).absolutePath());
-        m_recentMenu->addAction(label, this, [this, paths] {
-            data::DataSelection selection;
-            for (const QString& p : paths) selection.paths.push_back(p.toStdString());
-            openFiles(selection);
-        });
+    const std::vector<RecentSelection> recent = recentSelections(QSettings());
+    for (const RecentSelection& entry : recent) {
+        m_recentMenu->addAction(entry.label, this,
+                                [this, selection = entry.selection] { openFiles(selection); });
     }
-    m_recentMenu->setEnabled(!recent.isEmpty());
+    m_recentMenu->setEnabled(!recent.empty());
 }
 
 void MainWindow::cancelLoading() {
@@ -394,6 +384,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
     m_toolbar->setMemberCount(static_cast<int>(e.memberCount()), clusters);
     m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
+    m_toolbar->setIsovalueHistogram(stats.histogram);
     updateWindowTitle();
     setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6")
                 .arg(QString::fromStdString(e.source))

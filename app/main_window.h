@@ -31,6 +31,7 @@ class RenderToolbar;
 class RenderPanel;
 class CuttingPlanePanel;
 class AnimationBar;
+class OpenDataDialog;
 }  // namespace ensil::ui
 
 namespace ensil::app {
@@ -47,6 +48,9 @@ public:
     // ensemble on screen stays until the new one is ready, and stays if loading fails.
     void loadDemo(const data::DemoEnsembleParams& params = {});
     void openFiles(const data::DataSelection& selection);
+    // Shows what the files hold (variables, member dimension, time index) and opens them with
+    // the user's choices when the dialog is accepted. The dialog deletes itself when closed.
+    ui::OpenDataDialog* chooseData(const QStringList& files);
     void cancelLoading();
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }

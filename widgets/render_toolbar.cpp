@@ -6,13 +6,15 @@
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSpinBox>
-#include <cmath>
+#include <algorithm>
+
+#include "widgets/isovalue_control.h"
 
 namespace ensil::ui {
 
 RenderToolbar::RenderToolbar(QWidget* parent)
     : QToolBar(tr("Rendering"), parent),
-      m_isovalue(new QDoubleSpinBox(this)),
+      m_isovalue(new IsovalueControl(this)),
       m_mode(new QComboBox(this)),
       m_thickness(new QDoubleSpinBox(this)),
       m_clusters(new QSpinBox(this)),
@@ -20,11 +22,7 @@ RenderToolbar::RenderToolbar(QWidget* parent)
       m_exaggeration(new QDoubleSpinBox(this)) {
     setObjectName(QStringLiteral("renderToolbar"));
     addWidget(new QLabel(tr(" Isovalue "), this));
-    // Preprocessing starts when the user commits a value, not on every keystroke.
-    m_isovalue->setKeyboardTracking(false);
-    m_isovalue->setMinimumWidth(120);
-    m_isovalue->setToolTip(tr("The isovalue whose surfaces are drawn (Enter to apply)"));
-    m_isovalue->setEnabled(false);
+    m_isovalue->setMinimumWidth(320);
     addWidget(m_isovalue);
     addSeparator();
     m_mode->addItems({tr("Shaded silhouettes"), tr("3D spaghetti plot"), tr("Transparent surfaces"),
@@ -58,7 +56,8 @@ RenderToolbar::RenderToolbar(QWidget* parent)
 
     connect(m_exaggeration, &QDoubleSpinBox::valueChanged, this,
             &RenderToolbar::verticalExaggerationChanged);
-    connect(m_isovalue, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::isovalueChanged);
+    // Preprocessing starts when the user commits a value, not on every keystroke or drag step.
+    connect(m_isovalue, &IsovalueControl::isovalueChanged, this, &RenderToolbar::isovalueChanged);
     connect(m_mode, &QComboBox::currentIndexChanged, this, &RenderToolbar::modeChanged);
     connect(m_thickness, &QDoubleSpinBox::valueChanged, this, &RenderToolbar::thicknessChanged);
     connect(m_clusters, &QSpinBox::valueChanged, this, &RenderToolbar::clusterCountChanged);
@@ -67,16 +66,11 @@ RenderToolbar::RenderToolbar(QWidget* parent)
 
 void RenderToolbar::setIsovalueRange(double minimum, double maximum, double value,
                                      const QString& units) {
-    const QSignalBlocker block(m_isovalue);
-    const double span = std::max(maximum - minimum, 1e-12);
-    // Enough decimals to step through 1/1000 of the range.
-    const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(span / 1000.0))), 0, 6);
-    m_isovalue->setDecimals(decimals);
-    m_isovalue->setRange(minimum, maximum);
-    m_isovalue->setSingleStep(span / 100.0);
-    m_isovalue->setSuffix(units.isEmpty() ? QString() : QLatin1Char(' ') + units);
-    m_isovalue->setValue(value);
-    m_isovalue->setEnabled(true);
+    m_isovalue->setRange(minimum, maximum, value, units);
+}
+
+void RenderToolbar::setIsovalueHistogram(std::vector<std::uint64_t> counts) {
+    m_isovalue->setHistogram(std::move(counts));
 }
 
 void RenderToolbar::setMemberCount(int members, int clusters) {
@@ -91,6 +85,7 @@ void RenderToolbar::setThickness(double tau) {
 }
 
 double RenderToolbar::isovalue() const { return m_isovalue->value(); }
+QDoubleSpinBox* RenderToolbar::isovalueBox() const { return m_isovalue->spinBox(); }
 int RenderToolbar::clusterCount() const { return m_clusters->value(); }
 
 }  // namespace ensil::ui

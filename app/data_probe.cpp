@@ -1,0 +1,123 @@
+#include "app/data_probe.h"
+
+#include <QObject>
+#include <algorithm>
+#include <limits>
+
+#include "data/error.h"
+
+namespace ensil::app {
+namespace {
+
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+QString dimensionsText(const data::VariableInfo& v) {
+    QStringList dims;
+    for (std::size_t i = 0; i < v.dimensions.size(); ++i) {
+        dims << (i < v.shape.size()
+                     ? QStringLiteral("%1=%2").arg(qs(v.dimensions[i])).arg(v.shape[i])
+                     : qs(v.dimensions[i]));
+    }
+    return dims.join(QStringLiteral(", "));
+}
+
+bool isAxis(const data::Grid& grid, const std::string& dimension) {
+    for (int a = 0; a < 3; ++a) {
+        if (grid.axis(a).name == dimension) return true;
+    }
+    return false;
+}
+
+// The readers describe each fixed dimension as "time = 0 of 4 (2017-01-01T00:00)".
+bool isFixed(const data::EnsembleDescription& d, const std::string& dimension) {
+    return std::any_of(
+        d.fixedDimensions.begin(), d.fixedDimensions.end(),
+        [&](const std::string& line) { return line.starts_with(dimension + " = "); });
+}
+
+// The candidates for the member dimension (the chosen variable's non-spatial dimensions) and
+// how many time indices there are to choose from (the same index is taken along every fixed
+// dimension, so the shortest one bounds it).
+void fillChoices(ui::DataProbe& probe, const data::EnsembleDescription& d) {
+    const auto chosen =
+        std::find_if(d.variables.begin(), d.variables.end(),
+                     [&](const data::VariableInfo& v) { return v.name == d.variable; });
+    if (chosen == d.variables.end()) return;
+    std::size_t steps = std::numeric_limits<std::size_t>::max();
+    for (std::size_t i = 0; i < chosen->dimensions.size(); ++i) {
+        const std::string& dim = chosen->dimensions[i];
+        if (isAxis(d.grid, dim)) continue;
+        probe.memberDimensionChoices << qs(dim);
+        if (isFixed(d, dim) && i < chosen->shape.size()) steps = std::min(steps, chosen->shape[i]);
+    }
+    if (steps != std::numeric_limits<std::size_t>::max()) probe.timeSteps = static_cast<int>(steps);
+}
+
+void fill(ui::DataProbe& probe, const data::EnsembleDescription& d) {
+    probe.format = qs(d.format);
+    for (const data::VariableInfo& v : d.variables) {
+        probe.variables.push_back({.name = qs(v.name),
+                                   .dimensions = dimensionsText(v),
+                                   .units = qs(v.units),
+                                   .longName = qs(v.longName),
+                                   .usable = v.usable,
+                                   .whyNotUsable = qs(v.whyNotUsable)});
+    }
+    probe.variable = qs(d.variable);
+    probe.memberDimension = qs(d.memberDimension);
+    probe.memberDimensionReason = qs(d.memberDimensionReason);
+    probe.members = static_cast<int>(d.members);
+    probe.grid = QStringLiteral("%1 x %2 x %3").arg(d.grid.nx()).arg(d.grid.ny()).arg(d.grid.nz());
+    for (const std::string& f : d.fixedDimensions) probe.fixedDimensions << qs(f);
+    fillChoices(probe, d);
+}
+
+// The file holds no dimension ensil recognises as members: list its variables anyway (as if
+// the first candidate held them) and leave the choice to the user.
+ui::DataProbe probeWithoutMemberDimension(const data::DataSelection& selection,
+                                          const data::Error& error) {
+    ui::DataProbe probe;
+    data::DataSelection guess = selection;
+    guess.memberDimension = error.choices().front();
+    try {
+        fill(probe, data::describeEnsemble(guess));
+    } catch (const std::exception&) {
+        probe = {};  // the variables stay unlisted; the error below still says what to do
+    }
+    probe.memberDimension.clear();
+    probe.memberDimensionReason.clear();
+    probe.members = 0;
+    probe.memberDimensionChoices.clear();
+    for (const std::string& c : error.choices()) probe.memberDimensionChoices << qs(c);
+    probe.error = qs(error.what()) + QLatin1Char('\n') +
+                  QObject::tr("Choose the dimension that holds the members above.");
+    return probe;
+}
+
+}  // namespace
+
+ui::DataProbe probeData(const data::DataSelection& selection) {
+    try {
+        ui::DataProbe probe;
+        fill(probe, data::describeEnsemble(selection));
+        return probe;
+    } catch (const data::Error& e) {
+        if (e.kind() == data::ErrorKind::MemberDimensionNotFound && !e.choices().empty() &&
+            selection.memberDimension.empty()) {
+            return probeWithoutMemberDimension(selection, e);
+        }
+        ui::DataProbe probe;
+        probe.error = qs(e.what());
+        return probe;
+    } catch (const std::bad_alloc&) {
+        ui::DataProbe probe;
+        probe.error = QObject::tr("not enough memory to read the file headers");
+        return probe;
+    } catch (const std::exception& e) {
+        ui::DataProbe probe;
+        probe.error = QObject::tr("the file headers could not be read: %1").arg(e.what());
+        return probe;
+    }
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,60 @@
+#include "app/recent_selections.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+namespace {
+data::DataSelection selectionOf(std::vector<std::string> paths, std::string variable = {},
+                                std::string memberDimension = {}, std::size_t timeIndex = 0) {
+    data::DataSelection s;
+    s.paths = std::move(paths);
+    s.variable = std::move(variable);
+    s.memberDimension = std::move(memberDimension);
+    s.timeIndex = timeIndex;
+    return s;
+}
+}  // namespace
+
+TEST(RecentSelections, KeepTheChoicesNewestFirstAndWithoutDuplicates) {
+    test::TempDir dir;
+    QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
+    app::rememberSelection(settings, selectionOf({"/data/a.nc"}, "t", "", 2));
+    app::rememberSelection(settings, selectionOf({"/data/runs/1.vti", "/data/runs/2.vti"}));
+    app::rememberSelection(settings, selectionOf({"/data/c.cdf"}, "T", "frtime", 0));
+    app::rememberSelection(settings, selectionOf({"/data/a.nc"}, "z", "time", 1));
+
+    const auto recent = app::recentSelections(settings);
+    ASSERT_EQ(recent.size(), 3u);
+    EXPECT_EQ(recent[0].label, "/data/a.nc");
+    EXPECT_EQ(recent[0].selection.variable, "z") << "the latest choices for a.nc";
+    EXPECT_EQ(recent[0].selection.memberDimension, "time");
+    EXPECT_EQ(recent[0].selection.timeIndex, 1u);
+    EXPECT_EQ(recent[1].selection.memberDimension, "frtime");
+    EXPECT_EQ(recent[2].label, "2 files in /data/runs");
+    EXPECT_EQ(recent[2].selection.paths.size(), 2u);
+    EXPECT_TRUE(recent[2].selection.variable.empty());
+}
+
+TEST(RecentSelections, DropOldEntriesAndReadEntriesWithoutChoices) {
+    test::TempDir dir;
+    QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
+    // As written before choices were kept: files only.
+    settings.setValue("recentFiles", QStringList{"/data/old.nc"});
+    auto recent = app::recentSelections(settings);
+    ASSERT_EQ(recent.size(), 1u);
+    EXPECT_EQ(recent[0].selection.paths, std::vector<std::string>{"/data/old.nc"});
+    EXPECT_TRUE(recent[0].selection.variable.empty());
+
+    for (int i = 0; i < 5; ++i) {
+        app::rememberSelection(settings, selectionOf({"/data/" + std::to_string(i) + ".nc"}, "v"),
+                               3);
+    }
+    recent = app::recentSelections(settings);
+    ASSERT_EQ(recent.size(), 3u);
+    EXPECT_EQ(recent[0].label, "/data/4.nc");
+    EXPECT_EQ(recent[2].label, "/data/2.nc");
+    EXPECT_EQ(settings.value("recentChoices").toMap().size(), 3) << "dropped entries' choices go";
+}

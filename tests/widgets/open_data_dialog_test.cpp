@@ -1,0 +1,185 @@
+#include "widgets/open_data_dialog.h"
+
+#include <gtest/gtest.h>
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTreeWidget>
+
+using namespace ensil;
+using namespace ensil::ui;
+
+namespace {
+// What a probe of an ERA5-like file says: t and z usable, a 2D variable not.
+DataProbe era5Probe() {
+    DataProbe p;
+    p.format = "NetCDF-4";
+    p.variables = {
+        {"z", "number=10, time=4, plev=2, lat=61, lon=120", "m**2 s**-2", "Geopotential", true, ""},
+        {"t", "number=10, time=4, plev=2, lat=61, lon=120", "K", "Temperature", true, ""},
+        {"msl", "number=10, time=4, lat=61, lon=120", "Pa", "Mean sea level pressure", false,
+         "has no vertical dimension"},
+    };
+    p.variable = "t";
+    p.memberDimensionChoices = {"number", "time"};
+    p.memberDimension = "number";
+    p.memberDimensionReason = "named like a member dimension";
+    p.members = 10;
+    p.timeSteps = 4;
+    p.fixedDimensions = {"time = 0 of 4 (2017-01-01T00:00)"};
+    p.grid = "120 x 61 x 2";
+    return p;
+}
+
+QPushButton* okButton(const OpenDataDialog& dialog) {
+    return dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+}
+
+// Opens the dialog, answers its first request with `probe`, and returns the request count.
+int answerFirstProbe(OpenDataDialog& dialog, const DataProbe& probe) {
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    dialog.requestProbe();
+    EXPECT_EQ(requested.count(), 1);
+    EXPECT_TRUE(dialog.isProbing());
+    EXPECT_FALSE(okButton(dialog)->isEnabled()) << "no OK while the headers are being read";
+    const int request = requested.front().at(1).toInt();
+    dialog.showProbe(probe, request);
+    return request;
+}
+}  // namespace
+
+TEST(OpenDataDialog, ListsTheVariablesAndOffersTheDetectedChoices) {
+    OpenDataDialog dialog({"/data/era5.nc"});
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    dialog.requestProbe();
+    const auto first = requested.front().front().value<data::DataSelection>();
+    EXPECT_EQ(first.paths, std::vector<std::string>{"/data/era5.nc"});
+    EXPECT_TRUE(first.variable.empty()) << "the readers choose the first usable variable";
+    EXPECT_TRUE(first.memberDimension.empty());
+    dialog.showProbe(era5Probe(), requested.front().at(1).toInt());
+
+    QTreeWidget* list = dialog.variableList();
+    ASSERT_EQ(list->topLevelItemCount(), 3);
+    EXPECT_EQ(list->topLevelItem(0)->text(0), "z");
+    EXPECT_EQ(list->topLevelItem(0)->text(1), "number=10, time=4, plev=2, lat=61, lon=120");
+    EXPECT_EQ(list->topLevelItem(1)->text(2), "K");
+    EXPECT_EQ(list->topLevelItem(1)->text(3), "Temperature");
+    EXPECT_EQ(list->currentItem()->text(0), "t");
+    EXPECT_FALSE(list->topLevelItem(2)->flags() & Qt::ItemIsEnabled) << "msl cannot be chosen";
+    EXPECT_TRUE(list->topLevelItem(2)->text(3).contains("has no vertical dimension"));
+
+    QComboBox* members = dialog.memberDimensionBox();
+    ASSERT_EQ(members->count(), 2);  // the detected one (automatic) and the other candidate
+    EXPECT_TRUE(members->itemText(0).startsWith("number (found: named like"));
+    EXPECT_EQ(members->itemData(1).toString(), "time");
+    EXPECT_EQ(members->currentIndex(), 0);
+
+    EXPECT_TRUE(dialog.timeIndexBox()->isEnabled());
+    EXPECT_EQ(dialog.timeIndexBox()->maximum(), 3);
+    const QString details = dialog.findChild<QLabel*>("openDataDetails")->text();
+    EXPECT_TRUE(details.contains("10 members of t on a 120 x 61 x 2 grid"))
+        << details.toStdString();
+    EXPECT_TRUE(details.contains("Fixed: time = 0 of 4 (2017-01-01T00:00)"))
+        << details.toStdString();
+    EXPECT_TRUE(okButton(dialog)->isEnabled());
+    const data::DataSelection chosen = dialog.selection();
+    EXPECT_EQ(chosen.variable, "t");
+    EXPECT_TRUE(chosen.memberDimension.empty());
+    EXPECT_EQ(chosen.timeIndex, 0u);
+}
+
+TEST(OpenDataDialog, EveryChangeOfChoiceAsksForANewProbe) {
+    OpenDataDialog dialog({"/data/era5.nc"});
+    answerFirstProbe(dialog, era5Probe());
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+
+    dialog.variableList()->setCurrentItem(dialog.variableList()->topLevelItem(0));
+    ASSERT_EQ(requested.count(), 1);
+    EXPECT_EQ(requested.back().front().value<data::DataSelection>().variable, "z");
+
+    dialog.memberDimensionBox()->setCurrentIndex(1);
+    ASSERT_EQ(requested.count(), 2);
+    EXPECT_EQ(requested.back().front().value<data::DataSelection>().memberDimension, "time");
+
+    dialog.timeIndexBox()->setValue(2);
+    ASSERT_EQ(requested.count(), 3);
+    const auto last = requested.back().front().value<data::DataSelection>();
+    EXPECT_EQ(last.timeIndex, 2u);
+    EXPECT_EQ(last.memberDimension, "time");
+    EXPECT_EQ(last.variable, "z");
+}
+
+TEST(OpenDataDialog, AnAnswerToAnOlderRequestIsIgnored) {
+    OpenDataDialog dialog({"/data/era5.nc"});
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    dialog.requestProbe();
+    dialog.requestProbe();
+    DataProbe stale = era5Probe();
+    stale.error = "stale";
+    dialog.showProbe(stale, requested.front().at(1).toInt());
+    EXPECT_TRUE(dialog.isProbing());
+    EXPECT_TRUE(dialog.errorText().isEmpty());
+    dialog.showProbe(era5Probe(), requested.back().at(1).toInt());
+    EXPECT_FALSE(dialog.isProbing());
+    EXPECT_TRUE(dialog.canAccept());
+}
+
+TEST(OpenDataDialog, AReaderErrorIsShownAndOkStaysDisabled) {
+    OpenDataDialog dialog({"/tmp/garbage.nc"});
+    DataProbe failed;
+    failed.error = "'/tmp/garbage.nc' is not in a format ensil reads (NetCDF, HDF5, VTK)";
+    answerFirstProbe(dialog, failed);
+    auto* error = dialog.findChild<QLabel*>("openDataError");
+    ASSERT_NE(error, nullptr);
+    EXPECT_FALSE(error->isHidden());
+    EXPECT_EQ(error->text(), failed.error);
+    EXPECT_FALSE(okButton(dialog)->isEnabled());
+    EXPECT_EQ(dialog.variableList()->topLevelItemCount(), 0);
+}
+
+TEST(OpenDataDialog, WithoutAMemberDimensionTheUserMustChooseOne) {
+    OpenDataDialog dialog({"/data/contour.cdf"});
+    DataProbe probe = era5Probe();
+    probe.memberDimension.clear();
+    probe.memberDimensionChoices = {"frtime"};
+    probe.members = 0;
+    probe.error = "no member dimension found\nChoose the dimension that holds the members above.";
+    answerFirstProbe(dialog, probe);
+    EXPECT_FALSE(okButton(dialog)->isEnabled());
+    QComboBox* members = dialog.memberDimensionBox();
+    ASSERT_EQ(members->count(), 2);
+    EXPECT_TRUE(members->itemText(0).startsWith("Choose"));
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    members->setCurrentIndex(1);
+    ASSERT_EQ(requested.count(), 1);
+    EXPECT_EQ(requested.back().front().value<data::DataSelection>().memberDimension, "frtime");
+    DataProbe chosen = era5Probe();
+    chosen.memberDimension = "frtime";
+    chosen.memberDimensionReason = "chosen by the user";
+    chosen.memberDimensionChoices = {"frtime"};
+    dialog.showProbe(chosen, requested.back().at(1).toInt());
+    EXPECT_TRUE(okButton(dialog)->isEnabled());
+    EXPECT_EQ(members->currentData().toString(), "frtime") << "the user's choice stays chosen";
+    EXPECT_EQ(dialog.selection().memberDimension, "frtime");
+}
+
+TEST(OpenDataDialog, SeveralFilesOfferOneMemberPerFile) {
+    OpenDataDialog dialog({"/data/run_01.vti", "/data/run_02.vti"});
+    DataProbe probe;
+    probe.format = "VTK XML image";
+    probe.variables = {{"density", "", "", "", true, ""}};
+    probe.variable = "density";
+    probe.memberDimensionReason = "one file per member";
+    probe.members = 2;
+    probe.grid = "8 x 8 x 8";
+    answerFirstProbe(dialog, probe);
+    EXPECT_EQ(dialog.memberDimensionBox()->count(), 1);
+    EXPECT_EQ(dialog.memberDimensionBox()->itemText(0), "One member per file");
+    EXPECT_FALSE(dialog.timeIndexBox()->isEnabled()) << "no time dimension to choose along";
+    EXPECT_TRUE(okButton(dialog)->isEnabled());
+    EXPECT_EQ(dialog.selection().paths.size(), 2u);
+}
