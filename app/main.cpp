@@ -53,7 +53,12 @@ int main(int argc, char* argv[]) {
     QApplication app(argc, argv);
     setApplicationIdentity();
     ensil::app::MainWindow window;
-    window.show();
+    // The first run has no saved layout: the view and its three docks want the whole screen.
+    if (window.hasSavedLayout()) {
+        window.show();
+    } else {
+        window.showMaximized();
+    }
     if (outcome.workbench->selection.paths.empty()) {
         window.loadDemo();
     } else {

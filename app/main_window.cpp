@@ -74,6 +74,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createMenus();
     createStatusBar();
     createToolbar();
+    linkPanels();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -84,6 +85,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
 
     QSettings settings;
     resize(1400, 900);
+    m_hasSavedLayout = settings.contains(QStringLiteral("window/state"));
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 }
@@ -101,6 +103,7 @@ void MainWindow::createDocks() {
     dock->setWidget(m_info);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
     m_info->showMessage(tr("No ensemble loaded."));
+    createPanels();
 }
 
 void MainWindow::createMenus() {
@@ -119,8 +122,10 @@ void MainWindow::createMenus() {
         }
     });
     screenshot->setShortcut(QKeySequence(Qt::Key_F12));
+    addExportActions(file);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    createEditMenu();
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view,
@@ -150,7 +155,8 @@ void MainWindow::createToolbar() {
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_toolbar->setThickness(m_view->renderer().settings().thickness);
     m_session = new IsovalueSession(
-        m_view, QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
+        m_view, m_selection,
+        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
     gl::RenderSettings& settings = m_view->renderer().settings();
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this,
             [this](double v) { m_session->setIsovalue(static_cast<float>(v)); });
@@ -190,8 +196,8 @@ void MainWindow::createStatusBar() {
     m_progress->setTextVisible(false);
     m_cancel = new QToolButton(this);
     m_cancel->setText(tr("Cancel"));
+    // Esc belongs to Edit > Clear Selection, which stops the work in progress first.
     m_cancel->setToolTip(tr("Stop the work in progress (Esc)"));
-    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(m_cancel, &QToolButton::clicked, this, &MainWindow::cancelLoading);
     statusBar()->addWidget(m_statusText, 1);
     statusBar()->addPermanentWidget(m_progress);
