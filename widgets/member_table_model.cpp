@@ -84,16 +84,20 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
 }
 
 QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) {
+    if (orientation != Qt::Horizontal || (role != Qt::DisplayRole && role != Qt::ToolTipRole)) {
         return QAbstractTableModel::headerData(section, orientation, role);
     }
+    // Short headers keep the table narrow enough for a side dock; the tooltips say it all.
+    const bool tip = role == Qt::ToolTipRole;
     switch (section) {
-        case Index: return tr("#");
-        case Name: return tr("Member");
-        case Cluster: return tr("Cluster");
-        case DistanceToMean: return tr("Distance to mean");
-        case MeanOutlyingness: return tr("Mean outlyingness");
-        case Visible: return tr("Visible");
+        case Index: return tip ? tr("Member number") : tr("#");
+        case Name: return tip ? tr("Member name, from the file") : tr("Member");
+        case Cluster: return tip ? tr("Cluster at the current cut") : tr("Cluster");
+        case DistanceToMean:
+            return tip ? tr("Distance to the mean member (similarity measure)") : tr("To mean");
+        case MeanOutlyingness:
+            return tip ? tr("Mean outlyingness over the member's isosurface") : tr("Outlying");
+        case Visible: return tip ? tr("Drawn in the view") : tr("Shown");
         default: return {};
     }
 }
