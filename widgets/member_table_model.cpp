@@ -27,6 +27,18 @@ MemberTableModel::MemberTableModel(MemberSelection* selection, QObject* parent)
     });
     connect(selection, &MemberSelection::visibilityChanged, this,
             [this] { columnChanged(Visible, {Qt::CheckStateRole, SortRole}); });
+    connect(selection, &MemberSelection::hoverChanged, this, [this](int member) {
+        rowChanged(m_hoveredRow, {Qt::BackgroundRole});
+        m_hoveredRow = member;
+        rowChanged(m_hoveredRow, {Qt::BackgroundRole});
+    });
+    connect(selection, &MemberSelection::membersReset, this,
+            [this] { m_hoveredRow = m_selection->hovered(); });
+}
+
+void MemberTableModel::rowChanged(int row, const QList<int>& roles) {
+    if (row < 0 || row >= rowCount()) return;
+    emit dataChanged(index(row, 0), index(row, ColumnCount - 1), roles);
 }
 
 void MemberTableModel::columnChanged(int column, const QList<int>& roles) {
@@ -72,6 +84,13 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
     }
     if (role == Qt::DecorationRole && column == Cluster && m_selection->clusterOf(m) >= 0) {
         return m_selection->memberColor(m);
+    }
+    if (role == Qt::BackgroundRole && m == m_selection->hovered()) {
+        // The member under the pointer (here, in the view or the dendrogram), tinted in its
+        // cluster's colour.
+        QColor tint = m_selection->memberColor(m);
+        tint.setAlpha(90);
+        return tint;
     }
     if (role == Qt::TextAlignmentRole && column != Name) {
         return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));

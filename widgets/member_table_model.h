@@ -1,5 +1,6 @@
 // The members as a table for QTableView: index, name, cluster (with its colour), distance to
-// the mean member, mean outlyingness, and a visibility checkbox. A view onto MemberSelection,
+// the mean member, mean outlyingness, and a visibility checkbox; the hovered member's row is
+// tinted. A view onto MemberSelection,
 // which it follows and edits (the checkbox); selection is not part of the model but of the
 // shared MemberSelection (see MemberTablePanel). GUI thread only.
 #pragma once
@@ -29,8 +30,10 @@ public:
 
 private:
     void columnChanged(int column, const QList<int>& roles);
+    void rowChanged(int row, const QList<int>& roles);
 
     MemberSelection* m_selection;
+    int m_hoveredRow = -1;  // the row tinted as hovered, to clear it when the hover moves
 };
 
 }  // namespace ensil::ui

@@ -53,6 +53,8 @@ TEST(MemberTableModel, KeepsQtsModelContractThroughEveryChange) {
     s.setClusterCount(3);
     s.setMemberVisible(1, false);
     s.soloCluster(0);
+    s.setHovered(2);
+    s.setHovered(4);
     proxy.sort(MemberTableModel::DistanceToMean);
     proxy.setFilterText(QStringLiteral("m1"));
     auto figures = test::figuresOnALine({1.0, 2.0});
@@ -99,6 +101,22 @@ TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
     EXPECT_FALSE(s.isMemberVisible(4));
     EXPECT_EQ(box.data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
     EXPECT_FALSE(model.setData(model.index(4, MemberTableModel::Name), "x", Qt::EditRole));
+}
+
+TEST(MemberTableModel, TintsTheHoveredMembersRow) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    test::loadTwoGroups(s);
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    s.setHovered(3);
+    s.setHovered(1);
+    for (int m = 0; m < 6; ++m) {
+        EXPECT_EQ(model.index(m, MemberTableModel::Name).data(Qt::BackgroundRole).isValid(), m == 1)
+            << m;
+    }
+    ASSERT_EQ(changed.count(), 3) << "row 3 tinted, row 3 cleared, row 1 tinted";
+    EXPECT_EQ(changed.at(1).at(0).toModelIndex().row(), 3);
+    EXPECT_EQ(changed.at(2).at(0).toModelIndex().row(), 1);
 }
 
 TEST(MemberFilterProxy, SortsNumbersAsNumbersWithUnknownValuesLast) {
