@@ -92,8 +92,8 @@ void IsovalueSession::setIsovalue(float isovalue) {
             r.distances = std::move(outcome.distances);
             r.tree = std::move(outcome.tree);
             const auto& mean = moments->mean.values;
-            r.distancesToMean = prep::distancesToField(*ensemble, {mean.data(), mean.size()},
-                                                       isovalue, stop);
+            r.distancesToMean =
+                prep::distancesToField(*ensemble, {mean.data(), mean.size()}, isovalue, stop);
             for (const data::PackedMesh& mesh : r.meshes->members) {
                 r.meanOutlyingness.push_back(prep::meanOutlyingness(mesh));
             }
@@ -121,8 +121,7 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     m_view->renderer().setMeshes(m_result->meshes);
     // Same names: the selection keeps what the user selected and hid.
-    m_selection->setMembers(
-        {memberNames(), m_result->distancesToMean, m_result->meanOutlyingness});
+    m_selection->setMembers({memberNames(), m_result->distancesToMean, m_result->meanOutlyingness});
     m_selection->setTree(m_result->tree);
     emit finished(tr("Isovalue %1: %2 triangles for %3 members and the mean, %4 s%5")
                       .arg(isovalue)

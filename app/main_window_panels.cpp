@@ -78,16 +78,15 @@ void MainWindow::arrangeDefaultLayout() {
     addDockWidget(Qt::BottomDockWidgetArea, dendrogram);
     clusters->raise();
     resizeDocks({clusters}, {kSideDockWidth}, Qt::Horizontal);
-    resizeDocks({clusters, members}, {kClusterListHeight, 1000 - kClusterListHeight},
-                Qt::Vertical);
+    resizeDocks({clusters, members}, {kClusterListHeight, 1000 - kClusterListHeight}, Qt::Vertical);
     resizeDocks({dendrogram}, {kDendrogramHeight}, Qt::Vertical);
 }
 
 void MainWindow::linkPanels() {
     // The selection drives the view: colours, visibility, selection and the hovered member.
-    for (auto signal : {&ui::MemberSelection::membersReset, &ui::MemberSelection::clustersChanged,
-                        &ui::MemberSelection::visibilityChanged,
-                        &ui::MemberSelection::selectionChanged}) {
+    for (auto signal :
+         {&ui::MemberSelection::membersReset, &ui::MemberSelection::clustersChanged,
+          &ui::MemberSelection::visibilityChanged, &ui::MemberSelection::selectionChanged}) {
         connect(m_selection, signal, this, &MainWindow::showSelectionInView);
     }
     connect(m_selection, &ui::MemberSelection::hoverChanged, this,

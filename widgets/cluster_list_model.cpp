@@ -11,8 +11,7 @@ ClusterListModel::ClusterListModel(MemberSelection* selection, QObject* parent)
     connect(selection, &MemberSelection::clustersChanged, this, &ClusterListModel::endResetModel);
     connect(selection, &MemberSelection::visibilityChanged, this, [this] {
         if (rowCount() == 0) return;
-        emit dataChanged(index(0, Visible), index(rowCount() - 1, Visible),
-                         {Qt::CheckStateRole});
+        emit dataChanged(index(0, Visible), index(rowCount() - 1, Visible), {Qt::CheckStateRole});
     });
 }
 
@@ -43,7 +42,8 @@ QVariant ClusterListModel::data(const QModelIndex& index, int role) const {
         case Visible:
             if (role == Qt::CheckStateRole) return m_selection->clusterVisibility(c);
             break;
-        default: break;
+        default:
+            break;
     }
     if (role == Qt::ToolTipRole) {
         QStringList names;
@@ -58,10 +58,14 @@ QVariant ClusterListModel::headerData(int section, Qt::Orientation orientation, 
         return QAbstractTableModel::headerData(section, orientation, role);
     }
     switch (section) {
-        case Cluster: return tr("Cluster");
-        case Size: return tr("Size");
-        case Visible: return tr("Visible");
-        default: return {};
+        case Cluster:
+            return tr("Cluster");
+        case Size:
+            return tr("Size");
+        case Visible:
+            return tr("Visible");
+        default:
+            return {};
     }
 }
 

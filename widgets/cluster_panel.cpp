@@ -107,9 +107,9 @@ void ClusterPanel::showSharedSelection() {
     QList<int> wanted;
     for (int c = 0; c < m_model->rowCount(); ++c) {
         const QList<int> members = m_selection->membersOfCluster(c);
-        const bool all = !members.isEmpty() && std::all_of(members.begin(), members.end(), [&](int m) {
-            return m_selection->isSelected(m);
-        });
+        const bool all =
+            !members.isEmpty() && std::all_of(members.begin(), members.end(),
+                                              [&](int m) { return m_selection->isSelected(m); });
         if (all) wanted << c;
     }
     if (wanted == selectedClusters()) return;

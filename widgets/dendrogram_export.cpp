@@ -19,8 +19,9 @@ bool writeDendrogramSvg(const MemberSelection& selection, const QString& path, Q
         return false;
     };
     if (!selection.isClustered()) {
-        return fail(QObject::tr("There is no dendrogram yet: load an ensemble and wait for its "
-                                "members to be compared."));
+        return fail(
+            QObject::tr("There is no dendrogram yet: load an ensemble and wait for its "
+                        "members to be compared."));
     }
     // QSvgGenerator reports no errors: check that the file can be written first.
     {
@@ -42,8 +43,8 @@ bool writeDendrogramSvg(const MemberSelection& selection, const QString& path, Q
     generator.setSize(size.toSize());
     generator.setViewBox(QRectF(QPointF(0, 0), size));
     generator.setTitle(QObject::tr("Dendrogram of %1 members").arg(layout.memberCount()));
-    generator.setDescription(QObject::tr("ensil member clustering, %1 clusters")
-                                 .arg(selection.clusterCount()));
+    generator.setDescription(
+        QObject::tr("ensil member clustering, %1 clusters").arg(selection.clusterCount()));
     QPainter painter;
     if (!painter.begin(&generator)) {
         return fail(QObject::tr("Could not write '%1'.").arg(path));
@@ -53,8 +54,7 @@ bool writeDendrogramSvg(const MemberSelection& selection, const QString& path, Q
         dendrogramFrame(layout, selection, area, style.font, leafWidth, 0.0);
     paintDendrogram(painter, area, layout, selection, frame, style);
     painter.end();
-    return QFileInfo(path).size() > 0 ||
-           fail(QObject::tr("Could not write '%1'.").arg(path));
+    return QFileInfo(path).size() > 0 || fail(QObject::tr("Could not write '%1'.").arg(path));
 }
 
 }  // namespace ensil::ui

@@ -35,7 +35,7 @@ public:
     // The merge height as computed (may be +infinity).
     [[nodiscard]] double mergeHeight(int node) const;
     [[nodiscard]] int parent(int node) const { return at(node).parent; }  // -1 for the root
-    [[nodiscard]] int childA(int node) const;  // -1 for members
+    [[nodiscard]] int childA(int node) const;                             // -1 for members
     [[nodiscard]] int childB(int node) const;
     // The members below a node, in leaf order.
     [[nodiscard]] QList<int> membersOf(int node) const;
@@ -66,7 +66,9 @@ private:
         int a = -1;
         int b = -1;
     };
-    [[nodiscard]] const Node& at(int node) const { return m_nodes.at(static_cast<std::size_t>(node)); }
+    [[nodiscard]] const Node& at(int node) const {
+        return m_nodes.at(static_cast<std::size_t>(node));
+    }
 
     int m_members = 0;
     std::vector<int> m_order;

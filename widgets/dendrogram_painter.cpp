@@ -32,10 +32,9 @@ std::vector<bool> fullySelected(const DendrogramLayout& layout, const MemberSele
     std::vector<bool> all(static_cast<std::size_t>(layout.nodeCount()), false);
     for (int node = 0; node < layout.nodeCount(); ++node) {
         all[static_cast<std::size_t>(node)] =
-            node < layout.memberCount()
-                ? selection.isSelected(node)
-                : all[static_cast<std::size_t>(layout.childA(node))] &&
-                      all[static_cast<std::size_t>(layout.childB(node))];
+            node < layout.memberCount() ? selection.isSelected(node)
+                                        : all[static_cast<std::size_t>(layout.childA(node))] &&
+                                              all[static_cast<std::size_t>(layout.childB(node))];
     }
     return all;
 }
@@ -72,7 +71,8 @@ void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSe
         if (x < frame.plot.left() - 1.0 || x > frame.plot.right() + 1.0) continue;
         const QString name = metrics.elidedText(selection.name(member), Qt::ElideRight, 140.0);
         painter.save();
-        painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(), frame.plot.bottom() + 8.0);
+        painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(),
+                          frame.plot.bottom() + 8.0);
         painter.rotate(90.0);
         painter.drawText(QPointF(0.0, 0.0), name);
         painter.restore();

@@ -12,7 +12,7 @@
 
 namespace ensil::ui {
 namespace {
-constexpr double kCutGrab = 5.0;    // pixels either side of the cut line that grab it
+constexpr double kCutGrab = 5.0;  // pixels either side of the cut line that grab it
 constexpr double kMaxLeafWidth = 60.0;
 constexpr double kZoomStep = 1.25;  // per wheel notch
 }  // namespace
@@ -37,8 +37,8 @@ DendrogramView::DendrogramView(MemberSelection* selection, QWidget* parent)
 void DendrogramView::rebuildLayout() {
     // The tree changes with the isovalue or the linkage; a new cut keeps the tree but the
     // layout is cheap (linear in the members) so it is simply rebuilt.
-    m_layout = m_selection->isClustered() ? DendrogramLayout(m_selection->tree())
-                                          : DendrogramLayout();
+    m_layout =
+        m_selection->isClustered() ? DendrogramLayout(m_selection->tree()) : DendrogramLayout();
     updateScrollBar();
     viewport()->update();
 }
@@ -79,7 +79,8 @@ void DendrogramView::updateScrollBar() {
 
 void DendrogramView::setZoom(double zoom, double anchorX) {
     const DendrogramFrame before = frame();
-    const double leafUnderAnchor = (anchorX - before.plot.left() + before.scroll) / before.leafWidth;
+    const double leafUnderAnchor =
+        (anchorX - before.plot.left() + before.scroll) / before.leafWidth;
     m_zoom = std::clamp(zoom, 1.0, std::max(1.0, kMaxLeafWidth / fitLeafWidth()));
     updateScrollBar();
     const DendrogramFrame after = frame();
@@ -91,12 +92,15 @@ void DendrogramView::setZoom(double zoom, double anchorX) {
 QString DendrogramView::toolTipAt(QPointF p) const {
     const DendrogramFrame f = frame();
     if (m_selection->clusterCount() > 0 && isOnCutLine(p)) {
-        return tr("Cut into %1 clusters: drag up or down to change").arg(m_selection->clusterCount());
+        return tr("Cut into %1 clusters: drag up or down to change")
+            .arg(m_selection->clusterCount());
     }
     const int node = nodeAt(m_layout, f, p);
     if (node < 0) return {};
     if (node < m_layout.memberCount()) {
-        return tr("%1 (cluster %2)").arg(m_selection->name(node)).arg(m_selection->clusterOf(node) + 1);
+        return tr("%1 (cluster %2)")
+            .arg(m_selection->name(node))
+            .arg(m_selection->clusterOf(node) + 1);
     }
     const double h = m_layout.mergeHeight(node);
     return tr("Merge height %1: %2 members")

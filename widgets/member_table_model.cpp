@@ -6,9 +6,7 @@
 
 namespace ensil::ui {
 namespace {
-QVariant number(double value) {
-    return std::isnan(value) ? QVariant() : QVariant(value);
-}
+QVariant number(double value) { return std::isnan(value) ? QVariant() : QVariant(value); }
 
 QString numberText(double value) {
     if (std::isnan(value)) return QStringLiteral("-");
@@ -25,8 +23,9 @@ MemberTableModel::MemberTableModel(MemberSelection* selection, QObject* parent)
     connect(selection, &MemberSelection::clustersChanged, this, [this] {
         columnChanged(Cluster, {Qt::DisplayRole, Qt::DecorationRole, SortRole});
     });
-    connect(selection, &MemberSelection::visibilityChanged, this,
-            [this] { columnChanged(Visible, {Qt::CheckStateRole, SortRole}); });
+    connect(selection, &MemberSelection::visibilityChanged, this, [this] {
+        columnChanged(Visible, {Qt::CheckStateRole, SortRole});
+    });
     connect(selection, &MemberSelection::hoverChanged, this, [this](int member) {
         rowChanged(m_hoveredRow, {Qt::BackgroundRole});
         m_hoveredRow = member;
@@ -61,8 +60,10 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::DisplayRole || role == SortRole) {
         const bool sort = role == SortRole;
         switch (column) {
-            case Index: return m + 1;  // as in the names "member 1", "member 2", ...
-            case Name: return m_selection->name(m);
+            case Index:
+                return m + 1;  // as in the names "member 1", "member 2", ...
+            case Name:
+                return m_selection->name(m);
             case Cluster: {
                 const int c = m_selection->clusterOf(m);
                 if (sort) return c;
@@ -74,8 +75,10 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
             case MeanOutlyingness:
                 return sort ? number(m_selection->meanOutlyingness(m))
                             : QVariant(numberText(m_selection->meanOutlyingness(m)));
-            case Visible: return sort ? QVariant(m_selection->isMemberVisible(m)) : QVariant();
-            case ColumnCount: break;
+            case Visible:
+                return sort ? QVariant(m_selection->isMemberVisible(m)) : QVariant();
+            case ColumnCount:
+                break;
         }
         return {};
     }
@@ -109,15 +112,20 @@ QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, 
     // Short headers keep the table narrow enough for a side dock; the tooltips say it all.
     const bool tip = role == Qt::ToolTipRole;
     switch (section) {
-        case Index: return tip ? tr("Member number") : tr("#");
-        case Name: return tip ? tr("Member name, from the file") : tr("Member");
-        case Cluster: return tip ? tr("Cluster at the current cut") : tr("Cluster");
+        case Index:
+            return tip ? tr("Member number") : tr("#");
+        case Name:
+            return tip ? tr("Member name, from the file") : tr("Member");
+        case Cluster:
+            return tip ? tr("Cluster at the current cut") : tr("Cluster");
         case DistanceToMean:
             return tip ? tr("Distance to the mean member (similarity measure)") : tr("To mean");
         case MeanOutlyingness:
             return tip ? tr("Mean outlyingness over the member's isosurface") : tr("Outlying");
-        case Visible: return tip ? tr("Drawn in the view") : tr("Shown");
-        default: return {};
+        case Visible:
+            return tip ? tr("Drawn in the view") : tr("Shown");
+        default:
+            return {};
     }
 }
 

@@ -51,8 +51,7 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     m_table->verticalHeader()->hide();
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setSectionResizeMode(MemberTableModel::Name,
-                                                      QHeaderView::Stretch);
+    m_table->horizontalHeader()->setSectionResizeMode(MemberTableModel::Name, QHeaderView::Stretch);
     m_table->setMouseTracking(true);
     m_table->viewport()->installEventFilter(this);
 
@@ -64,8 +63,9 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &MemberFilterProxy::setFilterText);
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &MemberTablePanel::tableSelectionChanged);
-    connect(m_table, &QTableView::entered, this,
-            [this](const QModelIndex& index) { m_selection->setHovered(memberAtRow(index.row())); });
+    connect(m_table, &QTableView::entered, this, [this](const QModelIndex& index) {
+        m_selection->setHovered(memberAtRow(index.row()));
+    });
     connect(m_selection, &MemberSelection::selectionChanged, this,
             &MemberTablePanel::showSharedSelection);
 }

@@ -114,8 +114,9 @@ TEST_F(LoadedWindow, SelectingInTheClusterListOrDendrogramSelectsInTheTable) {
     // A click on the dendrogram's root branch selects every member.
     auto* dendrogram = window.dendrogram();
     const auto& layout = dendrogram->layout();
-    const QPoint root =
-        dendrogram->frame().toPixel(layout.x(layout.root()), layout.height(layout.root())).toPoint();
+    const QPoint root = dendrogram->frame()
+                            .toPixel(layout.x(layout.root()), layout.height(layout.root()))
+                            .toPoint();
     QTest::mouseClick(dendrogram->viewport(), Qt::LeftButton, Qt::NoModifier, root);
     EXPECT_EQ(tableSelection(), (QList<int>{0, 1, 2, 3, 4, 5, 6, 7}));
 }

@@ -37,7 +37,8 @@ prep::DistanceMatrix clusteredDistances(std::size_t n) {
     std::vector<double> points(4 * n);
     for (std::size_t i = 0; i < n; ++i) {
         const int c = centre(rng);
-        for (std::size_t a = 0; a < 4; ++a) points[4 * i + a] = (c == static_cast<int>(a)) + noise(rng);
+        for (std::size_t a = 0; a < 4; ++a)
+            points[4 * i + a] = (c == static_cast<int>(a)) + noise(rng);
     }
     prep::DistanceMatrix d{n, std::vector<double>(n * n)};
     for (std::size_t i = 0; i < n; ++i)
@@ -94,19 +95,21 @@ int main(int argc, char** argv) {
                                       prep::Linkage::Average, prep::Linkage::Ward};
     int next = 0;
     prep::MergeTree tree;
-    const double clusterMs = medianMs(runs, [&] {
-        tree = prep::clusterMembers(distances, linkages[next++ % 4]);
-    });
-    const double setTreeMs = medianMs(runs, [&] {
-        selection.setTree(prep::clusterMembers(distances, linkages[next++ % 4]));
-    }) - clusterMs;
+    const double clusterMs =
+        medianMs(runs, [&] { tree = prep::clusterMembers(distances, linkages[next++ % 4]); });
+    const double setTreeMs =
+        medianMs(
+            runs,
+            [&] { selection.setTree(prep::clusterMembers(distances, linkages[next++ % 4])); }) -
+        clusterMs;
     const double relinkMs = medianMs(runs, [&] {
         selection.setTree(prep::clusterMembers(distances, linkages[next++ % 4]));
         repaint();
     });
-    std::printf("relinkage: clusterMembers %.2f ms, setTree (panels follow) %.2f ms, "
-                "with the repaint %.2f ms\n",
-                clusterMs, setTreeMs, relinkMs);
+    std::printf(
+        "relinkage: clusterMembers %.2f ms, setTree (panels follow) %.2f ms, "
+        "with the repaint %.2f ms\n",
+        clusterMs, setTreeMs, relinkMs);
 
     int k = 2;
     std::size_t sink = 0;
@@ -138,8 +141,9 @@ int main(int argc, char** argv) {
         sink += selection.appearance().size();
         repaint();
     });
-    std::printf("selection change (20 members): setSelection + appearance %.3f ms, with the "
-                "repaint %.2f ms\n",
-                selectMs, selectRepaintMs);
+    std::printf(
+        "selection change (20 members): setSelection + appearance %.3f ms, with the "
+        "repaint %.2f ms\n",
+        selectMs, selectRepaintMs);
     return sink > 0 ? 0 : 1;
 }

@@ -33,12 +33,12 @@ TEST(DistancesToField, ConstantMembersGiveSquaredDifferencesOfRootDistances) {
 }
 
 TEST(DistancesToField, AgreesWithTheSimilarityMatrixWhenTheFieldIsAMember) {
-    const auto e = test::analyticEnsemble(4, 8, 6, 5, [](std::size_t m, std::size_t i,
-                                                         std::size_t j, std::size_t k) {
-        if (m == 2 && i == 3 && j == 2) return kNaN;  // a gap in one member
-        return std::sin(0.7F * static_cast<float>(i + m)) * static_cast<float>(j + 1) +
-               0.3F * static_cast<float>(k * m);
-    });
+    const auto e = test::analyticEnsemble(
+        4, 8, 6, 5, [](std::size_t m, std::size_t i, std::size_t j, std::size_t k) {
+            if (m == 2 && i == 3 && j == 2) return kNaN;  // a gap in one member
+            return std::sin(0.7F * static_cast<float>(i + m)) * static_cast<float>(j + 1) +
+                   0.3F * static_cast<float>(k * m);
+        });
     const auto matrix = prep::computeDistanceMatrix(e, 0.4F);
     const auto& reference = e.members[1].values;
     const auto d = prep::distancesToField(e, {reference.data(), reference.size()}, 0.4F);
@@ -49,9 +49,8 @@ TEST(DistancesToField, AgreesWithTheSimilarityMatrixWhenTheFieldIsAMember) {
 }
 
 TEST(DistancesToField, NoCommonPointIsInfinitelyFar) {
-    auto e = test::analyticEnsemble(2, 3, 3, 3, [](std::size_t m, auto, auto, auto) {
-        return m == 0 ? kNaN : 1.0F;
-    });
+    auto e = test::analyticEnsemble(
+        2, 3, 3, 3, [](std::size_t m, auto, auto, auto) { return m == 0 ? kNaN : 1.0F; });
     const std::vector<float> field(e.grid.pointCount(), 2.0F);
     const auto d = prep::distancesToField(e, field, 0.0F);
     EXPECT_TRUE(std::isinf(d[0]));

@@ -1,3 +1,5 @@
+#include "widgets/cluster_panel.h"
+
 #include <gtest/gtest.h>
 
 #include <QComboBox>
@@ -8,7 +10,6 @@
 
 #include "panel_fixtures.h"
 #include "widgets/cluster_list_model.h"
-#include "widgets/cluster_panel.h"
 #include "widgets/member_selection.h"
 
 using namespace ensil;
@@ -39,8 +40,9 @@ TEST(ClusterListModel, ShowsColourSizeAndVisibility) {
     QList<int> sizes;
     for (int c = 0; c < 3; ++c) {
         sizes << model.index(c, ClusterListModel::Size).data().toInt();
-        EXPECT_EQ(model.index(c, ClusterListModel::Cluster).data(Qt::DecorationRole).value<QColor>(),
-                  ui::MemberSelection::clusterColor(c));
+        EXPECT_EQ(
+            model.index(c, ClusterListModel::Cluster).data(Qt::DecorationRole).value<QColor>(),
+            ui::MemberSelection::clusterColor(c));
     }
     std::sort(sizes.begin(), sizes.end());
     EXPECT_EQ(sizes, (QList<int>{1, 2, 3}));

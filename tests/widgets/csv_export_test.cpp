@@ -21,8 +21,9 @@ TEST(CsvExport, WritesOneQuotedLinePerMemberWithItsCluster) {
     const QStringList lines = ui::memberTableCsv(s).split(QStringLiteral("\r\n"));
     ASSERT_EQ(lines.size(), 5) << "header, three members, the final line break";
     EXPECT_EQ(lines[0], "index,name,cluster,distance_to_mean,mean_outlyingness,visible,selected");
-    EXPECT_EQ(lines[1], QStringLiteral("1,\"run \"\"A\"\", control\",%1,0.25,0.5,1,0")
-                            .arg(s.clusterOf(0) + 1));
+    EXPECT_EQ(
+        lines[1],
+        QStringLiteral("1,\"run \"\"A\"\", control\",%1,0.25,0.5,1,0").arg(s.clusterOf(0) + 1));
     EXPECT_EQ(lines[2], QStringLiteral("2,m1,%1,10,20,0,0").arg(s.clusterOf(1) + 1));
     EXPECT_EQ(lines[3], QStringLiteral("3,m2,%1,1,,1,1").arg(s.clusterOf(2) + 1))
         << "unknown outlyingness is empty";

@@ -51,8 +51,8 @@ TEST(DendrogramLayout, PlacesLeavesInTreeOrderAndMergesBetweenTheirChildren) {
     for (std::size_t k = 0; k < tree.merges.size(); ++k) {
         const int node = 6 + static_cast<int>(k);
         EXPECT_DOUBLE_EQ(layout.height(node), tree.merges[k].height);
-        EXPECT_DOUBLE_EQ(layout.x(node), 0.5 * (layout.x(tree.merges[k].a) +
-                                               layout.x(tree.merges[k].b)));
+        EXPECT_DOUBLE_EQ(layout.x(node),
+                         0.5 * (layout.x(tree.merges[k].a) + layout.x(tree.merges[k].b)));
         EXPECT_EQ(layout.parent(tree.merges[k].a), node);
         EXPECT_EQ(layout.memberCountOf(node), tree.merges[k].size);
     }
@@ -147,7 +147,8 @@ TEST(DendrogramView, DraggingTheCutLineSetsTheNumberOfClustersLive) {
     const int from = static_cast<int>(std::lround(frame.pixelY(layout.cutHeight(2))));
     QSignalSpy changed(&s, &ui::MemberSelection::clustersChanged);
     QTest::mousePress(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, from));
-    QTest::mouseMove(view.viewport(), QPoint(x, static_cast<int>(frame.pixelY(layout.cutHeight(4)))));
+    QTest::mouseMove(view.viewport(),
+                     QPoint(x, static_cast<int>(frame.pixelY(layout.cutHeight(4)))));
     EXPECT_EQ(s.clusterCount(), 4) << "changes while dragging, not only on release";
     const int to = static_cast<int>(frame.pixelY(layout.cutHeight(1)));
     QTest::mouseRelease(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, to));
@@ -167,8 +168,8 @@ TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
     ASSERT_GE(pair, 0);
     const QString tip = view.toolTipAt(frame.toPixel(layout.x(pair), layout.height(pair)));
     EXPECT_EQ(tip, QStringLiteral("Merge height 0.7: 2 members"));
-    EXPECT_EQ(view.toolTipAt(frame.toPixel(layout.x(3), 0.1)), QStringLiteral("m3 (cluster %1)")
-                                                                   .arg(s.clusterOf(3) + 1));
+    EXPECT_EQ(view.toolTipAt(frame.toPixel(layout.x(3), 0.1)),
+              QStringLiteral("m3 (cluster %1)").arg(s.clusterOf(3) + 1));
     // Moving over a member's stem hovers that member.
     const QPoint stem = frame.toPixel(layout.x(3), 0.1).toPoint();
     QTest::mouseMove(view.viewport(), stem);
@@ -188,8 +189,8 @@ TEST(DendrogramView, TheWheelZoomsAroundThePointer) {
     const int member = layout.leafOrder()[120];
     const double before = view.frame().pixelX(layout.x(member));
     const QPointF at(before, view.frame().plot.center().y());
-    QWheelEvent wheel(at, view.viewport()->mapToGlobal(at), QPoint(), QPoint(0, 360),
-                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QWheelEvent wheel(at, view.viewport()->mapToGlobal(at), QPoint(), QPoint(0, 360), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(view.viewport(), &wheel);
     EXPECT_GT(view.zoom(), 1.5);
     EXPECT_NEAR(view.frame().pixelX(layout.x(member)), before, 1.0) << "the leaf stays put";
@@ -207,8 +208,8 @@ TEST(DendrogramView, ShowsSelectedMembersUnderTheirLeaves) {
     const QImage image = view.viewport()->grab().toImage();
     const ui::DendrogramFrame frame = view.frame();
     const double radius = std::clamp(frame.leafWidth * 0.3, 2.0, 5.0);
-    const QPoint marker = QPointF(frame.pixelX(view.layout().x(3)), frame.plot.bottom() + radius + 1.0)
-                              .toPoint();
+    const QPoint marker =
+        QPointF(frame.pixelX(view.layout().x(3)), frame.plot.bottom() + radius + 1.0).toPoint();
     const qreal ratio = image.devicePixelRatio();
     EXPECT_EQ(image.pixelColor(QPoint(marker.x() * ratio, marker.y() * ratio)).rgb(),
               s.memberColor(3).rgb());

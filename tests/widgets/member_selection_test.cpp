@@ -40,7 +40,7 @@ TEST(MemberSelection, PlainClickReplacesShiftAddsCtrlToggles) {
     s.click({}, Qt::NoModifier);  // a click on the background
     EXPECT_TRUE(s.selectedMembers().isEmpty());
     EXPECT_EQ(changed.count(), 5);
-    s.click({}, Qt::ShiftModifier);  // adding nothing changes nothing
+    s.click({}, Qt::ShiftModifier);     // adding nothing changes nothing
     s.click({-1, 42}, Qt::NoModifier);  // members that do not exist are ignored
     EXPECT_EQ(changed.count(), 5);
 }

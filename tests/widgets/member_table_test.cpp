@@ -96,7 +96,8 @@ TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
     test::loadTwoGroups(s);
     const QModelIndex box = model.index(4, MemberTableModel::Visible);
     EXPECT_TRUE(model.flags(box).testFlag(Qt::ItemIsUserCheckable));
-    EXPECT_FALSE(model.flags(model.index(4, MemberTableModel::Name)).testFlag(Qt::ItemIsUserCheckable));
+    EXPECT_FALSE(
+        model.flags(model.index(4, MemberTableModel::Name)).testFlag(Qt::ItemIsUserCheckable));
     ASSERT_TRUE(model.setData(box, Qt::Unchecked, Qt::CheckStateRole));
     EXPECT_FALSE(s.isMemberVisible(4));
     EXPECT_EQ(box.data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
