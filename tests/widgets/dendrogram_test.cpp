@@ -71,8 +71,12 @@ TEST(DendrogramLayout, TheCutLineForKClustersGivesKClusters) {
         const double h = layout.cutHeight(k);
         EXPECT_EQ(layout.clustersAtHeight(h), k) << "k = " << k;
         // Between the last merge kept and the first undone.
-        if (k < 6) EXPECT_GT(h, tree.merges[static_cast<std::size_t>(6 - k - 1)].height);
-        if (k > 1) EXPECT_LT(h, tree.merges[static_cast<std::size_t>(6 - k)].height);
+        if (k < 6) {
+            EXPECT_GT(h, tree.merges[static_cast<std::size_t>(6 - k - 1)].height);
+        }
+        if (k > 1) {
+            EXPECT_LT(h, tree.merges[static_cast<std::size_t>(6 - k)].height);
+        }
         // Below the cut: exactly the members and the merges kept.
         int below = 0;
         for (int node = 0; node < layout.nodeCount(); ++node) below += layout.isBelowCut(node, k);
