@@ -40,6 +40,11 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
         showSharedSelection();
     };
     connect(m_proxy, &QAbstractItemModel::modelReset, this, resume);
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
+        for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+            if (c != MemberTableModel::Name) m_table->resizeColumnToContents(c);
+        }
+    });
     connect(m_proxy, &QAbstractItemModel::layoutChanged, this, resume);
     connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, resume);
     connect(m_proxy, &QAbstractItemModel::rowsInserted, this, resume);
@@ -50,7 +55,9 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
     m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // Columns are fitted to their contents when new members arrive, not on every change:
+    // ResizeToContents would measure every row each time the cut line moves.
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     m_table->horizontalHeader()->setSectionResizeMode(MemberTableModel::Name, QHeaderView::Stretch);
     m_table->setMouseTracking(true);
     m_table->viewport()->installEventFilter(this);
