@@ -26,7 +26,7 @@
 namespace ensil::app {
 namespace {
 // Default dock sizes at first start: the view keeps most of the window.
-constexpr int kSideDockWidth = 400;
+constexpr int kSideDockWidth = 460;
 constexpr int kDendrogramHeight = 230;
 constexpr int kClusterListHeight = 240;
 

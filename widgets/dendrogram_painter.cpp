@@ -12,6 +12,8 @@ namespace ensil::ui {
 namespace {
 constexpr double kTickLength = 4.0;
 constexpr int kTicks = 4;
+// Selection markers hang below the leaves (radius up to 5 px); names start below them.
+constexpr double kNamesOffset = 14.0;
 
 // Names are drawn (turned 90 degrees) only when a line of text fits between two leaves.
 bool namesFit(const QFont& font, double leafWidth) {
@@ -87,7 +89,8 @@ DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFon
     margins.left = metrics.horizontalAdvance(QStringLiteral("0.000e-00")) + kTickLength + 6.0;
     margins.top = metrics.height() / 2.0 + 2.0;
     margins.right = 8.0;
-    margins.bottom = 10.0 + (namesFit(font, leafWidth) ? longestName(selection, font) : 0.0);
+    margins.bottom =
+        kNamesOffset + 2.0 + (namesFit(font, leafWidth) ? longestName(selection, font) : 0.0);
     return margins;
 }
 
