@@ -119,7 +119,7 @@ void MainWindow::addExportActions(QMenu* file) {
 }
 
 void MainWindow::createEditMenu() {
-    QMenu* edit = new QMenu(tr("&Edit"), this);
+    auto* edit = new QMenu(tr("&Edit"), this);
     // Between File and View, where people look for it.
     const QList<QAction*> menus = menuBar()->actions();
     menuBar()->insertMenu(menus.size() > 1 ? menus.at(1) : nullptr, edit);

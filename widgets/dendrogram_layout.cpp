@@ -72,10 +72,10 @@ double DendrogramLayout::cutHeight(int k) const {
     const int n = m_members;
     if (n <= 1) return 0.5 * m_top;
     k = std::clamp(k, 1, n);
-    const auto mergeNode = [n](int merge) { return static_cast<std::size_t>(n + merge); };
     if (k == 1) return 0.5 * (m_nodes.back().height + m_top);
-    const double upper = m_nodes[mergeNode(n - k)].height;
-    const double lower = k == n ? 0.0 : m_nodes[mergeNode(n - k - 1)].height;
+    // Merge j is node N + j: the first merge undone is N - k, the last kept N - k - 1.
+    const double upper = at(2 * n - k).height;
+    const double lower = k == n ? 0.0 : at(2 * n - k - 1).height;
     return 0.5 * (lower + upper);
 }
 
@@ -83,8 +83,8 @@ int DendrogramLayout::clustersAtHeight(double height) const {
     const int n = m_members;
     if (n == 0) return 0;
     int kept = 0;  // merges below the line
-    for (int merge = 0; merge < n - 1; ++merge) {
-        if (m_nodes[static_cast<std::size_t>(n + merge)].height < height) ++kept;
+    for (int node = n; node < nodeCount(); ++node) {
+        if (at(node).height < height) ++kept;
     }
     return std::clamp(n - kept, 1, n);
 }

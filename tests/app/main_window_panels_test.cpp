@@ -211,16 +211,21 @@ TEST_F(LoadedWindow, EscapeStopsWorkFirstAndOtherwiseClearsTheSelection) {
     EXPECT_TRUE(selection->selectedMembers().isEmpty());
 }
 
-TEST_F(LoadedWindow, OffersTheExportsInTheFileMenu) {
+TEST_F(LoadedWindow, OffersTheExportsAndThePanelsInTheMenus) {
     QStringList names;
     for (QAction* action : window.menuBar()->actions()) {
         if (action->menu() == nullptr) continue;
         names << action->text();
+        QStringList items;
+        for (QAction* item : action->menu()->actions()) items << item->text();
         if (action->text() == QStringLiteral("&File")) {
-            QStringList file;
-            for (QAction* item : action->menu()->actions()) file << item->text();
-            EXPECT_TRUE(file.contains(QStringLiteral("Export &Dendrogram as SVG...")));
-            EXPECT_TRUE(file.contains(QStringLiteral("Export &Member Table as CSV...")));
+            EXPECT_TRUE(items.contains(QStringLiteral("Export &Dendrogram as SVG...")));
+            EXPECT_TRUE(items.contains(QStringLiteral("Export &Member Table as CSV...")));
+        }
+        if (action->text() == QStringLiteral("&View")) {
+            for (const char* dock : {"Clusters", "Members", "Dendrogram"}) {
+                EXPECT_TRUE(items.contains(QString::fromLatin1(dock))) << dock;
+            }
         }
     }
     EXPECT_EQ(names.mid(0, 3), (QStringList{"&File", "&Edit", "&View"}));
