@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QSvgRenderer>
 #include <QTest>
 #include <QWheelEvent>
 #include <cmath>
@@ -235,6 +236,9 @@ TEST(DendrogramExport, WritesAnSvgWithEveryMemberName) {
     EXPECT_TRUE(svg.contains("<svg")) << svg.left(200).toStdString();
     for (int m = 0; m < 6; ++m) EXPECT_TRUE(svg.contains(QStringLiteral(">m%1<").arg(m))) << m;
     EXPECT_TRUE(svg.contains(s.memberColor(0).name(), Qt::CaseInsensitive)) << "cluster colours";
+    const QSvgRenderer reader(path);
+    EXPECT_TRUE(reader.isValid()) << "Qt's own SVG reader cannot read it back";
+    EXPECT_GT(reader.defaultSize().width(), 6 * 10) << "one leaf per text line";
 }
 
 TEST(DendrogramExport, ExplainsWhatWentWrong) {
