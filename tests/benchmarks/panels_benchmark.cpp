@@ -6,7 +6,8 @@
 //  - a selection change of 20 members and the repaint.
 // The 3D view's frame is not included (see ensil_render_benchmark). Prints medians.
 //
-//   xvfb-run -a ensil_panels_benchmark [--runs N]
+//   xvfb-run -a ensil_panels_benchmark [--runs N] [--grab FILE.png]
+// --grab saves the dendrogram of the 200 members as drawn, to look at.
 #include <QApplication>
 #include <QTableView>
 #include <cmath>
@@ -66,8 +67,10 @@ ui::MemberFigures figures(std::size_t n) {
 
 int main(int argc, char** argv) {
     int runs = 15;
+    const char* grabPath = nullptr;
     for (int i = 1; i + 1 < argc; ++i) {
         if (std::strcmp(argv[i], "--runs") == 0) runs = std::max(1, std::atoi(argv[i + 1]));
+        if (std::strcmp(argv[i], "--grab") == 0) grabPath = argv[i + 1];
     }
     QApplication app(argc, argv);
     ui::MemberSelection selection;
@@ -146,5 +149,13 @@ int main(int argc, char** argv) {
         "selection change (20 members): setSelection + appearance %.3f ms, with the "
         "repaint %.2f ms\n",
         selectMs, selectRepaintMs);
+    if (grabPath != nullptr) {
+        selection.setClusterCount(6);
+        selection.setSelection(selection.membersOfCluster(2));
+        if (!dendrogram.grab().save(QString::fromLocal8Bit(grabPath))) {
+            std::fprintf(stderr, "could not write %s\n", grabPath);
+            return 1;
+        }
+    }
     return sink > 0 ? 0 : 1;
 }
