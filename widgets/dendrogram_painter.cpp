@@ -109,7 +109,7 @@ DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSele
 
 void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
                      const MemberSelection& selection, const DendrogramFrame& frame,
-                     const DendrogramStyle& style) {
+                     const DendrogramStyle& style, int hoveredNode) {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setFont(style.font);
@@ -126,6 +126,15 @@ void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayo
     // Leaves scrolled out of the plot must not draw over the axis.
     painter.setClipRect(
         QRectF(frame.plot.left() - 2.0, area.top(), frame.plot.width() + 4.0, area.height()));
+
+    if (hoveredNode >= 0 && hoveredNode < layout.nodeCount()) {
+        const double first = layout.x(layout.firstMember(hoveredNode)) - 0.5;
+        const double top = layout.height(hoveredNode) +
+                           (hoveredNode < layout.memberCount() ? 0.02 * layout.topHeight() : 0.0);
+        painter.fillRect(QRectF(frame.toPixel(first, top),
+                                frame.toPixel(first + layout.memberCountOf(hoveredNode), 0.0)),
+                         style.hover);
+    }
 
     const std::vector<bool> selected = fullySelected(layout, selection);
     // Stems first, then bars, each in its node's colour; selected branches thicker.

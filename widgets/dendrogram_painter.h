@@ -20,6 +20,7 @@ struct DendrogramStyle {
     QColor text{Qt::black};
     QColor cut{200, 30, 30};
     QColor selection{20, 20, 20};
+    QColor hover{60, 120, 220, 50};  // the band behind the branch under the pointer
     QFont font;
     double lineWidth = 1.5;
 };
@@ -39,9 +40,10 @@ DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSele
                                 const QRectF& area, const QFont& font, double leafWidth,
                                 double scroll);
 
-// Paints into `area` of the painter's device.
+// Paints into `area` of the painter's device. A band behind `hoveredNode` (the branch under the
+// pointer; -1 for none) shows the members a click there would select.
 void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
                      const MemberSelection& selection, const DendrogramFrame& frame,
-                     const DendrogramStyle& style);
+                     const DendrogramStyle& style, int hoveredNode = -1);
 
 }  // namespace ensil::ui

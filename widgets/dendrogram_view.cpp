@@ -39,6 +39,8 @@ void DendrogramView::rebuildLayout() {
     // layout is cheap (linear in the members) so it is simply rebuilt.
     m_layout =
         m_selection->isClustered() ? DendrogramLayout(m_selection->tree()) : DendrogramLayout();
+    // Node ids stay valid across a new cut, not across a new tree or new members.
+    if (m_hoveredNode >= m_layout.nodeCount()) m_hoveredNode = -1;
     updateScrollBar();
     viewport()->update();
 }
@@ -49,6 +51,8 @@ DendrogramStyle DendrogramView::style() const {
     s.text = palette().color(QPalette::Text);
     s.line = palette().color(QPalette::PlaceholderText);
     s.selection = palette().color(QPalette::Text);
+    s.hover = palette().color(QPalette::Highlight);
+    s.hover.setAlpha(50);
     s.font = font();
     return s;
 }
@@ -123,7 +127,8 @@ void DendrogramView::dragCutTo(double y) {
 
 void DendrogramView::paintEvent(QPaintEvent* /*event*/) {
     QPainter painter(viewport());
-    paintDendrogram(painter, QRectF(viewport()->rect()), m_layout, *m_selection, frame(), style());
+    paintDendrogram(painter, QRectF(viewport()->rect()), m_layout, *m_selection, frame(), style(),
+                    m_hoveredNode);
 }
 
 void DendrogramView::resizeEvent(QResizeEvent* event) {
@@ -150,7 +155,14 @@ void DendrogramView::mouseMoveEvent(QMouseEvent* event) {
     }
     viewport()->setCursor(isOnCutLine(p) ? Qt::SplitVCursor : Qt::ArrowCursor);
     const int node = nodeAt(m_layout, frame(), p);
+    setHoveredNode(node);
     m_selection->setHovered(node >= 0 && node < m_layout.memberCount() ? node : -1);
+}
+
+void DendrogramView::setHoveredNode(int node) {
+    if (node == m_hoveredNode) return;
+    m_hoveredNode = node;
+    viewport()->update();
 }
 
 void DendrogramView::mouseReleaseEvent(QMouseEvent* event) {
@@ -180,7 +192,10 @@ bool DendrogramView::viewportEvent(QEvent* event) {
         }
         return true;
     }
-    if (event->type() == QEvent::Leave) m_selection->setHovered(-1);
+    if (event->type() == QEvent::Leave) {
+        setHoveredNode(-1);
+        m_selection->setHovered(-1);
+    }
     return QAbstractScrollArea::viewportEvent(event);
 }
 

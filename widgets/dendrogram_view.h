@@ -1,7 +1,8 @@
 // The dendrogram dock: the merge tree of the shared MemberSelection, painted by
 // paintDendrogram. Drag the dashed cut line up or down to choose the number of clusters (live);
 // click a branch to select its members (Shift adds, Ctrl toggles; a click on empty space
-// clears); hover a branch for its merge height, a member's stem to hover the member. The wheel
+// clears); hover a branch for its merge height (its members are shaded), a member's stem to
+// hover the member. The wheel
 // zooms along the leaves around the pointer, Shift + wheel (or a sideways wheel) scrolls.
 // GUI thread only.
 #pragma once
@@ -26,6 +27,8 @@ public:
     [[nodiscard]] double zoom() const { return m_zoom; }
     void setZoom(double zoom, double anchorX);  // keeps the leaf under anchorX in place
     [[nodiscard]] DendrogramStyle style() const;
+    // The branch (node) under the pointer, shaded; -1 for none.
+    [[nodiscard]] int hoveredNode() const { return m_hoveredNode; }
     // The text the tooltip shows at a viewport point (empty when nothing is there).
     [[nodiscard]] QString toolTipAt(QPointF p) const;
 
@@ -48,11 +51,13 @@ private:
     [[nodiscard]] double fitLeafWidth() const;
     [[nodiscard]] bool isOnCutLine(QPointF p) const;
     void dragCutTo(double y);
+    void setHoveredNode(int node);
 
     MemberSelection* m_selection;
     DendrogramLayout m_layout;
     double m_zoom = 1.0;  // 1: all leaves fit the width
     bool m_draggingCut = false;
+    int m_hoveredNode = -1;
 };
 
 }  // namespace ensil::ui

@@ -175,6 +175,18 @@ TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
     EXPECT_EQ(tip, QStringLiteral("Merge height 0.7: 2 members"));
     EXPECT_EQ(view.toolTipAt(frame.toPixel(layout.x(3), 0.1)),
               QStringLiteral("m3 (cluster %1)").arg(s.clusterOf(3) + 1));
+    // Moving over a branch shades its members: what a click there would select.
+    const QPointF pairBar = frame.toPixel(layout.x(pair), layout.height(pair));
+    QTest::mouseMove(view.viewport(), pairBar.toPoint());
+    for (int i = 0; i < 50 && view.hoveredNode() != pair; ++i) QTest::qWait(20);
+    ASSERT_EQ(view.hoveredNode(), pair);
+    const QImage shaded = view.viewport()->grab().toImage();
+    // Inside the band, between the pair's stems and below its bar; outside it, beside the band.
+    const QPointF inside = frame.toPixel(layout.x(pair), 0.5 * layout.height(pair));
+    const QPointF outside = frame.toPixel(layout.x(layout.root()) - 0.3, 0.5 * layout.height(pair));
+    const qreal ratio = shaded.devicePixelRatio();
+    EXPECT_NE(shaded.pixelColor((inside * ratio).toPoint()), view.style().background);
+    EXPECT_EQ(shaded.pixelColor((outside * ratio).toPoint()), view.style().background);
     // Moving over a member's stem hovers that member.
     const QPoint stem = frame.toPixel(layout.x(3), 0.1).toPoint();
     QTest::mouseMove(view.viewport(), stem);
