@@ -4,6 +4,7 @@
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -70,9 +71,6 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &MemberFilterProxy::setFilterText);
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &MemberTablePanel::tableSelectionChanged);
-    connect(m_table, &QTableView::entered, this, [this](const QModelIndex& index) {
-        m_selection->setHovered(memberAtRow(index.row()));
-    });
     connect(m_selection, &MemberSelection::selectionChanged, this,
             &MemberTablePanel::showSharedSelection);
 }
@@ -127,7 +125,13 @@ void MemberTablePanel::showSharedSelection() {
 }
 
 bool MemberTablePanel::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == m_table->viewport() && event->type() == QEvent::Leave) {
+    // Hover is followed here rather than through QAbstractItemView::entered, which never
+    // reports leaving the rows for the empty space below them.
+    if (watched == m_table->viewport() && event->type() == QEvent::MouseMove) {
+        const QModelIndex index =
+            m_table->indexAt(static_cast<QMouseEvent*>(event)->position().toPoint());
+        m_selection->setHovered(index.isValid() ? memberAtRow(index.row()) : -1);
+    } else if (watched == m_table->viewport() && event->type() == QEvent::Leave) {
         m_selection->setHovered(-1);
     }
     return QWidget::eventFilter(watched, event);

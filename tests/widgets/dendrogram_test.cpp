@@ -177,8 +177,7 @@ TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
               QStringLiteral("m3 (cluster %1)").arg(s.clusterOf(3) + 1));
     // Moving over a branch shades its members: what a click there would select.
     const QPointF pairBar = frame.toPixel(layout.x(pair), layout.height(pair));
-    QTest::mouseMove(view.viewport(), pairBar.toPoint());
-    for (int i = 0; i < 50 && view.hoveredNode() != pair; ++i) QTest::qWait(20);
+    test::moveMouse(view.viewport(), pairBar.toPoint());
     ASSERT_EQ(view.hoveredNode(), pair);
     const QImage shaded = view.viewport()->grab().toImage();
     // Inside the band, between the pair's stems and below its bar; outside it, beside the band.
@@ -189,8 +188,7 @@ TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
     EXPECT_EQ(shaded.pixelColor((outside * ratio).toPoint()), view.style().background);
     // Moving over a member's stem hovers that member.
     const QPoint stem = frame.toPixel(layout.x(3), 0.1).toPoint();
-    QTest::mouseMove(view.viewport(), stem);
-    for (int i = 0; i < 50 && s.hovered() != 3; ++i) QTest::qWait(20);
+    test::moveMouse(view.viewport(), stem);
     EXPECT_EQ(s.hovered(), 3) << "at " << stem.x() << "," << stem.y();
 }
 

@@ -194,7 +194,9 @@ TEST(MemberTablePanel, HoveringARowHoversItsMember) {
     panel.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
     const QRect row3 = panel.table()->visualRect(panel.proxy()->index(3, MemberTableModel::Name));
-    QTest::mouseMove(panel.table()->viewport(), row3.center());
-    for (int i = 0; i < 100 && s.hovered() != panel.memberAtRow(3); ++i) QTest::qWait(20);
+    test::moveMouse(panel.table()->viewport(), row3.center());
     EXPECT_EQ(s.hovered(), panel.memberAtRow(3));
+    // Below the last row there is no member.
+    test::moveMouse(panel.table()->viewport(), QPoint(row3.center().x(), 290));
+    EXPECT_EQ(s.hovered(), -1);
 }

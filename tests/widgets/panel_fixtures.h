@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <QAbstractItemModelTester>
+#include <QApplication>
+#include <QMouseEvent>
 #include <QString>
 #include <QStringList>
+#include <QWidget>
 #include <cmath>
 #include <vector>
 
@@ -46,6 +49,15 @@ inline void loadTwoGroups(ui::MemberSelection& selection, int clusters = 2) {
     selection.setMembers(figuresOnALine(kTwoGroups));
     selection.setTree(treeOnALine(kTwoGroups));
     selection.setClusterCount(clusters);
+}
+
+// A mouse move with no button held, delivered straight to the widget. QTest::mouseMove moves
+// the display's real pointer instead, which test processes running side by side on one display
+// fight over.
+inline void moveMouse(QWidget* widget, QPoint pos) {
+    QMouseEvent move(QEvent::MouseMove, QPointF(pos), QPointF(widget->mapToGlobal(pos)),
+                     Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(widget, &move);
 }
 
 // Collects QAbstractItemModelTester's complaints (it reports them as warnings starting with
