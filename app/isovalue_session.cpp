@@ -4,7 +4,8 @@
 #include <numeric>
 
 #include "app/isovalue_job.h"
-#include "gl/palette.h"
+#include "preprocessing/member_summaries.h"
+#include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -24,8 +25,21 @@ float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum
     return maximum;
 }
 
-IsovalueSession::IsovalueSession(ui::SilhouetteView* view, QString cacheDirectory, QObject* parent)
-    : QObject(parent), m_view(view), m_cacheDirectory(std::move(cacheDirectory)) {}
+IsovalueSession::IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* selection,
+                                 QString cacheDirectory, QObject* parent)
+    : QObject(parent),
+      m_view(view),
+      m_selection(selection),
+      m_cacheDirectory(std::move(cacheDirectory)) {}
+
+QStringList IsovalueSession::memberNames() const {
+    QStringList names;
+    for (std::size_t m = 0; m < m_ensemble->memberCount(); ++m) {
+        const std::string& name = m_ensemble->members[m].name;
+        names << (name.empty() ? tr("member %1").arg(m + 1) : QString::fromStdString(name));
+    }
+    return names;
+}
 
 void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
@@ -35,8 +49,11 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_moments = std::move(moments);
     m_sourceKey = std::move(sourceKey);
     m_result.reset();
-    m_clusters = std::min<int>(5, static_cast<int>(m_ensemble->memberCount()));
     m_view->renderer().setMeshes(nullptr);
+    // The members are known now; their figures and clusters come with the first isovalue.
+    m_selection->setMembers({memberNames(), {}, {}});
+    m_selection->setTree({});  // the same names may belong to other data
+    m_selection->setClusterCount(std::min<int>(5, static_cast<int>(m_ensemble->memberCount())));
     m_view->update();
 }
 
@@ -49,6 +66,7 @@ void IsovalueSession::setIsovalue(float isovalue) {
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     const std::string cacheDirectory = m_cacheDirectory.toStdString();
+    const prep::Linkage linkage = m_linkage;
     emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) {
@@ -61,6 +79,7 @@ void IsovalueSession::setIsovalue(float isovalue) {
             input.verticalExaggeration = exaggeration;
             input.cacheDirectory = cacheDirectory;
             input.sourceKey = sourceKey;
+            input.linkage = linkage;
             IsovalueOutcome outcome = runIsovalueJob(input, stop, progress);
             IsovalueResult r;
             r.fromCache = outcome.fromCache;
@@ -72,6 +91,12 @@ void IsovalueSession::setIsovalue(float isovalue) {
             r.meshes = std::move(set);
             r.distances = std::move(outcome.distances);
             r.tree = std::move(outcome.tree);
+            const auto& mean = moments->mean.values;
+            r.distancesToMean =
+                prep::distancesToField(*ensemble, {mean.data(), mean.size()}, isovalue, stop);
+            for (const data::PackedMesh& mesh : r.meshes->members) {
+                r.meanOutlyingness.push_back(prep::meanOutlyingness(mesh));
+            }
             r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
             return r;
         },
@@ -95,7 +120,9 @@ void IsovalueSession::setIsovalue(float isovalue) {
 void IsovalueSession::show(IsovalueResult result, float isovalue) {
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     m_view->renderer().setMeshes(m_result->meshes);
-    applyColours();
+    // Same names: the selection keeps what the user selected and hid.
+    m_selection->setMembers({memberNames(), m_result->distancesToMean, m_result->meanOutlyingness});
+    m_selection->setTree(m_result->tree);
     emit finished(tr("Isovalue %1: %2 triangles for %3 members and the mean, %4 s%5")
                       .arg(isovalue)
                       .arg(m_result->triangles)
@@ -104,20 +131,16 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
                       .arg(m_result->fromCache ? tr(" (from the cache)") : QString()));
 }
 
-std::vector<int> IsovalueSession::labels() const {
-    if (!m_result || m_result->tree.memberCount == 0) return {};
-    return prep::clusterLabels(m_result->tree,
-                               std::clamp(m_clusters, 1, m_result->tree.memberCount));
-}
+std::vector<int> IsovalueSession::labels() const { return m_selection->labels(); }
 
-void IsovalueSession::setClusterCount(int k) {
-    m_clusters = k;
-    applyColours();
-}
+void IsovalueSession::setClusterCount(int k) { m_selection->setClusterCount(k); }
 
-void IsovalueSession::applyColours() {
-    m_view->renderer().setAppearance(gl::clusterAppearance(labels()));
-    m_view->update();
+void IsovalueSession::setLinkage(prep::Linkage linkage) {
+    m_linkage = linkage;
+    if (!m_result || m_result->distances.size == 0) return;
+    // O(N^3) but about a millisecond for 200 members: no background job needed.
+    m_result->tree = prep::clusterMembers(m_result->distances, m_linkage);
+    m_selection->setTree(m_result->tree);
 }
 
 }  // namespace ensil::app

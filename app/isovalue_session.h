@@ -1,8 +1,10 @@
 // Keeps the view's isosurfaces in step with the chosen isovalue: for each new isovalue it runs
-// one background job (meshes through the disk cache, similarity matrix, clustering) and, when
-// it is done, hands the meshes to the renderer and colours members by cluster. The previous
-// isovalue stays on screen until the new one is ready; a newer request drops an older result.
-// Changing the number of clusters recolours at once from the kept merge tree. GUI thread only.
+// one background job (meshes through the disk cache, similarity matrix, clustering, each
+// member's distance to the mean and mean outlyingness) and, when it is done, hands the meshes to
+// the renderer and the members, their figures and the merge tree to the shared MemberSelection
+// (which colours the view and feeds the panels; see MainWindow). The previous isovalue stays on
+// screen until the new one is ready; a newer request drops an older result. The number of
+// clusters and the linkage change at once from the kept distances. GUI thread only.
 #pragma once
 
 #include <QObject>
@@ -18,7 +20,8 @@
 
 namespace ensil::ui {
 class SilhouetteView;
-}
+class MemberSelection;
+}  // namespace ensil::ui
 
 namespace ensil::app {
 
@@ -26,6 +29,8 @@ struct IsovalueResult {
     std::shared_ptr<const data::MeshSet> meshes;
     prep::DistanceMatrix distances;
     prep::MergeTree tree;
+    std::vector<double> distancesToMean;   // per member, in the similarity measure
+    std::vector<double> meanOutlyingness;  // per member, over its isosurface's vertices
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;
@@ -34,13 +39,18 @@ struct IsovalueResult {
 class IsovalueSession : public QObject {
     Q_OBJECT
 public:
-    IsovalueSession(ui::SilhouetteView* view, QString cacheDirectory, QObject* parent = nullptr);
+    // The selection outlives the session (both are the main window's).
+    IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* selection,
+                    QString cacheDirectory, QObject* parent = nullptr);
 
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
     void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                      std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
     void setIsovalue(float isovalue);
     void setClusterCount(int k);
+    // Clusters the current distances again (at once) and uses this linkage from now on.
+    void setLinkage(prep::Linkage linkage);
+    [[nodiscard]] prep::Linkage linkage() const { return m_linkage; }
     void cancel() { m_job.cancel(); }
 
     [[nodiscard]] const IsovalueResult* result() const { return m_result.get(); }
@@ -55,15 +65,16 @@ signals:
 
 private:
     void show(IsovalueResult result, float isovalue);
-    void applyColours();
+    [[nodiscard]] QStringList memberNames() const;
 
     ui::SilhouetteView* m_view;
+    ui::MemberSelection* m_selection;
     QString m_cacheDirectory;
     std::shared_ptr<const data::Ensemble> m_ensemble;
     std::shared_ptr<const prep::EnsembleMoments> m_moments;
     std::string m_sourceKey;
     std::unique_ptr<IsovalueResult> m_result;
-    int m_clusters = 5;
+    prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};
 };
 

@@ -54,7 +54,12 @@ int main(int argc, char* argv[]) {
     QApplication app(argc, argv);
     setApplicationIdentity();
     ensil::app::MainWindow window;
-    window.show();
+    // The first run has no saved layout: the view and its three docks want the whole screen.
+    if (window.hasSavedLayout()) {
+        window.show();
+    } else {
+        window.showMaximized();
+    }
     const auto& paths = outcome.workbench->selection.paths;
     if (paths.empty()) {
         window.loadDemo();

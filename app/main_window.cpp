@@ -26,6 +26,7 @@
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
+#include "widgets/cluster_panel.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
@@ -80,6 +81,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createRenderDocks();
     createAnimation();
     createMenus();
+    linkPanels();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -93,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     };
     QSettings settings;
     resize(1400, 900);
+    m_hasSavedLayout = settings.contains(QStringLiteral("window/state"));
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
     restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
 }
@@ -110,6 +113,7 @@ void MainWindow::createDocks() {
     dock->setWidget(m_info);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
     m_info->showMessage(tr("No ensemble loaded."));
+    createPanels();
 }
 
 void MainWindow::createMenus() {
@@ -130,8 +134,10 @@ void MainWindow::createMenus() {
         }
     });
     screenshot->setShortcut(QKeySequence(Qt::Key_F12));
+    addExportActions(file);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    createEditMenu();
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view,
@@ -162,26 +168,11 @@ void MainWindow::createMenus() {
 void MainWindow::createToolbar() {
     m_toolbar = new ui::RenderToolbar(this);
     addToolBar(Qt::TopToolBarArea, m_toolbar);
-    m_toolbar->setThickness(m_view->renderer().settings().thickness);
     m_session = new IsovalueSession(
-        m_view, QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
-    gl::RenderSettings& settings = m_view->renderer().settings();
+        m_view, m_selection,
+        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this,
             [this](double v) { m_session->setIsovalue(static_cast<float>(v)); });
-    connect(m_toolbar, &ui::RenderToolbar::modeChanged, this, [this, &settings](int mode) {
-        settings.mode = static_cast<gl::RenderMode>(mode);
-        m_view->update();
-    });
-    connect(m_toolbar, &ui::RenderToolbar::thicknessChanged, this, [this, &settings](double tau) {
-        settings.thickness = static_cast<float>(tau);
-        m_view->update();
-    });
-    connect(m_toolbar, &ui::RenderToolbar::meanToggled, this, [this, &settings](bool shown) {
-        settings.showMean = shown;
-        m_view->update();
-    });
-    connect(m_toolbar, &ui::RenderToolbar::verticalExaggerationChanged, this,
-            &MainWindow::setVerticalExaggeration);
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, m_session,
             &IsovalueSession::setClusterCount);
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
@@ -199,8 +190,8 @@ void MainWindow::createStatusBar() {
     m_progress->setTextVisible(false);
     m_cancel = new QToolButton(this);
     m_cancel->setText(tr("Cancel"));
+    // Esc belongs to Edit > Clear Selection, which stops the work in progress first.
     m_cancel->setToolTip(tr("Stop the work in progress (Esc)"));
-    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
     connect(m_cancel, &QToolButton::clicked, this, &MainWindow::cancelLoading);
     statusBar()->addWidget(m_statusText, 1);
     statusBar()->addPermanentWidget(m_progress);
@@ -365,7 +356,6 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
-    m_view->setMemberNames(memberNames());
     updatePlaneBox();
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
@@ -379,9 +369,15 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
         applyPendingProjectView();
         if (m_pendingProject->isovalue) iso = *m_pendingProject->isovalue;
         clusters = std::clamp(m_pendingProject->clusters, 1, static_cast<int>(e.memberCount()));
-        m_session->setClusterCount(clusters);
     }
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
+    m_view->setMemberNames(memberNames());
+    if (m_pendingProject) {
+        m_session->setClusterCount(clusters);
+        const prep::Linkage linkage = prep::parseLinkage(m_pendingProject->linkage);
+        m_session->setLinkage(linkage);
+        m_clusterPanel->setLinkage(linkage);
+    }
     m_toolbar->setMemberCount(static_cast<int>(e.memberCount()), clusters);
     m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
     m_toolbar->setIsovalueHistogram(stats.histogram);

@@ -32,6 +32,10 @@ class RenderPanel;
 class CuttingPlanePanel;
 class AnimationBar;
 class OpenDataDialog;
+class MemberSelection;
+class MemberTablePanel;
+class ClusterPanel;
+class DendrogramView;
 }  // namespace ensil::ui
 
 namespace ensil::app {
@@ -62,6 +66,16 @@ public:
     [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
+    // Loading or building isosurfaces.
+    [[nodiscard]] bool isBusy() const;
+
+    // The shared selection model every panel and the view follow (main_window_panels.cpp).
+    [[nodiscard]] ui::MemberSelection* memberSelection() const { return m_selection; }
+    [[nodiscard]] ui::MemberTablePanel* memberTable() const { return m_memberTable; }
+    [[nodiscard]] ui::ClusterPanel* clusterPanel() const { return m_clusterPanel; }
+    [[nodiscard]] ui::DendrogramView* dendrogram() const { return m_dendrogram; }
+    // Whether a window layout was saved by an earlier run (the first run starts maximised).
+    [[nodiscard]] bool hasSavedLayout() const { return m_hasSavedLayout; }
 
     // Saves the view (without the UI) as an image, at the view's size or any other; returns
     // false with a message on failure.
@@ -78,6 +92,17 @@ public:
     void setMissingFileLocator(std::function<QString(const QString&)> locate) {
         m_locateMissingFile = std::move(locate);
     }
+
+public slots:
+    // What the 3D view reports (ui::SilhouetteView's memberClicked, memberHovered and
+    // membersBrushed): a click on a member (-1: the background; a plain click there clears),
+    // the member under the pointer (-1: none), members inside a rubber band. Shift adds to the
+    // selection, Ctrl toggles.
+    void onMemberClicked(int member, Qt::KeyboardModifiers modifiers);
+    void onMemberHovered(int member);
+    void onMembersBrushed(const QList<int>& members, Qt::KeyboardModifiers modifiers);
+    // Esc: stops the work in progress if there is any, otherwise clears the selection.
+    void escape();
 
 signals:
     void ensembleLoaded();
@@ -105,6 +130,15 @@ private:
     [[nodiscard]] QStringList memberNames() const;
     void updatePlaneBox();
     void createStatusBar();
+    // main_window_panels.cpp
+    void createPanels();
+    void arrangeDefaultLayout();
+    void addExportActions(QMenu* file);
+    void createEditMenu();
+    void linkPanels();
+    void showSelectionInView();
+    void exportDendrogram();
+    void exportMemberTable();
     void onLoadFailed(const std::exception_ptr& error, bool cancelled);
     void askForMemberDimension(const data::Error& error);
     void showOverview(std::unique_ptr<EnsembleOverview> overview);
@@ -133,6 +167,11 @@ private:
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;
+    ui::MemberSelection* m_selection = nullptr;
+    ui::MemberTablePanel* m_memberTable = nullptr;
+    ui::ClusterPanel* m_clusterPanel = nullptr;
+    ui::DendrogramView* m_dendrogram = nullptr;
+    bool m_hasSavedLayout = false;
     std::string m_loadingKey;  // identity of the data being loaded, for the mesh cache
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;

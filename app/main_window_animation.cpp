@@ -8,6 +8,7 @@
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
 #include "widgets/animation_bar.h"
+#include "widgets/member_selection.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
@@ -26,6 +27,9 @@ void MainWindow::createAnimation() {
     const auto forget = [this] { m_animation->setSequence({}); };
     connect(m_session, &IsovalueSession::finished, this, forget);
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this, forget);
+    connect(m_selection, &ui::MemberSelection::selectionChanged, this, forget);
+    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, forget);
+    connect(m_selection, &ui::MemberSelection::clustersChanged, this, forget);
 }
 
 std::vector<int> MainWindow::animationSequence() const {
@@ -53,10 +57,7 @@ std::vector<int> MainWindow::animationSequence() const {
 
 QStringList MainWindow::memberNames() const {
     QStringList names;
-    if (!m_overview) return names;
-    for (const data::Member& member : m_overview->ensemble->members) {
-        names.push_back(QString::fromStdString(member.name));
-    }
+    for (int m = 0; m < m_selection->memberCount(); ++m) names.push_back(m_selection->name(m));
     return names;
 }
 

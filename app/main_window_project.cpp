@@ -10,9 +10,11 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/member_appearance.h"
 #include "app/project.h"
+#include "preprocessing/clustering.h"
+#include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
+#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
@@ -83,12 +85,13 @@ Project MainWindow::captureProject() const {
     p.verticalExaggeration = renderer.frame().verticalExaggeration();
     const QColor bg = m_renderPanel->background();
     p.background = {bg.redF(), bg.greenF(), bg.blueF()};
-    p.clusters = m_toolbar->clusterCount();
-    for (std::size_t m = 0; m < renderer.appearances().size(); ++m) {
-        const gl::MemberAppearance& a = renderer.appearances()[m];
-        if (!a.visible) p.hiddenMembers.push_back(static_cast<int>(m));
-        if (a.selected) p.selection.push_back(static_cast<int>(m));
+    p.clusters = m_selection->requestedClusterCount();
+    p.linkage = prep::linkageName(m_session->linkage());
+    for (int m = 0; m < m_selection->memberCount(); ++m) {
+        if (!m_selection->isMemberVisible(m)) p.hiddenMembers.push_back(m);
     }
+    const QList<int> selected = m_selection->selectedMembers();
+    p.selection.assign(selected.begin(), selected.end());
     p.windowGeometry = saveGeometry();
     p.windowState = saveState();
     return p;
@@ -189,8 +192,13 @@ void MainWindow::applyPendingProjectMembers() {
     if (!m_pendingProject) return;
     const Project p = *m_pendingProject;
     m_pendingProject.reset();
-    m_view->renderer().setAppearance(memberAppearance(m_session->labels(), p));
-    m_view->update();
+    // Through the shared selection, so every panel shows it too (memberAppearance() draws a
+    // project the same way for ensil render).
+    for (const int m : p.hiddenMembers) m_selection->setMemberVisible(m, false);
+    for (const int c : p.hiddenClusters) {
+        if (c < m_selection->clusterCount()) m_selection->setClusterVisible(c, false);
+    }
+    m_selection->setSelection(QList<int>(p.selection.begin(), p.selection.end()));
     m_projectPath = m_pendingProjectPath;
     rememberRecentProject(m_projectPath);
     updateWindowTitle();

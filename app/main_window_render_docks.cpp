@@ -42,13 +42,20 @@ void MainWindow::createRenderDocks() {
     auto* renderDock = new QDockWidget(tr("Rendering"), this);
     renderDock->setObjectName(QStringLiteral("renderingDock"));
     renderDock->setWidget(m_renderPanel);
-    addDockWidget(Qt::LeftDockWidgetArea, renderDock);
 
     m_planePanel = new ui::CuttingPlanePanel;
     auto* planeDock = new QDockWidget(tr("Cutting Plane"), this);
     planeDock->setObjectName(QStringLiteral("cuttingPlaneDock"));
     planeDock->setWidget(m_planePanel);
-    addDockWidget(Qt::LeftDockWidgetArea, planeDock);
+    // Tabs beside the clusters: a third column of docks would squeeze the view.
+    auto* clusters = findChild<QDockWidget*>(QStringLiteral("clusterDock"));
+    addDockWidget(Qt::RightDockWidgetArea, renderDock);
+    addDockWidget(Qt::RightDockWidgetArea, planeDock);
+    if (clusters != nullptr) {
+        tabifyDockWidget(clusters, renderDock);
+        tabifyDockWidget(renderDock, planeDock);
+        clusters->raise();
+    }
 
     connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, [this] {
         gl::RenderSettings& settings = m_view->renderer().settings();

@@ -14,6 +14,7 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 
@@ -163,7 +164,7 @@ TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     // Vertical exaggeration stretches the box and rebuilds the display-space attributes.
     const float height = window.view()->renderer().frame().boxMax().z;
     built.clear();
-    auto* exaggeration = window.renderToolbar()->findChildren<QDoubleSpinBox*>().back();
+    auto* exaggeration = window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration");
     exaggeration->setValue(3.0);
     EXPECT_FLOAT_EQ(window.view()->renderer().frame().boxMax().z, 3.0F * height);
     ASSERT_TRUE(built.wait(60000)) << "attributes were not rebuilt";

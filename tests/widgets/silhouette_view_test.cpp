@@ -87,3 +87,17 @@ TEST_F(ShownView, ResetCameraRestoresTheDefaultView) {
     EXPECT_NEAR(cam.eye().y, eye.y, 1e-5);
     EXPECT_NEAR(cam.eye().z, eye.z, 1e-5);
 }
+
+TEST_F(ShownView, PaintsTheAxisLabelsOverTheFrame) {
+    const QImage labelled = m_view.grabFramebuffer();
+    m_view.renderer().settings().showAxes = false;
+    const QImage plain = m_view.grabFramebuffer();
+    // Text is light on the dark background: labelled has many more light pixels.
+    const auto light = [](const QImage& image) {
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) n += image.pixelColor(x, y).lightness() > 160;
+        return n;
+    };
+    EXPECT_GT(light(labelled), light(plain) + 100);
+}

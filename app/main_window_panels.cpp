@@ -1,0 +1,182 @@
+// The main window's linked panels: the shared MemberSelection, the cluster list, member table
+// and dendrogram docks, their menu entries (File > Export, Edit > Clear Selection), and the
+// link from the selection to the 3D view. Part of MainWindow; kept apart so main_window.cpp
+// stays about loading files.
+#include <QAction>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <algorithm>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "gl/renderer.h"
+#include "widgets/cluster_panel.h"
+#include "widgets/csv_export.h"
+#include "widgets/dendrogram_export.h"
+#include "widgets/dendrogram_view.h"
+#include "widgets/member_selection.h"
+#include "widgets/member_table_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+namespace {
+// Default dock sizes at first start: the view keeps most of the window.
+constexpr int kSideDockWidth = 460;
+constexpr int kDendrogramHeight = 230;
+constexpr int kClusterListHeight = 240;
+
+QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* name,
+                      QWidget* content) {
+    auto* dock = new QDockWidget(title, window);
+    dock->setObjectName(QString::fromLatin1(name));
+    dock->setWidget(content);
+    return dock;
+}
+
+// The hovered member stands out in the view. gl::Renderer::setHighlightedMember is on its way;
+// until then the hovered member is drawn in a lighter tint of its colour. After the merge this
+// becomes: renderer.setHighlightedMember(hovered).
+}  // namespace
+
+void MainWindow::createPanels() {
+    m_selection = new ui::MemberSelection(this);
+    m_clusterPanel = new ui::ClusterPanel(m_selection);
+    m_memberTable = new ui::MemberTablePanel(m_selection);
+    m_dendrogram = new ui::DendrogramView(m_selection);
+    makeDock(this, tr("Clusters"), "clusterDock", m_clusterPanel);
+    makeDock(this, tr("Members"), "memberTableDock", m_memberTable);
+    makeDock(this, tr("Dendrogram"), "dendrogramDock", m_dendrogram);
+    arrangeDefaultLayout();
+}
+
+void MainWindow::arrangeDefaultLayout() {
+    // One column on the right (ensemble facts and clusters as tabs above the member table) and
+    // the dendrogram below the view: three docks around the view still leave it most of the
+    // window. Saved layouts (restoreState) replace this.
+    auto* ensemble = findChild<QDockWidget*>(QStringLiteral("ensembleDock"));
+    auto* clusters = findChild<QDockWidget*>(QStringLiteral("clusterDock"));
+    auto* members = findChild<QDockWidget*>(QStringLiteral("memberTableDock"));
+    auto* dendrogram = findChild<QDockWidget*>(QStringLiteral("dendrogramDock"));
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::RightDockWidgetArea, clusters);
+    splitDockWidget(clusters, members, Qt::Vertical);
+    // Tabified after the split, or the split would land in the tab group.
+    if (ensemble != nullptr) tabifyDockWidget(clusters, ensemble);
+    addDockWidget(Qt::BottomDockWidgetArea, dendrogram);
+    clusters->raise();
+    resizeDocks({clusters}, {kSideDockWidth}, Qt::Horizontal);
+    resizeDocks({clusters, members}, {kClusterListHeight, 1000 - kClusterListHeight}, Qt::Vertical);
+    resizeDocks({dendrogram}, {kDendrogramHeight}, Qt::Vertical);
+}
+
+void MainWindow::linkPanels() {
+    // The selection drives the view: colours, visibility, selection and the hovered member.
+    for (auto signal :
+         {&ui::MemberSelection::membersReset, &ui::MemberSelection::clustersChanged,
+          &ui::MemberSelection::visibilityChanged, &ui::MemberSelection::selectionChanged}) {
+        connect(m_selection, signal, this, &MainWindow::showSelectionInView);
+    }
+    connect(m_selection, &ui::MemberSelection::hoverChanged, this,
+            &MainWindow::showSelectionInView);
+    // The toolbar's cluster count and the dendrogram's cut line are one setting.
+    connect(m_selection, &ui::MemberSelection::clustersChanged, this, [this] {
+        if (m_selection->isClustered()) {
+            m_toolbar->setMemberCount(m_selection->memberCount(), m_selection->clusterCount());
+        }
+    });
+    connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, m_session,
+            &IsovalueSession::setLinkage);
+    // The view reports picks, hovers and rubber bands here.
+    connect(m_view, &ui::SilhouetteView::memberClicked, this, &MainWindow::onMemberClicked);
+    connect(m_view, &ui::SilhouetteView::memberHovered, this, &MainWindow::onMemberHovered);
+    connect(m_view, &ui::SilhouetteView::membersBrushed, this, &MainWindow::onMembersBrushed);
+}
+
+void MainWindow::showSelectionInView() {
+    gl::Renderer& renderer = m_view->renderer();
+    renderer.setAppearance(m_selection->appearance());
+    renderer.setHighlightedMember(m_selection->hovered());
+    m_view->update();
+}
+
+void MainWindow::addExportActions(QMenu* file) {
+    file->addAction(tr("Export &Dendrogram as SVG..."), this, &MainWindow::exportDendrogram);
+    file->addAction(tr("Export &Member Table as CSV..."), this, &MainWindow::exportMemberTable);
+}
+
+void MainWindow::createEditMenu() {
+    auto* edit = new QMenu(tr("&Edit"), this);
+    // Between File and View, where people look for it.
+    const QList<QAction*> menus = menuBar()->actions();
+    menuBar()->insertMenu(menus.size() > 1 ? menus.at(1) : nullptr, edit);
+    QAction* clear = edit->addAction(tr("&Clear Selection"), this, &MainWindow::escape);
+    clear->setObjectName(QStringLiteral("clearSelectionAction"));
+    clear->setShortcut(QKeySequence(Qt::Key_Escape));
+    clear->setStatusTip(tr("Esc: stop the work in progress, or else clear the selection"));
+    edit->addAction(tr("Select &All Members"), QKeySequence::SelectAll, this, [this] {
+        QList<int> all;
+        for (int m = 0; m < m_selection->memberCount(); ++m) all << m;
+        m_selection->setSelection(all);
+    });
+    edit->addAction(tr("&Show All Members"), this, [this] { m_selection->showAll(); });
+}
+
+bool MainWindow::isBusy() const {
+    return m_loader.isRunning() || (m_session != nullptr && m_session->isRunning());
+}
+
+void MainWindow::escape() {
+    if (isBusy()) {
+        cancelLoading();
+        return;
+    }
+    m_selection->clearSelection();
+}
+
+void MainWindow::onMemberClicked(int member, Qt::KeyboardModifiers modifiers) {
+    m_selection->click(member < 0 ? QList<int>{} : QList<int>{member}, modifiers);
+}
+
+void MainWindow::onMemberHovered(int member) { m_selection->setHovered(member); }
+
+void MainWindow::onMembersBrushed(const QList<int>& members, Qt::KeyboardModifiers modifiers) {
+    m_selection->click(members, modifiers);
+}
+
+void MainWindow::exportDendrogram() {
+    QString error;
+    if (!m_selection->isClustered()) {
+        QMessageBox::information(this, tr("No dendrogram yet"),
+                                 tr("The dendrogram appears once the members of an isovalue "
+                                    "have been compared."));
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Dendrogram"), QStringLiteral("dendrogram.svg"), tr("SVG images (*.svg)"));
+    if (path.isEmpty()) return;
+    if (!ui::writeDendrogramSvg(*m_selection, path, &error)) {
+        QMessageBox::warning(this, tr("Dendrogram not exported"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Dendrogram written to %1").arg(path), 5000);
+}
+
+void MainWindow::exportMemberTable() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Member Table"), QStringLiteral("members.csv"), tr("CSV files (*.csv)"));
+    if (path.isEmpty()) return;
+    QString error;
+    if (!ui::writeMemberTableCsv(*m_selection, path, &error)) {
+        QMessageBox::warning(this, tr("Member table not exported"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Member table written to %1").arg(path), 5000);
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,262 @@
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QFile>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QSvgRenderer>
+#include <QTest>
+#include <QWheelEvent>
+#include <cmath>
+#include <limits>
+
+#include "panel_fixtures.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/dendrogram_export.h"
+#include "widgets/dendrogram_layout.h"
+#include "widgets/dendrogram_view.h"
+#include "widgets/member_selection.h"
+
+using namespace ensil;
+using ui::DendrogramLayout;
+
+namespace {
+// The merge whose members are exactly these (-1 when none).
+int mergeOf(const DendrogramLayout& layout, QList<int> members) {
+    std::sort(members.begin(), members.end());
+    for (int node = layout.memberCount(); node < layout.nodeCount(); ++node) {
+        QList<int> below = layout.membersOf(node);
+        std::sort(below.begin(), below.end());
+        if (below == members) return node;
+    }
+    return -1;
+}
+
+void showAndWait(QWidget& w) {
+    w.resize(600, 300);
+    w.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+}
+}  // namespace
+
+TEST(DendrogramLayout, PlacesLeavesInTreeOrderAndMergesBetweenTheirChildren) {
+    const prep::MergeTree tree = test::treeOnALine(test::kTwoGroups);
+    const DendrogramLayout layout(tree);
+    ASSERT_EQ(layout.memberCount(), 6);
+    ASSERT_EQ(layout.nodeCount(), 11);
+    const std::vector<int> order = prep::leafOrder(tree);
+    for (int p = 0; p < 6; ++p) {
+        EXPECT_DOUBLE_EQ(layout.x(order[static_cast<std::size_t>(p)]), p + 0.5);
+        EXPECT_EQ(layout.height(order[static_cast<std::size_t>(p)]), 0.0);
+    }
+    for (std::size_t k = 0; k < tree.merges.size(); ++k) {
+        const int node = 6 + static_cast<int>(k);
+        EXPECT_DOUBLE_EQ(layout.height(node), tree.merges[k].height);
+        EXPECT_DOUBLE_EQ(layout.x(node),
+                         0.5 * (layout.x(tree.merges[k].a) + layout.x(tree.merges[k].b)));
+        EXPECT_EQ(layout.parent(tree.merges[k].a), node);
+        EXPECT_EQ(layout.memberCountOf(node), tree.merges[k].size);
+    }
+    EXPECT_EQ(layout.parent(layout.root()), -1);
+    QList<int> all = layout.membersOf(layout.root());
+    std::sort(all.begin(), all.end());
+    EXPECT_EQ(all, (QList<int>{0, 1, 2, 3, 4, 5}));
+    EXPECT_GE(mergeOf(layout, {0, 2, 4}), 6) << "each group is one branch";
+    EXPECT_GT(layout.topHeight(), layout.height(layout.root()));
+}
+
+TEST(DendrogramLayout, TheCutLineForKClustersGivesKClusters) {
+    const prep::MergeTree tree = test::treeOnALine(test::kTwoGroups);
+    const DendrogramLayout layout(tree);
+    for (int k = 1; k <= 6; ++k) {
+        const double h = layout.cutHeight(k);
+        EXPECT_EQ(layout.clustersAtHeight(h), k) << "k = " << k;
+        // Between the last merge kept and the first undone.
+        if (k < 6) {
+            EXPECT_GT(h, tree.merges[static_cast<std::size_t>(6 - k - 1)].height);
+        }
+        if (k > 1) {
+            EXPECT_LT(h, tree.merges[static_cast<std::size_t>(6 - k)].height);
+        }
+        // Below the cut: exactly the members and the merges kept.
+        int below = 0;
+        for (int node = 0; node < layout.nodeCount(); ++node) below += layout.isBelowCut(node, k);
+        EXPECT_EQ(below, 6 + (6 - k));
+    }
+    EXPECT_EQ(layout.clustersAtHeight(-1.0), 6);
+    EXPECT_EQ(layout.clustersAtHeight(1e9), 1);
+}
+
+TEST(DendrogramLayout, DrawsInfiniteMergesJustAboveTheFiniteOnes) {
+    // Two pairs with no valid point in common between them.
+    const double inf = std::numeric_limits<double>::infinity();
+    prep::DistanceMatrix d{4, {0, 1, inf, inf, 1, 0, inf, inf, inf, inf, 0, 2, inf, inf, 2, 0}};
+    const DendrogramLayout layout(prep::clusterMembers(d));
+    const int root = layout.root();
+    EXPECT_TRUE(std::isinf(layout.mergeHeight(root)));
+    EXPECT_TRUE(std::isfinite(layout.height(root)));
+    EXPECT_GT(layout.height(root), 2.0);
+    EXPECT_LT(layout.height(root), layout.topHeight());
+    EXPECT_EQ(layout.clustersAtHeight(layout.cutHeight(2)), 2);
+}
+
+TEST(DendrogramLayout, FindsTheBranchUnderAPoint) {
+    const DendrogramLayout layout(test::treeOnALine(test::kTwoGroups));
+    ui::DendrogramFrame frame;
+    frame.plot = QRectF(50, 10, 600, 200);
+    frame.leafWidth = 100;
+    frame.topHeight = layout.topHeight();
+    const int group = mergeOf(layout, {1, 3, 5});
+    // On its bar, on its stem, on a member's stem, far from everything.
+    const QPointF bar = frame.toPixel(layout.x(layout.childA(group)) + 0.1, layout.height(group));
+    EXPECT_EQ(ui::nodeAt(layout, frame, bar + QPointF(0, 2)), group);
+    const QPointF stem =
+        frame.toPixel(layout.x(group), 0.5 * (layout.height(group) + layout.height(layout.root())));
+    EXPECT_EQ(ui::nodeAt(layout, frame, stem + QPointF(3, 0)), group);
+    EXPECT_EQ(ui::nodeAt(layout, frame, frame.toPixel(layout.x(5), 0.0) + QPointF(0, -2)), 5);
+    EXPECT_EQ(ui::nodeAt(layout, frame, QPointF(5, 5)), -1);
+    // Scrolling moves everything left.
+    frame.scroll = 100;
+    EXPECT_EQ(ui::nodeAt(layout, frame, bar + QPointF(-100, 2)), group);
+}
+
+TEST(DendrogramView, ClickingABranchSelectsItsMembers) {
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    test::loadTwoGroups(s);
+    showAndWait(view);
+    const auto& layout = view.layout();
+    const ui::DendrogramFrame frame = view.frame();
+    const int group = mergeOf(layout, {1, 3, 5});
+    const QPoint bar = frame.toPixel(layout.x(group), layout.height(group)).toPoint();
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, Qt::NoModifier, bar);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{1, 3, 5}));
+    const QPoint leaf = frame.toPixel(layout.x(0), 0.0).toPoint() + QPoint(0, -3);
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, Qt::ShiftModifier, leaf);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{0, 1, 3, 5}));
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, Qt::ControlModifier, bar);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{0}));
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, Qt::NoModifier,
+                      frame.plot.topLeft().toPoint() + QPoint(3, 3));
+    EXPECT_TRUE(s.selectedMembers().isEmpty()) << "a click on empty space clears";
+}
+
+TEST(DendrogramView, DraggingTheCutLineSetsTheNumberOfClustersLive) {
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    test::loadTwoGroups(s, 2);
+    showAndWait(view);
+    const auto& layout = view.layout();
+    const ui::DendrogramFrame frame = view.frame();
+    const int x = static_cast<int>(frame.plot.right()) - 10;
+    const int from = static_cast<int>(std::lround(frame.pixelY(layout.cutHeight(2))));
+    QSignalSpy changed(&s, &ui::MemberSelection::clustersChanged);
+    QTest::mousePress(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, from));
+    QTest::mouseMove(view.viewport(),
+                     QPoint(x, static_cast<int>(frame.pixelY(layout.cutHeight(4)))));
+    EXPECT_EQ(s.clusterCount(), 4) << "changes while dragging, not only on release";
+    const int to = static_cast<int>(frame.pixelY(layout.cutHeight(1)));
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, to));
+    EXPECT_EQ(s.clusterCount(), 1);
+    EXPECT_EQ(changed.count(), 2);
+    EXPECT_TRUE(s.selectedMembers().isEmpty()) << "dragging the line selects nothing";
+}
+
+TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    test::loadTwoGroups(s);
+    showAndWait(view);
+    const auto& layout = view.layout();
+    const ui::DendrogramFrame frame = view.frame();
+    const int pair = mergeOf(layout, {1, 3});
+    ASSERT_GE(pair, 0);
+    const QString tip = view.toolTipAt(frame.toPixel(layout.x(pair), layout.height(pair)));
+    EXPECT_EQ(tip, QStringLiteral("Merge height 0.7: 2 members"));
+    EXPECT_EQ(view.toolTipAt(frame.toPixel(layout.x(3), 0.1)),
+              QStringLiteral("m3 (cluster %1)").arg(s.clusterOf(3) + 1));
+    // Moving over a branch shades its members: what a click there would select.
+    const QPointF pairBar = frame.toPixel(layout.x(pair), layout.height(pair));
+    test::moveMouse(view.viewport(), pairBar.toPoint());
+    ASSERT_EQ(view.hoveredNode(), pair);
+    const QImage shaded = view.viewport()->grab().toImage();
+    // Inside the band, between the pair's stems and below its bar; outside it, beside the band.
+    const QPointF inside = frame.toPixel(layout.x(pair), 0.5 * layout.height(pair));
+    const QPointF outside = frame.toPixel(layout.x(layout.root()) - 0.3, 0.5 * layout.height(pair));
+    const qreal ratio = shaded.devicePixelRatio();
+    EXPECT_NE(shaded.pixelColor((inside * ratio).toPoint()), view.style().background);
+    EXPECT_EQ(shaded.pixelColor((outside * ratio).toPoint()), view.style().background);
+    // Moving over a member's stem hovers that member.
+    const QPoint stem = frame.toPixel(layout.x(3), 0.1).toPoint();
+    test::moveMouse(view.viewport(), stem);
+    EXPECT_EQ(s.hovered(), 3) << "at " << stem.x() << "," << stem.y();
+}
+
+TEST(DendrogramView, TheWheelZoomsAroundThePointer) {
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    std::vector<double> positions;
+    for (int m = 0; m < 200; ++m) positions.push_back(std::sin(m * 0.37) * 10.0 + m * 0.01);
+    s.setMembers(test::figuresOnALine(positions));
+    s.setTree(test::treeOnALine(positions));
+    showAndWait(view);
+    const auto& layout = view.layout();
+    const int member = layout.leafOrder()[120];
+    const double before = view.frame().pixelX(layout.x(member));
+    const QPointF at(before, view.frame().plot.center().y());
+    QWheelEvent wheel(at, view.viewport()->mapToGlobal(at), QPoint(), QPoint(0, 360), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(view.viewport(), &wheel);
+    EXPECT_GT(view.zoom(), 1.5);
+    EXPECT_NEAR(view.frame().pixelX(layout.x(member)), before, 1.0) << "the leaf stays put";
+    EXPECT_GT(view.frame().leafWidth, 1.5 * view.frame().plot.width() / 200.0);
+    EXPECT_GT(view.horizontalScrollBar()->maximum(), 0) << "the zoomed tree scrolls";
+}
+
+TEST(DendrogramView, ShowsSelectedMembersUnderTheirLeaves) {
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    test::loadTwoGroups(s);
+    showAndWait(view);
+    s.setSelection({3});
+    QTest::qWait(20);
+    const QImage image = view.viewport()->grab().toImage();
+    const ui::DendrogramFrame frame = view.frame();
+    const double radius = std::clamp(frame.leafWidth * 0.3, 2.0, 5.0);
+    const QPoint marker =
+        QPointF(frame.pixelX(view.layout().x(3)), frame.plot.bottom() + radius + 1.0).toPoint();
+    const qreal ratio = image.devicePixelRatio();
+    EXPECT_EQ(image.pixelColor(QPoint(marker.x() * ratio, marker.y() * ratio)).rgb(),
+              s.memberColor(3).rgb());
+    const QPoint unselected =
+        QPointF(frame.pixelX(view.layout().x(1)), frame.plot.bottom() + radius + 1.0).toPoint();
+    EXPECT_NE(image.pixelColor(unselected).rgb(), s.memberColor(1).rgb());
+}
+
+TEST(DendrogramExport, WritesAnSvgWithEveryMemberName) {
+    ui::MemberSelection s;
+    test::loadTwoGroups(s);
+    test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("tree.svg"));
+    QString error;
+    ASSERT_TRUE(ui::writeDendrogramSvg(s, path, &error)) << error.toStdString();
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(file.readAll());
+    EXPECT_TRUE(svg.contains("<svg")) << svg.left(200).toStdString();
+    for (int m = 0; m < 6; ++m) EXPECT_TRUE(svg.contains(QStringLiteral(">m%1<").arg(m))) << m;
+    EXPECT_TRUE(svg.contains(s.memberColor(0).name(), Qt::CaseInsensitive)) << "cluster colours";
+    const QSvgRenderer reader(path);
+    EXPECT_TRUE(reader.isValid()) << "Qt's own SVG reader cannot read it back";
+    EXPECT_GT(reader.defaultSize().width(), 6 * 10) << "one leaf per text line";
+}
+
+TEST(DendrogramExport, ExplainsWhatWentWrong) {
+    ui::MemberSelection s;
+    QString error;
+    EXPECT_FALSE(ui::writeDendrogramSvg(s, "/tmp/never.svg", &error));
+    EXPECT_TRUE(error.contains("no dendrogram yet")) << error.toStdString();
+    test::loadTwoGroups(s);
+    EXPECT_FALSE(ui::writeDendrogramSvg(s, "/nonexistent-folder/tree.svg", &error));
+    EXPECT_TRUE(error.contains("/nonexistent-folder/tree.svg")) << error.toStdString();
+}

@@ -1,0 +1,202 @@
+#include <gtest/gtest.h>
+
+#include <QItemSelectionModel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTableView>
+#include <QTest>
+#include <cmath>
+
+#include "panel_fixtures.h"
+#include "widgets/member_filter_proxy.h"
+#include "widgets/member_selection.h"
+#include "widgets/member_table_model.h"
+#include "widgets/member_table_panel.h"
+
+using namespace ensil;
+using ui::MemberTableModel;
+
+namespace {
+QList<int> selectedTableMembers(const ui::MemberTablePanel& panel) {
+    QList<int> members;
+    for (const QModelIndex& row : panel.table()->selectionModel()->selectedRows()) {
+        members << panel.memberAtRow(row.row());
+    }
+    std::sort(members.begin(), members.end());
+    return members;
+}
+}  // namespace
+
+// A model that breaks the contract: a table whose cells claim children.
+class BrokenModel : public QAbstractTableModel {
+public:
+    int rowCount(const QModelIndex&) const override { return 2; }
+    int columnCount(const QModelIndex&) const override { return 2; }
+    QVariant data(const QModelIndex&, int) const override { return {}; }
+};
+
+TEST(ModelContractCheck, NoticesABrokenModel) {
+    BrokenModel broken;
+    test::ModelContractCheck check(&broken);
+    EXPECT_FALSE(test::ModelContractCheck::failures().isEmpty())
+        << "the checker must be able to fail";
+}
+
+TEST(MemberTableModel, KeepsQtsModelContractThroughEveryChange) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    ui::MemberFilterProxy proxy;
+    proxy.setSourceModel(&model);
+    test::ModelContractCheck check(&model);
+    test::ModelContractCheck proxyCheck(&proxy);
+    test::loadTwoGroups(s);
+    s.setClusterCount(3);
+    s.setMemberVisible(1, false);
+    s.soloCluster(0);
+    s.setHovered(2);
+    s.setHovered(4);
+    proxy.sort(MemberTableModel::DistanceToMean);
+    proxy.setFilterText(QStringLiteral("m1"));
+    auto figures = test::figuresOnALine({1.0, 2.0});
+    s.setMembers(figures);
+    s.setMembers({});
+    EXPECT_TRUE(test::ModelContractCheck::failures().isEmpty())
+        << test::ModelContractCheck::failures().join('\n').toStdString();
+}
+
+TEST(MemberTableModel, ShowsEveryColumnAndFollowsTheCut) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    test::loadTwoGroups(s);
+    ASSERT_EQ(model.rowCount(), 6);
+    ASSERT_EQ(model.columnCount(), MemberTableModel::ColumnCount);
+    const auto cell = [&](int row, int column, int role = Qt::DisplayRole) {
+        return model.index(row, column).data(role);
+    };
+    EXPECT_EQ(cell(3, MemberTableModel::Index).toInt(), 4);
+    EXPECT_EQ(cell(3, MemberTableModel::Name).toString(), QStringLiteral("m3"));
+    EXPECT_EQ(cell(3, MemberTableModel::Cluster).toInt(), s.clusterOf(3) + 1);
+    EXPECT_EQ(cell(3, MemberTableModel::Cluster, Qt::DecorationRole).value<QColor>(),
+              s.memberColor(3));
+    EXPECT_EQ(cell(3, MemberTableModel::DistanceToMean).toString(), QStringLiteral("10.7"));
+    EXPECT_EQ(cell(3, MemberTableModel::MeanOutlyingness).toString(), QStringLiteral("21.4"));
+    EXPECT_EQ(cell(2, MemberTableModel::MeanOutlyingness).toString(), QStringLiteral("-"));
+    EXPECT_EQ(cell(3, MemberTableModel::Visible, Qt::CheckStateRole).toInt(), Qt::Checked);
+
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    s.setClusterCount(6);
+    ASSERT_EQ(changed.count(), 1);
+    EXPECT_EQ(changed.front().at(0).toModelIndex().column(), MemberTableModel::Cluster);
+    EXPECT_EQ(cell(3, MemberTableModel::Cluster).toInt(), s.clusterOf(3) + 1);
+}
+
+TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    test::loadTwoGroups(s);
+    const QModelIndex box = model.index(4, MemberTableModel::Visible);
+    EXPECT_TRUE(model.flags(box).testFlag(Qt::ItemIsUserCheckable));
+    EXPECT_FALSE(
+        model.flags(model.index(4, MemberTableModel::Name)).testFlag(Qt::ItemIsUserCheckable));
+    ASSERT_TRUE(model.setData(box, Qt::Unchecked, Qt::CheckStateRole));
+    EXPECT_FALSE(s.isMemberVisible(4));
+    EXPECT_EQ(box.data(Qt::CheckStateRole).toInt(), Qt::Unchecked);
+    EXPECT_FALSE(model.setData(model.index(4, MemberTableModel::Name), "x", Qt::EditRole));
+}
+
+TEST(MemberTableModel, TintsTheHoveredMembersRow) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    test::loadTwoGroups(s);
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+    s.setHovered(3);
+    s.setHovered(1);
+    for (int m = 0; m < 6; ++m) {
+        EXPECT_EQ(model.index(m, MemberTableModel::Name).data(Qt::BackgroundRole).isValid(), m == 1)
+            << m;
+    }
+    ASSERT_EQ(changed.count(), 3) << "row 3 tinted, row 3 cleared, row 1 tinted";
+    EXPECT_EQ(changed.at(1).at(0).toModelIndex().row(), 3);
+    EXPECT_EQ(changed.at(2).at(0).toModelIndex().row(), 1);
+}
+
+TEST(MemberFilterProxy, SortsNumbersAsNumbersWithUnknownValuesLast) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    ui::MemberFilterProxy proxy;
+    proxy.setSourceModel(&model);
+    s.setMembers(test::figuresOnALine({3.0, 20.0, 100.0, 1.0}));
+    proxy.sort(MemberTableModel::MeanOutlyingness, Qt::AscendingOrder);
+    QList<int> order;
+    for (int r = 0; r < proxy.rowCount(); ++r) order << proxy.mapToSource(proxy.index(r, 0)).row();
+    // 6, 40, (member 2 unknown), 2 -> 2, 6, 40, unknown. Text order would put 40 before 6.
+    EXPECT_EQ(order, (QList<int>{3, 0, 1, 2}));
+}
+
+TEST(MemberFilterProxy, FiltersByNameOrIndex) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    ui::MemberFilterProxy proxy;
+    proxy.setSourceModel(&model);
+    auto figures = test::figuresOnALine({0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11});
+    figures.names[11] = QStringLiteral("Control run");
+    s.setMembers(figures);
+    proxy.setFilterText(QStringLiteral("M1"));
+    EXPECT_EQ(proxy.rowCount(), 2);  // m1, m10
+    proxy.setFilterText(QStringLiteral("control"));
+    ASSERT_EQ(proxy.rowCount(), 1);
+    EXPECT_EQ(proxy.mapToSource(proxy.index(0, 0)).row(), 11);
+    proxy.setFilterText(QStringLiteral("3"));  // name m3, and the member whose # is 3 (m2)
+    EXPECT_EQ(proxy.rowCount(), 2);
+    proxy.setFilterText(QString());
+    EXPECT_EQ(proxy.rowCount(), 12);
+}
+
+TEST(MemberTablePanel, SelectingRowsSelectsMembersAndTheOtherWayRound) {
+    ui::MemberSelection s;
+    ui::MemberTablePanel panel(&s);
+    test::loadTwoGroups(s);
+    panel.resize(500, 300);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    // Sorted by distance to the mean, descending: row 0 is member 5 (12.0).
+    panel.table()->sortByColumn(MemberTableModel::DistanceToMean, Qt::DescendingOrder);
+    ASSERT_EQ(panel.memberAtRow(0), 5);
+
+    QSignalSpy changed(&s, &ui::MemberSelection::selectionChanged);
+    panel.table()->selectRow(0);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{5}));
+    const QRect row2 = panel.table()->visualRect(panel.proxy()->index(2, MemberTableModel::Name));
+    QTest::mouseClick(panel.table()->viewport(), Qt::LeftButton, Qt::ControlModifier,
+                      row2.center());
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{1, 5})) << "row 2 is member 1 (10.0)";
+    EXPECT_EQ(changed.count(), 2);
+
+    s.setSelection({0, 2});
+    EXPECT_EQ(selectedTableMembers(panel), (QList<int>{0, 2}));
+    EXPECT_EQ(changed.count(), 3) << "showing the selection must not feed back";
+
+    // Members the filter hides stay selected; new rows selected add to them.
+    panel.filterBox()->setText(QStringLiteral("m4"));
+    ASSERT_EQ(panel.proxy()->rowCount(), 1);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{0, 2})) << "filtering selects nothing";
+    panel.table()->selectRow(0);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{0, 2, 4}));
+    panel.filterBox()->clear();
+    EXPECT_EQ(selectedTableMembers(panel), (QList<int>{0, 2, 4}));
+}
+
+TEST(MemberTablePanel, HoveringARowHoversItsMember) {
+    ui::MemberSelection s;
+    ui::MemberTablePanel panel(&s);
+    test::loadTwoGroups(s);
+    panel.resize(500, 300);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    const QRect row3 = panel.table()->visualRect(panel.proxy()->index(3, MemberTableModel::Name));
+    test::moveMouse(panel.table()->viewport(), row3.center());
+    EXPECT_EQ(s.hovered(), panel.memberAtRow(3));
+    // Below the last row there is no member.
+    test::moveMouse(panel.table()->viewport(), QPoint(row3.center().x(), 290));
+    EXPECT_EQ(s.hovered(), -1);
+}

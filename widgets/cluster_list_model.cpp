@@ -1,0 +1,89 @@
+#include "widgets/cluster_list_model.h"
+
+#include "widgets/member_selection.h"
+
+namespace ensil::ui {
+
+ClusterListModel::ClusterListModel(MemberSelection* selection, QObject* parent)
+    : QAbstractTableModel(parent), m_selection(selection) {
+    connect(selection, &MemberSelection::clustersAboutToChange, this,
+            &ClusterListModel::beginResetModel);
+    connect(selection, &MemberSelection::clustersChanged, this, &ClusterListModel::endResetModel);
+    connect(selection, &MemberSelection::visibilityChanged, this, [this] {
+        if (rowCount() == 0) return;
+        emit dataChanged(index(0, Visible), index(rowCount() - 1, Visible), {Qt::CheckStateRole});
+    });
+}
+
+int ClusterListModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_selection->clusterCount();
+}
+
+int ClusterListModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant ClusterListModel::data(const QModelIndex& index, int role) const {
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
+    const int c = index.row();
+    switch (index.column()) {
+        case Cluster:
+            if (role == Qt::DisplayRole) return tr("Cluster %1").arg(c + 1);
+            if (role == Qt::DecorationRole) return MemberSelection::clusterColor(c);
+            break;
+        case Size:
+            if (role == Qt::DisplayRole) {
+                return static_cast<int>(m_selection->membersOfCluster(c).size());
+            }
+            if (role == Qt::TextAlignmentRole) {
+                return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
+            }
+            break;
+        case Visible:
+            if (role == Qt::CheckStateRole) return m_selection->clusterVisibility(c);
+            break;
+        default:
+            break;
+    }
+    if (role == Qt::ToolTipRole) {
+        QStringList names;
+        for (int m : m_selection->membersOfCluster(c)) names << m_selection->name(m);
+        return names.join(QStringLiteral(", "));
+    }
+    return {};
+}
+
+QVariant ClusterListModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) {
+        return QAbstractTableModel::headerData(section, orientation, role);
+    }
+    switch (section) {
+        case Cluster:
+            return tr("Cluster");
+        case Size:
+            return tr("Size");
+        case Visible:
+            return tr("Visible");
+        default:
+            return {};
+    }
+}
+
+Qt::ItemFlags ClusterListModel::flags(const QModelIndex& index) const {
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == Visible) f |= Qt::ItemIsUserCheckable;
+    return f;
+}
+
+bool ClusterListModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || index.column() != Visible ||
+        role != Qt::CheckStateRole) {
+        return false;
+    }
+    // Qt's delegate turns a click on a partly checked box into Checked: show the whole cluster.
+    m_selection->setClusterVisible(index.row(),
+                                   static_cast<Qt::CheckState>(value.toInt()) != Qt::Unchecked);
+    return true;
+}
+
+}  // namespace ensil::ui

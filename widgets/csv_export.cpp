@@ -1,0 +1,59 @@
+#include "widgets/csv_export.h"
+
+#include <QSaveFile>
+#include <QStringList>
+#include <cmath>
+
+#include "widgets/member_selection.h"
+
+namespace ensil::ui {
+namespace {
+QString field(const QString& text) {
+    if (!text.contains(QLatin1Char(',')) && !text.contains(QLatin1Char('"')) &&
+        !text.contains(QLatin1Char('\n')) && !text.contains(QLatin1Char('\r'))) {
+        return text;
+    }
+    QString quoted = text;
+    quoted.replace(QLatin1String("\""), QLatin1String("\"\""));
+    return QLatin1Char('"') + quoted + QLatin1Char('"');
+}
+
+QString number(double value) {
+    if (std::isnan(value)) return {};
+    if (std::isinf(value)) return value > 0 ? QStringLiteral("inf") : QStringLiteral("-inf");
+    return QString::number(value, 'g', 17);
+}
+}  // namespace
+
+QString memberTableCsv(const MemberSelection& selection) {
+    QStringList lines;
+    lines << QStringLiteral(
+        "index,name,cluster,distance_to_mean,mean_outlyingness,visible,selected");
+    for (int m = 0; m < selection.memberCount(); ++m) {
+        const int cluster = selection.clusterOf(m);
+        lines << QStringList{QString::number(m + 1),
+                             field(selection.name(m)),
+                             cluster < 0 ? QString() : QString::number(cluster + 1),
+                             number(selection.distanceToMean(m)),
+                             number(selection.meanOutlyingness(m)),
+                             selection.isMemberVisible(m) ? QStringLiteral("1")
+                                                          : QStringLiteral("0"),
+                             selection.isSelected(m) ? QStringLiteral("1") : QStringLiteral("0")}
+                     .join(QLatin1Char(','));
+    }
+    return lines.join(QStringLiteral("\r\n")) + QStringLiteral("\r\n");
+}
+
+bool writeMemberTableCsv(const MemberSelection& selection, const QString& path, QString* error) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(memberTableCsv(selection).toUtf8()) < 0 ||
+        !file.commit()) {
+        if (error != nullptr) {
+            *error = QObject::tr("Could not write '%1': %2").arg(path, file.errorString());
+        }
+        return false;
+    }
+    return true;
+}
+
+}  // namespace ensil::ui

@@ -1,0 +1,18 @@
+// The member table as CSV (RFC 4180: comma separated, fields with commas, quotes or line
+// breaks quoted, quotes doubled), for spreadsheets and scripts: index, name, cluster, distance
+// to the mean member, mean outlyingness, visible, selected. Numbers in the C locale with full
+// precision; unknown values empty. GUI thread (reads MemberSelection).
+#pragma once
+
+#include <QString>
+
+namespace ensil::ui {
+
+class MemberSelection;
+
+[[nodiscard]] QString memberTableCsv(const MemberSelection& selection);
+// Writes memberTableCsv to a file; false with a message naming the file on failure.
+bool writeMemberTableCsv(const MemberSelection& selection, const QString& path,
+                         QString* error = nullptr);
+
+}  // namespace ensil::ui

@@ -1,0 +1,17 @@
+// The dendrogram as an SVG file (QSvgGenerator), drawn by the same painter as the view, with
+// every member's leaf and name, on a white background. GUI thread (reads MemberSelection).
+#pragma once
+
+#include <QSize>
+#include <QString>
+
+namespace ensil::ui {
+
+class MemberSelection;
+
+// Returns false with a message naming the file when it cannot be written or when there is no
+// merge tree to draw yet.
+bool writeDendrogramSvg(const MemberSelection& selection, const QString& path,
+                        QString* error = nullptr);
+
+}  // namespace ensil::ui

@@ -1,0 +1,190 @@
+#include "widgets/dendrogram_painter.h"
+
+#include <QFontMetricsF>
+#include <QPainterPath>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "widgets/member_selection.h"
+
+namespace ensil::ui {
+namespace {
+constexpr double kTickLength = 4.0;
+constexpr int kTicks = 4;
+// Selection markers hang below the leaves (radius up to 5 px); names start below them.
+constexpr double kNamesOffset = 14.0;
+
+// Names are drawn (turned 90 degrees) only when a line of text fits between two leaves.
+bool namesFit(const QFont& font, double leafWidth) {
+    return leafWidth >= QFontMetricsF(font).height();
+}
+
+double longestName(const MemberSelection& selection, const QFont& font) {
+    const QFontMetricsF metrics(font);
+    double widest = 0.0;
+    for (int m = 0; m < selection.memberCount(); ++m) {
+        widest = std::max(widest, metrics.horizontalAdvance(selection.name(m)));
+    }
+    return std::min(widest, 140.0);  // long names are elided
+}
+
+// Every node whose members are all selected.
+std::vector<bool> fullySelected(const DendrogramLayout& layout, const MemberSelection& selection) {
+    std::vector<bool> all(static_cast<std::size_t>(layout.nodeCount()), false);
+    for (int node = 0; node < layout.nodeCount(); ++node) {
+        all[static_cast<std::size_t>(node)] =
+            node < layout.memberCount() ? selection.isSelected(node)
+                                        : all[static_cast<std::size_t>(layout.childA(node))] &&
+                                              all[static_cast<std::size_t>(layout.childB(node))];
+    }
+    return all;
+}
+
+QColor nodeColor(int node, const DendrogramLayout& layout, const MemberSelection& selection,
+                 const DendrogramStyle& style) {
+    const int k = selection.clusterCount();
+    if (k == 0 || !layout.isBelowCut(node, k)) return style.line;
+    return selection.memberColor(layout.firstMember(node));
+}
+
+void drawAxis(QPainter& painter, const DendrogramFrame& frame, const DendrogramStyle& style) {
+    painter.setPen(QPen(style.text, 1.0));
+    const QFontMetricsF metrics(style.font);
+    const double x = frame.plot.left();
+    painter.drawLine(QPointF(x, frame.plot.top()), QPointF(x, frame.plot.bottom()));
+    for (int t = 0; t <= kTicks; ++t) {
+        const double h = frame.topHeight * t / kTicks;
+        const double y = frame.pixelY(h);
+        painter.drawLine(QPointF(x - kTickLength, y), QPointF(x, y));
+        const QString label = QString::number(h, 'g', 3);
+        const double w = metrics.horizontalAdvance(label);
+        painter.drawText(QPointF(x - kTickLength - 2.0 - w, y + metrics.ascent() / 2.0), label);
+    }
+}
+
+void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSelection& selection,
+               const DendrogramFrame& frame, const DendrogramStyle& style) {
+    const QFontMetricsF metrics(style.font);
+    painter.setPen(style.text);
+    for (int p = 0; p < layout.memberCount(); ++p) {
+        const int member = layout.leafOrder()[static_cast<std::size_t>(p)];
+        const double x = frame.pixelX(p + 0.5);
+        if (x < frame.plot.left() - 1.0 || x > frame.plot.right() + 1.0) continue;
+        const QString name = metrics.elidedText(selection.name(member), Qt::ElideRight, 140.0);
+        painter.save();
+        painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(),
+                          frame.plot.bottom() + 8.0);
+        painter.rotate(90.0);
+        painter.drawText(QPointF(0.0, 0.0), name);
+        painter.restore();
+    }
+}
+}  // namespace
+
+DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFont& font,
+                                    double leafWidth) {
+    const QFontMetricsF metrics(font);
+    DendrogramMargins margins;
+    margins.left = metrics.horizontalAdvance(QStringLiteral("0.000e-00")) + kTickLength + 6.0;
+    margins.top = metrics.height() / 2.0 + 2.0;
+    margins.right = 8.0;
+    margins.bottom =
+        kNamesOffset + 2.0 + (namesFit(font, leafWidth) ? longestName(selection, font) : 0.0);
+    return margins;
+}
+
+DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSelection& selection,
+                                const QRectF& area, const QFont& font, double leafWidth,
+                                double scroll) {
+    const DendrogramMargins margins = dendrogramMargins(selection, font, leafWidth);
+    DendrogramFrame frame;
+    frame.plot = area.adjusted(margins.left, margins.top, -margins.right, -margins.bottom);
+    if (frame.plot.height() < 1.0) frame.plot.setHeight(1.0);
+    frame.leafWidth = leafWidth;
+    frame.scroll = scroll;
+    frame.topHeight = layout.topHeight();
+    return frame;
+}
+
+void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
+                     const MemberSelection& selection, const DendrogramFrame& frame,
+                     const DendrogramStyle& style, int hoveredNode) {
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setFont(style.font);
+    painter.fillRect(area, style.background);
+    if (layout.memberCount() == 0) {
+        painter.setPen(style.text);
+        painter.drawText(area, Qt::AlignCenter,
+                         QObject::tr("No clusters yet: the dendrogram appears when the members "
+                                     "of an isovalue have been compared."));
+        painter.restore();
+        return;
+    }
+    drawAxis(painter, frame, style);
+    // Leaves scrolled out of the plot must not draw over the axis.
+    painter.setClipRect(
+        QRectF(frame.plot.left() - 2.0, area.top(), frame.plot.width() + 4.0, area.height()));
+
+    if (hoveredNode >= 0 && hoveredNode < layout.nodeCount()) {
+        const double first = layout.x(layout.firstMember(hoveredNode)) - 0.5;
+        const double top = layout.height(hoveredNode) +
+                           (hoveredNode < layout.memberCount() ? 0.02 * layout.topHeight() : 0.0);
+        painter.fillRect(QRectF(frame.toPixel(first, top),
+                                frame.toPixel(first + layout.memberCountOf(hoveredNode), 0.0)),
+                         style.hover);
+    }
+
+    const std::vector<bool> selected = fullySelected(layout, selection);
+    // Stems first, then bars, each in its node's colour; selected branches thicker.
+    for (int node = 0; node < layout.nodeCount(); ++node) {
+        const bool thick = selected[static_cast<std::size_t>(node)];
+        QPen pen(nodeColor(node, layout, selection, style),
+                 thick ? 2.5 * style.lineWidth : style.lineWidth);
+        pen.setCapStyle(Qt::FlatCap);
+        painter.setPen(pen);
+        const double x = layout.x(node);
+        if (layout.parent(node) >= 0) {
+            painter.drawLine(frame.toPixel(x, layout.height(node)),
+                             frame.toPixel(x, layout.height(layout.parent(node))));
+        }
+        if (layout.childA(node) >= 0) {
+            painter.drawLine(frame.toPixel(layout.x(layout.childA(node)), layout.height(node)),
+                             frame.toPixel(layout.x(layout.childB(node)), layout.height(node)));
+        }
+    }
+
+    // Markers under the selected members and the hovered one.
+    const double radius = std::clamp(frame.leafWidth * 0.3, 2.0, 5.0);
+    for (int p = 0; p < layout.memberCount(); ++p) {
+        const int member = layout.leafOrder()[static_cast<std::size_t>(p)];
+        const bool hovered = member == selection.hovered();
+        if (!selection.isSelected(member) && !hovered) continue;
+        const QPointF at(frame.pixelX(p + 0.5), frame.plot.bottom() + radius + 1.0);
+        painter.setPen(QPen(style.selection, hovered ? 2.0 : 1.0));
+        painter.setBrush(selection.isSelected(member) ? QBrush(selection.memberColor(member))
+                                                      : Qt::NoBrush);
+        painter.drawEllipse(at, radius, radius);
+    }
+    painter.setBrush(Qt::NoBrush);
+    if (namesFit(style.font, frame.leafWidth)) drawNames(painter, layout, selection, frame, style);
+
+    // The cut line across the whole plot, with the number of clusters at its right end.
+    const int k = selection.clusterCount();
+    if (k > 0) {
+        painter.setClipping(false);
+        const double y = frame.pixelY(layout.cutHeight(k));
+        QPen pen(style.cut, 1.5, Qt::DashLine);
+        painter.setPen(pen);
+        painter.drawLine(QPointF(frame.plot.left(), y), QPointF(frame.plot.right(), y));
+        const QString label = k == 1 ? QObject::tr("1 cluster") : QObject::tr("%1 clusters").arg(k);
+        const QFontMetricsF metrics(style.font);
+        painter.drawText(QPointF(frame.plot.right() - metrics.horizontalAdvance(label) - 2.0,
+                                 y - metrics.descent() - 2.0),
+                         label);
+    }
+    painter.restore();
+}
+
+}  // namespace ensil::ui

@@ -1,0 +1,49 @@
+// Paints a dendrogram with QPainter, for the on-screen DendrogramView and for SVG export alike:
+// a height axis, the tree (branches below the cut in their cluster's colour, the rest in the
+// line colour; branches whose members are all selected drawn thicker), a marker under every
+// selected or hovered member, the members' names when there is room, and the cut line.
+// GUI thread (QPainter on widgets); any thread for QSvgGenerator / QImage targets.
+#pragma once
+
+#include <QColor>
+#include <QPainter>
+
+#include "widgets/dendrogram_layout.h"
+
+namespace ensil::ui {
+
+class MemberSelection;
+
+struct DendrogramStyle {
+    QColor background{Qt::white};
+    QColor line{90, 90, 90};
+    QColor text{Qt::black};
+    QColor cut{200, 30, 30};
+    QColor selection{20, 20, 20};
+    QColor hover{60, 120, 220, 50};  // the band behind the branch under the pointer
+    QFont font;
+    double lineWidth = 1.5;
+};
+
+// Pixels the painter reserves around the plot: the height axis on the left, the names below.
+struct DendrogramMargins {
+    double left = 0.0;
+    double bottom = 0.0;
+    double top = 0.0;
+    double right = 0.0;
+};
+DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFont& font,
+                                    double leafWidth);
+
+// The frame that fits `members` leaves `leafWidth` pixels apart into `area` after margins.
+DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSelection& selection,
+                                const QRectF& area, const QFont& font, double leafWidth,
+                                double scroll);
+
+// Paints into `area` of the painter's device. A band behind `hoveredNode` (the branch under the
+// pointer; -1 for none) shows the members a click there would select.
+void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
+                     const MemberSelection& selection, const DendrogramFrame& frame,
+                     const DendrogramStyle& style, int hoveredNode = -1);
+
+}  // namespace ensil::ui

@@ -1,0 +1,220 @@
+#include "widgets/member_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "gl/palette.h"
+
+namespace ensil::ui {
+namespace {
+constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
+
+double entry(const std::vector<double>& values, int member) {
+    return member >= 0 && static_cast<std::size_t>(member) < values.size()
+               ? values[static_cast<std::size_t>(member)]
+               : kUnknown;
+}
+
+void requireLength(const std::vector<double>& values, qsizetype names, const char* what) {
+    if (!values.empty() && static_cast<qsizetype>(values.size()) != names) {
+        throw std::invalid_argument(std::string(what) + " has " + std::to_string(values.size()) +
+                                    " values for " + std::to_string(names) + " members");
+    }
+}
+}  // namespace
+
+MemberSelection::MemberSelection(QObject* parent) : QObject(parent) {}
+
+void MemberSelection::setMembers(MemberFigures figures) {
+    requireLength(figures.distanceToMean, figures.names.size(), "the distance to the mean");
+    requireLength(figures.meanOutlyingness, figures.names.size(), "the mean outlyingness");
+    const bool sameMembers = figures.names == m_figures.names;
+    emit membersAboutToBeReset();
+    emit clustersAboutToChange();
+    m_figures = std::move(figures);
+    const auto n = static_cast<std::size_t>(memberCount());
+    if (!sameMembers) {
+        m_visible.assign(n, true);
+        m_selected.assign(n, false);
+        m_hovered = -1;
+        m_tree = {};
+    }
+    relabel();
+    emit clustersChanged();
+    emit membersReset();
+    if (!sameMembers) {
+        emit visibilityChanged();
+        emit selectionChanged();
+        emit hoverChanged(m_hovered);
+    }
+}
+
+void MemberSelection::setTree(prep::MergeTree tree) {
+    if (tree.memberCount != 0 && tree.memberCount != memberCount()) {
+        throw std::invalid_argument("the merge tree clusters " + std::to_string(tree.memberCount) +
+                                    " members but there are " + std::to_string(memberCount()));
+    }
+    emit clustersAboutToChange();
+    m_tree = std::move(tree);
+    relabel();
+    emit clustersChanged();
+}
+
+void MemberSelection::setClusterCount(int k) {
+    if (k < 1 || k == m_clusters) return;
+    emit clustersAboutToChange();
+    m_clusters = k;
+    relabel();
+    emit clustersChanged();
+}
+
+void MemberSelection::relabel() {
+    if (!isClustered()) {
+        m_labels.clear();
+        return;
+    }
+    m_labels = prep::clusterLabels(m_tree, std::clamp(m_clusters, 1, m_tree.memberCount));
+    m_clusters = std::clamp(m_clusters, 1, m_tree.memberCount);
+}
+
+double MemberSelection::distanceToMean(int member) const {
+    return entry(m_figures.distanceToMean, member);
+}
+
+double MemberSelection::meanOutlyingness(int member) const {
+    return entry(m_figures.meanOutlyingness, member);
+}
+
+int MemberSelection::clusterOf(int member) const {
+    return valid(member) && !m_labels.empty() ? m_labels[static_cast<std::size_t>(member)] : -1;
+}
+
+QList<int> MemberSelection::membersOfCluster(int cluster) const {
+    QList<int> members;
+    for (int m = 0; m < static_cast<int>(m_labels.size()); ++m) {
+        if (m_labels[static_cast<std::size_t>(m)] == cluster) members << m;
+    }
+    return members;
+}
+
+QColor MemberSelection::clusterColor(int cluster) {
+    const glm::vec3 c = cluster < 0 ? gl::kClusterPalette.back() : gl::clusterColor(cluster);
+    return QColor::fromRgbF(c.r, c.g, c.b);
+}
+
+bool MemberSelection::isMemberVisible(int member) const {
+    return valid(member) && m_visible[static_cast<std::size_t>(member)];
+}
+
+Qt::CheckState MemberSelection::clusterVisibility(int cluster) const {
+    int shown = 0;
+    int total = 0;
+    for (std::size_t m = 0; m < m_labels.size(); ++m) {
+        if (m_labels[m] != cluster) continue;
+        ++total;
+        if (m_visible[m]) ++shown;
+    }
+    if (total > 0 && shown == total) return Qt::Checked;
+    return shown > 0 ? Qt::PartiallyChecked : Qt::Unchecked;
+}
+
+void MemberSelection::setMemberVisible(int member, bool visible) {
+    if (!valid(member) || m_visible[static_cast<std::size_t>(member)] == visible) return;
+    m_visible[static_cast<std::size_t>(member)] = visible;
+    emit visibilityChanged();
+}
+
+void MemberSelection::setClusterVisible(int cluster, bool visible) {
+    bool changed = false;
+    for (std::size_t m = 0; m < m_labels.size(); ++m) {
+        if (m_labels[m] != cluster || m_visible[m] == visible) continue;
+        m_visible[m] = visible;
+        changed = true;
+    }
+    if (changed) emit visibilityChanged();
+}
+
+void MemberSelection::soloCluster(int cluster) {
+    if (cluster < 0 || cluster >= clusterCount()) return;
+    std::vector<bool> visible(m_visible.size());
+    for (std::size_t m = 0; m < m_labels.size(); ++m) visible[m] = m_labels[m] == cluster;
+    if (visible == m_visible) return;
+    m_visible = std::move(visible);
+    emit visibilityChanged();
+}
+
+void MemberSelection::showAll() {
+    if (std::all_of(m_visible.begin(), m_visible.end(), [](bool v) { return v; })) return;
+    m_visible.assign(m_visible.size(), true);
+    emit visibilityChanged();
+}
+
+bool MemberSelection::isSelected(int member) const {
+    return valid(member) && m_selected[static_cast<std::size_t>(member)];
+}
+
+QList<int> MemberSelection::selectedMembers() const {
+    QList<int> members;
+    for (int m = 0; m < memberCount(); ++m) {
+        if (m_selected[static_cast<std::size_t>(m)]) members << m;
+    }
+    return members;
+}
+
+int MemberSelection::selectedCount() const {
+    return static_cast<int>(std::count(m_selected.begin(), m_selected.end(), true));
+}
+
+void MemberSelection::setSelection(const QList<int>& members) {
+    std::vector<bool> selected(m_selected.size(), false);
+    for (int m : members) {
+        if (valid(m)) selected[static_cast<std::size_t>(m)] = true;
+    }
+    if (selected == m_selected) return;
+    m_selected = std::move(selected);
+    emit selectionChanged();
+}
+
+void MemberSelection::click(const QList<int>& members, Qt::KeyboardModifiers modifiers) {
+    if (modifiers.testFlag(Qt::ControlModifier)) {
+        QList<int> next = selectedMembers();
+        for (int m : members) {
+            if (!valid(m)) continue;
+            if (isSelected(m)) {
+                next.removeAll(m);
+            } else {
+                next << m;
+            }
+        }
+        setSelection(next);
+    } else if (modifiers.testFlag(Qt::ShiftModifier)) {
+        setSelection(selectedMembers() + members);
+    } else {
+        setSelection(members);
+    }
+}
+
+void MemberSelection::setHovered(int member) {
+    const int next = valid(member) ? member : -1;
+    if (next == m_hovered) return;
+    m_hovered = next;
+    emit hoverChanged(m_hovered);
+}
+
+std::vector<gl::MemberAppearance> MemberSelection::appearance() const {
+    std::vector<gl::MemberAppearance> look(static_cast<std::size_t>(memberCount()));
+    for (int m = 0; m < memberCount(); ++m) {
+        gl::MemberAppearance& a = look[static_cast<std::size_t>(m)];
+        const int cluster = clusterOf(m);
+        a.color = cluster < 0 ? gl::kClusterPalette.back() : gl::clusterColor(cluster);
+        a.cluster = cluster;
+        a.visible = isMemberVisible(m);
+        a.selected = isSelected(m);
+    }
+    return look;
+}
+
+}  // namespace ensil::ui

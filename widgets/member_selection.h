@@ -1,0 +1,108 @@
+// The one shared selection model of the workbench: which members there are (names and per-member
+// figures), how they are clustered (the merge tree and the number of clusters), which are
+// visible, which are selected and which one the pointer is over. Every panel and the 3D view
+// observe it and change it through it; no view calls another. GUI thread only; owned by the
+// main window (or a test), panels keep a pointer.
+//
+// Visibility is kept per member; a cluster's visibility is derived from its members' (all,
+// some or none visible), so hiding a cluster and hiding its members are the same thing.
+#pragma once
+
+#include <QColor>
+#include <QList>
+#include <QObject>
+#include <QStringList>
+#include <vector>
+
+#include "gl/render_settings.h"
+#include "preprocessing/clustering.h"
+
+namespace ensil::ui {
+
+// What the member table shows besides the cluster; one entry per member.
+struct MemberFigures {
+    QStringList names;
+    std::vector<double> distanceToMean;    // NaN when not known
+    std::vector<double> meanOutlyingness;  // NaN when not known (or no isosurface)
+};
+
+class MemberSelection : public QObject {
+    Q_OBJECT
+public:
+    explicit MemberSelection(QObject* parent = nullptr);
+
+    // New members. Selection, visibility and hover survive when the names are the same (a new
+    // isovalue of the same ensemble); otherwise everything starts afresh. The merge tree is
+    // dropped unless its member count still fits. Throws std::invalid_argument when the
+    // figures' lengths differ from the names'.
+    void setMembers(MemberFigures figures);
+    // The merge tree of the current members (memberCount == memberCount(), or 0 for "not
+    // clustered"). Keeps the number of clusters, clamped to 1..N. Throws std::invalid_argument
+    // for a tree of another size.
+    void setTree(prep::MergeTree tree);
+    void setClusterCount(int k);
+
+    [[nodiscard]] int memberCount() const { return static_cast<int>(m_figures.names.size()); }
+    [[nodiscard]] QString name(int member) const { return m_figures.names.value(member); }
+    [[nodiscard]] double distanceToMean(int member) const;
+    [[nodiscard]] double meanOutlyingness(int member) const;
+
+    [[nodiscard]] const prep::MergeTree& tree() const { return m_tree; }
+    [[nodiscard]] bool isClustered() const { return m_tree.memberCount > 0; }
+    // The number of clusters shown (0 when not clustered).
+    [[nodiscard]] int clusterCount() const { return isClustered() ? m_clusters : 0; }
+    // The number the user asked for, kept while there is no tree.
+    [[nodiscard]] int requestedClusterCount() const { return m_clusters; }
+    // Cluster label per member (0..k-1, in dendrogram order); empty when not clustered.
+    [[nodiscard]] const std::vector<int>& labels() const { return m_labels; }
+    [[nodiscard]] int clusterOf(int member) const;  // -1 when not clustered
+    [[nodiscard]] QList<int> membersOfCluster(int cluster) const;
+    [[nodiscard]] static QColor clusterColor(int cluster);  // gray for -1
+    [[nodiscard]] QColor memberColor(int member) const { return clusterColor(clusterOf(member)); }
+
+    [[nodiscard]] bool isMemberVisible(int member) const;
+    // Qt::Checked when all its members are visible, PartiallyChecked when some, else Unchecked.
+    [[nodiscard]] Qt::CheckState clusterVisibility(int cluster) const;
+    void setMemberVisible(int member, bool visible);
+    void setClusterVisible(int cluster, bool visible);
+    void soloCluster(int cluster);  // only this cluster's members visible
+    void showAll();
+
+    [[nodiscard]] bool isSelected(int member) const;
+    [[nodiscard]] QList<int> selectedMembers() const;  // ascending
+    [[nodiscard]] int selectedCount() const;
+    void setSelection(const QList<int>& members);
+    void clearSelection() { setSelection({}); }
+    // A click on members (one, a branch, a cluster, a brushed set): plain replaces the
+    // selection, Shift adds to it, Ctrl toggles each member. A plain click on nothing clears.
+    void click(const QList<int>& members, Qt::KeyboardModifiers modifiers);
+
+    [[nodiscard]] int hovered() const { return m_hovered; }
+    void setHovered(int member);  // -1 for none
+
+    // What the renderer needs per member: cluster colour, visibility, selection, cluster.
+    [[nodiscard]] std::vector<gl::MemberAppearance> appearance() const;
+
+signals:
+    void membersAboutToBeReset();
+    void membersReset();
+    void clustersAboutToChange();
+    void clustersChanged();
+    void visibilityChanged();
+    void selectionChanged();
+    void hoverChanged(int member);
+
+private:
+    [[nodiscard]] bool valid(int member) const { return member >= 0 && member < memberCount(); }
+    void relabel();
+
+    MemberFigures m_figures;
+    prep::MergeTree m_tree;
+    int m_clusters = 5;
+    std::vector<int> m_labels;
+    std::vector<bool> m_visible;
+    std::vector<bool> m_selected;
+    int m_hovered = -1;
+};
+
+}  // namespace ensil::ui

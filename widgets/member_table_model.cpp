@@ -1,0 +1,149 @@
+#include "widgets/member_table_model.h"
+
+#include <cmath>
+
+#include "widgets/member_selection.h"
+
+namespace ensil::ui {
+namespace {
+QVariant number(double value) { return std::isnan(value) ? QVariant() : QVariant(value); }
+
+QString numberText(double value) {
+    if (std::isnan(value)) return QStringLiteral("-");
+    if (std::isinf(value)) return QStringLiteral("inf");
+    return QString::number(value, 'g', 4);
+}
+}  // namespace
+
+MemberTableModel::MemberTableModel(MemberSelection* selection, QObject* parent)
+    : QAbstractTableModel(parent), m_selection(selection) {
+    connect(selection, &MemberSelection::membersAboutToBeReset, this,
+            &MemberTableModel::beginResetModel);
+    connect(selection, &MemberSelection::membersReset, this, &MemberTableModel::endResetModel);
+    connect(selection, &MemberSelection::clustersChanged, this, [this] {
+        columnChanged(Cluster, {Qt::DisplayRole, Qt::DecorationRole, SortRole});
+    });
+    connect(selection, &MemberSelection::visibilityChanged, this, [this] {
+        columnChanged(Visible, {Qt::CheckStateRole, SortRole});
+    });
+    connect(selection, &MemberSelection::hoverChanged, this, [this](int member) {
+        rowChanged(m_hoveredRow, {Qt::BackgroundRole});
+        m_hoveredRow = member;
+        rowChanged(m_hoveredRow, {Qt::BackgroundRole});
+    });
+    connect(selection, &MemberSelection::membersReset, this,
+            [this] { m_hoveredRow = m_selection->hovered(); });
+}
+
+void MemberTableModel::rowChanged(int row, const QList<int>& roles) {
+    if (row < 0 || row >= rowCount()) return;
+    emit dataChanged(index(row, 0), index(row, ColumnCount - 1), roles);
+}
+
+void MemberTableModel::columnChanged(int column, const QList<int>& roles) {
+    if (rowCount() == 0) return;
+    emit dataChanged(index(0, column), index(rowCount() - 1, column), roles);
+}
+
+int MemberTableModel::rowCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : m_selection->memberCount();
+}
+
+int MemberTableModel::columnCount(const QModelIndex& parent) const {
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
+    const int m = index.row();
+    const auto column = static_cast<Column>(index.column());
+    if (role == Qt::DisplayRole || role == SortRole) {
+        const bool sort = role == SortRole;
+        switch (column) {
+            case Index:
+                return m + 1;  // as in the names "member 1", "member 2", ...
+            case Name:
+                return m_selection->name(m);
+            case Cluster: {
+                const int c = m_selection->clusterOf(m);
+                if (sort) return c;
+                return c < 0 ? QVariant() : QVariant(c + 1);  // people count clusters from 1
+            }
+            case DistanceToMean:
+                return sort ? number(m_selection->distanceToMean(m))
+                            : QVariant(numberText(m_selection->distanceToMean(m)));
+            case MeanOutlyingness:
+                return sort ? number(m_selection->meanOutlyingness(m))
+                            : QVariant(numberText(m_selection->meanOutlyingness(m)));
+            case Visible:
+                return sort ? QVariant(m_selection->isMemberVisible(m)) : QVariant();
+            case ColumnCount:
+                break;
+        }
+        return {};
+    }
+    if (role == Qt::CheckStateRole && column == Visible) {
+        return m_selection->isMemberVisible(m) ? Qt::Checked : Qt::Unchecked;
+    }
+    if (role == Qt::DecorationRole && column == Cluster && m_selection->clusterOf(m) >= 0) {
+        return m_selection->memberColor(m);
+    }
+    if (role == Qt::BackgroundRole && m == m_selection->hovered()) {
+        // The member under the pointer (here, in the view or the dendrogram), tinted in its
+        // cluster's colour.
+        QColor tint = m_selection->memberColor(m);
+        tint.setAlpha(90);
+        return tint;
+    }
+    if (role == Qt::TextAlignmentRole && column != Name) {
+        return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
+    }
+    if (role == Qt::ToolTipRole && column == DistanceToMean) {
+        return tr("Distance of %1 to the mean member in the similarity measure")
+            .arg(m_selection->name(m));
+    }
+    return {};
+}
+
+QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation != Qt::Horizontal || (role != Qt::DisplayRole && role != Qt::ToolTipRole)) {
+        return QAbstractTableModel::headerData(section, orientation, role);
+    }
+    // Short headers keep the table narrow enough for a side dock; the tooltips say it all.
+    const bool tip = role == Qt::ToolTipRole;
+    switch (section) {
+        case Index:
+            return tip ? tr("Member number") : tr("#");
+        case Name:
+            return tip ? tr("Member name, from the file") : tr("Member");
+        case Cluster:
+            return tip ? tr("Cluster at the current cut") : tr("Cluster");
+        case DistanceToMean:
+            return tip ? tr("Distance to the mean member (similarity measure)") : tr("To mean");
+        case MeanOutlyingness:
+            return tip ? tr("Mean outlyingness over the member's isosurface") : tr("Outlying");
+        case Visible:
+            return tip ? tr("Drawn in the view") : tr("Shown");
+        default:
+            return {};
+    }
+}
+
+Qt::ItemFlags MemberTableModel::flags(const QModelIndex& index) const {
+    Qt::ItemFlags f = QAbstractTableModel::flags(index);
+    if (index.isValid() && index.column() == Visible) f |= Qt::ItemIsUserCheckable;
+    return f;
+}
+
+bool MemberTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || index.column() != Visible ||
+        role != Qt::CheckStateRole) {
+        return false;
+    }
+    // The selection model emits visibilityChanged, which becomes dataChanged here.
+    m_selection->setMemberVisible(index.row(),
+                                  static_cast<Qt::CheckState>(value.toInt()) == Qt::Checked);
+    return true;
+}
+
+}  // namespace ensil::ui

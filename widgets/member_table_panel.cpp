@@ -1,0 +1,140 @@
+#include "widgets/member_table_panel.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "widgets/member_filter_proxy.h"
+#include "widgets/member_selection.h"
+#include "widgets/member_table_model.h"
+
+namespace ensil::ui {
+
+MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
+    : QWidget(parent),
+      m_selection(selection),
+      m_model(new MemberTableModel(selection, this)),
+      m_proxy(new MemberFilterProxy(this)),
+      m_filter(new QLineEdit(this)),
+      m_table(new QTableView(this)) {
+    m_proxy->setSourceModel(m_model);
+    m_filter->setPlaceholderText(tr("Filter members by name or #"));
+    m_filter->setClearButtonEnabled(true);
+    // Resets, new sort orders and filters rebuild the rows, and the table's selection loses
+    // rows on the way: that is not the user's doing, so it is ignored while it happens and the
+    // shared selection is shown again afterwards. The order of connections matters: the pauses
+    // are connected before the view's selection model exists, so they run before it reacts,
+    // and the resumes after, so they run after it.
+    const auto pause = [this] { m_syncing = true; };
+    connect(m_proxy, &QAbstractItemModel::modelAboutToBeReset, this, pause);
+    connect(m_proxy, &QAbstractItemModel::layoutAboutToBeChanged, this, pause);
+    connect(m_proxy, &QAbstractItemModel::rowsAboutToBeRemoved, this, pause);
+    connect(m_proxy, &QAbstractItemModel::rowsAboutToBeInserted, this, pause);
+    m_table->setModel(m_proxy);
+    const auto resume = [this] {
+        m_syncing = false;
+        showSharedSelection();
+    };
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, resume);
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
+        for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+            if (c != MemberTableModel::Name) m_table->resizeColumnToContents(c);
+        }
+    });
+    connect(m_proxy, &QAbstractItemModel::layoutChanged, this, resume);
+    connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, resume);
+    connect(m_proxy, &QAbstractItemModel::rowsInserted, this, resume);
+    m_table->setSortingEnabled(true);
+    m_table->sortByColumn(MemberTableModel::Index, Qt::AscendingOrder);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_table->setAlternatingRowColors(true);
+    m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
+    // Columns are fitted to their contents when new members arrive, not on every change:
+    // ResizeToContents would measure every row each time the cut line moves.
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+    m_table->horizontalHeader()->setSectionResizeMode(MemberTableModel::Name, QHeaderView::Stretch);
+    m_table->setMouseTracking(true);
+    m_table->viewport()->installEventFilter(this);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    layout->addWidget(m_filter);
+    layout->addWidget(m_table);
+
+    connect(m_filter, &QLineEdit::textChanged, m_proxy, &MemberFilterProxy::setFilterText);
+    connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
+            &MemberTablePanel::tableSelectionChanged);
+    connect(m_selection, &MemberSelection::selectionChanged, this,
+            &MemberTablePanel::showSharedSelection);
+}
+
+int MemberTablePanel::memberAtRow(int row) const {
+    const QModelIndex source = m_proxy->mapToSource(m_proxy->index(row, 0));
+    return source.isValid() ? source.row() : -1;
+}
+
+int MemberTablePanel::rowOfMember(int member) const {
+    return m_proxy->mapFromSource(m_model->index(member, 0)).row();
+}
+
+void MemberTablePanel::tableSelectionChanged() {
+    if (m_syncing) return;
+    // Members the filter hides keep their selection; the rows shown say what is selected.
+    QList<int> members;
+    for (int m : m_selection->selectedMembers()) {
+        if (rowOfMember(m) < 0) members << m;
+    }
+    for (const QModelIndex& row : m_table->selectionModel()->selectedRows()) {
+        members << m_proxy->mapToSource(row).row();
+    }
+    m_selection->setSelection(members);
+}
+
+void MemberTablePanel::showSharedSelection() {
+    QItemSelection rows;
+    QList<int> shownRows;
+    int first = -1;
+    for (int member : m_selection->selectedMembers()) {
+        const int row = rowOfMember(member);
+        if (row < 0) continue;
+        rows.select(m_proxy->index(row, 0), m_proxy->index(row, m_proxy->columnCount() - 1));
+        shownRows << row;
+        if (first < 0 || row < first) first = row;
+    }
+    // When the table made this selection it already shows it; selecting again would disturb a
+    // drag or Shift-click in progress.
+    QList<int> tableRows;
+    for (const QModelIndex& row : m_table->selectionModel()->selectedRows()) {
+        tableRows << row.row();
+    }
+    std::sort(shownRows.begin(), shownRows.end());
+    std::sort(tableRows.begin(), tableRows.end());
+    if (shownRows == tableRows) return;
+    const bool wasSyncing = m_syncing;
+    m_syncing = true;
+    m_table->selectionModel()->select(rows, QItemSelectionModel::ClearAndSelect);
+    m_syncing = wasSyncing;
+    if (first >= 0) m_table->scrollTo(m_proxy->index(first, 0));
+}
+
+bool MemberTablePanel::eventFilter(QObject* watched, QEvent* event) {
+    // Hover is followed here rather than through QAbstractItemView::entered, which never
+    // reports leaving the rows for the empty space below them.
+    if (watched == m_table->viewport() && event->type() == QEvent::MouseMove) {
+        const QModelIndex index =
+            m_table->indexAt(static_cast<QMouseEvent*>(event)->position().toPoint());
+        m_selection->setHovered(index.isValid() ? memberAtRow(index.row()) : -1);
+    } else if (watched == m_table->viewport() && event->type() == QEvent::Leave) {
+        m_selection->setHovered(-1);
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+}  // namespace ensil::ui
