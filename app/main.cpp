@@ -2,6 +2,7 @@
 // the workbench.
 #include <QApplication>
 #include <QGuiApplication>
+#include <QIcon>
 #include <QSurfaceFormat>
 #include <QTextStream>
 #include <cstdio>
@@ -52,6 +53,10 @@ int main(int argc, char* argv[]) {
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
     QApplication app(argc, argv);
     setApplicationIdentity();
+    // Lets Wayland and X11 desktops match the window to the installed desktop entry and icon;
+    // ENSIL_APP_ID comes from resources/CMakeLists.txt, which names the installed files.
+    QGuiApplication::setDesktopFileName(QStringLiteral(ENSIL_APP_ID));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ensil.svg")));
     ensil::app::MainWindow window;
     window.show();
     if (outcome.workbench->selection.paths.empty()) {
