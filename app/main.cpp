@@ -53,8 +53,9 @@ int main(int argc, char* argv[]) {
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
     QApplication app(argc, argv);
     setApplicationIdentity();
-    // Lets Wayland and X11 desktops match the window to the installed desktop entry and icon;
-    // ENSIL_APP_ID comes from resources/CMakeLists.txt, which names the installed files.
+    // Wayland compositors match the window to the installed desktop entry by this id (X11 ones
+    // by WM_CLASS "ensil", the entry's StartupWMClass); ENSIL_APP_ID comes from
+    // resources/CMakeLists.txt, which names the installed files. The icon needs Qt's SVG plugin.
     QGuiApplication::setDesktopFileName(QStringLiteral(ENSIL_APP_ID));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ensil.svg")));
     ensil::app::MainWindow window;

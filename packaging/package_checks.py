@@ -67,7 +67,8 @@ def read_png(path):
         raise CheckFailed(f"{path}: the image data does not decompress ({error})") from None
     stride = width * channels
     if len(raw) != height * (stride + 1):
-        raise CheckFailed(f"{path}: {len(raw)} bytes of image data, expected {height * (stride + 1)}")
+        raise CheckFailed(f"{path}: {len(raw)} bytes of image data, "
+                          f"expected {height * (stride + 1)}")
     return width, height, channels, unfilter(raw, height, stride, channels)
 
 
@@ -121,7 +122,8 @@ def check_png(path, size, min_covered, min_colours):
         raise CheckFailed(f"{path}: only {fraction:.1%} of the pixels differ from the background "
                           f"{tuple(background)}, expected at least {min_covered:.1%}")
     if len(colours) < min_colours:
-        raise CheckFailed(f"{path}: {len(colours)} distinct colours, expected at least {min_colours}")
+        raise CheckFailed(f"{path}: {len(colours)} distinct colours, "
+                          f"expected at least {min_colours}")
     print(f"{path}: {width}x{height}, {fraction:.1%} drawn, {len(colours)} colours")
 
 

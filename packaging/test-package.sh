@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs ensil's .deb into this system with apt-get, checks what it installed, runs the installed
-# binary (`ensil --version`, a headless `ensil render` on a virtual display), and removes the
-# package again (also when a check fails). Run as root (or with sudo available).
+# Installs ensil's .deb into this system with apt-get, checks what it installed, runs the
+# installed binary (`ensil --version`, a headless `ensil render` and the workbench window on a
+# virtual display), and removes the package again, also when a check fails. Run as root (or with
+# sudo available).
 #   packaging/test-package.sh DEB
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -51,7 +52,8 @@ trap remove_package EXIT
 step "apt-get install $deb"
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "$deb" \
     >/dev/null
-[ "$(command -v ensil)" = /usr/bin/ensil ] || fail "ensil on PATH is $(command -v ensil), not /usr/bin/ensil"
+[ "$(command -v ensil)" = /usr/bin/ensil ] ||
+    fail "ensil on PATH is $(command -v ensil), not /usr/bin/ensil"
 
 # Every shared library the installed binary loads must come from a package that ensil's
 # dependencies pull in; that is what makes `apt-get install ./ensil_*.deb` enough on a fresh system.
@@ -66,7 +68,8 @@ for library in $libraries; do
     owner=$(dpkg-query --search "$real" "${real#/usr}" 2>/dev/null | head -1 | cut -d: -f1) \
         || true
     [ -n "$owner" ] || fail "no package owns $library"
-    grep -qxF "$owner" <<<"$closure" || fail "$library comes from $owner, which ensil's Depends do not pull in"
+    grep -qxF "$owner" <<<"$closure" ||
+        fail "$library comes from $owner, which ensil's Depends do not pull in"
 done
 
 # --- The installed files ------------------------------------------------------------------
@@ -87,6 +90,8 @@ HOME=$work XDG_RUNTIME_DIR=$work xvfb-run -a -s "-screen 0 1280x1024x24" \
     /usr/bin/ensil render --demo --iso 30 --size 320x240 --out "$work/demo.png"
 # The demo's silhouettes cover a good part of the frame in several cluster colours.
 python3 "$checks" png "$work/demo.png" --size 320x240 --min-covered 0.05 --min-colours 50
+# The workbench window shows the icon: the embedded SVG renders with the installed Qt plugins.
+xvfb-run -a -s "-screen 0 1600x1000x24" packaging/window-icon-check.sh /usr/bin/ensil
 
 remove_package
 trap 'rm -rf "$work"' EXIT

@@ -1,5 +1,5 @@
 # Windows installer (NSIS) and a portable ZIP. Layout under the install folder: bin\ensil.exe with
-# the DLLs it needs next to it (Qt's through windeployqt, the rest found below).
+# the DLLs it needs next to it (Qt's through windeployqt, the others found below).
 set(CPACK_GENERATOR NSIS ZIP)
 
 configure_file(${CMAKE_CURRENT_LIST_DIR}/ensil.rc.in ${CMAKE_CURRENT_BINARY_DIR}/ensil.rc @ONLY)
@@ -8,16 +8,14 @@ target_sources(ensil PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/ensil.rc)
 # Not WIN32_EXECUTABLE: ensil is also a command-line tool (info, preprocess, render), and a GUI
 # subsystem program has no console to print to.
 
-# DLLs that are not Qt's (VTK, netCDF, HDF5, oneTBB...), searched where the build found them.
-install(CODE [[
-    file(GET_RUNTIME_DEPENDENCIES
-        EXECUTABLES "$<TARGET_FILE:ensil>"
-        RESOLVED_DEPENDENCIES_VAR ensil_dlls
-        DIRECTORIES $ENV{PATH}
-        PRE_EXCLUDE_REGEXES "^api-ms-" "^ext-ms-" "^Qt6"
-        POST_EXCLUDE_REGEXES "[/\\\\][Ss]ystem32[/\\\\]")
-    file(INSTALL ${ensil_dlls} DESTINATION "${CMAKE_INSTALL_PREFIX}/bin")
-]])
+# The DLLs that are not Qt's (VTK, netCDF, HDF5, oneTBB...), next to ensil.exe; they are looked
+# for in the bin/ folders of the prefixes the build found its packages in (vcpkg, conda...).
+list(TRANSFORM CMAKE_PREFIX_PATH APPEND /bin OUTPUT_VARIABLE dll_folders)
+install(RUNTIME_DEPENDENCY_SET ensil_runtime_dlls
+    DESTINATION ${CMAKE_INSTALL_BINDIR}
+    DIRECTORIES ${dll_folders}
+    PRE_EXCLUDE_REGEXES "^api-ms-" "^ext-ms-" "^Qt6"
+    POST_EXCLUDE_REGEXES ".*[Ss]ystem32/.*")
 set(CMAKE_INSTALL_SYSTEM_RUNTIME_DESTINATION ${CMAKE_INSTALL_BINDIR})
 include(InstallRequiredSystemLibraries)  # the MSVC runtime
 
