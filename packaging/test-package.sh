@@ -25,7 +25,7 @@ version=$(dpkg-deb --field "$deb" Version)
 depends=$(dpkg-deb --field "$deb" Depends)
 step "ensil $version, $(du -k "$deb" | cut -f1) KiB; Depends: $depends"
 # dpkg-shlibdeps found the linked libraries; the rest is declared by hand (debian/cpack.cmake).
-for needed in libqt6gui6 qt6-qpa-plugins libqt6svg6 libgl1-mesa-dri libegl-mesa0; do
+for needed in libqt6gui6 libqt6svg6 libgl1-mesa-dri libegl-mesa0; do
     grep -qE "(^|, )$needed( |,|$)" <<<"$depends" || fail "Depends lacks $needed"
 done
 contents=$(dpkg-deb --contents "$deb" | awk '{print $6}')

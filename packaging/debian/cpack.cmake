@@ -8,14 +8,17 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # dpkg-shlibdeps turns every library ensil links (Qt, VTK, netCDF, HDF5, TBB...) into a
 # dependency with the right version.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# What ensil loads at run time that no linked library names, so dpkg-shlibdeps cannot see it:
-#   qt6-qpa-plugins   Qt's platform plugins (xcb, wayland, offscreen); libqt6gui6 only
-#                     recommends them, and without one no window or offscreen context opens.
-#   libqt6svg6        Qt's SVG icon engine and image plugin, for the window icon.
+# What ensil loads at run time through plugins and dispatchers, which dpkg-shlibdeps cannot see:
+#   libqt6svg6        Qt's SVG icon engine and image plugin: without it the window has no icon.
 #   libgl1-mesa-dri, libegl-mesa0
-#                     an OpenGL 4.1 driver (Mesa; llvmpipe where there is no GPU). The
-#                     libglvnd dispatchers Qt links only recommend a driver.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6svg6, libgl1-mesa-dri, libegl-mesa0")
+#                     an OpenGL 4.1 driver for GLX and EGL (Mesa; llvmpipe where there is no
+#                     GPU). Debian 12's libglx0 and libegl1 pull these in too; naming them
+#                     states what ensil needs instead of relying on that.
+# Debian 12's libqt6gui6 holds the xcb and offscreen platform plugins itself; qt6-qpa-plugins
+# only adds VNC and TUIO, so it is not needed.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6, libgl1-mesa-dri, libegl-mesa0")
+# Native Wayland windows (without it, Qt uses XWayland).
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland")
 # `ensil render` on a machine without a display runs under xvfb-run.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "xvfb, xauth")
 
