@@ -40,6 +40,18 @@ for path in ./usr/bin/ensil \
     grep -qxF "$path" <<<"$contents" || fail "the package does not hold $path"
 done
 
+# On a fresh Debian 12 (simulated: apt with an empty package status), apt-get can resolve every
+# dependency of the package from the archive.
+if ! ls /var/lib/apt/lists/*_Packages >/dev/null 2>&1; then
+    $SUDO apt-get update -qq
+fi
+fresh_status=$(mktemp)
+simulation=$(apt-get -o Dir::State::status="$fresh_status" install --simulate \
+                 --no-install-recommends "$deb" 2>&1) || fail "on a fresh system: $simulation"
+rm -f "$fresh_status"
+grep -q '^Inst ensil ' <<<"$simulation" || fail "apt-get would not install ensil: $simulation"
+step "on a fresh system apt-get would install $(grep -c '^Inst ' <<<"$simulation") packages, ensil included"
+
 # --- Install ----------------------------------------------------------------------------------
 remove_package() {
     if dpkg-query -W -f='${Status}' ensil 2>/dev/null | grep -q "install ok installed"; then
