@@ -50,7 +50,8 @@ simulation=$(apt-get -o Dir::State::status="$fresh_status" install --simulate \
                  --no-install-recommends "$deb" 2>&1) || fail "on a fresh system: $simulation"
 rm -f "$fresh_status"
 grep -q '^Inst ensil ' <<<"$simulation" || fail "apt-get would not install ensil: $simulation"
-step "on a fresh system apt-get would install $(grep -c '^Inst ' <<<"$simulation") packages, ensil included"
+step "on a fresh system apt-get would install $(grep -c '^Inst ' <<<"$simulation") packages" \
+     "(ensil included)"
 
 # --- Install ----------------------------------------------------------------------------------
 remove_package() {
