@@ -2,7 +2,8 @@
 # README command 2 (and CI): install dependencies, build with warnings as errors, run every
 # test (OpenGL and GUI tests on a virtual X display, Mesa llvmpipe), then rebuild the GPU-free
 # layers with Address and UndefinedBehavior sanitizers and run their tests again; last, package
-# the ci build as a .deb, install it into this system, run the installed ensil and remove it.
+# the ci build (.deb and .tar.gz), check the tarball, install the .deb into this system, run the
+# installed ensil and remove it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -19,4 +20,5 @@ ctest --preset asan
 
 # Packaging the ci build (stripped) rather than building a release saves CI a full rebuild.
 deb=$(packaging/build-package.sh build/ci)
+packaging/test-tarball.sh "$(dirname "$deb")"/ensil-*-Linux.tar.gz "$deb"
 packaging/test-package.sh "$deb"
