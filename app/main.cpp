@@ -2,6 +2,7 @@
 // the workbench.
 #include <QApplication>
 #include <QGuiApplication>
+#include <QIcon>
 #include <QSurfaceFormat>
 #include <QTextStream>
 #include <cstdio>
@@ -53,6 +54,11 @@ int main(int argc, char* argv[]) {
     QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());
     QApplication app(argc, argv);
     setApplicationIdentity();
+    // Wayland compositors match the window to the installed desktop entry by this id (X11 ones
+    // by WM_CLASS "ensil", the entry's StartupWMClass); ENSIL_APP_ID comes from
+    // resources/CMakeLists.txt, which names the installed files. The icon needs Qt's SVG plugin.
+    QGuiApplication::setDesktopFileName(QStringLiteral(ENSIL_APP_ID));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ensil.svg")));
     ensil::app::MainWindow window;
     // The first run has no saved layout: the view and its three docks want the whole screen.
     if (window.hasSavedLayout()) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # README command 2 (and CI): install dependencies, build with warnings as errors, run every
 # test (OpenGL and GUI tests on a virtual X display, Mesa llvmpipe), then rebuild the GPU-free
-# layers with Address and UndefinedBehavior sanitizers and run their tests again.
+# layers with Address and UndefinedBehavior sanitizers and run their tests again; last, package
+# the ci build (.deb and .tar.gz), check the tarball, install the .deb into this system, run the
+# installed ensil and remove it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -15,3 +17,8 @@ xvfb-run -a -s "-screen 0 1920x1200x24" ctest --preset ci
 cmake --preset asan
 cmake --build --preset asan --target ensil_data_tests ensil_preprocessing_tests
 ctest --preset asan
+
+# Packaging the ci build (stripped) rather than building a release saves CI a full rebuild.
+deb=$(packaging/build-package.sh build/ci)
+packaging/test-tarball.sh "$(dirname "$deb")"/ensil-*-Linux.tar.gz "$deb"
+packaging/test-package.sh "$deb"

@@ -18,6 +18,10 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering
     xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev
+    # packages and desktop integration: dpkg-shlibdeps for CPack's Debian dependencies, the
+    # validators of the desktop entry, AppStream metadata and MIME type, and the package checks
+    # (x11-utils: xwininfo and xprop read the workbench window's icon)
+    dpkg-dev file desktop-file-utils appstream shared-mime-info python3 x11-utils
 )
 
 missing=()
