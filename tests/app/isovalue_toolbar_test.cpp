@@ -8,7 +8,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "tests/support/temp_dir.h"
+#include "tests/support/scoped_cache_home.h"
 #include "widgets/histogram_strip.h"
 #include "widgets/isovalue_control.h"
 #include "widgets/render_toolbar.h"
@@ -18,8 +18,7 @@ using namespace ensil;
 using ensil::ui::IsovalueControl;
 
 TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAreReady) {
-    const test::TempDir cache;
-    qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(cache.path().string()));
+    const test::ScopedCacheHome cache;
     app::MainWindow window;
     window.resize(1000, 700);
     window.show();

@@ -35,7 +35,6 @@ namespace {
 class LoadedWindow : public ::testing::Test {
 protected:
     void SetUp() override {
-        qputenv("XDG_CACHE_HOME", QByteArray::fromStdString(m_cache.path().string()));
         window.resize(1200, 800);
         window.show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
@@ -63,7 +62,7 @@ protected:
         return window.view()->grabFramebuffer();
     }
 
-    ensil::test::TempDir m_cache;
+    ensil::test::ScopedCacheHome m_cache;
     app::MainWindow window;
     ui::MemberSelection* selection = nullptr;
 };

@@ -1,0 +1,73 @@
+// How quickly the workbench reopens a project: a project of the paper-sized demo (50 members,
+// 256 x 128 x 16, isovalue 30 m/s) is saved, then opened in fresh windows: first with an empty
+// mesh cache (meshes, similarity and clustering are computed), then again with the cache the
+// first opening filled. Prints the time from openProject() to projectOpened() (data loaded,
+// surfaces built, selection applied) for each, with the share of the isovalue job. Needs an X
+// display (xvfb-run -a).
+//
+//   ensil_project_reopen_benchmark [--runs N]
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "app/workbench_surface_format.h"
+#include "timing.h"
+
+namespace {
+// Opens the project in a new window; returns milliseconds until it is applied (or -1).
+double reopen(const QString& path, bool* fromCache) {
+    ensil::app::MainWindow window;
+    window.resize(1400, 900);
+    window.show();
+    QSignalSpy opened(&window, &ensil::app::MainWindow::projectOpened);
+    QElapsedTimer timer;
+    timer.start();
+    if (!window.openProject(path)) return -1.0;
+    if (!opened.wait(600000)) return -1.0;
+    const double ms = static_cast<double>(timer.nsecsElapsed()) * 1e-6;
+    *fromCache = window.isovalueSession()->result()->fromCache;
+    return ms;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 3;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    }
+    QTemporaryDir home;
+    qputenv("XDG_CACHE_HOME", home.path().toUtf8());
+    qputenv("XDG_CONFIG_HOME", home.path().toUtf8());
+    QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());
+    QApplication app(argc, argv);
+    const QString path = home.filePath(QStringLiteral("paper.ensil"));
+    {
+        ensil::app::Project project;
+        project.demo = true;
+        project.isovalue = 30.0F;
+        ensil::app::saveProject(project, path);
+    }
+    bool cached = false;
+    const double cold = reopen(path, &cached);
+    std::printf("project of the paper-sized demo (50 members, 256 x 128 x 16, isovalue 30)\n");
+    std::printf("  first opening, empty cache      %8.0f ms  (meshes from the cache: %s)\n", cold,
+                cached ? "yes" : "no");
+    std::vector<double> warm;
+    for (int r = 0; r < runs; ++r) {
+        const double ms = reopen(path, &cached);
+        if (!cached) std::printf("  (run %d did not use the cache)\n", r + 1);
+        warm.push_back(ms);
+    }
+    std::printf("  reopening, warm cache (median)  %8.0f ms  over %d runs (min %.0f, max %.0f)\n",
+                ensil::bench::median(warm), runs, *std::min_element(warm.begin(), warm.end()),
+                *std::max_element(warm.begin(), warm.end()));
+    return 0;
+}
