@@ -85,7 +85,7 @@ public:
         std::vector<int> out;
         if (!has(key)) return out;
         if (!value(key).isArray()) fail(key, "must be a list of indices");
-        for (const QJsonValue& v : value(key).toArray()) {
+        for (const auto& v : value(key).toArray()) {
             const double d = v.toDouble(-1.0);
             if (!v.isDouble() || d < 0 || d != std::floor(d) || d > 1e6) {
                 fail(key, "must be a list of indices (whole numbers from 0)");
@@ -202,7 +202,7 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
     if (!document.isObject()) throw ProjectError("the file does not hold a JSON object", 1);
     const Fields root(document.object(), {});
     if (root.text("format", {}) != QLatin1String(kFormatName)) {
-        throw ProjectError("this is not an ensil project (its \"format\" is not \"ensil project\")");
+        throw ProjectError(R"(this is not an ensil project (its "format" is not "ensil project"))");
     }
     const int version = root.integer("schema_version", 0, 0, 1 << 20);
     if (version < 1) root.fail("schema_version", "must be 1 or more");

@@ -316,7 +316,7 @@ PickResult Renderer::pick(int x, int y, int radius) {
     int bestDistance = std::numeric_limits<int>::max();
     for (int row = 0; row < h; ++row) {
         for (int col = 0; col < w; ++col) {
-            const std::uint32_t id = ids[static_cast<std::size_t>(row * w + col)];
+            const std::uint32_t id = ids[static_cast<std::size_t>(row) * static_cast<std::size_t>(w) + static_cast<std::size_t>(col)];
             if (id == 0) continue;
             const int dx = x0 + col - x, dy = y0 + row - glY;
             const int distance = dx * dx + dy * dy;

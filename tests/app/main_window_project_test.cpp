@@ -15,6 +15,7 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cutting_plane_panel.h"
+#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
@@ -57,6 +58,8 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
         window.cuttingPlanePanel()->setOrientation(ui::CuttingPlanePanel::AlongY);
         window.cuttingPlanePanel()->setPosition(0.25);
         window.cuttingPlanePanel()->setCutting(true);
+        window.memberSelection()->setSelection({1, 3});
+        window.memberSelection()->setMemberVisible(5, false);
         saved = r.settings();
         savedCamera = r.camera();
         QString error;
@@ -79,6 +82,9 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
     EXPECT_NEAR(r.camera().distance(), savedCamera.distance(), 1e-5F);
     EXPECT_EQ(window.projectPath(), path);
     EXPECT_NEAR(window.cuttingPlanePanel()->position(), 0.25, 1e-3);
+    EXPECT_EQ(window.memberSelection()->selectedMembers(), (QList<int>{1, 3}));
+    EXPECT_FALSE(window.memberSelection()->isMemberVisible(5));
+    EXPECT_TRUE(window.memberSelection()->isMemberVisible(0));
 }
 
 TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
@@ -90,6 +96,9 @@ TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
     window.cuttingPlanePanel()->setOrientation(ui::CuttingPlanePanel::AlongX);
     window.cuttingPlanePanel()->setPosition(-0.1);
     window.cuttingPlanePanel()->setCutting(true);
+    // A member selected (solid) and one hidden, through the shared selection.
+    window.memberSelection()->setSelection({2});
+    window.memberSelection()->setMemberVisible(4, false);
     ASSERT_TRUE(window.saveProjectTo(path));
     const QString shown = QString::fromStdString(m_dir.file("workbench.png"));
     ASSERT_TRUE(window.saveScreenshot(shown, nullptr, QSize(480, 320)));

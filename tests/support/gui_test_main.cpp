@@ -31,6 +31,15 @@ void ensureRuntimeDir() {
     std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
     ::setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
 }
+// Tests point XDG_CACHE_HOME at temporary folders (the mesh cache); Mesa would put its shader
+// cache there too, remember the folder for the whole process and complain once it is gone.
+void ensureShaderCacheDir() {
+    if (std::getenv("MESA_SHADER_CACHE_DIR") != nullptr) return;
+    const auto dir = std::filesystem::temp_directory_path() /
+                     ("ensil-test-shader-cache-" + std::to_string(::getuid()));
+    std::filesystem::create_directories(dir);
+    ::setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 1);
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -45,6 +54,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     ensureRuntimeDir();
+    ensureShaderCacheDir();
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("ensil-tests"));
