@@ -22,6 +22,33 @@ void Camera::reset(const glm::vec3& center, float radius) {
     fit(center, radius);
 }
 
+void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
+                      float fill) {
+    fit(0.5F * (boxMin + boxMax), 0.5F * glm::length(boxMax - boxMin));
+    const auto fits = [&] {
+        const glm::mat4 vp = viewProjection(aspect);
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec4 p = vp * glm::vec4((corner & 1) ? boxMax.x : boxMin.x,
+                                               (corner & 2) ? boxMax.y : boxMin.y,
+                                               (corner & 4) ? boxMax.z : boxMin.z, 1.0F);
+            if (p.w <= 0.0F || std::abs(p.x / p.w) > fill || std::abs(p.y / p.w) > fill) {
+                return false;
+            }
+        }
+        return true;
+    };
+    // Start from the bounding sphere's distance (moving back when a narrow viewport needs it),
+    // then bisect towards the box.
+    float far = m_distance;
+    for (int step = 0; step < 20 && !fits(); ++step) m_distance = far *= 1.5F;
+    float near = 0.05F * far;
+    for (int step = 0; step < 30; ++step) {
+        m_distance = 0.5F * (near + far);
+        (fits() ? far : near) = m_distance;
+    }
+    m_distance = far;
+}
+
 void Camera::setAngles(float azimuthDeg, float elevationDeg) {
     m_azimuth = std::remainder(azimuthDeg, 360.0F);
     m_elevation = std::clamp(elevationDeg, -kMaxElevation, kMaxElevation);

@@ -16,6 +16,11 @@ public:
     void fit(const glm::vec3& center, float radius);
     // Back to the default angles, then fit.
     void reset(const glm::vec3& center, float radius);
+    // From the current angles, the nearest distance at which every corner of the box lies
+    // within `fill` of the viewport's half-extent (NDC), for a viewport of this aspect ratio:
+    // a flat atmospheric box fills the view instead of floating inside its bounding sphere.
+    void frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
+                  float fill = 0.8F);
 
     // Mouse gestures, in pixels of a viewport of the given height.
     void orbit(float dxPixels, float dyPixels);

@@ -133,12 +133,17 @@ void Renderer::setVerticalExaggeration(float exaggeration) {
     if (m_hasGrid) {
         m_frame = data::DisplayFrame(m_grid, exaggeration);
         m_axisTablesDirty = true;
-        m_camera.fit(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
+        m_camera.frameBox(m_frame.boxMin(), m_frame.boxMax(), viewAspect());
     }
 }
 
 void Renderer::resetCamera() {
     m_camera.reset(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
+    m_camera.frameBox(m_frame.boxMin(), m_frame.boxMax(), viewAspect());
+}
+
+void Renderer::setViewSize(int width, int height) {
+    if (width > 0 && height > 0) m_viewAspect = static_cast<float>(width) / static_cast<float>(height);
 }
 
 void Renderer::setFloorMap(FloorMap map) {
@@ -185,6 +190,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
     if (width <= 0 || height <= 0) return;
     m_lastSize = {width, height};
+    setViewSize(width, height);
     GlFunctions& f = *m_gpu->f;
     m_gpu->targets.ensure(f, width, height);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());

@@ -101,6 +101,8 @@ public:
     [[nodiscard]] Camera& camera() { return m_camera; }
     [[nodiscard]] const Camera& camera() const { return m_camera; }
     void resetCamera();
+    // The shape of the frames to come (a window's resize), which the camera is fitted to.
+    void setViewSize(int width, int height);
 
     static constexpr glm::vec4 kDefaultBackground{0.11F, 0.12F, 0.14F, 1.0F};
     static constexpr glm::vec4 kBoxColor{0.85F, 0.85F, 0.85F, 1.0F};
@@ -111,6 +113,7 @@ private:
     void uploadMeshesIfChanged();
     [[nodiscard]] MemberAppearance appearance(std::size_t member) const;
     [[nodiscard]] bool translucentMode() const;
+    [[nodiscard]] float viewAspect() const { return m_viewAspect; }
     // The data box's bounding rectangle on screen (x, y, width, height in GL pixels, clamped to
     // the frame); the whole frame when the camera is inside the box.
     [[nodiscard]] glm::ivec4 screenRectangle(const glm::mat4& viewProjection, int width,
@@ -150,6 +153,7 @@ private:
     RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
     glm::ivec2 m_lastSize{0};  // the last frame's size, which picking draws at
+    float m_viewAspect = 1.6F;  // before the first frame: the usual window's shape
     int m_highlighted = -1;
     int m_animated = -1;
 };

@@ -88,6 +88,8 @@ void SilhouetteView::resetCamera() {
     update();
 }
 
+void SilhouetteView::resizeGL(int width, int height) { m_renderer.setViewSize(width, height); }
+
 QPoint SilhouetteView::toFramebuffer(QPoint position) const {
     const qreal ratio = devicePixelRatioF();
     return {static_cast<int>(std::lround(position.x() * ratio)),

@@ -71,3 +71,26 @@ TEST(Camera, ZoomChangesDistanceAndOrthographicKeepsCentre) {
     EXPECT_GT(c.z, -1.0F);
     EXPECT_LT(c.z, 1.0F);
 }
+
+TEST(Camera, FrameBoxFillsTheViewWithAFlatBoxAndKeepsEveryCornerIn) {
+    // A flat atmospheric box, 1 x 0.5 x 0.2, seen from the default angles in a 16:10 view.
+    const glm::vec3 lo{0.0F}, hi{1.0F, 0.5F, 0.2F};
+    for (const float aspect : {1.6F, 0.6F}) {
+        ensil::gl::Camera cam;
+        cam.reset(0.5F * (lo + hi), 0.5F * glm::length(hi));
+        const float sphereDistance = cam.distance();
+        cam.frameBox(lo, hi, aspect, 0.8F);
+        float extent = 0.0F;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::vec4 p = cam.viewProjection(aspect) *
+                                glm::vec4(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                                          corner & 4 ? hi.z : lo.z, 1.0F);
+            extent = std::max({extent, std::abs(p.x / p.w), std::abs(p.y / p.w)});
+        }
+        EXPECT_LE(extent, 0.8F + 1e-4F) << "aspect " << aspect;
+        EXPECT_GE(extent, 0.79F) << "as near as it can be, aspect " << aspect;
+        if (aspect > 1.0F) {
+            EXPECT_LT(cam.distance(), 0.8F * sphereDistance) << "nearer than the sphere";
+        }
+    }
+}

@@ -79,7 +79,9 @@ TEST_F(ShownView, LeftDragOrbitsShiftDragPansWheelZooms) {
 
 TEST_F(ShownView, ResetCameraRestoresTheDefaultView) {
     gl::Camera& cam = m_view.renderer().camera();
+    m_view.resetCamera();  // the default view for this window's shape
     const glm::vec3 eye = cam.eye();
+    EXPECT_NEAR(cam.azimuth(), gl::Camera::kDefaultAzimuth, 1e-4);
     cam.orbit(100, 40);
     cam.zoom(3.0F);
     m_view.resetCamera();

@@ -1,0 +1,70 @@
+// Screenshots of the whole workbench as the X server shows it (QScreen::grabWindow, so the 3D
+// view's labels and legend painted in its frame are in), at 1600 x 1000, with the demo and with
+// a real file: kept in test-output/ to be looked at, and checked for a drawn view and panels.
+#include <gtest/gtest.h>
+
+#include <QGuiApplication>
+#include <QScreen>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "tests/support/image_compare.h"
+#include "tests/support/scoped_cache_home.h"
+#include "widgets/silhouette_view.h"
+
+using namespace ensil;
+
+namespace {
+// Distinct colours in the view's part of the screenshot: a drawn scene has hundreds.
+int coloursIn(const QImage& image, const QRect& area) {
+    QSet<QRgb> colours;
+    for (int y = area.top(); y <= area.bottom(); y += 3) {
+        for (int x = area.left(); x <= area.right(); x += 3) colours.insert(image.pixel(x, y));
+    }
+    return static_cast<int>(colours.size());
+}
+
+QImage screenshot(app::MainWindow& window) {
+    QTest::qWait(300);  // let the last frame reach the screen
+    return window.screen()->grabWindow(window.winId()).toImage();
+}
+
+void showAt1600x1000(app::MainWindow& window) {
+    window.resize(1600, 1000);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+}
+}  // namespace
+
+TEST(WorkbenchScreenshot, TheDemo) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    showAt1600x1000(window);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo({.members = 30, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
+    ASSERT_TRUE(built.wait(120000));
+    const QImage shot = screenshot(window);
+    ASSERT_EQ(shot.size(), QSize(1600, 1000));
+    const QRect view(window.view()->mapTo(&window, QPoint(0, 0)), window.view()->size());
+    EXPECT_GT(coloursIn(shot, view), 200);
+    shot.save(test::testOutputDir() + "/workbench_demo_1600x1000.png");
+}
+
+TEST(WorkbenchScreenshot, Era5Temperature) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    showAt1600x1000(window);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(120000));
+    const QImage shot = screenshot(window);
+    ASSERT_EQ(shot.size(), QSize(1600, 1000));
+    const QRect view(window.view()->mapTo(&window, QPoint(0, 0)), window.view()->size());
+    EXPECT_GT(coloursIn(shot, view), 200);
+    shot.save(test::testOutputDir() + "/workbench_era5_1600x1000.png");
+}
