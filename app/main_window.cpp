@@ -242,7 +242,10 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
 void MainWindow::startLoading(const QString& what, std::string sourceKey, EnsembleSource source) {
     m_loadingKey = std::move(sourceKey);
     setBusy(what);
-    if (!m_overview) m_info->showMessage(tr("Loading..."));
+    if (!m_overview) {
+        m_info->showMessage(tr("Loading..."));
+        m_view->setPlaceholderText(what);
+    }
     m_loader.start(
         [source = std::move(source)](const std::stop_token& stop, const data::Progress& progress) {
             auto ensemble = std::make_shared<const data::Ensemble>(
@@ -301,7 +304,10 @@ void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
     if (!retrying) m_pendingProject.reset();  // a project whose data did not load is not applied
     if (cancelled || !error) {
         setIdle(tr("Loading cancelled"));
-        if (!m_overview) m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+        if (!m_overview) {
+            m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
+            m_view->setPlaceholderText({});
+        }
         return;
     }
     const auto dataError = dataErrorOf(error);
@@ -312,6 +318,10 @@ void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
     }
     const QString message = messageOf(error);
     setIdle(tr("Loading failed: %1").arg(message));
+    if (!m_overview) {
+        m_view->setPlaceholderText(tr("Could not open the ensemble: %1\n\n").arg(message) +
+                                   ui::SilhouetteView::defaultPlaceholder());
+    }
     if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
     // Not modal: the window stays usable, and scripted sessions are not blocked.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the ensemble"), message,

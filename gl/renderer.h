@@ -54,6 +54,10 @@ public:
     // context is not OpenGL 4.1 core or newer.
     void initialize();
     void releaseGpuResources();
+    // Draws a tiny scene in every mode once so the driver compiles its shader variants now
+    // rather than at the first real frame (renderer_warm_up.cpp); leaves the scene as it was.
+    // Context current; costs a fraction of a second on llvmpipe.
+    void warmUp();
     [[nodiscard]] bool isInitialized() const;
 
     // Draws into the framebuffer object `framebuffer` (0 = the default) of the given pixel size.
@@ -79,6 +83,7 @@ public:
     void setAnimatedMember(int member) { m_animated = member; }
     [[nodiscard]] int animatedMember() const { return m_animated; }
 
+    [[nodiscard]] bool hasGrid() const { return m_hasGrid; }
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);

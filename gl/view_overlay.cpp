@@ -121,7 +121,7 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
 }
 
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio) {
-    if (overlay.labels.empty() && overlay.legend.empty()) return;
+    if (overlay.labels.empty() && overlay.legend.empty() && overlay.message.isEmpty()) return;
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
@@ -150,6 +150,15 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         placed.push_back(rect);
         painter.setPen(overlay.text);
         painter.drawText(rect, Qt::AlignCenter, label.text);
+    }
+    if (!overlay.message.isEmpty()) {
+        QFont large = font;
+        large.setPointSizeF(12.0);
+        painter.setFont(large);
+        painter.setPen(overlay.text);
+        painter.drawText(QRectF(QPointF(0.0, 0.0), QSizeF(painter.device()->width(),
+                                                          painter.device()->height())),
+                         Qt::AlignCenter | Qt::TextWordWrap, overlay.message);
     }
     if (!overlay.legend.empty()) {
         painter.setFont(font);

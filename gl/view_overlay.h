@@ -34,7 +34,8 @@ struct LegendEntry {
 struct ViewOverlay {
     std::vector<OverlayLabel> labels;
     std::vector<LegendEntry> legend;
-    QColor text;  // readable on the background
+    QString message;  // centred in the view, e.g. what to do when nothing is loaded
+    QColor text;      // readable on the background
 };
 
 struct OverlayInput {

@@ -3,6 +3,7 @@
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
+#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QRubberBand>
 #include <QToolTip>
@@ -48,6 +49,7 @@ void SilhouetteView::initializeGL() {
             &SilhouetteView::onContextAboutToBeDestroyed, Qt::UniqueConnection);
     try {
         m_renderer.initialize();
+        m_renderer.warmUp();
         m_glError.clear();
     } catch (const std::exception& e) {
         m_glError = QString::fromStdString(e.what());
@@ -61,7 +63,8 @@ void SilhouetteView::paintGL() {
     const int w = static_cast<int>(std::lround(width() * ratio));
     const int h = static_cast<int>(std::lround(height() * ratio));
     m_renderer.render(defaultFramebufferObject(), w, h);
-    const gl::ViewOverlay overlay = m_renderer.overlay(w, h);
+    gl::ViewOverlay overlay = m_renderer.overlay(w, h);
+    if (!m_renderer.hasGrid()) overlay.message = m_placeholder;
     QPainter painter(this);
     gl::paintOverlay(painter, overlay, ratio);
 }

@@ -34,6 +34,17 @@ public:
     // The error from the last initialisation attempt, empty when rendering works.
     [[nodiscard]] QString glError() const { return m_glError; }
 
+    // What the view says while it has no data (what to do, or that data is loading); empty
+    // restores the default hint.
+    void setPlaceholderText(const QString& text) {
+        m_placeholder = text.isEmpty() ? defaultPlaceholder() : text;
+        update();
+    }
+    [[nodiscard]] static QString defaultPlaceholder() {
+        return tr("No ensemble loaded.\nFile > Open (Ctrl+O) reads NetCDF, HDF5 or VTK files;\n"
+                  "File > Open Demo Ensemble shows a generated one.");
+    }
+
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
     void setMemberNames(QStringList names) { m_memberNames = std::move(names); }
 
@@ -90,6 +101,7 @@ private:
     QPoint m_hoverPosition;
     int m_hovered = -1;
     QStringList m_memberNames;
+    QString m_placeholder = defaultPlaceholder();
     QString m_glError;
 };
 

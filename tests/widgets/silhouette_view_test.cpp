@@ -103,3 +103,20 @@ TEST_F(ShownView, PaintsTheAxisLabelsOverTheFrame) {
     };
     EXPECT_GT(light(labelled), light(plain) + 100);
 }
+
+TEST(EmptyView, SaysWhatToDoUntilDataArrives) {
+    ui::SilhouetteView view;
+    view.resize(500, 300);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    const auto lightInTheMiddle = [&view] {
+        const QImage image = view.grabFramebuffer();
+        int n = 0;
+        for (int y = image.height() / 3; y < 2 * image.height() / 3; ++y)
+            for (int x = 0; x < image.width(); ++x) n += image.pixelColor(x, y).lightness() > 150;
+        return n;
+    };
+    EXPECT_GT(lightInTheMiddle(), 300) << "the hint is written in the middle";
+    view.setPlaceholderText(QStringLiteral(" "));
+    EXPECT_EQ(lightInTheMiddle(), 0);
+}
