@@ -125,14 +125,8 @@ void MainWindow::createMenus() {
     file->addSeparator();
     createProjectActions(file);
     file->addSeparator();
-    QAction* screenshot = file->addAction(tr("Save &Screenshot..."), this, [this] {
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Save Screenshot"), QStringLiteral("ensil.png"), tr("PNG images (*.png)"));
-        QString error;
-        if (!path.isEmpty() && !saveScreenshot(path, &error)) {
-            QMessageBox::warning(this, tr("Screenshot not saved"), error);
-        }
-    });
+    QAction* screenshot =
+        file->addAction(tr("Save &Screenshot..."), this, &MainWindow::chooseScreenshot);
     screenshot->setShortcut(QKeySequence(Qt::Key_F12));
     addExportActions(file);
     file->addSeparator();
@@ -404,10 +398,53 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
 }
 
+void MainWindow::chooseScreenshot() {
+    QSettings settings;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Screenshot"),
+        settings.value(QStringLiteral("screenshot/path"), QStringLiteral("ensil.png")).toString(),
+        tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    // Any resolution: the view's own by default, or e.g. 3840x2400 for print.
+    const qreal ratio = m_view->devicePixelRatioF();
+    const QString viewSize = QStringLiteral("%1x%2")
+                                 .arg(std::lround(m_view->width() * ratio))
+                                 .arg(std::lround(m_view->height() * ratio));
+    bool ok = false;
+    const QString answer = QInputDialog::getText(
+        this, tr("Screenshot Size"), tr("Width x height in pixels:"), QLineEdit::Normal,
+        settings.value(QStringLiteral("screenshot/size"), viewSize).toString(), &ok);
+    if (!ok) return;
+    const QStringList parts = answer.toLower().split(QLatin1Char('x'));
+    const int width = parts.size() == 2 ? parts[0].trimmed().toInt() : 0;
+    const int height = parts.size() == 2 ? parts[1].trimmed().toInt() : 0;
+    if (width < 16 || height < 16 || width > 16384 || height > 16384) {
+        QMessageBox::warning(this, tr("Screenshot not saved"),
+                             tr("'%1' is not a size such as 1920x1200 (16 to 16384 pixels a "
+                                "side).").arg(answer));
+        return;
+    }
+    settings.setValue(QStringLiteral("screenshot/path"), path);
+    settings.setValue(QStringLiteral("screenshot/size"), answer);
+    QString error;
+    if (!saveScreenshot(path, &error, QSize(width, height))) {
+        QMessageBox::warning(this, tr("Screenshot not saved"), error);
+    }
+}
+
 bool MainWindow::saveScreenshot(const QString& path, QString* error, QSize size) {
     const QImage image =
         size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
-    if (image.isNull() || !image.save(path)) {
+    if (image.isNull()) {
+        if (error != nullptr) {
+            *error = tr("The view could not be drawn at %1 x %2 pixels; the graphics driver may "
+                        "not allow images that large.")
+                         .arg(size.width())
+                         .arg(size.height());
+        }
+        return false;
+    }
+    if (!image.save(path)) {
         if (error != nullptr) *error = tr("Could not write '%1'.").arg(path);
         return false;
     }

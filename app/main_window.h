@@ -145,6 +145,7 @@ private:
     void setBusy(const QString& what);
     void setIdle(const QString& message);
     void createProjectActions(QMenu* file);
+    void chooseScreenshot();
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);
     QString locateMissingFileWithDialog(const QString& missing);
