@@ -106,6 +106,18 @@ int main(int argc, char** argv) {
     for (std::size_t m = 0; m < 5 && m < look.size(); ++m) look[m].selected = true;
     r.setAppearance(look);
     const double shadedSelection = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    // Picking under the cursor (hover, click) and brushing a quarter of the view, after a frame.
+    std::vector<double> picks, brushes;
+    for (int i = 0; i < frames; ++i) {
+        QElapsedTimer t;
+        t.start();
+        (void)r.pick(width / 2, height / 2);
+        context.functions()->glFinish();
+        picks.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+        t.start();
+        (void)r.membersIn(width / 4, height / 4, 3 * width / 4, 3 * height / 4);
+        brushes.push_back(static_cast<double>(t.nsecsElapsed()) * 1e-6);
+    }
     std::printf("renderer: %s\n", renderer);
     std::printf(
         "scene: %zu meshes, %zu triangles, %.2f MiB on the GPU, %d x %d, median of %d frames\n",
@@ -128,6 +140,8 @@ int main(int argc, char** argv) {
                 shadedRemoval / opaque);
     std::printf("  shaded, 5 members selected      %8.2f ms  (%.2fx)\n", shadedSelection,
                 shadedSelection / opaque);
+    std::printf("  pick under the cursor (7 x 7)   %8.2f ms\n", median(picks));
+    std::printf("  brush a quarter of the view     %8.2f ms\n", median(brushes));
     r.releaseGpuResources();
     return 0;
 }
