@@ -455,6 +455,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
+    rememberRenderSettings();
     QMainWindow::closeEvent(event);
 }
 

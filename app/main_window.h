@@ -124,6 +124,8 @@ private:
     void createDocks();
     void createRenderDocks();  // main_window_render_docks.cpp
     void setVerticalExaggeration(double factor);
+    void restoreRenderSettings();
+    void rememberRenderSettings() const;
     void createAnimation();  // main_window_animation.cpp
     [[nodiscard]] std::vector<int> animationSequence() const;
     void chooseAnimationSequence();

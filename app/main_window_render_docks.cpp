@@ -2,7 +2,9 @@
 // the renderer: every edit is applied to the renderer's settings and repaints the view.
 #include <QAction>
 #include <QDockWidget>
+#include <QSettings>
 #include <QSignalBlocker>
+#include <algorithm>
 #include <QKeySequence>
 #include <QMenu>
 #include <QMenuBar>
@@ -57,6 +59,7 @@ void MainWindow::createRenderDocks() {
         clusters->raise();
     }
 
+    restoreRenderSettings();
     connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, [this] {
         gl::RenderSettings& settings = m_view->renderer().settings();
         settings = m_renderPanel->applyTo(settings);
@@ -106,6 +109,52 @@ void MainWindow::createRenderDocks() {
         m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes),
                                             units.isEmpty() ? QString() : units + QStringLiteral("\u00b2"));
     });
+}
+
+void MainWindow::restoreRenderSettings() {
+    // How the user last drew things; the cutting plane and exaggeration belong to the data.
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("rendering"));
+    gl::RenderSettings& r = m_view->renderer().settings();
+    const int mode = settings.value(QStringLiteral("mode"), static_cast<int>(r.mode)).toInt();
+    if (mode >= 0 && mode <= static_cast<int>(gl::RenderMode::OpaqueSurfaces)) {
+        r.mode = static_cast<gl::RenderMode>(mode);
+    }
+    r.thickness = std::clamp(settings.value(QStringLiteral("thickness"), r.thickness).toFloat(),
+                             0.001F, 0.1F);
+    r.surfaceAlpha =
+        std::clamp(settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat(), 0.02F, 1.0F);
+    r.showMean = settings.value(QStringLiteral("mean"), r.showMean).toBool();
+    r.showAxes = settings.value(QStringLiteral("axes"), r.showAxes).toBool();
+    r.showLegend = settings.value(QStringLiteral("legend"), r.showLegend).toBool();
+    r.groupSize = std::clamp(settings.value(QStringLiteral("groupSize"), r.groupSize).toInt(), 1, 64);
+    m_renderPanel->setSettings(r);
+    const QColor background =
+        settings.value(QStringLiteral("background"), m_renderPanel->background()).value<QColor>();
+    if (background.isValid()) {
+        m_renderPanel->setBackground(background);
+        m_view->renderer().setBackground({background.redF(), background.greenF(),
+                                          background.blueF(), 1.0F});
+    }
+    const bool orthographic = settings.value(QStringLiteral("orthographic"), false).toBool();
+    m_renderPanel->setOrthographic(orthographic);
+    m_view->renderer().camera().setProjection(orthographic ? gl::Camera::Projection::Orthographic
+                                                           : gl::Camera::Projection::Perspective);
+}
+
+void MainWindow::rememberRenderSettings() const {
+    QSettings settings;
+    settings.beginGroup(QStringLiteral("rendering"));
+    const gl::RenderSettings& r = m_view->renderer().settings();
+    settings.setValue(QStringLiteral("mode"), static_cast<int>(r.mode));
+    settings.setValue(QStringLiteral("thickness"), r.thickness);
+    settings.setValue(QStringLiteral("opacity"), r.surfaceAlpha);
+    settings.setValue(QStringLiteral("mean"), r.showMean);
+    settings.setValue(QStringLiteral("axes"), r.showAxes);
+    settings.setValue(QStringLiteral("legend"), r.showLegend);
+    settings.setValue(QStringLiteral("groupSize"), r.groupSize);
+    settings.setValue(QStringLiteral("background"), m_renderPanel->background());
+    settings.setValue(QStringLiteral("orthographic"), m_renderPanel->orthographic());
 }
 
 void MainWindow::setVerticalExaggeration(double factor) {

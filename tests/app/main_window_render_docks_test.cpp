@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <QDoubleSpinBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -59,4 +60,20 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     EXPECT_NEAR(stretched, 2.0F * z500, 1e-4F);
     EXPECT_NEAR(renderer.settings().plane.offset, stretched, 0.004F);
     EXPECT_NEAR(plane.dataPosition(), 500.0, 2.0);
+}
+
+TEST(MainWindowRenderDocks, TheLastRenderingSettingsComeBackNextTime) {
+    QSettings().remove(QStringLiteral("rendering"));
+    {
+        app::MainWindow window;
+        window.renderPanel()->setMode(gl::RenderMode::Spaghetti);
+        window.renderPanel()->findChild<QDoubleSpinBox*>("thickness")->setValue(0.02);
+        window.close();  // what a user does; remembers the settings
+    }
+    app::MainWindow again;
+    EXPECT_EQ(again.view()->renderer().settings().mode, gl::RenderMode::Spaghetti);
+    EXPECT_FLOAT_EQ(again.view()->renderer().settings().thickness, 0.02F);
+    EXPECT_EQ(again.renderPanel()->applyTo({}).mode, gl::RenderMode::Spaghetti)
+        << "the panel shows what is used";
+    QSettings().remove(QStringLiteral("rendering"));
 }
