@@ -11,8 +11,10 @@ packaging/install-deps.sh
 
 cmake --preset ci
 cmake --build --preset ci
-# One virtual display for the whole run; 24-bit colour so images compare exactly.
-xvfb-run -a -s "-screen 0 1920x1200x24" ctest --preset ci
+# One virtual display for the whole run; 24-bit colour so images compare exactly. -noreset:
+# by default Xvfb resets whenever its last client leaves, and a test that connects at that
+# moment (tests run two at a time) is refused and aborts.
+xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" ctest --preset ci
 
 cmake --preset asan
 cmake --build --preset asan --target ensil_data_tests ensil_preprocessing_tests
