@@ -2,6 +2,7 @@
 // the renderer: every edit is applied to the renderer's settings and repaints the view.
 #include <QAction>
 #include <QDockWidget>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <algorithm>
@@ -106,8 +107,13 @@ void MainWindow::createRenderDocks() {
         const auto& meshes = m_view->renderer().meshes();
         if (!meshes || !m_overview) return;
         const QString units = QString::fromStdString(m_overview->ensemble->units);
-        m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes),
-                                            units.isEmpty() ? QString() : units + QStringLiteral("\u00b2"));
+        // "K" squared is "K²", "m s-1" squared is "(m s-1)²".
+        const QString squared =
+            units.isEmpty()                          ? QString()
+            : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
+                ? QStringLiteral("(%1)\u00b2").arg(units)
+                : units + QStringLiteral("\u00b2");
+        m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared);
     });
 }
 

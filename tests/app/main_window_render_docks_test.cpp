@@ -41,7 +41,7 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     auto* removalMax = window.renderPanel()->findChild<QDoubleSpinBox*>("removalMax");
     ASSERT_NE(removalMax, nullptr);
     EXPECT_GT(removalMax->maximum(), 0.0);
-    EXPECT_TRUE(removalMax->suffix().contains(QChar(0x00b2))) << "units squared";
+    EXPECT_EQ(removalMax->suffix(), QStringLiteral(" (m s-1)\u00b2")) << "units squared";
 
     // A horizontal plane at the 500 hPa level, typed in hPa, lands at that level's height.
     ui::CuttingPlanePanel& plane = *window.cuttingPlanePanel();
