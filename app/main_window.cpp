@@ -21,8 +21,8 @@
 
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
-#include "app/project_renderer.h"
 #include "app/open_data_flow.h"
+#include "app/project_renderer.h"
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
@@ -421,7 +421,8 @@ void MainWindow::chooseScreenshot() {
     if (width < 16 || height < 16 || width > 16384 || height > 16384) {
         QMessageBox::warning(this, tr("Screenshot not saved"),
                              tr("'%1' is not a size such as 1920x1200 (16 to 16384 pixels a "
-                                "side).").arg(answer));
+                                "side).")
+                                 .arg(answer));
         return;
     }
     settings.setValue(QStringLiteral("screenshot/path"), path);
@@ -433,8 +434,7 @@ void MainWindow::chooseScreenshot() {
 }
 
 bool MainWindow::saveScreenshot(const QString& path, QString* error, QSize size) {
-    const QImage image =
-        size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
+    const QImage image = size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
     if (image.isNull()) {
         if (error != nullptr) {
             *error = tr("The view could not be drawn at %1 x %2 pixels; the graphics driver may "

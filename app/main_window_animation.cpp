@@ -44,9 +44,8 @@ std::vector<int> MainWindow::animationSequence() const {
                                                          : gl::MemberAppearance{};
     };
     const bool anySelected =
-        std::any_of(look.begin(), look.end(), [](const gl::MemberAppearance& a) {
-            return a.selected && a.visible;
-        });
+        std::any_of(look.begin(), look.end(),
+                    [](const gl::MemberAppearance& a) { return a.selected && a.visible; });
     std::vector<int> sequence;
     for (const int m : order) {
         const gl::MemberAppearance a = at(m);

@@ -33,8 +33,8 @@ void MainWindow::createProjectActions(QMenu* file) {
     file->addAction(tr("Open &Project..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), this,
                     [this] {
                         const QString path = QFileDialog::getOpenFileName(
-                            this, tr("Open Project"), QSettings().value("project/lastFolder").toString(),
-                            kFilter);
+                            this, tr("Open Project"),
+                            QSettings().value("project/lastFolder").toString(), kFilter);
                         if (!path.isEmpty()) openProject(path);
                     });
     m_recentProjectsMenu = file->addMenu(tr("Recent Projects"));
@@ -53,9 +53,9 @@ void MainWindow::createProjectActions(QMenu* file) {
 void MainWindow::chooseProjectPathAndSave() {
     QString path = QFileDialog::getSaveFileName(
         this, tr("Save Project"),
-        m_projectPath.isEmpty() ? QSettings().value("project/lastFolder").toString() +
-                                      QStringLiteral("/session.ensil")
-                                : m_projectPath,
+        m_projectPath.isEmpty()
+            ? QSettings().value("project/lastFolder").toString() + QStringLiteral("/session.ensil")
+            : m_projectPath,
         kFilter);
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".ensil");
@@ -78,9 +78,9 @@ Project MainWindow::captureProject() const {
     gl::Renderer& renderer = m_view->renderer();
     if (m_session->result() != nullptr) p.isovalue = static_cast<float>(m_toolbar->isovalue());
     const gl::Camera& camera = renderer.camera();
-    p.camera = ProjectCamera{camera.azimuth(), camera.elevation(), camera.distance(),
-                             camera.target(),
-                             camera.projection() == gl::Camera::Projection::Orthographic};
+    p.camera =
+        ProjectCamera{camera.azimuth(), camera.elevation(), camera.distance(), camera.target(),
+                      camera.projection() == gl::Camera::Projection::Orthographic};
     p.render = renderer.settings();
     p.verticalExaggeration = renderer.frame().verticalExaggeration();
     const QColor bg = m_renderPanel->background();
@@ -121,8 +121,9 @@ bool MainWindow::openProject(const QString& path) {
         project = loadProject(path);
     } catch (const ProjectError& e) {
         const QString message = QString::fromStdString(e.what());
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the project"),
-                                    message + tr("\n\nNothing was changed."), QMessageBox::Ok, this);
+        auto* box =
+            new QMessageBox(QMessageBox::Warning, tr("Cannot open the project"),
+                            message + tr("\n\nNothing was changed."), QMessageBox::Ok, this);
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
         emit loadingFailed(message);
@@ -232,7 +233,7 @@ void MainWindow::updateWindowTitle() {
     if (!m_overview) return;
     const data::Ensemble& e = *m_overview->ensemble;
     QString title = QStringLiteral("%1 - %2").arg(QString::fromStdString(e.variable),
-                                                   QString::fromStdString(e.source));
+                                                  QString::fromStdString(e.source));
     if (!m_projectPath.isEmpty()) title = QFileInfo(m_projectPath).fileName() + " - " + title;
     setWindowTitle(title + QStringLiteral(" - ensil"));
 }

@@ -2,13 +2,13 @@
 // the renderer: every edit is applied to the renderer's settings and repaints the view.
 #include <QAction>
 #include <QDockWidget>
+#include <QKeySequence>
+#include <QMenu>
+#include <QMenuBar>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <algorithm>
-#include <QKeySequence>
-#include <QMenu>
-#include <QMenuBar>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -69,14 +69,15 @@ void MainWindow::createRenderDocks() {
     connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this,
             &MainWindow::setVerticalExaggeration);
     connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, [this](bool orthographic) {
-        m_view->renderer().camera().setProjection(orthographic ? gl::Camera::Projection::Orthographic
-                                                               : gl::Camera::Projection::Perspective);
+        m_view->renderer().camera().setProjection(orthographic
+                                                      ? gl::Camera::Projection::Orthographic
+                                                      : gl::Camera::Projection::Perspective);
         m_view->update();
     });
     connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, [this](const QColor& c) {
-        m_view->renderer().setBackground(
-            {static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
-             static_cast<float>(c.blueF()), 1.0F});
+        m_view->renderer().setBackground({static_cast<float>(c.redF()),
+                                          static_cast<float>(c.greenF()),
+                                          static_cast<float>(c.blueF()), 1.0F});
         m_view->update();
     });
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
@@ -108,11 +109,10 @@ void MainWindow::createRenderDocks() {
         if (!meshes || !m_overview) return;
         const QString units = QString::fromStdString(m_overview->ensemble->units);
         // "K" squared is "K²", "m s-1" squared is "(m s-1)²".
-        const QString squared =
-            units.isEmpty()                          ? QString()
-            : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
-                ? QStringLiteral("(%1)\u00b2").arg(units)
-                : units + QStringLiteral("\u00b2");
+        const QString squared = units.isEmpty() ? QString()
+                                : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
+                                    ? QStringLiteral("(%1)\u00b2").arg(units)
+                                    : units + QStringLiteral("\u00b2");
         m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared);
     });
 }
@@ -128,19 +128,20 @@ void MainWindow::restoreRenderSettings() {
     }
     r.thickness = std::clamp(settings.value(QStringLiteral("thickness"), r.thickness).toFloat(),
                              0.001F, 0.1F);
-    r.surfaceAlpha =
-        std::clamp(settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat(), 0.02F, 1.0F);
+    r.surfaceAlpha = std::clamp(settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat(),
+                                0.02F, 1.0F);
     r.showMean = settings.value(QStringLiteral("mean"), r.showMean).toBool();
     r.showAxes = settings.value(QStringLiteral("axes"), r.showAxes).toBool();
     r.showLegend = settings.value(QStringLiteral("legend"), r.showLegend).toBool();
-    r.groupSize = std::clamp(settings.value(QStringLiteral("groupSize"), r.groupSize).toInt(), 1, 64);
+    r.groupSize =
+        std::clamp(settings.value(QStringLiteral("groupSize"), r.groupSize).toInt(), 1, 64);
     m_renderPanel->setSettings(r);
-    const QColor background =
+    const auto background =
         settings.value(QStringLiteral("background"), m_renderPanel->background()).value<QColor>();
     if (background.isValid()) {
         m_renderPanel->setBackground(background);
-        m_view->renderer().setBackground({background.redF(), background.greenF(),
-                                          background.blueF(), 1.0F});
+        m_view->renderer().setBackground(
+            {background.redF(), background.greenF(), background.blueF(), 1.0F});
     }
     const bool orthographic = settings.value(QStringLiteral("orthographic"), false).toBool();
     m_renderPanel->setOrthographic(orthographic);
@@ -178,7 +179,8 @@ void MainWindow::updatePlaneBox() {
     const data::DisplayFrame& frame = m_view->renderer().frame();
     // The plane keeps its place across the box when the box changes shape.
     const double position = m_planePanel->position();
-    m_planePanel->setBox(frame.boxMin(), frame.boxMax(), planeAxes(m_overview->ensemble->grid, frame));
+    m_planePanel->setBox(frame.boxMin(), frame.boxMax(),
+                         planeAxes(m_overview->ensemble->grid, frame));
     m_planePanel->setPosition(position);
     m_view->renderer().settings().plane = m_planePanel->plane();
 }

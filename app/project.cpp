@@ -16,10 +16,14 @@ constexpr const char* kFormatName = "ensil project";
 
 const char* modeName(gl::RenderMode mode) {
     switch (mode) {
-    case gl::RenderMode::ShadedSilhouettes: return "shaded";
-    case gl::RenderMode::Spaghetti: return "spaghetti";
-    case gl::RenderMode::Surfaces: return "surfaces";
-    case gl::RenderMode::OpaqueSurfaces: return "opaque";
+        case gl::RenderMode::ShadedSilhouettes:
+            return "shaded";
+        case gl::RenderMode::Spaghetti:
+            return "spaghetti";
+        case gl::RenderMode::Surfaces:
+            return "surfaces";
+        case gl::RenderMode::OpaqueSurfaces:
+            return "opaque";
     }
     return "shaded";
 }
@@ -35,7 +39,8 @@ QJsonArray intsJson(const std::vector<int>& values) {
 // Reads one JSON object, naming the field in every complaint ("rendering.thickness must be ...").
 class Fields {
 public:
-    Fields(QJsonObject object, QString path) : m_object(std::move(object)), m_path(std::move(path)) {}
+    Fields(QJsonObject object, QString path)
+        : m_object(std::move(object)), m_path(std::move(path)) {}
 
     [[nodiscard]] bool has(const char* key) const { return m_object.contains(QLatin1String(key)); }
     [[nodiscard]] Fields object(const char* key) const {
@@ -103,9 +108,12 @@ public:
     }
 
 private:
-    [[nodiscard]] QJsonValue value(const char* key) const { return m_object.value(QLatin1String(key)); }
+    [[nodiscard]] QJsonValue value(const char* key) const {
+        return m_object.value(QLatin1String(key));
+    }
     [[nodiscard]] QString name(const char* key) const {
-        return m_path.isEmpty() ? QString::fromLatin1(key) : m_path + QLatin1Char('.') + QLatin1String(key);
+        return m_path.isEmpty() ? QString::fromLatin1(key)
+                                : m_path + QLatin1Char('.') + QLatin1String(key);
     }
 
     QJsonObject m_object;
@@ -129,12 +137,12 @@ int lineOf(const QByteArray& json, int offset) {
 QByteArray projectToJson(const Project& p, const QDir& projectDir) {
     QJsonObject data;
     if (p.demo) {
-        data[QStringLiteral("demo")] = QJsonObject{
-            {"members", static_cast<qint64>(p.demoParams.members)},
-            {"grid", QJsonArray{static_cast<qint64>(p.demoParams.nx),
-                                static_cast<qint64>(p.demoParams.ny),
-                                static_cast<qint64>(p.demoParams.nz)}},
-            {"seed", static_cast<qint64>(p.demoParams.seed)}};
+        data[QStringLiteral("demo")] =
+            QJsonObject{{"members", static_cast<qint64>(p.demoParams.members)},
+                        {"grid", QJsonArray{static_cast<qint64>(p.demoParams.nx),
+                                            static_cast<qint64>(p.demoParams.ny),
+                                            static_cast<qint64>(p.demoParams.nz)}},
+                        {"seed", static_cast<qint64>(p.demoParams.seed)}};
     } else {
         QJsonArray files;
         for (const std::string& path : p.data.paths) {
@@ -153,19 +161,18 @@ QByteArray projectToJson(const Project& p, const QDir& projectDir) {
         {"schema_version", Project::kSchemaVersion},
         {"written_by", QStringLiteral("ensil " ENSIL_VERSION)},
         {"data", data},
-        {"rendering",
-         QJsonObject{{"mode", modeName(r.mode)},
-                     {"thickness", r.thickness},
-                     {"surface_opacity", r.surfaceAlpha},
-                     {"show_mean", r.showMean},
-                     {"axis_labels", r.showAxes},
-                     {"legend", r.showLegend},
-                     {"removal", QJsonObject{{"enabled", r.removal},
-                                             {"min", r.removalMin},
-                                             {"max", r.removalMax},
-                                             {"group_size", r.groupSize}}},
-                     {"vertical_exaggeration", p.verticalExaggeration},
-                     {"background", vec3Json(p.background)}}},
+        {"rendering", QJsonObject{{"mode", modeName(r.mode)},
+                                  {"thickness", r.thickness},
+                                  {"surface_opacity", r.surfaceAlpha},
+                                  {"show_mean", r.showMean},
+                                  {"axis_labels", r.showAxes},
+                                  {"legend", r.showLegend},
+                                  {"removal", QJsonObject{{"enabled", r.removal},
+                                                          {"min", r.removalMin},
+                                                          {"max", r.removalMax},
+                                                          {"group_size", r.groupSize}}},
+                                  {"vertical_exaggeration", p.verticalExaggeration},
+                                  {"background", vec3Json(p.background)}}},
         {"cutting_plane", QJsonObject{{"enabled", r.plane.enabled},
                                       {"normal", vec3Json(r.plane.normal)},
                                       {"offset", r.plane.offset},
@@ -173,8 +180,8 @@ QByteArray projectToJson(const Project& p, const QDir& projectDir) {
         {"clusters", QJsonObject{{"count", p.clusters},
                                  {"linkage", QString::fromStdString(p.linkage)},
                                  {"hidden", intsJson(p.hiddenClusters)}}},
-        {"members", QJsonObject{{"hidden", intsJson(p.hiddenMembers)},
-                                {"selected", intsJson(p.selection)}}},
+        {"members",
+         QJsonObject{{"hidden", intsJson(p.hiddenMembers)}, {"selected", intsJson(p.selection)}}},
         {"layout", QJsonObject{{"geometry", QString::fromLatin1(p.windowGeometry.toBase64())},
                                {"state", QString::fromLatin1(p.windowState.toBase64())}}}};
     if (p.isovalue) root[QStringLiteral("isovalue")] = *p.isovalue;
@@ -195,9 +202,8 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
     const QJsonDocument document = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         const int line = lineOf(json, parseError.offset);
-        throw ProjectError("line " + std::to_string(line) + ": " +
-                               parseError.errorString().toStdString(),
-                           line);
+        throw ProjectError(
+            "line " + std::to_string(line) + ": " + parseError.errorString().toStdString(), line);
     }
     if (!document.isObject()) throw ProjectError("the file does not hold a JSON object", 1);
     const Fields root(document.object(), {});
@@ -207,11 +213,11 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
     const int version = root.integer("schema_version", 0, 0, 1 << 20);
     if (version < 1) root.fail("schema_version", "must be 1 or more");
     if (version > Project::kSchemaVersion) {
-        throw ProjectError(
-            "the project was written by a newer ensil (" +
-            root.text("written_by", QStringLiteral("unknown")).toStdString() + ", format version " +
-            std::to_string(version) + "); this ensil " ENSIL_VERSION " reads format versions up to " +
-            std::to_string(Project::kSchemaVersion) + ". Update ensil to open it.");
+        throw ProjectError("the project was written by a newer ensil (" +
+                           root.text("written_by", QStringLiteral("unknown")).toStdString() +
+                           ", format version " + std::to_string(version) +
+                           "); this ensil " ENSIL_VERSION " reads format versions up to " +
+                           std::to_string(Project::kSchemaVersion) + ". Update ensil to open it.");
     }
 
     Project p;
@@ -260,7 +266,8 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
         cam.distance = static_cast<float>(c.number("distance", cam.distance, 1e-6, 1e6));
         cam.target = c.vec3("target", cam.target);
         const QString projection = c.text("projection", QStringLiteral("perspective"));
-        if (projection != QLatin1String("perspective") && projection != QLatin1String("orthographic")) {
+        if (projection != QLatin1String("perspective") &&
+            projection != QLatin1String("orthographic")) {
             c.fail("projection", "must be perspective or orthographic");
         }
         cam.orthographic = projection == QLatin1String("orthographic");
@@ -283,8 +290,8 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
             r.groupSize = removal.integer("group_size", r.groupSize, 1, 1024);
             if (r.removalMin >= r.removalMax) removal.fail("min", "must be below max");
         }
-        p.verticalExaggeration =
-            static_cast<float>(f.number("vertical_exaggeration", p.verticalExaggeration, 0.01, 1000));
+        p.verticalExaggeration = static_cast<float>(
+            f.number("vertical_exaggeration", p.verticalExaggeration, 0.01, 1000));
         p.background = f.vec3("background", p.background);
     }
     if (root.has("cutting_plane")) {
@@ -322,14 +329,14 @@ Project projectFromJson(const QByteArray& json, const QDir& projectDir) {
 void saveProject(const Project& project, const QString& path) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
-        throw ProjectError("cannot write '" + path.toStdString() + "': " +
-                           file.errorString().toStdString());
+        throw ProjectError("cannot write '" + path.toStdString() +
+                           "': " + file.errorString().toStdString());
     }
     const QByteArray json = projectToJson(project, QFileInfo(path).absoluteDir());
     // Qt 6.4's QSaveFile commits even after a short write (a full disk, a file size limit):
     // check the write error ourselves, after flushing, before the rename replaces the old file.
-    const bool written = file.write(json) == json.size() && file.flush() &&
-                         file.error() == QFileDevice::NoError;
+    const bool written =
+        file.write(json) == json.size() && file.flush() && file.error() == QFileDevice::NoError;
     if (!written || !file.commit()) {
         const std::string why = file.errorString().toStdString();
         file.cancelWriting();
@@ -341,8 +348,8 @@ void saveProject(const Project& project, const QString& path) {
 Project loadProject(const QString& path) {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        throw ProjectError("cannot read '" + path.toStdString() + "': " +
-                           file.errorString().toStdString());
+        throw ProjectError("cannot read '" + path.toStdString() +
+                           "': " + file.errorString().toStdString());
     }
     try {
         return projectFromJson(file.readAll(), QFileInfo(path).absoluteDir());

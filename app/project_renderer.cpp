@@ -39,9 +39,9 @@ private:
 }  // namespace
 
 std::string demoSourceKey(const data::DemoEnsembleParams& params) {
-    return "demo members=" + std::to_string(params.members) + " grid=" +
-           std::to_string(params.nx) + "x" + std::to_string(params.ny) + "x" +
-           std::to_string(params.nz) + " seed=" + std::to_string(params.seed);
+    return "demo members=" + std::to_string(params.members) + " grid=" + std::to_string(params.nx) +
+           "x" + std::to_string(params.ny) + "x" + std::to_string(params.nz) +
+           " seed=" + std::to_string(params.seed);
 }
 
 RenderOutcome renderProject(const Project& project, const RenderRequest& request) {
@@ -49,8 +49,8 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
                                         ? data::makeDemoEnsemble(project.demoParams).ensemble
                                         : data::openEnsemble(project.data);
     const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
-    const float iso = project.isovalue.value_or(
-        defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+    const float iso =
+        project.isovalue.value_or(defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
     if (iso <= stats.minimum || iso >= stats.maximum) {
         throw ProjectError("isovalue " + std::to_string(iso) + " is outside the values (" +
                            std::to_string(stats.minimum) + " .. " + std::to_string(stats.maximum) +

@@ -18,9 +18,9 @@ namespace ensil::app {
 struct RenderRequest {
     int width = 1600;
     int height = 1000;
-    int frames = 1;                  // frames drawn and timed; the median is reported
+    int frames = 1;  // frames drawn and timed; the median is reported
     bool useCache = true;
-    bool labels = true;              // axis labels and legend
+    bool labels = true;  // axis labels and legend
     // Without a saved camera: the angles to look from (the camera is fitted to the data box).
     float azimuth = -75.0F;
     float elevation = 30.0F;

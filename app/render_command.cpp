@@ -56,17 +56,15 @@ struct Options {
         "box: -1 and 1 touch its far corners, 0 is its centre. The side the camera looks from "
         "is cut away.",
         "NX,NY,NZ,OFFSET"};
-    QCommandLineOption planeThickness{"plane-thickness",
-                                      "Width eps of the intersection curves (default 0.004).",
-                                      "EPS", "0.004"};
+    QCommandLineOption planeThickness{
+        "plane-thickness", "Width eps of the intersection curves (default 0.004).", "EPS", "0.004"};
     QCommandLineOption removal{"removal",
                                "Density-based silhouette removal between o*_min and o*_max (in "
                                "the variable's units squared).",
                                "MIN,MAX"};
     QCommandLineOption groupSize{"group-size", "Group size s_G of the removal (default 4).", "S",
                                  "4"};
-    QCommandLineOption noLabels{"no-labels",
-                                "Leave out the axis labels and the cluster legend."};
+    QCommandLineOption noLabels{"no-labels", "Leave out the axis labels and the cluster legend."};
     QCommandLineOption frames{"frames", "Frames to time for frame_ms (default 20).", "N", "20"};
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
@@ -104,9 +102,11 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.output, o.size, o.mode, o.clusters, o.linkage, o.mean, o.noMean,
-                       o.thickness, o.exaggeration, o.azimuth, o.elevation, o.plane, o.frames,
-                       o.planeThickness, o.removal, o.groupSize, o.noLabels, o.noCache, o.demo, o.json});
+    parser.addOptions({o.iso,     o.output,    o.size,     o.mode,      o.clusters,
+                       o.linkage, o.mean,      o.noMean,   o.thickness, o.exaggeration,
+                       o.azimuth, o.elevation, o.plane,    o.frames,    o.planeThickness,
+                       o.removal, o.groupSize, o.noLabels, o.noCache,   o.demo,
+                       o.json});
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
     QString problem;
     const auto selection = selectionOptions.selection(parser, problem);
@@ -142,9 +142,9 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     } else if (!groupOk || groupSize < 1) {
         problem = QStringLiteral("--group-size must be a positive whole number");
     }
-    const bool fromProject = selection && selection->paths.size() == 1 &&
-                             QString::fromStdString(selection->paths.front())
-                                 .endsWith(QLatin1String(".ensil"));
+    const bool fromProject =
+        selection && selection->paths.size() == 1 &&
+        QString::fromStdString(selection->paths.front()).endsWith(QLatin1String(".ensil"));
     if (fromProject) {
         // The project defines the picture; only where it goes and how big it is may be given.
         problem.clear();
@@ -153,8 +153,9 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
               &o.exaggeration, &o.azimuth, &o.elevation, &o.plane, &o.planeThickness, &o.removal,
               &o.groupSize, &o.demo}) {
             if (parser.isSet(*scene)) {
-                problem = QStringLiteral("--%1 comes from the project; change it in the "
-                                         "workbench and save the project")
+                problem = QStringLiteral(
+                              "--%1 comes from the project; change it in the "
+                              "workbench and save the project")
                               .arg(scene->names().front());
             }
         }
@@ -199,7 +200,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
             if (plane) {
                 settings.plane.enabled = true;
                 settings.plane.thickness = parser.value(o.planeThickness).toFloat();
-                request.planeAcrossBox = glm::vec4((*plane)[0], (*plane)[1], (*plane)[2], (*plane)[3]);
+                request.planeAcrossBox =
+                    glm::vec4((*plane)[0], (*plane)[1], (*plane)[2], (*plane)[3]);
             }
             request.azimuth = parser.value(o.azimuth).toFloat();
             request.elevation = parser.value(o.elevation).toFloat();
@@ -222,8 +224,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         } else {
             out << "wrote " << parser.value(o.output) << ": " << width << " x " << height << ", "
                 << result.members << " members at " << result.isovalue << ", median frame "
-                << QString::number(result.frameMs, 'f', 1) << " ms over " << frames
-                << " frames\n";
+                << QString::number(result.frameMs, 'f', 1) << " ms over " << frames << " frames\n";
         }
         return 0;
     } catch (const std::exception& e) {

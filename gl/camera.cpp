@@ -22,8 +22,7 @@ void Camera::reset(const glm::vec3& center, float radius) {
     fit(center, radius);
 }
 
-void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
-                      float fill) {
+void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect, float fill) {
     fit(0.5F * (boxMin + boxMax), 0.5F * glm::length(boxMax - boxMin));
     const auto fits = [&] {
         const glm::mat4 vp = viewProjection(aspect);

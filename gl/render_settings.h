@@ -58,8 +58,8 @@ struct RenderSettings {
     float removalMax = 1.0F;    // o*_max
     int groupSize = 4;          // s_G
     CuttingPlane plane;
-    bool showAxes = true;       // tick labels in data units along the box (gl/view_overlay.h)
-    bool showLegend = true;     // the cluster colours
+    bool showAxes = true;    // tick labels in data units along the box (gl/view_overlay.h)
+    bool showLegend = true;  // the cluster colours
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;

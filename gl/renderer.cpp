@@ -108,8 +108,8 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     OverlayInput in;
     in.grid = m_hasGrid ? &m_grid : nullptr;
     in.frame = &m_frame;
-    in.viewProjection =
-        m_camera.viewProjection(static_cast<float>(width) / static_cast<float>(std::max(height, 1)));
+    in.viewProjection = m_camera.viewProjection(static_cast<float>(width) /
+                                                static_cast<float>(std::max(height, 1)));
     in.eye = m_camera.eye();
     in.width = width;
     in.height = height;
@@ -143,7 +143,8 @@ void Renderer::resetCamera() {
 }
 
 void Renderer::setViewSize(int width, int height) {
-    if (width > 0 && height > 0) m_viewAspect = static_cast<float>(width) / static_cast<float>(height);
+    if (width > 0 && height > 0)
+        m_viewAspect = static_cast<float>(width) / static_cast<float>(height);
 }
 
 void Renderer::setFloorMap(FloorMap map) {

@@ -10,9 +10,9 @@
 // objects and must release them before that context dies (QOpenGLContext::aboutToBeDestroyed).
 #pragma once
 
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
-#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -157,7 +157,7 @@ private:
     std::vector<MemberAppearance> m_appearance;
     RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
-    glm::ivec2 m_lastSize{0};  // the last frame's size, which picking draws at
+    glm::ivec2 m_lastSize{0};   // the last frame's size, which picking draws at
     float m_viewAspect = 1.6F;  // before the first frame: the usual window's shape
     int m_highlighted = -1;
     int m_animated = -1;

@@ -15,9 +15,8 @@ namespace ensil::gl {
 
 // The isosurface program of the silhouette modes: the surface shaders with the geometry shader
 // that drops triangles far from any silhouette or plane curve.
-inline const ShaderFiles kSilhouetteShaderFiles{QStringLiteral("surface"),
-                                                QStringLiteral("silhouette_cull"),
-                                                QStringLiteral("surface")};
+inline const ShaderFiles kSilhouetteShaderFiles{
+    QStringLiteral("surface"), QStringLiteral("silhouette_cull"), QStringLiteral("surface")};
 
 struct Renderer::Gpu {
     GlFunctions* f = nullptr;

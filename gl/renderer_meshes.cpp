@@ -74,9 +74,9 @@ MemberAppearance Renderer::appearance(std::size_t member) const {
 
 Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection,
                                                         bool pick) {
-    SurfacePrograms programs{&m_gpu->shaders.program(QStringLiteral("surface")),
-                             &m_gpu->shaders.program(QStringLiteral("silhouette"),
-                                                     kSilhouetteShaderFiles)};
+    SurfacePrograms programs{
+        &m_gpu->shaders.program(QStringLiteral("surface")),
+        &m_gpu->shaders.program(QStringLiteral("silhouette"), kSilhouetteShaderFiles)};
     if (!m_settings.silhouetteCulling) programs.culled = programs.full;
     programs.culled->bind();
     configureSurfaceProgram(*programs.culled, viewProjection, pick);
@@ -130,24 +130,23 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     f.glActiveTexture(GL_TEXTURE0);
 }
 
-glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width,
-                                     int height) const {
+glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width, int height) const {
     const glm::vec3 lo = m_frame.boxMin(), hi = m_frame.boxMax();
     glm::vec2 minimum(std::numeric_limits<float>::max()), maximum(-minimum);
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 p = viewProjection * glm::vec4((corner & 1) ? hi.x : lo.x,
-                                                       (corner & 2) ? hi.y : lo.y,
-                                                       (corner & 4) ? hi.z : lo.z, 1.0F);
+        const glm::vec4 p =
+            viewProjection * glm::vec4((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
+                                       (corner & 4) ? hi.z : lo.z, 1.0F);
         if (p.w <= 1e-6F) return {0, 0, width, height};  // the camera is inside the box
         const glm::vec2 pixel = (glm::vec2(p) / p.w * 0.5F + 0.5F) * glm::vec2(width, height);
         minimum = glm::min(minimum, pixel);
         maximum = glm::max(maximum, pixel);
     }
     // A pixel of margin for rounding; clamped to the frame.
-    const glm::ivec2 lower = glm::clamp(glm::ivec2(glm::floor(minimum)) - 1, glm::ivec2(0),
-                                        glm::ivec2(width, height));
-    const glm::ivec2 upper = glm::clamp(glm::ivec2(glm::ceil(maximum)) + 1, glm::ivec2(0),
-                                        glm::ivec2(width, height));
+    const glm::ivec2 lower =
+        glm::clamp(glm::ivec2(glm::floor(minimum)) - 1, glm::ivec2(0), glm::ivec2(width, height));
+    const glm::ivec2 upper =
+        glm::clamp(glm::ivec2(glm::ceil(maximum)) + 1, glm::ivec2(0), glm::ivec2(width, height));
     return {lower.x, lower.y, upper.x - lower.x, upper.y - lower.y};
 }
 
@@ -176,8 +175,7 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         program->setUniformValue("u_color", colour.x, colour.y, colour.z);
     };
     const bool translucent = translucentMode();
-    const int translucentShaderMode =
-        m_settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
+    const int translucentShaderMode = m_settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
     const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
     if (pass != MemberPass::Translucent && m_settings.showMean) {
         setMember(0, 0, kSolid, kMeanSurfaceColor);
@@ -281,8 +279,7 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     f.glBindVertexArray(0);
     programs.bound->release();
 
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) *
-                                     4);
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
     f.glPixelStorei(GL_PACK_ALIGNMENT, 1);
     f.glReadPixels(x0, y0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     f.glDisable(GL_SCISSOR_TEST);
@@ -316,7 +313,9 @@ PickResult Renderer::pick(int x, int y, int radius) {
     int bestDistance = std::numeric_limits<int>::max();
     for (int row = 0; row < h; ++row) {
         for (int col = 0; col < w; ++col) {
-            const std::uint32_t id = ids[static_cast<std::size_t>(row) * static_cast<std::size_t>(w) + static_cast<std::size_t>(col)];
+            const std::uint32_t id =
+                ids[static_cast<std::size_t>(row) * static_cast<std::size_t>(w) +
+                    static_cast<std::size_t>(col)];
             if (id == 0) continue;
             const int dx = x0 + col - x, dy = y0 + row - glY;
             const int distance = dx * dx + dy * dy;

@@ -16,8 +16,9 @@ data::PackedMesh triangle() {
     mesh.boundsMin = glm::vec3(0.0F);
     mesh.boundsMax = glm::vec3(1.0F);
     const std::uint16_t one = 65535;
-    for (const auto& p : {std::array<std::uint16_t, 3>{0, 0, 0}, std::array<std::uint16_t, 3>{one, 0, 0},
-                          std::array<std::uint16_t, 3>{0, one, one}}) {
+    for (const auto& p :
+         {std::array<std::uint16_t, 3>{0, 0, 0}, std::array<std::uint16_t, 3>{one, 0, 0},
+          std::array<std::uint16_t, 3>{0, one, one}}) {
         data::PackedVertex v{};
         v.position[0] = p[0];
         v.position[1] = p[1];
@@ -45,7 +46,8 @@ void Renderer::warmUp() {
     const glm::ivec2 lastSize = m_lastSize;
     const float viewAspect = m_viewAspect;
 
-    setGrid(data::Grid(data::makeUniformAxis("x", "", 0, 1, 2), data::makeUniformAxis("y", "", 0, 1, 2),
+    setGrid(data::Grid(data::makeUniformAxis("x", "", 0, 1, 2),
+                       data::makeUniformAxis("y", "", 0, 1, 2),
                        data::makeUniformAxis("z", "", 0, 1, 2)));
     setFloorMap(FloorMap::spanning({0.0F, 1.0F, 2.0F, 3.0F}));
     auto set = std::make_shared<data::MeshSet>();

@@ -30,8 +30,9 @@ struct Projector {
 
 QString axisTitle(const data::Axis& axis) {
     const QString name = QString::fromStdString(axis.name);
-    return axis.units.empty() ? name
-                              : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(axis.units));
+    return axis.units.empty()
+               ? name
+               : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(axis.units));
 }
 
 // Tick labels and the title of axis `a` along the box edge through `corner` parallel to it.
@@ -53,8 +54,8 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
         point[a] = tick;
         place(in.frame->toDisplay(point)[a], formatTick(tick), kTickOffsetPx, false);
     }
-    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis),
-          kTitleOffsetPx, true);
+    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis), kTitleOffsetPx,
+          true);
 }
 }  // namespace
 
@@ -115,7 +116,8 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
                  n == 1 ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)
                         : QStringLiteral("Cluster %1 \u00b7 %2 members").arg(cluster + 1).arg(n)});
         }
-        if (in.showMean) overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});
+        if (in.showMean)
+            overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});
     }
     return overlay;
 }
@@ -156,8 +158,8 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         large.setPointSizeF(12.0);
         painter.setFont(large);
         painter.setPen(overlay.text);
-        painter.drawText(QRectF(QPointF(0.0, 0.0), QSizeF(painter.device()->width(),
-                                                          painter.device()->height())),
+        painter.drawText(QRectF(QPointF(0.0, 0.0),
+                                QSizeF(painter.device()->width(), painter.device()->height())),
                          Qt::AlignCenter | Qt::TextWordWrap, overlay.message);
     }
     if (!overlay.legend.empty()) {
@@ -171,7 +173,8 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         const double margin = 10.0, pad = 6.0;
         const QRectF box(margin, margin, pad * 3 + swatch + textWidth,
                          pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
-        QColor panel = overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
+        QColor panel =
+            overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
         painter.setPen(Qt::NoPen);
         painter.setBrush(panel);
         painter.drawRoundedRect(box, 4.0, 4.0);

@@ -20,10 +20,10 @@ class QPainter;
 namespace ensil::gl {
 
 struct OverlayLabel {
-    glm::vec2 pixel{0.0F};        // where the label's anchor lies, top-left origin
-    glm::vec2 direction{0.0F};    // unit screen direction the label is pushed away from the box
+    glm::vec2 pixel{0.0F};      // where the label's anchor lies, top-left origin
+    glm::vec2 direction{0.0F};  // unit screen direction the label is pushed away from the box
     QString text;
-    bool title = false;           // an axis title rather than a tick value
+    bool title = false;  // an axis title rather than a tick value
 };
 
 struct LegendEntry {

@@ -127,7 +127,8 @@ void AnimationBar::show(int position) {
     if (member < 0) {
         m_label->setText(tr("  not animating"));
     } else {
-        const QString name = member < m_names.size() ? m_names[member] : tr("member %1").arg(member);
+        const QString name =
+            member < m_names.size() ? m_names[member] : tr("member %1").arg(member);
         m_label->setText(tr("  %1  (%2 of %3)").arg(name).arg(position + 1).arg(m_sequence.size()));
     }
     if (changed && member >= 0) emit memberShown(member);

@@ -143,8 +143,8 @@ void CuttingPlanePanel::setPlane(const gl::CuttingPlane& plane) {
         }
     }
     const QSignalBlocker b3(m_position);
-    m_position->setValue(static_cast<int>(
-        std::lround(plane.positionAcross(m_boxMin, m_boxMax) * kSliderSteps)));
+    m_position->setValue(
+        static_cast<int>(std::lround(plane.positionAcross(m_boxMin, m_boxMax) * kSliderSteps)));
     showPosition();
 }
 
@@ -157,8 +157,8 @@ void CuttingPlanePanel::setOrientation(Orientation orientation) {
 }
 
 void CuttingPlanePanel::setPosition(double position) {
-    m_position->setValue(static_cast<int>(std::lround(std::clamp(position, -1.0, 1.0) *
-                                                      kSliderSteps)));
+    m_position->setValue(
+        static_cast<int>(std::lround(std::clamp(position, -1.0, 1.0) * kSliderSteps)));
 }
 
 double CuttingPlanePanel::position() const {
@@ -197,7 +197,8 @@ void CuttingPlanePanel::onDataValueEdited(double value) {
     const PlaneAxis* axis = alignedAxis();
     if (axis == nullptr) return;
     const QSignalBlocker block(m_position);
-    m_position->setValue(static_cast<int>(std::lround(axisPositionOf(*axis, value) * kSliderSteps)));
+    m_position->setValue(
+        static_cast<int>(std::lround(axisPositionOf(*axis, value) * kSliderSteps)));
     emit planeChanged();
 }
 

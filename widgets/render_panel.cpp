@@ -12,9 +12,9 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <utility>
-#include <cmath>
 
 namespace ensil::ui {
 namespace {
@@ -41,10 +41,18 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_projection(new QComboBox(this)),
       m_backgroundButton(new QToolButton(this)) {
     for (auto [widget, name] : std::initializer_list<std::pair<QWidget*, const char*>>{
-             {m_mode, "mode"}, {m_thickness, "thickness"}, {m_opacity, "opacity"},
-             {m_mean, "mean"}, {m_axes, "axes"}, {m_legend, "legend"}, {m_removal, "removal"}, {m_removalMin, "removalMin"},
-             {m_removalMax, "removalMax"}, {m_groupSize, "groupSize"},
-             {m_exaggeration, "exaggeration"}, {m_projection, "projection"},
+             {m_mode, "mode"},
+             {m_thickness, "thickness"},
+             {m_opacity, "opacity"},
+             {m_mean, "mean"},
+             {m_axes, "axes"},
+             {m_legend, "legend"},
+             {m_removal, "removal"},
+             {m_removalMin, "removalMin"},
+             {m_removalMax, "removalMax"},
+             {m_groupSize, "groupSize"},
+             {m_exaggeration, "exaggeration"},
+             {m_projection, "projection"},
              {m_backgroundButton, "background"}}) {
         widget->setObjectName(QLatin1String(name));
     }
@@ -123,7 +131,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_removalMin, &QDoubleSpinBox::valueChanged, this, [this, edited](double v) {
         if (m_removalMax->value() <= v) {
             const QSignalBlocker block(m_removalMax);
-            m_removalMax->setValue(std::min(v + m_removalMin->singleStep(), m_removalMax->maximum()));
+            m_removalMax->setValue(
+                std::min(v + m_removalMin->singleStep(), m_removalMax->maximum()));
         }
         edited();
     });
@@ -153,8 +162,8 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     m_removal->setChecked(settings.removal);
     // Widen the ranges if needed, so the values are shown as they are.
     for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) {
-        box->setMaximum(std::max({box->maximum(), double(settings.removalMin),
-                                  double(settings.removalMax)}));
+        box->setMaximum(
+            std::max({box->maximum(), double(settings.removalMin), double(settings.removalMax)}));
     }
     m_removalMin->setValue(settings.removalMin);
     m_removalMax->setValue(settings.removalMax);

@@ -1,7 +1,8 @@
 // The rendering panel: how members are drawn (mode, silhouette thickness tau, surface
-// opacity, the mean surface, axis labels and legend), density-based silhouette removal (o*_min, o*_max, group size
-// s_G), vertical exaggeration, projection and background. It edits a gl::RenderSettings value
-// and says when the user changed it; it knows nothing of the renderer. GUI thread only.
+// opacity, the mean surface, axis labels and legend), density-based silhouette removal (o*_min,
+// o*_max, group size s_G), vertical exaggeration, projection and background. It edits a
+// gl::RenderSettings value and says when the user changed it; it knows nothing of the renderer. GUI
+// thread only.
 #pragma once
 
 #include <QColor>

@@ -41,8 +41,9 @@ public:
         update();
     }
     [[nodiscard]] static QString defaultPlaceholder() {
-        return tr("No ensemble loaded.\nFile > Open (Ctrl+O) reads NetCDF, HDF5 or VTK files;\n"
-                  "File > Open Demo Ensemble shows a generated one.");
+        return tr(
+            "No ensemble loaded.\nFile > Open (Ctrl+O) reads NetCDF, HDF5 or VTK files;\n"
+            "File > Open Demo Ensemble shows a generated one.");
     }
 
     // Names shown in the hover tooltip, by member index; "member N" where none is given.

@@ -86,7 +86,8 @@ TEST(CommandLine, RenderExplainsMissingArguments) {
     const CliRun noIso = run({"render", "x.nc", "--out", "y.png"});
     EXPECT_EQ(noIso.code, 2);
     EXPECT_TRUE(noIso.err.contains("--iso")) << noIso.err.toStdString();
-    const CliRun plane = run({"render", "--demo", "--iso", "30", "--out", "y.png", "--plane", "1,2"});
+    const CliRun plane =
+        run({"render", "--demo", "--iso", "30", "--out", "y.png", "--plane", "1,2"});
     EXPECT_EQ(plane.code, 2);
     EXPECT_TRUE(plane.err.contains("NX,NY,NZ,OFFSET")) << plane.err.toStdString();
 }

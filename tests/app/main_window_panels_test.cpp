@@ -274,5 +274,6 @@ TEST(MainWindowLayout, ScreenshotWithTheDemoLoaded) {
     EXPECT_EQ(shot.width(), 1600 * shot.devicePixelRatio());
     // Kept as a test artifact, to look at.
     EXPECT_TRUE(shot.save(test::testOutputDir() + "/main_window_panels.png"));
-    EXPECT_TRUE(window.view()->grabFramebuffer().save(test::testOutputDir() + "/main_window_view.png"));
+    EXPECT_TRUE(
+        window.view()->grabFramebuffer().save(test::testOutputDir() + "/main_window_view.png"));
 }

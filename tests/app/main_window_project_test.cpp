@@ -64,7 +64,8 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
         savedCamera = r.camera();
         QString error;
         ASSERT_TRUE(window.saveProjectTo(path, &error)) << error.toStdString();
-        EXPECT_TRUE(window.windowTitle().startsWith("demo.ensil")) << window.windowTitle().toStdString();
+        EXPECT_TRUE(window.windowTitle().startsWith("demo.ensil"))
+            << window.windowTitle().toStdString();
     }
     app::MainWindow window;
     show(window);
@@ -107,7 +108,8 @@ TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
     const int code =
-        app::runCommandLine({"ensil", "render", path, "--out", rendered, "--size", "480x320"}, out, err)
+        app::runCommandLine({"ensil", "render", path, "--out", rendered, "--size", "480x320"}, out,
+                            err)
             .exitCode;
     err.flush();
     ASSERT_EQ(code, 0) << errText.toStdString();

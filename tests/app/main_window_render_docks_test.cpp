@@ -56,7 +56,8 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
 
     // Stretching the vertical keeps the plane at 500 hPa.
     window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration")->setValue(2.0);
-    const float stretched = renderer.frame().toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;
+    const float stretched =
+        renderer.frame().toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;
     EXPECT_NEAR(stretched, 2.0F * z500, 1e-4F);
     EXPECT_NEAR(renderer.settings().plane.offset, stretched, 0.004F);
     EXPECT_NEAR(plane.dataPosition(), 500.0, 2.0);

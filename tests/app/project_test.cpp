@@ -4,11 +4,11 @@
 #include "app/project.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <QDir>
 #include <QFile>
 #include <csignal>
-#include <sys/resource.h>
 
 #include "tests/support/temp_dir.h"
 
@@ -158,17 +158,23 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
     EXPECT_EQ(error(R"({"format": "something else"})").first.find("not an ensil project") !=
                   std::string::npos,
               true);
-    const std::string thickness = error(
-        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
-            "rendering": {"thickness": "thick"}})").first;
+    const std::string thickness =
+        error(
+            R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "rendering": {"thickness": "thick"}})")
+            .first;
     EXPECT_EQ(thickness, "rendering.thickness must be a number");
-    const std::string band = error(
-        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
-            "rendering": {"removal": {"min": 5, "max": 2}}})").first;
+    const std::string band =
+        error(
+            R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "rendering": {"removal": {"min": 5, "max": 2}}})")
+            .first;
     EXPECT_EQ(band, "rendering.removal.min must be below max");
-    const std::string members = error(
-        R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
-            "members": {"selected": [1, -2]}})").first;
+    const std::string members =
+        error(
+            R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
+            "members": {"selected": [1, -2]}})")
+            .first;
     EXPECT_EQ(members, "members.selected must be a list of indices (whole numbers from 0)");
     EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 1, "data": {}})").first,
               "data.files is missing: name the data files or the demo");

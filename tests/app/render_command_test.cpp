@@ -61,12 +61,12 @@ QImage renderEra5(const QStringList& extra, QString* error, int* exitCode = null
     const QString png = QString::fromStdString(dir.file("out.png"));
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
-    QStringList args{"ensil",   "render",   ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                     "--var",   "t",        "--iso",
-                     "260",     "--out",    png,
-                     "--size",  "320x240",  "--frames",
-                     "1",       "--no-mean", "--elevation",
-                     "60",      "--no-cache"};
+    QStringList args{"ensil",  "render",    ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                     "--var",  "t",         "--iso",
+                     "260",    "--out",     png,
+                     "--size", "320x240",   "--frames",
+                     "1",      "--no-mean", "--elevation",
+                     "60",     "--no-cache"};
     args += extra;
     const int code = app::runCommandLine(args, out, err).exitCode;
     err.flush();

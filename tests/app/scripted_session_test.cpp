@@ -65,7 +65,8 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     QTRY_VERIFY_WITH_TIMEOUT(failed.count() >= 1, 30000);
     EXPECT_FALSE(session.isRunning());
     EXPECT_EQ(failed.last()[0].toString(), QStringLiteral("Isosurfaces cancelled"));
-    EXPECT_EQ(window.view()->renderer().meshes(), atTwentyFive) << "cancelling keeps what was shown";
+    EXPECT_EQ(window.view()->renderer().meshes(), atTwentyFive)
+        << "cancelling keeps what was shown";
 
     // Pick a member by clicking a pixel of its silhouette: the first pixel along the view's
     // middle row that the id pass names.

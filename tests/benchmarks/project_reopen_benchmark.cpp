@@ -49,7 +49,8 @@ Reopening reopen(const QString& path) {
 int main(int argc, char** argv) {
     int runs = 3;
     for (int i = 1; i < argc; ++i) {
-        if (std::string(argv[i]) == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+        if (std::string(argv[i]) == "--runs" && i + 1 < argc)
+            runs = std::max(1, std::atoi(argv[++i]));
     }
     QTemporaryDir home;
     qputenv("XDG_CACHE_HOME", home.path().toUtf8());
@@ -65,9 +66,10 @@ int main(int argc, char** argv) {
     }
     const Reopening cold = reopen(path);
     std::printf("project of the paper-sized demo (50 members, 256 x 128 x 16, isovalue 30)\n");
-    std::printf("  first opening, empty cache      %8.0f ms  (data loaded at %.0f ms; meshes "
-                "from the cache: %s)\n",
-                cold.openedMs, cold.loadedMs, cold.fromCache ? "yes" : "no");
+    std::printf(
+        "  first opening, empty cache      %8.0f ms  (data loaded at %.0f ms; meshes "
+        "from the cache: %s)\n",
+        cold.openedMs, cold.loadedMs, cold.fromCache ? "yes" : "no");
     std::vector<double> warm, loaded, surfaces;
     for (int r = 0; r < runs; ++r) {
         const Reopening again = reopen(path);

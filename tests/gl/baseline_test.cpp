@@ -65,4 +65,6 @@ INSTANTIATE_TEST_SUITE_P(
                       Variant{"surfaces_plane", gl::RenderMode::Surfaces, false, true},
                       Variant{"shaded_selection", gl::RenderMode::ShadedSilhouettes, false, false,
                               true}),
-    [](const ::testing::TestParamInfo<Variant>& variant) { return std::string(variant.param.name); });
+    [](const ::testing::TestParamInfo<Variant>& variant) {
+        return std::string(variant.param.name);
+    });

@@ -94,9 +94,9 @@ TEST_F(PickingTest, BrushingCollectsTheMembersDrawnInARectangle) {
     const QPoint leftRim = project(display({9 - 7.9F, 15.5F, 15.5F}));
     const QPoint rightRim = project(display({22 + 7.9F, 15.5F, 15.5F}));
     EXPECT_EQ(m_renderer.membersIn(0, 0, kWidth - 1, kHeight - 1), (std::vector<int>{0, 1}));
-    EXPECT_EQ(m_renderer.membersIn(leftRim.x() - 4, leftRim.y() - 4, leftRim.x() + 4,
-                                   leftRim.y() + 4),
-              (std::vector<int>{0}));
+    EXPECT_EQ(
+        m_renderer.membersIn(leftRim.x() - 4, leftRim.y() - 4, leftRim.x() + 4, leftRim.y() + 4),
+        (std::vector<int>{0}));
     EXPECT_EQ(m_renderer.membersIn(rightRim.x() + 4, rightRim.y() + 4, rightRim.x() - 4,
                                    rightRim.y() - 4),
               (std::vector<int>{1}))

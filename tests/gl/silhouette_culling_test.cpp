@@ -20,7 +20,8 @@ protected:
         test::OffscreenGlTest::SetUp();
         if (IsSkipped() || HasFatalFailure()) return;
         m_renderer.initialize();
-        const auto demo = data::makeDemoEnsemble({.members = 8, .nx = 96, .ny = 48, .nz = 12, .seed = 2});
+        const auto demo =
+            data::makeDemoEnsemble({.members = 8, .nx = 96, .ny = 48, .nz = 12, .seed = 2});
         const data::Ensemble& e = demo.ensemble;
         prep::PipelineOptions options;
         options.isovalue = 30.0F;
@@ -60,7 +61,8 @@ protected:
 }  // namespace
 
 TEST_F(SilhouetteCullingTest, ShadedAndSpaghettiLookTheSameWithAndWithoutCulling) {
-    for (const gl::RenderMode mode : {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
+    for (const gl::RenderMode mode :
+         {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
         for (const float tau : {0.003F, 0.02F, 0.1F}) {
             m_renderer.settings().mode = mode;
             m_renderer.settings().thickness = tau;

@@ -17,7 +17,8 @@ TEST(AxisTicks, AreRoundNumbersCoveringTheRangeInEitherOrder) {
     // 120 / 5 = 24 rounds up to steps of 25.
     EXPECT_EQ(gl::niceTicks(-80.0, 40.0), (std::vector<double>{-75, -50, -25, 0, 25}));
     EXPECT_EQ(gl::niceTicks(1000.0, 100.0), (std::vector<double>{200, 400, 600, 800, 1000}));
-    EXPECT_EQ(gl::niceTicks(0.0, 1.0), (std::vector<double>{0, 0.2, 0.4, 0.6000000000000001, 0.8, 1}));
+    EXPECT_EQ(gl::niceTicks(0.0, 1.0),
+              (std::vector<double>{0, 0.2, 0.4, 0.6000000000000001, 0.8, 1}));
     EXPECT_EQ(gl::niceTicks(0.0, 10.0, 4), (std::vector<double>{0, 2.5, 5, 7.5, 10}));
     EXPECT_TRUE(gl::niceTicks(3.0, 3.0).empty());
     EXPECT_TRUE(gl::niceTicks(0.0, std::numeric_limits<double>::infinity()).empty());
@@ -126,7 +127,8 @@ TEST(ViewOverlay, PaintsTheLegendSwatchesAndTextIntoTheImage) {
     for (int y = 10; y < 40 && !swatch; ++y)
         for (int x = 10; x < 40 && !swatch; ++x) {
             const QColor p = image.pixelColor(x, y);
-            swatch = std::abs(p.red() - int(c.r * 255)) < 3 && std::abs(p.green() - int(c.g * 255)) < 3 &&
+            swatch = std::abs(p.red() - int(c.r * 255)) < 3 &&
+                     std::abs(p.green() - int(c.g * 255)) < 3 &&
                      std::abs(p.blue() - int(c.b * 255)) < 3;
         }
     EXPECT_TRUE(swatch);

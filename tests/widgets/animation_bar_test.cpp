@@ -53,8 +53,9 @@ TEST(AnimationBar, WithoutLoopPlayingStopsAtTheLastMember) {
 TEST(AnimationBar, AsksForASequenceWhenItHasNoneAndANewOneStopsTheAnimation) {
     ui::AnimationBar bar;
     QSignalSpy wanted(&bar, &ui::AnimationBar::sequenceWanted);
-    QObject::connect(&bar, &ui::AnimationBar::sequenceWanted, &bar,
-                     [&bar] { bar.setSequence({5, 6}, {"a", "b", "c", "d", "e", "f", "g"}); });
+    QObject::connect(&bar, &ui::AnimationBar::sequenceWanted, &bar, [&bar] {
+        bar.setSequence({5, 6}, {"a", "b", "c", "d", "e", "f", "g"});
+    });
     QSignalSpy spy(&bar, &ui::AnimationBar::memberShown);
     bar.playAction()->trigger();
     EXPECT_EQ(wanted.count(), 1);
