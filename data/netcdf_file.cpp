@@ -1,5 +1,6 @@
 #include "data/netcdf_file.h"
 
+#include <hdf5.h>
 #include <netcdf.h>
 
 #include <array>
@@ -14,10 +15,24 @@ std::mutex& netcdfLibraryMutex() {
     return mutex;
 }
 
+namespace {
+// netCDF-4 files are read through HDF5, whose error printing is per thread in a thread-safe
+// build: netCDF turns it off only on the thread that first used the library, so reading on a
+// worker printed pages of HDF5-DIAG for attributes netCDF merely probes for. netCDF reports
+// every error through its status codes; HDF5's own printing stays off on threads that read.
+void quietHdf5OnThisThread() {
+    thread_local bool quiet = false;
+    if (quiet) return;
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    quiet = true;
+}
+}  // namespace
+
 NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
     if (!std::filesystem::exists(m_path)) {
         throw Error(ErrorKind::FileNotFound, "no such file: '" + m_path + "'");
     }
+    quietHdf5OnThisThread();
     const int status = nc_open(m_path.c_str(), NC_NOWRITE, &m_id);
     if (status == NC_ENOTNC) {
         throw Error(ErrorKind::UnsupportedFormat,
