@@ -134,8 +134,14 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     titleFont.setBold(true);
     // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
     // placed keeps its place and later ones that would overlap it are left out.
+    // Titles first: where space is short, a title says more than one tick value.
+    std::vector<const OverlayLabel*> order;
+    for (const OverlayLabel& label : overlay.labels) order.push_back(&label);
+    std::stable_partition(order.begin(), order.end(),
+                          [](const OverlayLabel* label) { return label->title; });
     std::vector<QRectF> placed;
-    for (const OverlayLabel& label : overlay.labels) {
+    for (const OverlayLabel* entry : order) {
+        const OverlayLabel& label = *entry;
         painter.setFont(label.title ? titleFont : font);
         const QFontMetricsF metrics(painter.font());
         const QSizeF size = metrics.size(Qt::TextSingleLine, label.text);
@@ -144,7 +150,12 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         const glm::vec2 p = label.pixel * scale;
         const double x = p.x - 0.5 * size.width() * (1.0 - label.direction.x);
         const double y = p.y - 0.5 * size.height() * (1.0 - label.direction.y);
-        const QRectF rect(QPointF(x, y), size);
+        // Kept inside the picture: a title beside a box edge near the border would be cut.
+        const double maxX = painter.device()->width() - size.width() - 2.0;
+        const double maxY = painter.device()->height() - size.height() - 2.0;
+        const QRectF rect(QPointF(std::clamp(x, 2.0, std::max(2.0, maxX)),
+                                  std::clamp(y, 2.0, std::max(2.0, maxY))),
+                          size);
         if (std::any_of(placed.begin(), placed.end(),
                         [&](const QRectF& other) { return other.intersects(rect); })) {
             continue;
