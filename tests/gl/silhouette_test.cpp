@@ -112,3 +112,48 @@ TEST_F(SilhouetteTest, ShadedSilhouettesMatchBaseline) {
         test::compareWithBaseline(draw(), "silhouettes_three_spheres");
     EXPECT_TRUE(result.passed) << result.message.toStdString();
 }
+
+namespace {
+// Along the row through the sphere's centre, from the right edge of the picture inwards: the
+// outermost drawn pixel and how many drawn pixels follow it without a gap (the ring's width).
+std::pair<int, int> ringOnTheRight(const QImage& image, QPoint centre) {
+    int outer = -1, width = 0;
+    for (int x = image.width() - 1; x > centre.x(); --x) {
+        // The member is yellow-orange; the box's lines are gray.
+        const QColor c = image.pixelColor(x, centre.y());
+        const bool drawn = c.red() - c.blue() > 40;
+        if (outer < 0) {
+            if (drawn) outer = x, width = 1;
+        } else if (drawn) {
+            ++width;
+        } else {
+            break;
+        }
+    }
+    return {outer, width};
+}
+}  // namespace
+
+TEST_F(SilhouetteTest, TheRingLiesAtTheProjectedRadiusAndThickerTauWidensIt) {
+    // A sphere of radius 8 seen head-on: its outline projects from the points 8 cells to its
+    // side, perpendicular to the view.
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {{1.0F, 0.8F, 0.2F}});
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().showAxes = false;
+    const QPoint middle = project(display(centre));
+    const QPoint rim = project(display(centre + glm::vec3(8.0F, 0, 0)));
+    m_renderer.settings().thickness = 0.02F;
+    const QImage thin = draw();
+    m_renderer.settings().thickness = 0.08F;
+    const QImage thick = draw();
+    const auto [thinOuter, thinWidth] = ringOnTheRight(thin, middle);
+    const auto [thickOuter, thickWidth] = ringOnTheRight(thick, middle);
+    EXPECT_NEAR(thinOuter, rim.x(), 2) << "the ring's outer edge is the projected radius";
+    EXPECT_NEAR(thickOuter, rim.x(), 2);
+    EXPECT_GE(thinWidth, 1);
+    EXPECT_GT(thickWidth, thinWidth + 1) << "thicker tau, wider ring";
+    EXPECT_LT(thickWidth, (rim.x() - middle.x()) / 2) << "still a ring, not a disc";
+    const QColor inside = thick.pixelColor(middle);
+    EXPECT_LE(inside.red() - inside.blue(), 10) << "no silhouette in the middle";
+}
