@@ -4,22 +4,13 @@
 #include <algorithm>
 #include <limits>
 
+#include "app/ensemble_facts.h"
 #include "data/error.h"
 
 namespace ensil::app {
 namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
-
-QString dimensionsText(const data::VariableInfo& v) {
-    QStringList dims;
-    for (std::size_t i = 0; i < v.dimensions.size(); ++i) {
-        dims << (i < v.shape.size()
-                     ? QStringLiteral("%1=%2").arg(qs(v.dimensions[i])).arg(v.shape[i])
-                     : qs(v.dimensions[i]));
-    }
-    return dims.join(QStringLiteral(", "));
-}
 
 bool isAxis(const data::Grid& grid, const std::string& dimension) {
     for (int a = 0; a < 3; ++a) {
@@ -57,7 +48,7 @@ void fill(ui::DataProbe& probe, const data::EnsembleDescription& d) {
     probe.format = qs(d.format);
     for (const data::VariableInfo& v : d.variables) {
         probe.variables.push_back({.name = qs(v.name),
-                                   .dimensions = dimensionsText(v),
+                                   .dimensions = describeDimensions(v),
                                    .units = qs(v.units),
                                    .longName = qs(v.longName),
                                    .usable = v.usable,

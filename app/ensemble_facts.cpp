@@ -12,6 +12,17 @@ QString describeAxis(const data::Axis& axis) {
         .arg(axis.isUniform() ? QStringLiteral("uniform") : QStringLiteral("uneven spacing"));
 }
 
+QString describeDimensions(const data::VariableInfo& variable) {
+    QStringList dims;
+    for (std::size_t i = 0; i < variable.dimensions.size(); ++i) {
+        const QString name = QString::fromStdString(variable.dimensions[i]);
+        dims << (i < variable.shape.size()
+                     ? QStringLiteral("%1=%2").arg(name).arg(variable.shape[i])
+                     : name);
+    }
+    return dims.join(QStringLiteral(", "));
+}
+
 ui::EnsembleFacts describeEnsemble(const EnsembleOverview& overview) {
     const data::Ensemble& e = *overview.ensemble;
     ui::EnsembleFacts facts;

@@ -16,16 +16,6 @@ namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
-QString dimensionsText(const data::VariableInfo& v) {
-    QStringList dims;
-    for (std::size_t i = 0; i < v.dimensions.size(); ++i) {
-        dims << (i < v.shape.size()
-                     ? QStringLiteral("%1=%2").arg(qs(v.dimensions[i])).arg(v.shape[i])
-                     : qs(v.dimensions[i]));
-    }
-    return QLatin1Char('(') + dims.join(QStringLiteral(", ")) + QLatin1Char(')');
-}
-
 QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatistics& s) {
     QJsonObject o;
     o[QStringLiteral("format")] = qs(d.format);
@@ -82,7 +72,8 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
     out << "Variables usable as ensembles:\n";
     for (const auto& v : d.variables) {
         if (!v.usable) continue;
-        out << "  " << qs(v.name).leftJustified(12) << ' ' << dimensionsText(v) << "  "
+        out << "  " << qs(v.name).leftJustified(12) << ' '
+            << (QLatin1Char('(') + describeDimensions(v) + QLatin1Char(')')) << "  "
             << qs(v.longName)
             << (v.units.empty() ? QString() : QStringLiteral(" [%1]").arg(qs(v.units))) << "\n";
     }

@@ -2,7 +2,6 @@
 // visible one when none is selected, in cluster then similarity order) and showing the current
 // one as a solid surface in the view.
 #include <QStatusBar>
-#include <algorithm>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -34,22 +33,15 @@ void MainWindow::createAnimation() {
 
 std::vector<int> MainWindow::animationSequence() const {
     const IsovalueResult* result = m_session->result();
-    if (result == nullptr || result->tree.memberCount == 0) return {};
-    const std::vector<int> labels = m_session->labels();
-    const int k = labels.empty() ? 1 : *std::max_element(labels.begin(), labels.end()) + 1;
-    const std::vector<int> order = prep::animationOrder(result->tree, result->distances, k);
-    const std::vector<gl::MemberAppearance>& look = m_view->renderer().appearances();
-    const auto at = [&](int m) {
-        return static_cast<std::size_t>(m) < look.size() ? look[static_cast<std::size_t>(m)]
-                                                         : gl::MemberAppearance{};
-    };
-    const bool anySelected =
-        std::any_of(look.begin(), look.end(),
-                    [](const gl::MemberAppearance& a) { return a.selected && a.visible; });
+    if (result == nullptr || !m_selection->isClustered()) return {};
+    const std::vector<int> order =
+        prep::animationOrder(result->tree, result->distances, m_selection->clusterCount());
+    const auto shown = [this](int m) { return m_selection->isMemberVisible(m); };
+    bool anySelected = false;
+    for (const int m : m_selection->selectedMembers()) anySelected |= shown(m);
     std::vector<int> sequence;
     for (const int m : order) {
-        const gl::MemberAppearance a = at(m);
-        if (a.visible && (a.selected || !anySelected)) sequence.push_back(m);
+        if (shown(m) && (m_selection->isSelected(m) || !anySelected)) sequence.push_back(m);
     }
     return sequence;
 }

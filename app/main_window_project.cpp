@@ -11,6 +11,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "app/project.h"
+#include "app/project_members.h"
 #include "preprocessing/clustering.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
@@ -193,13 +194,7 @@ void MainWindow::applyPendingProjectMembers() {
     if (!m_pendingProject) return;
     const Project p = *m_pendingProject;
     m_pendingProject.reset();
-    // Through the shared selection, so every panel shows it too (memberAppearance() draws a
-    // project the same way for ensil render).
-    for (const int m : p.hiddenMembers) m_selection->setMemberVisible(m, false);
-    for (const int c : p.hiddenClusters) {
-        if (c < m_selection->clusterCount()) m_selection->setClusterVisible(c, false);
-    }
-    m_selection->setSelection(QList<int>(p.selection.begin(), p.selection.end()));
+    applyProjectMembers(p, *m_selection);
     m_projectPath = m_pendingProjectPath;
     rememberRecentProject(m_projectPath);
     updateWindowTitle();

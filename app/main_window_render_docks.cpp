@@ -8,7 +8,6 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalBlocker>
-#include <algorithm>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -122,20 +121,20 @@ void MainWindow::restoreRenderSettings() {
     QSettings settings;
     settings.beginGroup(QStringLiteral("rendering"));
     gl::RenderSettings& r = m_view->renderer().settings();
+    gl::RenderSettings saved = r;
     const int mode = settings.value(QStringLiteral("mode"), static_cast<int>(r.mode)).toInt();
     if (mode >= 0 && mode <= static_cast<int>(gl::RenderMode::OpaqueSurfaces)) {
-        r.mode = static_cast<gl::RenderMode>(mode);
+        saved.mode = static_cast<gl::RenderMode>(mode);
     }
-    r.thickness = std::clamp(settings.value(QStringLiteral("thickness"), r.thickness).toFloat(),
-                             0.001F, 0.1F);
-    r.surfaceAlpha = std::clamp(settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat(),
-                                0.02F, 1.0F);
-    r.showMean = settings.value(QStringLiteral("mean"), r.showMean).toBool();
-    r.showAxes = settings.value(QStringLiteral("axes"), r.showAxes).toBool();
-    r.showLegend = settings.value(QStringLiteral("legend"), r.showLegend).toBool();
-    r.groupSize =
-        std::clamp(settings.value(QStringLiteral("groupSize"), r.groupSize).toInt(), 1, 64);
-    m_renderPanel->setSettings(r);
+    saved.thickness = settings.value(QStringLiteral("thickness"), r.thickness).toFloat();
+    saved.surfaceAlpha = settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat();
+    saved.showMean = settings.value(QStringLiteral("mean"), r.showMean).toBool();
+    saved.showAxes = settings.value(QStringLiteral("axes"), r.showAxes).toBool();
+    saved.showLegend = settings.value(QStringLiteral("legend"), r.showLegend).toBool();
+    saved.groupSize = settings.value(QStringLiteral("groupSize"), r.groupSize).toInt();
+    // Through the panel, whose controls hold values to their ranges (a hand-edited file).
+    m_renderPanel->setSettings(saved);
+    r = m_renderPanel->applyTo(r);
     const auto background =
         settings.value(QStringLiteral("background"), m_renderPanel->background()).value<QColor>();
     if (background.isValid()) {

@@ -10,7 +10,7 @@
 
 #include "app/isovalue_job.h"
 #include "app/isovalue_session.h"
-#include "app/member_appearance.h"
+#include "app/project_members.h"
 #include "data/demo_ensemble.h"
 #include "gl/renderer.h"
 #include "gl/surface_format.h"
@@ -83,7 +83,13 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
     set->members = std::move(outcome.meshes.members);
     set->mean = std::move(outcome.meshes.mean);
     renderer.setMeshes(set);
-    renderer.setAppearance(memberAppearance(prep::clusterLabels(outcome.tree, k), project));
+    // Coloured, hidden and selected as the workbench shows the project.
+    ui::MemberSelection members;
+    members.setMembers({QStringList(static_cast<qsizetype>(ensemble.memberCount())), {}, {}});
+    members.setTree(outcome.tree);
+    members.setClusterCount(k);
+    applyProjectMembers(project, members);
+    renderer.setAppearance(members.appearance());
     renderer.settings() = project.render;
     renderer.setBackground({project.background, 1.0F});
     gl::Camera& camera = renderer.camera();

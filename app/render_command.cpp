@@ -1,15 +1,8 @@
 #include "app/render_command.h"
 
 #include <QCommandLineParser>
-#include <QElapsedTimer>
-#include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
-#include <QOpenGLFunctions>
-#include <QPainter>
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -20,13 +13,6 @@
 #include "app/project.h"
 #include "app/project_renderer.h"
 #include "app/subcommand.h"
-#include "data/demo_ensemble.h"
-#include "data/error.h"
-#include "gl/palette.h"
-#include "gl/renderer.h"
-#include "gl/surface_format.h"
-#include "preprocessing/column_maximum.h"
-#include "preprocessing/field_statistics.h"
 
 namespace ensil::app {
 namespace {

@@ -6,32 +6,18 @@
 
 #include "data/error.h"
 #include "preprocessing/packed_mesh.h"
+#include "preprocessing/similarity.h"
 
 namespace ensil::prep {
 namespace {
 
 void validate(const data::Ensemble& ensemble, std::span<const float> field, float isovalue) {
-    if (ensemble.members.empty()) {
-        throw data::Error(data::ErrorKind::InvalidArgument,
-                          "cannot measure the distances of an ensemble with no members");
-    }
-    if (!std::isfinite(isovalue)) {
-        throw data::Error(data::ErrorKind::InvalidArgument,
-                          "the isovalue for the distances to the mean must be a finite number");
-    }
+    checkDistanceArguments(ensemble, isovalue, "measure the distances to the mean");
     const std::size_t points = ensemble.grid.pointCount();
     if (field.size() != points) {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           "the reference field has " + std::to_string(field.size()) +
                               " values but the grid has " + std::to_string(points) + " points");
-    }
-    for (const data::Member& member : ensemble.members) {
-        if (member.values.size() != points) {
-            throw data::Error(data::ErrorKind::InvalidArgument,
-                              "member '" + member.name + "' has " +
-                                  std::to_string(member.values.size()) +
-                                  " values but the grid has " + std::to_string(points) + " points");
-        }
     }
 }
 

@@ -96,14 +96,17 @@ DistanceMatrix assemble(const PairSums& sums, std::size_t n) {
     return result;
 }
 
-void validate(const data::Ensemble& ensemble, float isovalue) {
+}  // namespace
+
+void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
+                            const std::string& what) {
     if (ensemble.members.empty()) {
         throw data::Error(data::ErrorKind::InvalidArgument,
-                          "cannot compare the members of an ensemble with no members");
+                          "cannot " + what + " of an ensemble with no members");
     }
     if (!std::isfinite(isovalue)) {
         throw data::Error(data::ErrorKind::InvalidArgument,
-                          "the isovalue for the similarity matrix must be a finite number");
+                          "the isovalue to " + what + " must be a finite number");
     }
     const std::size_t points = ensemble.grid.pointCount();
     for (const data::Member& member : ensemble.members) {
@@ -116,11 +119,9 @@ void validate(const data::Ensemble& ensemble, float isovalue) {
     }
 }
 
-}  // namespace
-
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop, const Progress& progress) {
-    validate(ensemble, isovalue);
+    checkDistanceArguments(ensemble, isovalue, "compare the members");
     const std::size_t n = ensemble.memberCount();
     const std::size_t points = ensemble.grid.pointCount();
     const std::size_t maxRows = std::min(blockRows(n), points);

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <stop_token>
+#include <string>
 #include <vector>
 
 #include "data/ensemble.h"
@@ -32,6 +33,12 @@ struct DistanceMatrix {
 // at that floor (never negative) rather than exactly 0.
 // Throws Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble, a
 // non-finite isovalue or a member whose value count differs from the grid's point count.
+// The argument checks every distance of this measure needs (here and in member_summaries.h):
+// throws data::Error(InvalidArgument) for an empty ensemble (`what` says what was being done),
+// a non-finite isovalue, or a member whose value count differs from the grid's point count.
+void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
+                            const std::string& what);
+
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop = {},
                                      const Progress& progress = {});

@@ -8,9 +8,11 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/animation_bar.h"
+#include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -18,14 +20,9 @@ using namespace ensil;
 TEST(MainWindowAnimation, PlaysTheMembersInClusterThenSimilarityOrder) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(900, 600);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 9});
-    ASSERT_TRUE(loaded.wait(30000));
-    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 9}));
 
     ui::AnimationBar& bar = *window.animationBar();
     gl::Renderer& renderer = window.view()->renderer();
@@ -44,9 +41,7 @@ TEST(MainWindowAnimation, PlaysTheMembersInClusterThenSimilarityOrder) {
     EXPECT_EQ(renderer.animatedMember(), expected.back());
 
     // With members 1 and 4 selected, only they are played.
-    auto look = renderer.appearances();
-    look[1].selected = look[4].selected = true;
-    renderer.setAppearance(look);
+    window.memberSelection()->setSelection({1, 4});
     bar.stop();
     EXPECT_EQ(renderer.animatedMember(), -1);
     bar.setSequence({});

@@ -15,6 +15,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -35,14 +36,10 @@ namespace {
 class LoadedWindow : public ::testing::Test {
 protected:
     void SetUp() override {
-        window.resize(1200, 800);
-        window.show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-        QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-        window.loadDemo({.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11});
-        ASSERT_TRUE(loaded.wait(30000));
-        ASSERT_TRUE(built.count() > 0 || built.wait(60000)) << "no isosurfaces were built";
+        ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
+        ASSERT_TRUE(
+            test::loadDemoAndWait(window, {.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11}))
+            << "no isosurfaces were built";
         selection = window.memberSelection();
         ASSERT_TRUE(selection->isClustered());
     }

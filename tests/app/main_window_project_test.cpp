@@ -11,6 +11,7 @@
 #include "app/command_line.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -27,17 +28,6 @@ constexpr data::DemoEnsembleParams kSmallDemo{.members = 6, .nx = 64, .ny = 32, 
 
 class ProjectWindow : public ::testing::Test {
 protected:
-    // A window showing something: waits until its surfaces are built.
-    static void waitBuilt(app::MainWindow& window, const std::function<void()>& start) {
-        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-        start();
-        ASSERT_TRUE(built.wait(60000)) << "no surfaces were built";
-    }
-    static void show(app::MainWindow& window) {
-        window.resize(900, 600);
-        window.show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    }
     test::ScopedCacheHome m_cache;
     test::TempDir m_dir;
 };
@@ -49,8 +39,8 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
     gl::Camera savedCamera;
     {
         app::MainWindow window;
-        show(window);
-        waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+        ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+        ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
         gl::Renderer& r = window.view()->renderer();
         window.renderPanel()->setMode(gl::RenderMode::Spaghetti);
         r.camera().orbit(40.0F, -25.0F);
@@ -68,7 +58,7 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
             << window.windowTitle().toStdString();
     }
     app::MainWindow window;
-    show(window);
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
     QSignalSpy opened(&window, &app::MainWindow::projectOpened);
     ASSERT_TRUE(window.openProject(path));
     ASSERT_TRUE(opened.wait(60000));
@@ -91,8 +81,8 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
 TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
     const QString path = QString::fromStdString(m_dir.file("same.ensil"));
     app::MainWindow window;
-    show(window);
-    waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
     window.view()->renderer().camera().orbit(-30.0F, 10.0F);
     window.cuttingPlanePanel()->setOrientation(ui::CuttingPlanePanel::AlongX);
     window.cuttingPlanePanel()->setPosition(-0.1);
@@ -134,8 +124,8 @@ TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
 
 TEST_F(ProjectWindow, ARefusedProjectChangesNothing) {
     app::MainWindow window;
-    show(window);
-    waitBuilt(window, [&] { window.loadDemo(kSmallDemo); });
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
     const auto before = window.view()->renderer().settings();
     const QString path = QString::fromStdString(m_dir.file("broken.ensil"));
     QFile f(path);
@@ -160,18 +150,20 @@ TEST_F(ProjectWindow, AMovedDataFileIsLocatedByTheUser) {
     const QString path = QString::fromStdString(m_dir.file("era5.ensil"));
     {
         app::MainWindow window;
-        show(window);
+        ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
         data::DataSelection selection;
         selection.paths = {original.toStdString()};
         selection.variable = "t";
-        waitBuilt(window, [&] { window.openFiles(selection); });
+        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+        window.openFiles(selection);
+        ASSERT_TRUE(built.wait(60000)) << "no surfaces were built";
         ASSERT_TRUE(window.saveProjectTo(path));
     }
     const QString moved = QString::fromStdString(m_dir.file("elsewhere.nc"));
     ASSERT_TRUE(QFile::rename(original, moved));
 
     app::MainWindow window;
-    show(window);
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
     QStringList asked;
     window.setMissingFileLocator([&](const QString& missing) {
         asked << missing;

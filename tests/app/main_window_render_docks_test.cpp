@@ -8,6 +8,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cutting_plane_panel.h"
@@ -23,11 +24,8 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     window.show();
     window.activateWindow();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&window)) << "shortcuts need an active window";
-    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
-    ASSERT_TRUE(loaded.wait(30000));
-    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4}));
     gl::Renderer& renderer = window.view()->renderer();
 
     // Keys 1 to 4 switch the mode, as the panel does.

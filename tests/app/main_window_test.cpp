@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "app/isovalue_session.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -127,14 +128,11 @@ TEST(MainWindow, AsksWhichDimensionHoldsTheMembersWhenTheFileDoesNotSay) {
 TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     const ensil::test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(900, 600);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11}))
+        << "no isosurfaces were built";
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    window.loadDemo({.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11});
-    ASSERT_TRUE(loaded.wait(30000));
-    ASSERT_TRUE(built.count() > 0 || built.wait(60000)) << "no isosurfaces were built";
     const auto& meshes = window.view()->renderer().meshes();
     ASSERT_NE(meshes, nullptr);
     EXPECT_EQ(meshes->members.size(), 8u);

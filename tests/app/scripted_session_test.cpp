@@ -13,6 +13,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "gl/palette.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -46,8 +47,9 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     QSignalSpy failed(&session, &app::IsovalueSession::failed);
 
     // Start on the demo.
-    window.loadDemo({.members = 12, .nx = 96, .ny = 48, .nz = 12, .seed = 7});
-    ASSERT_TRUE(built.wait(120000)) << "the demo's surfaces were not built";
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 12, .nx = 96, .ny = 48, .nz = 12, .seed = 7}))
+        << "the demo's surfaces were not built";
     const auto first = window.view()->renderer().meshes();
 
     // Change the isovalue: new surfaces at the typed value.

@@ -11,6 +11,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/silhouette_view.h"
@@ -35,40 +36,34 @@ QImage screenshot(app::MainWindow& window) {
     return shot;
 }
 
-void showAt1600x1000(app::MainWindow& window) {
-    window.resize(1600, 1000);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+// Checks that the view was drawn and keeps the screenshot as a test artifact.
+void checkAndKeep(app::MainWindow& window, const QString& name) {
+    const QImage shot = screenshot(window);
+    ASSERT_EQ(shot.size(), QSize(1600, 1000));
+    const QRect view(window.view()->mapTo(&window, QPoint(0, 0)), window.view()->size());
+    EXPECT_GT(coloursIn(shot, view), 200);
+    shot.save(test::testOutputDir() + "/" + name);
 }
 }  // namespace
 
 TEST(WorkbenchScreenshot, TheDemo) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    showAt1600x1000(window);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    window.loadDemo({.members = 30, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
-    ASSERT_TRUE(built.wait(120000));
-    const QImage shot = screenshot(window);
-    ASSERT_EQ(shot.size(), QSize(1600, 1000));
-    const QRect view(window.view()->mapTo(&window, QPoint(0, 0)), window.view()->size());
-    EXPECT_GT(coloursIn(shot, view), 200);
-    shot.save(test::testOutputDir() + "/workbench_demo_1600x1000.png");
+    ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 30, .nx = 128, .ny = 64, .nz = 16, .seed = 1}));
+    checkAndKeep(window, QStringLiteral("workbench_demo_1600x1000.png"));
 }
 
 TEST(WorkbenchScreenshot, Era5Temperature) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    showAt1600x1000(window);
+    ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     data::DataSelection selection;
     selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
     selection.variable = "t";
     window.openFiles(selection);
     ASSERT_TRUE(built.wait(120000));
-    const QImage shot = screenshot(window);
-    ASSERT_EQ(shot.size(), QSize(1600, 1000));
-    const QRect view(window.view()->mapTo(&window, QPoint(0, 0)), window.view()->size());
-    EXPECT_GT(coloursIn(shot, view), 200);
-    shot.save(test::testOutputDir() + "/workbench_era5_1600x1000.png");
+    checkAndKeep(window, QStringLiteral("workbench_era5_1600x1000.png"));
 }

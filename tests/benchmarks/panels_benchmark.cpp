@@ -16,6 +16,7 @@
 #include <cstring>
 #include <random>
 
+#include "point_distances.h"
 #include "preprocessing/clustering.h"
 #include "timing.h"
 #include "widgets/cluster_panel.h"
@@ -41,17 +42,7 @@ prep::DistanceMatrix clusteredDistances(std::size_t n) {
         for (std::size_t a = 0; a < 4; ++a)
             points[4 * i + a] = (c == static_cast<int>(a)) + noise(rng);
     }
-    prep::DistanceMatrix d{n, std::vector<double>(n * n)};
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            double sum = 0.0;
-            for (std::size_t a = 0; a < 4; ++a) {
-                const double diff = points[4 * i + a] - points[4 * j + a];
-                sum += diff * diff;
-            }
-            d.values[i * n + j] = std::sqrt(sum);
-        }
-    return d;
+    return ensil::bench::euclideanDistances(points, n, 4);
 }
 
 ui::MemberFigures figures(std::size_t n) {

@@ -126,20 +126,19 @@ int main(int argc, char** argv) {
     std::printf("  opaque lit surfaces (reference) %8.2f ms\n", opaque);
     std::printf("  shaded silhouettes              %8.2f ms  (%.2fx the reference; goal <= 1.5x)\n",
                 shaded, shaded / opaque);
-    std::printf("  3D spaghetti plot               %8.2f ms  (%.2fx)\n", spaghetti,
-                spaghetti / opaque);
-    std::printf("  semi-transparent surfaces       %8.2f ms  (%.2fx)\n", surfaces,
-                surfaces / opaque);
-    std::printf("  shaded, no triangle culling     %8.2f ms  (%.2fx)\n", shadedUnculled,
-                shadedUnculled / opaque);
-    std::printf("  spaghetti, no triangle culling  %8.2f ms  (%.2fx)\n", spaghettiUnculled,
-                spaghettiUnculled / opaque);
-    std::printf("  shaded with a cutting plane     %8.2f ms  (%.2fx)\n", shadedPlane,
-                shadedPlane / opaque);
-    std::printf("  shaded with removal             %8.2f ms  (%.2fx)\n", shadedRemoval,
-                shadedRemoval / opaque);
-    std::printf("  shaded, 5 members selected      %8.2f ms  (%.2fx)\n", shadedSelection,
-                shadedSelection / opaque);
+    const struct {
+        const char* what;
+        double ms;
+    } rows[] = {{"3D spaghetti plot", spaghetti},
+                {"semi-transparent surfaces", surfaces},
+                {"shaded, no triangle culling", shadedUnculled},
+                {"spaghetti, no triangle culling", spaghettiUnculled},
+                {"shaded with a cutting plane", shadedPlane},
+                {"shaded with removal", shadedRemoval},
+                {"shaded, 5 members selected", shadedSelection}};
+    for (const auto& row : rows) {
+        std::printf("  %-31s %8.2f ms  (%.2fx)\n", row.what, row.ms, row.ms / opaque);
+    }
     std::printf("  pick under the cursor (7 x 7)   %8.2f ms\n", median(picks));
     std::printf("  brush a quarter of the view     %8.2f ms\n", median(brushes));
     r.releaseGpuResources();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "data/demo_ensemble.h"
+#include "point_distances.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/similarity.h"
 #include "timing.h"
@@ -31,18 +32,7 @@ ensil::prep::DistanceMatrix randomPointDistances(std::size_t n) {
     std::uniform_real_distribution<double> coordinate(0.0, 1.0);
     std::vector<double> points(3 * n);
     for (double& c : points) c = coordinate(rng);
-    ensil::prep::DistanceMatrix d{n, std::vector<double>(n * n)};
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t j = 0; j < n; ++j) {
-            double sum = 0.0;
-            for (std::size_t a = 0; a < 3; ++a) {
-                const double diff = points[3 * i + a] - points[3 * j + a];
-                sum += diff * diff;
-            }
-            d.values[i * n + j] = std::sqrt(sum);
-        }
-    }
-    return d;
+    return ensil::bench::euclideanDistances(points, n, 3);
 }
 }  // namespace
 

@@ -7,9 +7,7 @@
 #include "gl/palette.h"
 #include "gl/renderer.h"
 #include "preprocessing/clustering.h"
-#include "preprocessing/isosurface_pipeline.h"
-#include "tests/support/image_compare.h"
-#include "tests/support/offscreen_gl.h"
+#include "tests/gl/sphere_scene.h"
 
 using namespace ensil;
 
@@ -23,16 +21,9 @@ protected:
         const auto demo =
             data::makeDemoEnsemble({.members = 8, .nx = 96, .ny = 48, .nz = 12, .seed = 2});
         const data::Ensemble& e = demo.ensemble;
-        prep::PipelineOptions options;
-        options.isovalue = 30.0F;
-        auto built = prep::buildIsovalueMeshes(e, prep::computeEnsembleMoments(e),
-                                               data::DisplayFrame(e.grid, 3.0F), options);
-        auto set = std::make_shared<data::MeshSet>();
-        set->members = std::move(built.members);
-        set->mean = std::move(built.mean);
         m_renderer.setGrid(e.grid);
         m_renderer.setVerticalExaggeration(3.0F);
-        m_renderer.setMeshes(set);
+        m_renderer.setMeshes(test::meshesOf(e, 30.0F, 3.0F));
         std::vector<int> labels(e.memberCount());
         for (std::size_t m = 0; m < labels.size(); ++m) labels[m] = static_cast<int>(m % 4);
         m_renderer.setAppearance(gl::clusterAppearance(labels));

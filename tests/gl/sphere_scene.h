@@ -42,11 +42,14 @@ inline data::Ensemble spheres(const std::vector<glm::vec3>& centres,
     return e;
 }
 
-inline std::shared_ptr<data::MeshSet> meshesOf(const data::Ensemble& e) {
+// The meshes of an ensemble at an isovalue (8: the spheres' radius), attributes in the display
+// space of that vertical exaggeration.
+inline std::shared_ptr<data::MeshSet> meshesOf(const data::Ensemble& e, float isovalue = 8.0F,
+                                               float exaggeration = 1.0F) {
     prep::PipelineOptions options;
-    options.isovalue = 8.0F;
+    options.isovalue = isovalue;
     auto built = prep::buildIsovalueMeshes(e, prep::computeEnsembleMoments(e),
-                                           data::DisplayFrame(e.grid, 1.0F), options);
+                                           data::DisplayFrame(e.grid, exaggeration), options);
     auto set = std::make_shared<data::MeshSet>();
     set->members = std::move(built.members);
     set->mean = std::move(built.mean);

@@ -1,0 +1,31 @@
+// What most workbench tests start with: the window shown at a size, and the demo loaded with its
+// first isovalue's surfaces built.
+#pragma once
+
+#include <QSignalSpy>
+#include <QSize>
+#include <QTest>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "data/demo_ensemble.h"
+
+namespace ensil::test {
+
+// Shows the window at this size; false when it never reached the screen.
+[[nodiscard]] inline bool showWorkbench(app::MainWindow& window, QSize size) {
+    window.resize(size);
+    window.show();
+    return QTest::qWaitForWindowExposed(&window);
+}
+
+// Loads the demo and waits until its first surfaces are built; false when they never came.
+[[nodiscard]] inline bool loadDemoAndWait(app::MainWindow& window,
+                                          const data::DemoEnsembleParams& params,
+                                          int timeoutMs = 120000) {
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo(params);
+    return built.count() > 0 || built.wait(timeoutMs);
+}
+
+}  // namespace ensil::test
