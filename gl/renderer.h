@@ -123,12 +123,14 @@ private:
     // the frame); the whole frame when the camera is inside the box.
     [[nodiscard]] glm::ivec4 screenRectangle(const glm::mat4& viewProjection, int width,
                                              int height) const;
-    // The two isosurface programs, both set up for this frame: every triangle, and only those
-    // that may hold a silhouette (the same one when culling is off); `bound` is the one in use.
+    // The two isosurface programs, both set up for this frame: every triangle, and only the
+    // parts that may hold a silhouette (the same one when culling is off); `bound` is the one
+    // in use.
     struct SurfacePrograms {
         QOpenGLShaderProgram* full;
         QOpenGLShaderProgram* culled;
         QOpenGLShaderProgram* bound = nullptr;
+        [[nodiscard]] bool clips() const { return bound == culled && culled != full; }
     };
     SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, bool pick);
     void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,

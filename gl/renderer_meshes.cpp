@@ -17,6 +17,20 @@ namespace {
 
 enum ShaderMode { kShaded = 0, kSpaghetti = 1, kSurfaces = 2, kSolid = 3 };
 
+// The culling program cuts triangles with gl_ClipDistance 0 to 3 (silhouette_cull.geom); they
+// are enabled exactly while it is bound, as a shader that does not write them would be clipped
+// by undefined values.
+void setClipDistances(GlFunctions& f, bool on) {
+    for (const GLenum distance :
+         {GL_CLIP_DISTANCE0, GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3}) {
+        if (on) {
+            f.glEnable(distance);
+        } else {
+            f.glDisable(distance);
+        }
+    }
+}
+
 void drawMesh(GlFunctions& f, QOpenGLShaderProgram& program, const GpuMesh& mesh) {
     if (mesh.vao == 0 || mesh.indexCount == 0) return;
     program.setUniformValue("u_boundsMin", mesh.boundsMin.x, mesh.boundsMin.y, mesh.boundsMin.z);
@@ -168,6 +182,7 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
             program = wanted;
             program->bind();
             programs.bound = program;
+            setClipDistances(f, programs.clips());
         }
         program->setUniformValue("u_mode", mode);
         program->setUniformValue("u_memberIndex", static_cast<int>(m));
@@ -197,6 +212,7 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
                   highlighted ? glm::mix(a.color, glm::vec3(1.0F), 0.55F) : a.color);
         drawMesh(f, *program, members[m]);
     }
+    setClipDistances(f, false);
 }
 
 void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height) {

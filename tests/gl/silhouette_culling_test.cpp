@@ -1,12 +1,15 @@
-// The geometry shader that drops triangles far from any silhouette must not change the picture:
-// real meshes of varied curvature (the demo ensemble), every silhouette mode, thin and thick
-// tau, with and without a cutting plane, drawn with culling on and off.
+// The geometry shader that drops triangles, and clips the rest to the parts that can hold a
+// silhouette, a plane curve or a fragment density-based removal keeps, must not change the
+// picture: real meshes of varied curvature (the demo ensemble), every silhouette mode, thin and
+// thick tau, with and without a cutting plane or removal, from afar and close up in perspective
+// (where the view vector turns most across a triangle), drawn with culling on and off.
 #include <gtest/gtest.h>
 
 #include "data/demo_ensemble.h"
 #include "gl/palette.h"
 #include "gl/renderer.h"
 #include "preprocessing/clustering.h"
+#include "preprocessing/packed_mesh.h"
 #include "tests/gl/sphere_scene.h"
 
 using namespace ensil;
@@ -23,7 +26,8 @@ protected:
         const data::Ensemble& e = demo.ensemble;
         m_renderer.setGrid(e.grid);
         m_renderer.setVerticalExaggeration(3.0F);
-        m_renderer.setMeshes(test::meshesOf(e, 30.0F, 3.0F));
+        m_meshes = test::meshesOf(e, 30.0F, 3.0F);
+        m_renderer.setMeshes(m_meshes);
         std::vector<int> labels(e.memberCount());
         for (std::size_t m = 0; m < labels.size(); ++m) labels[m] = static_cast<int>(m % 4);
         m_renderer.setAppearance(gl::clusterAppearance(labels));
@@ -48,6 +52,7 @@ protected:
         return test::differingFraction(all, culled, 2);
     }
     gl::Renderer m_renderer;
+    std::shared_ptr<const data::MeshSet> m_meshes;
 };
 }  // namespace
 
@@ -70,5 +75,39 @@ TEST_F(SilhouetteCullingTest, PlaneCurvesSurviveCulling) {
     m_renderer.camera().setAngles(-60.0F, 40.0F);
     EXPECT_LE(cullingDifference(), 2e-4);
     m_renderer.camera().setProjection(gl::Camera::Projection::Orthographic);
+    EXPECT_LE(cullingDifference(), 2e-4);
+}
+
+TEST_F(SilhouetteCullingTest, CloseUpPerspectiveLooksTheSame) {
+    m_renderer.camera().setAngles(-35.0F, 20.0F);
+    m_renderer.camera().zoom(3.0F);
+    for (const gl::RenderMode mode :
+         {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
+        for (const float tau : {0.003F, 0.05F}) {
+            m_renderer.settings().mode = mode;
+            m_renderer.settings().thickness = tau;
+            EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode) << " tau " << tau;
+        }
+    }
+}
+
+TEST_F(SilhouetteCullingTest, DensityBasedRemovalLooksTheSame) {
+    const float top = prep::maximumOutlyingness(*m_meshes);
+    ASSERT_GT(top, 0.0F);
+    m_renderer.settings().removal = true;
+    m_renderer.settings().groupSize = 3;
+    m_renderer.settings().removalMin = 0.05F * top;
+    m_renderer.settings().removalMax = 0.6F * top;
+    m_renderer.settings().thickness = 0.05F;
+    m_renderer.settings().showMean = true;
+    for (const gl::RenderMode mode :
+         {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
+        m_renderer.settings().mode = mode;
+        EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode);
+    }
+    // With a plane, the curves are kept whatever the removal says.
+    const data::DisplayFrame& frame = m_renderer.frame();
+    m_renderer.settings().plane =
+        gl::CuttingPlane::acrossBox({0.0F, 1.0F, 0.0F}, 0.0F, frame.boxMin(), frame.boxMax());
     EXPECT_LE(cullingDifference(), 2e-4);
 }
