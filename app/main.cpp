@@ -12,6 +12,7 @@
 #include "app/main_window.h"
 #include "app/version.h"
 #include "app/workbench_surface_format.h"
+#include "gl/offscreen_context.h"
 #include "gl/surface_format.h"
 
 namespace {
@@ -29,12 +30,10 @@ int main(int argc, char* argv[]) {
     QTextStream err(stderr);
 
     if (args.size() >= 2 && args.at(1) == QLatin1String("render")) {
-        // Offscreen OpenGL still needs a display server (Xvfb is enough) with Qt 6.4.
-        if (qEnvironmentVariableIsEmpty("DISPLAY") &&
-            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") &&
-            qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) {
-            err << "ensil render: OpenGL needs a display server; on a machine without one, run "
-                   "it under a virtual one: xvfb-run -a ensil render ...\n";
+        // With no display server, Mesa's surfaceless EGL renders (a batch node).
+        if (const auto problem = ensil::gl::prepareOffscreenPlatform()) {
+            err << "ensil render: there is no display server, and " << problem->c_str()
+                << "; run it under a virtual display instead: xvfb-run -a ensil render ...\n";
             return 4;
         }
         QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());

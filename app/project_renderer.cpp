@@ -1,7 +1,6 @@
 #include "app/project_renderer.h"
 
 #include <QElapsedTimer>
-#include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
@@ -12,31 +11,13 @@
 #include "app/isovalue_session.h"
 #include "app/project_members.h"
 #include "data/demo_ensemble.h"
+#include "gl/offscreen_context.h"
 #include "gl/renderer.h"
 #include "gl/surface_format.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/field_statistics.h"
 
 namespace ensil::app {
-namespace {
-// The offscreen OpenGL 4.1 context everything is drawn in. Throws std::runtime_error.
-class OffscreenContext {
-public:
-    OffscreenContext() {
-        const QSurfaceFormat format = gl::preferredSurfaceFormat(0);
-        m_surface.setFormat(format);
-        m_surface.create();
-        m_context.setFormat(format);
-        if (!m_context.create() || !m_context.makeCurrent(&m_surface)) {
-            throw std::runtime_error("cannot create an OpenGL 4.1 context for rendering");
-        }
-    }
-
-private:
-    QOffscreenSurface m_surface;
-    QOpenGLContext m_context;
-};
-}  // namespace
 
 std::string demoSourceKey(const data::DemoEnsembleParams& params) {
     return "demo members=" + std::to_string(params.members) + " grid=" + std::to_string(params.nx) +
@@ -69,7 +50,7 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
         project.demo ? demoSourceKey(project.demoParams) : data::sourceIdentity(project.data);
     IsovalueOutcome outcome = runIsovalueJob(job);
 
-    const OffscreenContext context;
+    const gl::OffscreenContext context;
     QOpenGLFramebufferObject target(request.width, request.height,
                                     QOpenGLFramebufferObject::CombinedDepthStencil);
     gl::Renderer renderer;
@@ -122,6 +103,11 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
     std::sort(times.begin(), times.end());
     RenderOutcome result;
     result.image = target.toImage();
+    // Labels are sized in points: at 96 dots per inch, as on the workbench's screen, whatever
+    // the platform says (with no display server there is no real screen to ask).
+    constexpr int kDotsPerMeter = 3780;  // 96 dpi
+    result.image.setDotsPerMeterX(kDotsPerMeter);
+    result.image.setDotsPerMeterY(kDotsPerMeter);
     if (request.labels) {
         QPainter painter(&result.image);
         gl::paintOverlay(painter, renderer.overlay(request.width, request.height), 1.0);
@@ -131,6 +117,8 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
     result.triangles = outcome.meshes.triangles;
     result.members = ensemble.memberCount();
     result.isovalue = iso;
+    result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
+    result.withoutDisplay = gl::renderingWithoutDisplay();
     renderer.releaseGpuResources();
     return result;
 }

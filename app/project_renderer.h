@@ -35,6 +35,8 @@ struct RenderOutcome {
     std::size_t triangles = 0;
     std::size_t members = 0;
     float isovalue = 0.0F;
+    std::string glRenderer;       // GL_RENDERER: the driver that drew it
+    bool withoutDisplay = false;  // drawn through EGL's surfaceless platform
 };
 
 // Throws data::Error, ProjectError (isovalue outside the values) or std::runtime_error.

@@ -1,6 +1,7 @@
 #include "app/render_command.h"
 
 #include <QCommandLineParser>
+#include <QGuiApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <algorithm>
@@ -198,14 +199,18 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
             return 1;
         }
         if (parser.isSet(o.json)) {
-            const QJsonObject json{{"frame_ms", result.frameMs},
-                                   {"gpu_bytes", static_cast<qint64>(result.gpuBytes)},
-                                   {"width", static_cast<qint64>(width)},
-                                   {"height", static_cast<qint64>(height)},
-                                   {"frames", frames},
-                                   {"isovalue", result.isovalue},
-                                   {"triangles", static_cast<qint64>(result.triangles)},
-                                   {"members", static_cast<qint64>(result.members)}};
+            const QJsonObject json{
+                {"frame_ms", result.frameMs},
+                {"gpu_bytes", static_cast<qint64>(result.gpuBytes)},
+                {"width", static_cast<qint64>(width)},
+                {"height", static_cast<qint64>(height)},
+                {"frames", frames},
+                {"isovalue", result.isovalue},
+                {"triangles", static_cast<qint64>(result.triangles)},
+                {"members", static_cast<qint64>(result.members)},
+                {"gl_renderer", QString::fromStdString(result.glRenderer)},
+                {"display", result.withoutDisplay ? QStringLiteral("none (EGL surfaceless)")
+                                                  : QGuiApplication::platformName()}};
             out << QJsonDocument(json).toJson(QJsonDocument::Compact) << "\n";
         } else {
             out << "wrote " << parser.value(o.output) << ": " << width << " x " << height << ", "

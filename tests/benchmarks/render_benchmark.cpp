@@ -1,19 +1,21 @@
 // Frame times of the silhouette renderer on the paper-sized ensemble (50 members + mean, the
 // demo at isovalue 30) at 1920 x 1200: the median of each mode and, in the same run, of opaque
-// lit surfaces of the same meshes, with the ratios. Needs an X display (xvfb-run -a).
+// lit surfaces of the same meshes, with the ratios. Runs under a display server or, with none,
+// through EGL's surfaceless platform.
 //
 //   ensil_render_benchmark [--frames N] [--size WxH]
 #include <QElapsedTimer>
 #include <QGuiApplication>
-#include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include "data/demo_ensemble.h"
+#include "gl/offscreen_context.h"
 #include "gl/palette.h"
 #include "gl/renderer.h"
 #include "gl/surface_format.h"
@@ -34,6 +36,12 @@ int main(int argc, char** argv) {
         if (a == "--size" && i + 1 < argc) std::sscanf(argv[++i], "%dx%d", &width, &height);
     }
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat(0));
+    // With no display server, through EGL's surfaceless platform, like `ensil render`.
+    if (const auto problem = ensil::gl::prepareOffscreenPlatform()) {
+        std::fprintf(stderr, "no display server, and %s: run under xvfb-run -a\n",
+                     problem->c_str());
+        return 1;
+    }
     QGuiApplication app(argc, argv);
     const auto demo = ensil::data::makeDemoEnsemble({});
     const ensil::data::Ensemble& e = demo.ensemble;
@@ -47,15 +55,14 @@ int main(int argc, char** argv) {
     set->members = std::move(built.members);
     set->mean = std::move(built.mean);
 
-    QOffscreenSurface surface;
-    surface.setFormat(ensil::gl::preferredSurfaceFormat(0));
-    surface.create();
-    QOpenGLContext context;
-    context.setFormat(ensil::gl::preferredSurfaceFormat(0));
-    if (!context.create() || !context.makeCurrent(&surface)) {
-        std::fprintf(stderr, "cannot create an OpenGL 4.1 context (run under xvfb-run -a)\n");
+    std::unique_ptr<ensil::gl::OffscreenContext> offscreen;
+    try {
+        offscreen = std::make_unique<ensil::gl::OffscreenContext>();
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "%s\n", error.what());
         return 1;
     }
+    QOpenGLContext& context = offscreen->context();
     const char* renderer =
         reinterpret_cast<const char*>(context.functions()->glGetString(GL_RENDERER));
     QOpenGLFramebufferObject target(width, height, QOpenGLFramebufferObject::CombinedDepthStencil);

@@ -1,0 +1,85 @@
+// `ensil render` on a machine with no display server at all, as on a batch node: the real
+// executable, started without DISPLAY or WAYLAND_DISPLAY, draws through Mesa's EGL surfaceless
+// platform, and its picture matches the one drawn under the test's X server. Also the message
+// and exit status when EGL cannot render without a display either.
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QProcessEnvironment>
+
+#include "tests/support/image_compare.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+namespace {
+struct RenderRun {
+    int exitCode = -1;
+    QJsonObject json;
+    QString errors;
+};
+
+// Runs `ensil render` on era5_eda_members.nc into `png`, with or without a display server.
+RenderRun renderEra5(const QString& png, bool withDisplay, const QString& eglPlatform = {}) {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    if (!withDisplay) {
+        for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
+            environment.remove(QString::fromLatin1(variable));
+        }
+    }
+    if (!eglPlatform.isEmpty()) environment.insert(QStringLiteral("EGL_PLATFORM"), eglPlatform);
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(ENSIL_EXECUTABLE),
+                  {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
+                   "260", "--out", png, "--size", "320x240", "--frames", "1", "--clusters", "3",
+                   "--no-cache", "--json"});
+    RenderRun run;
+    if (!process.waitForFinished(120000)) return run;
+    run.exitCode = process.exitCode();
+    run.json = QJsonDocument::fromJson(process.readAllStandardOutput()).object();
+    run.errors = QString::fromLocal8Bit(process.readAllStandardError());
+    return run;
+}
+}  // namespace
+
+TEST(HeadlessRender, DrawsWithNoDisplayServerLikeUnderOne) {
+    test::TempDir dir;
+    const QString headlessPng = QString::fromStdString(dir.file("headless.png"));
+    const QString displayPng = QString::fromStdString(dir.file("display.png"));
+    const RenderRun headless = renderEra5(headlessPng, false);
+    ASSERT_EQ(headless.exitCode, 0) << headless.errors.toStdString();
+    EXPECT_EQ(headless.json["display"].toString(), QStringLiteral("none (EGL surfaceless)"));
+    EXPECT_FALSE(headless.json["gl_renderer"].toString().isEmpty());
+    EXPECT_FALSE(headless.errors.contains(QLatin1String("eglconvenience")))
+        << "the stand-in framebuffer's complaint is dropped: " << headless.errors.toStdString();
+
+    const RenderRun display = renderEra5(displayPng, true);
+    ASSERT_EQ(display.exitCode, 0) << display.errors.toStdString();
+    EXPECT_NE(display.json["display"].toString(), QStringLiteral("none (EGL surfaceless)"));
+
+    const QImage withoutDisplay(headlessPng);
+    const QImage withDisplay(displayPng);
+    ASSERT_EQ(withoutDisplay.size(), QSize(320, 240));
+    QImage background(withoutDisplay.size(), withoutDisplay.format());
+    background.fill(withoutDisplay.pixel(0, withoutDisplay.height() / 2));
+    EXPECT_GT(test::differingFraction(withoutDisplay, background, 8), 0.05)
+        << "the picture holds the data, not only the background";
+    EXPECT_LT(test::differingFraction(withoutDisplay, withDisplay, 8), 0.002)
+        << "the same picture as under the display server";
+    withoutDisplay.save(test::testOutputDir() + "/headless_render_era5.png");
+}
+
+TEST(HeadlessRender, SaysWhatToDoWhenEglCannotRenderWithoutADisplay) {
+    test::TempDir dir;
+    // EGL's X11 platform needs the display server that is not there.
+    const RenderRun run = renderEra5(QString::fromStdString(dir.file("none.png")), false, "x11");
+    EXPECT_EQ(run.exitCode, 4);
+    EXPECT_TRUE(run.errors.contains(QLatin1String("there is no display server")))
+        << run.errors.toStdString();
+    EXPECT_TRUE(run.errors.contains(QLatin1String("xvfb-run -a ensil render")))
+        << run.errors.toStdString();
+}
