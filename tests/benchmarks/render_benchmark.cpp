@@ -138,8 +138,8 @@ int main(int argc, char** argv) {
         double ms;
     } rows[] = {{"3D spaghetti plot", spaghetti},
                 {"semi-transparent surfaces", surfaces},
-                {"shaded, no triangle culling", shadedUnculled},
-                {"spaghetti, no triangle culling", spaghettiUnculled},
+                {"shaded, culling + clipping off", shadedUnculled},
+                {"spaghetti, culling + clipping off", spaghettiUnculled},
                 {"shaded with a cutting plane", shadedPlane},
                 {"shaded with removal", shadedRemoval},
                 {"shaded, 5 members selected", shadedSelection}};
