@@ -31,12 +31,12 @@ RenderRun renderEra5(const QString& png, bool withDisplay, const QString& eglPla
         }
     }
     if (!eglPlatform.isEmpty()) environment.insert(QStringLiteral("EGL_PLATFORM"), eglPlatform);
+    const QString era5 = QStringLiteral(ENSIL_SHARED_DATA_DIR) + "/era5_eda_members.nc";
     QProcess process;
     process.setProcessEnvironment(environment);
     process.start(QStringLiteral(ENSIL_EXECUTABLE),
-                  {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
-                   "260", "--out", png, "--size", "320x240", "--frames", "1", "--clusters", "3",
-                   "--no-cache", "--json"});
+                  {"render", era5, "--var", "t", "--iso", "260", "--out", png, "--size", "320x240",
+                   "--frames", "1", "--clusters", "3", "--no-cache", "--json"});
     RenderRun run;
     if (!process.waitForFinished(120000)) return run;
     run.exitCode = process.exitCode();
