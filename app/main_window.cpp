@@ -141,6 +141,16 @@ void MainWindow::createMenus() {
     fullScreen->setCheckable(true);
     connect(fullScreen, &QAction::toggled, this,
             [this](bool on) { on ? showFullScreen() : showNormal(); });
+    // On a slow renderer (software OpenGL), moving the camera draws at a lower resolution.
+    QAction* adaptive = viewMenu->addAction(tr("Lower Resolution While &Moving"));
+    adaptive->setCheckable(true);
+    adaptive->setChecked(
+        QSettings().value(QStringLiteral("view/adaptiveResolution"), true).toBool());
+    m_view->setAdaptiveResolution(adaptive->isChecked());
+    connect(adaptive, &QAction::toggled, this, [this](bool on) {
+        m_view->setAdaptiveResolution(on);
+        QSettings().setValue(QStringLiteral("view/adaptiveResolution"), on);
+    });
     viewMenu->addSeparator();
     viewMenu->addActions(m_modeActions);
     viewMenu->addAction(m_planeAction);

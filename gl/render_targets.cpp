@@ -5,13 +5,14 @@
 
 namespace ensil::gl {
 namespace {
-GLuint texture(GlFunctions& f, GLint internalFormat, GLenum format, GLenum type, int w, int h) {
+GLuint texture(GlFunctions& f, GLint internalFormat, GLenum format, GLenum type, int w, int h,
+               GLint filter = GL_NEAREST) {
     GLuint t = 0;
     f.glGenTextures(1, &t);
     f.glBindTexture(GL_TEXTURE_2D, t);
     f.glTexImage2D(GL_TEXTURE_2D, 0, internalFormat, w, h, 0, format, type, nullptr);
-    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return t;
@@ -30,7 +31,8 @@ void RenderTargets::ensure(GlFunctions& f, int width, int height) {
     release(f);
     m_width = width;
     m_height = height;
-    m_color = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
+    // Filtered: a scene drawn smaller than the frame is scaled up from it (Renderer::present).
+    m_color = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height, GL_LINEAR);
     m_depth = texture(f, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, width, height);
     m_accumulation = texture(f, GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, width, height);
     m_revealage = texture(f, GL_R16F, GL_RED, GL_HALF_FLOAT, width, height);

@@ -187,15 +187,26 @@ void Renderer::uploadFloorMap() {
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+void Renderer::setResolutionScale(float scale) {
+    m_resolutionScale = std::clamp(scale, kMinimumResolutionScale, 1.0F);
+}
+
 void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
     if (width <= 0 || height <= 0) return;
     m_lastSize = {width, height};
     setViewSize(width, height);
+    // The scene is drawn at its own size, the same shape as the frame.
+    const auto scaled = [&](int size) {
+        return std::max(
+            1, static_cast<int>(std::lround(static_cast<float>(size) * m_resolutionScale)));
+    };
+    m_sceneSize = {scaled(width), scaled(height)};
+    const int sceneWidth = m_sceneSize.x, sceneHeight = m_sceneSize.y;
     GlFunctions& f = *m_gpu->f;
-    m_gpu->targets.ensure(f, width, height);
+    m_gpu->targets.ensure(f, sceneWidth, sceneHeight);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());
-    f.glViewport(0, 0, width, height);
+    f.glViewport(0, 0, sceneWidth, sceneHeight);
     f.glClearColor(m_background.r, m_background.g, m_background.b, m_background.a);
     f.glClearDepth(1.0);
     f.glDepthMask(GL_TRUE);
@@ -206,7 +217,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const glm::mat4 viewProjection = m_camera.viewProjection(aspect);
         drawFloorAndBox(viewProjection);
-        drawMeshes(viewProjection, width, height);
+        drawMeshes(viewProjection, sceneWidth, sceneHeight);
     }
     present(framebuffer, width, height);
 }
@@ -220,6 +231,9 @@ void Renderer::present(unsigned framebuffer, int width, int height) {
     QOpenGLShaderProgram& program = m_gpu->shaders.program(QStringLiteral("present"));
     program.bind();
     program.setUniformValue("u_scene", 0);
+    // Pixel for pixel at full resolution; a smaller scene is scaled up, filtered.
+    program.setUniformValue("u_scaled", m_sceneSize != m_lastSize);
+    program.setUniformValue("u_frameSize", static_cast<float>(width), static_cast<float>(height));
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->targets.sceneColor());
     f.glBindVertexArray(m_gpu->emptyVao);

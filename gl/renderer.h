@@ -62,6 +62,14 @@ public:
 
     // Draws into the framebuffer object `framebuffer` (0 = the default) of the given pixel size.
     void render(unsigned framebuffer, int width, int height);
+    // The fraction of the framebuffer's size the scene is drawn at, then scaled up to fill it
+    // (1: full resolution, the default; clamped to [kMinimumResolutionScale, 1]). A software
+    // renderer's time goes with the pixels drawn, so the view lowers it while the camera moves.
+    void setResolutionScale(float scale);
+    [[nodiscard]] float resolutionScale() const { return m_resolutionScale; }
+    // The size the last frame's scene was drawn at, in pixels.
+    [[nodiscard]] glm::ivec2 sceneSize() const { return m_sceneSize; }
+    static constexpr float kMinimumResolutionScale = 0.25F;
 
     // The member drawn at pixel (x, y) of the last frame (origin top left, framebuffer pixels):
     // the member whose fragment is nearest to the pixel within `radius` pixels, the front-most
@@ -160,6 +168,8 @@ private:
     RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
     glm::ivec2 m_lastSize{0};   // the last frame's size, which picking draws at
+    glm::ivec2 m_sceneSize{0};  // the size its scene was drawn at (m_lastSize times the scale)
+    float m_resolutionScale = 1.0F;
     float m_viewAspect = 1.6F;  // before the first frame: the usual window's shape
     int m_highlighted = -1;
     int m_animated = -1;

@@ -44,6 +44,7 @@ void Renderer::warmUp() {
     const auto appearance = m_appearance;
     const RenderSettings settings = m_settings;
     const glm::ivec2 lastSize = m_lastSize;
+    const glm::ivec2 sceneSize = m_sceneSize;
     const float viewAspect = m_viewAspect;
 
     setGrid(data::Grid(data::makeUniformAxis("x", "", 0, 1, 2),
@@ -79,6 +80,7 @@ void Renderer::warmUp() {
     m_appearance = appearance;
     m_settings = settings;
     m_lastSize = lastSize;
+    m_sceneSize = sceneSize;
     m_viewAspect = viewAspect;
 }
 

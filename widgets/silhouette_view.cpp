@@ -1,5 +1,6 @@
 #include "widgets/silhouette_view.h"
 
+#include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
@@ -8,12 +9,19 @@
 #include <QRubberBand>
 #include <QToolTip>
 #include <QWheelEvent>
+#include <array>
 #include <cmath>
 
 namespace ensil::ui {
 namespace {
 // Long enough to skip the picks of a cursor in motion, short enough to feel immediate.
 constexpr int kHoverDelayMs = 40;
+// A pause in wheel turns this long ends a zoom.
+constexpr int kWheelSettleMs = 200;
+// The resolutions motion may use, full first; few steps, as each change reallocates the
+// renderer's targets.
+constexpr std::array<float, 5> kMotionScales{1.0F, 0.75F, 0.5F, 0.35F, 0.25F};
+constexpr int kCoarsestMotionStep = static_cast<int>(kMotionScales.size()) - 1;
 }  // namespace
 
 SilhouetteView::SilhouetteView(QWidget* parent) : QOpenGLWidget(parent) {
@@ -23,6 +31,46 @@ SilhouetteView::SilhouetteView(QWidget* parent) : QOpenGLWidget(parent) {
     m_hoverTimer.setSingleShot(true);
     m_hoverTimer.setInterval(kHoverDelayMs);
     connect(&m_hoverTimer, &QTimer::timeout, this, &SilhouetteView::pickHovered);
+    m_settleTimer.setSingleShot(true);
+    m_settleTimer.setInterval(kWheelSettleMs);
+    connect(&m_settleTimer, &QTimer::timeout, this, &SilhouetteView::stopMoving);
+}
+
+void SilhouetteView::setAdaptiveResolution(bool on) {
+    m_adaptiveResolution = on;
+    update();
+}
+
+float SilhouetteView::frameResolutionScale() const {
+    return m_moving && m_adaptiveResolution ? kMotionScales[m_motionStep] : 1.0F;
+}
+
+void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
+    if (!m_moving) {
+        // A still frame at full resolution: motion starts from the step whose pixels fit the
+        // budget, as a software renderer's time goes with them.
+        const auto wanted = static_cast<float>(std::sqrt(m_motionBudgetMs / frameMs));
+        m_motionStep = 0;
+        while (m_motionStep < kCoarsestMotionStep && kMotionScales[m_motionStep] > wanted) {
+            ++m_motionStep;
+        }
+        return;
+    }
+    // During motion, what each frame took decides the next: part of a frame's time does not
+    // shrink with its pixels, so the first guess may be too fine (or too coarse).
+    if (scale != kMotionScales[m_motionStep]) return;
+    if (frameMs > m_motionBudgetMs && m_motionStep < kCoarsestMotionStep) {
+        ++m_motionStep;
+    } else if (frameMs < 0.5 * m_motionBudgetMs && m_motionStep > 0) {
+        --m_motionStep;
+    }
+}
+
+void SilhouetteView::stopMoving() {
+    if (!m_moving) return;
+    m_moving = false;
+    m_settleTimer.stop();
+    update();  // the still frame, at full resolution
 }
 
 SilhouetteView::~SilhouetteView() {
@@ -62,7 +110,16 @@ void SilhouetteView::paintGL() {
     const qreal ratio = devicePixelRatioF();
     const int w = static_cast<int>(std::lround(width() * ratio));
     const int h = static_cast<int>(std::lround(height() * ratio));
+    const float scale = frameResolutionScale();
+    m_renderer.setResolutionScale(scale);
+    QElapsedTimer timer;
+    timer.start();
     m_renderer.render(defaultFramebufferObject(), w, h);
+    if (m_adaptiveResolution) {
+        // Timed to the end of the GPU's work: the next motion frame's resolution depends on it.
+        context()->functions()->glFinish();
+        adaptMotionStep(static_cast<double>(timer.nsecsElapsed()) * 1e-6, scale);
+    }
     gl::ViewOverlay overlay = m_renderer.overlay(w, h);
     if (!m_renderer.hasGrid()) overlay.message = m_placeholder;
     QPainter painter(this);
@@ -75,6 +132,7 @@ QImage SilhouetteView::renderImage(const QSize& size) {
     QImage image;
     {
         QOpenGLFramebufferObject target(size, QOpenGLFramebufferObject::CombinedDepthStencil);
+        m_renderer.setResolutionScale(1.0F);  // pictures are always full resolution
         m_renderer.render(target.handle(), size.width(), size.height());
         image = target.toImage();
     }
@@ -155,6 +213,7 @@ void SilhouetteView::mouseMoveEvent(QMouseEvent* event) {
     } else {
         return;
     }
+    m_moving = true;
     update();
 }
 
@@ -163,6 +222,7 @@ void SilhouetteView::mouseReleaseEvent(QMouseEvent* event) {
     const Qt::MouseButton button = event->button();
     if (button != m_pressButton) return;
     m_pressButton = Qt::NoButton;
+    stopMoving();
     if (button == Qt::LeftButton && !m_dragged) {
         emit memberClicked(pickAt(pos).member, event->modifiers());
     } else if (button == Qt::RightButton && m_dragged) {
@@ -206,6 +266,8 @@ void SilhouetteView::wheelEvent(QWheelEvent* event) {
     // One notch (120 units) zooms by 12 %.
     const double notches = event->angleDelta().y() / 120.0;
     m_renderer.camera().zoom(static_cast<float>(std::pow(1.12, notches)));
+    m_moving = true;
+    m_settleTimer.start();
     update();
     event->accept();
 }

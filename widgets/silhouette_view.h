@@ -3,7 +3,9 @@
 // (no drag) picks the member under the cursor, right drag draws a rubber band that brushes
 // every member drawn inside it, and hovering highlights the member under the cursor with a
 // tooltip. The view only reports what was picked (signals); what selection means is decided
-// by the window. GUI thread only.
+// by the window. While the camera moves on a renderer too slow for smooth motion, frames are
+// drawn at a lower resolution (see setAdaptiveResolution); the frame after the motion is full
+// resolution. GUI thread only.
 // GPU resources are released when the widget's context is about to be destroyed, which also
 // happens when the widget is re-parented (docking, fullscreen), not only in the destructor.
 #pragma once
@@ -46,6 +48,15 @@ public:
             "File > Open Demo Ensemble shows a generated one.");
     }
 
+    // Lower the resolution while the camera moves when a full frame takes longer than the
+    // motion budget (default on, 33 ms: 30 frames a second).
+    void setAdaptiveResolution(bool on);
+    [[nodiscard]] bool adaptiveResolution() const { return m_adaptiveResolution; }
+    void setMotionFrameBudget(double milliseconds) { m_motionBudgetMs = milliseconds; }
+    // Whether the camera is moving now (a drag, or wheel turns in quick succession).
+    [[nodiscard]] bool cameraMoving() const { return m_moving; }
+    static constexpr double kDefaultMotionBudgetMs = 33.0;
+
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
     void setMemberNames(QStringList names) { m_memberNames = std::move(names); }
 
@@ -85,11 +96,16 @@ protected:
 private slots:
     void onContextAboutToBeDestroyed();
     void pickHovered();
+    void stopMoving();
 
 private:
     void releaseGpu();
     void setHovered(int member, QPoint position, int cluster);
     [[nodiscard]] QPoint toFramebuffer(QPoint position) const;
+    // The resolution scale for the next frame: 1 when still, or when frames are fast enough.
+    [[nodiscard]] float frameResolutionScale() const;
+    // Chooses the resolution of the motion frames to come from what this frame took.
+    void adaptMotionStep(double frameMs, float scale);
 
     gl::Renderer m_renderer;
     QPoint m_lastMouse;
@@ -104,6 +120,12 @@ private:
     QStringList m_memberNames;
     QString m_placeholder = defaultPlaceholder();
     QString m_glError;
+    bool m_adaptiveResolution = true;
+    double m_motionBudgetMs = kDefaultMotionBudgetMs;
+    int m_motionStep = 0;  // the resolution of motion frames, an index into the steps
+    bool m_moving = false;
+    // Wheel turns come one by one: the motion ends when they pause.
+    QTimer m_settleTimer;
 };
 
 }  // namespace ensil::ui

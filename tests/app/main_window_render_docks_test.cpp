@@ -1,6 +1,7 @@
 // The rendering and cutting plane docks drive the renderer of the main window's view.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
@@ -75,4 +76,29 @@ TEST(MainWindowRenderDocks, TheLastRenderingSettingsComeBackNextTime) {
     EXPECT_EQ(again.renderPanel()->applyTo({}).mode, gl::RenderMode::Spaghetti)
         << "the panel shows what is used";
     QSettings().remove(QStringLiteral("rendering"));
+}
+
+TEST(MainWindowRenderDocks, LowerResolutionWhileMovingIsAViewOptionRememberedNextTime) {
+    QSettings().remove(QStringLiteral("view/adaptiveResolution"));
+    const auto findOption = [](app::MainWindow& window) -> QAction* {
+        for (QAction* action : window.findChildren<QAction*>()) {
+            if (action->text() == QLatin1String("Lower Resolution While &Moving")) return action;
+        }
+        return nullptr;
+    };
+    {
+        app::MainWindow window;
+        QAction* option = findOption(window);
+        ASSERT_NE(option, nullptr);
+        EXPECT_TRUE(option->isChecked()) << "on by default";
+        EXPECT_TRUE(window.view()->adaptiveResolution());
+        option->setChecked(false);
+        EXPECT_FALSE(window.view()->adaptiveResolution());
+    }
+    app::MainWindow again;
+    QAction* option = findOption(again);
+    ASSERT_NE(option, nullptr);
+    EXPECT_FALSE(option->isChecked());
+    EXPECT_FALSE(again.view()->adaptiveResolution());
+    QSettings().remove(QStringLiteral("view/adaptiveResolution"));
 }

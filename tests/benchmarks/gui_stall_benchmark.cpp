@@ -4,7 +4,9 @@
 // similarity, clustering on a worker, with a cold mesh cache), and then frames are drawn for a
 // second. An EventLoopStallMonitor (5 ms timer) gives the longest stall and the 99th
 // percentile per phase; every event that took longer than --report-ms to handle is listed with
-// its receiver, so a stall can be traced to what caused it. Needs an X display (xvfb-run -a).
+// its receiver, so a stall can be traced to what caused it. Last, it orbits the camera for two
+// seconds (a left drag, mouse moves at 60 Hz) and counts the frames shown, with and without
+// the lower resolution while moving. Needs an X display (xvfb-run -a).
 //
 //   ensil_gui_stall_benchmark [--members N] [--grid NXxNYxNZ] [--report-ms MS] [--warm-cache]
 //                             [--samples N]
@@ -13,6 +15,7 @@
 #include <QEvent>
 #include <QEventLoop>
 #include <QMetaEnum>
+#include <QMouseEvent>
 #include <QSettings>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -132,6 +135,36 @@ bool waitUntil(Done done, int timeoutMs) {
     return true;
 }
 
+// Orbits the view with a left drag for two seconds, a mouse move every 16 ms, and returns the
+// frames shown per second.
+double orbitFramesPerSecond(ensil::ui::SilhouetteView& view) {
+    int frames = 0;
+    const auto counting = QObject::connect(&view, &QOpenGLWidget::frameSwapped, [&] { ++frames; });
+    QPoint at(view.width() / 3, view.height() / 2);
+    const auto send = [&](QEvent::Type type, Qt::MouseButton button, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, at, view.mapToGlobal(at), button, buttons, Qt::NoModifier);
+        QApplication::sendEvent(&view, &event);
+    };
+    send(QEvent::MouseButtonPress, Qt::LeftButton, Qt::LeftButton);
+    QTimer mover;
+    mover.setInterval(16);
+    QObject::connect(&mover, &QTimer::timeout, [&] {
+        at.rx() += 2;
+        send(QEvent::MouseMove, Qt::NoButton, Qt::LeftButton);
+    });
+    frames = 0;
+    QElapsedTimer clock;
+    clock.start();
+    mover.start();
+    runEventLoopFor(2000);
+    mover.stop();
+    const double perSecond = frames / (static_cast<double>(clock.elapsed()) / 1000.0);
+    send(QEvent::MouseButtonRelease, Qt::LeftButton, Qt::NoButton);
+    runEventLoopFor(300);  // the still frame
+    QObject::disconnect(counting);
+    return perSecond;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -220,6 +253,13 @@ int main(int argc, char** argv) {
     runEventLoopFor(500);
     endPhase("drawing it once more (0.5 s)");
 
+    ensil::ui::SilhouetteView& view = *window.view();
+    view.setAdaptiveResolution(true);
+    const double adaptiveFps = orbitFramesPerSecond(view);
+    view.setAdaptiveResolution(false);
+    const double fullFps = orbitFramesPerSecond(view);
+    view.setAdaptiveResolution(true);
+
     const auto* result = window.isovalueSession()->result();
     std::printf(
         "ensil GUI stall benchmark: demo %zu members, %zu x %zu x %zu, window %d x %d, "
@@ -240,6 +280,10 @@ int main(int argc, char** argv) {
     }
     std::printf("longest stall while loading and preprocessing: %.1f ms (goal <= 50 ms)\n",
                 longestWhileWorking);
+    std::printf(
+        "orbiting (view %d x %d): %.1f frames/s drawn at lower resolution while moving, %.1f at "
+        "full resolution\n",
+        view.width(), view.height(), adaptiveFps, fullFps);
     // Other processes competing for the cores lengthen every stall: say how busy the machine was.
     std::array<double, 3> load{};
     if (getloadavg(load.data(), 3) == 3) {

@@ -108,6 +108,10 @@ int main(int argc, char** argv) {
     r.settings().removalMax = 0.5F * ensil::prep::maximumOutlyingness(*set);
     const double shadedRemoval = time(ensil::gl::RenderMode::ShadedSilhouettes);
     r.settings().removal = false;
+    // While the camera moves, the view may draw the scene at half the resolution.
+    r.setResolutionScale(0.5F);
+    const double shadedMoving = time(ensil::gl::RenderMode::ShadedSilhouettes);
+    r.setResolutionScale(1.0F);
     // Five members selected: drawn as solid surfaces over the silhouettes.
     auto look = ensil::gl::clusterAppearance(ensil::prep::clusterLabels(tree, 5));
     for (std::size_t m = 0; m < 5 && m < look.size(); ++m) look[m].selected = true;
@@ -142,6 +146,7 @@ int main(int argc, char** argv) {
                 {"spaghetti, culling + clipping off", spaghettiUnculled},
                 {"shaded with a cutting plane", shadedPlane},
                 {"shaded with removal", shadedRemoval},
+                {"shaded at half resolution", shadedMoving},
                 {"shaded, 5 members selected", shadedSelection}};
     for (const auto& row : rows) {
         std::printf("  %-31s %8.2f ms  (%.2fx)\n", row.what, row.ms, row.ms / opaque);

@@ -120,3 +120,65 @@ TEST(EmptyView, SaysWhatToDoUntilDataArrives) {
     view.setPlaceholderText(QStringLiteral(" "));
     EXPECT_EQ(lightInTheMiddle(), 0);
 }
+
+TEST_F(ShownView, MovingTheCameraOnASlowRendererLowersTheResolutionUntilItStops) {
+    // Any frame is slower than a budget of a microsecond: motion must drop the resolution.
+    m_view.setMotionFrameBudget(0.001);
+    (void)m_view.grabFramebuffer();  // a still frame, timed
+    EXPECT_EQ(m_view.renderer().resolutionScale(), 1.0F);
+
+    const QPoint from(200, 150), to(240, 160);
+    QMouseEvent press(QEvent::MouseButtonPress, from, m_view.mapToGlobal(from), Qt::LeftButton,
+                      Qt::LeftButton, {});
+    QApplication::sendEvent(&m_view, &press);
+    QMouseEvent move(QEvent::MouseMove, to, m_view.mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
+                     {});
+    QApplication::sendEvent(&m_view, &move);
+    EXPECT_TRUE(m_view.cameraMoving());
+    (void)m_view.grabFramebuffer();
+    EXPECT_EQ(m_view.renderer().resolutionScale(), gl::Renderer::kMinimumResolutionScale);
+    const glm::ivec2 full(m_view.width() * m_view.devicePixelRatioF(),
+                          m_view.height() * m_view.devicePixelRatioF());
+    EXPECT_LT(m_view.renderer().sceneSize().x, full.x);
+
+    QMouseEvent release(QEvent::MouseButtonRelease, to, m_view.mapToGlobal(to), Qt::LeftButton, {},
+                        {});
+    QApplication::sendEvent(&m_view, &release);
+    EXPECT_FALSE(m_view.cameraMoving());
+    (void)m_view.grabFramebuffer();
+    EXPECT_EQ(m_view.renderer().sceneSize(), full) << "the still frame is full resolution";
+
+    // Wheel turns are motion too, until they pause.
+    QWheelEvent wheel(QPointF(200, 150), m_view.mapToGlobal(QPointF(200, 150)), QPoint(),
+                      QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(&m_view, &wheel);
+    EXPECT_TRUE(m_view.cameraMoving());
+    (void)m_view.grabFramebuffer();
+    EXPECT_LT(m_view.renderer().resolutionScale(), 1.0F);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !m_view.cameraMoving(); }, 2000));
+    (void)m_view.grabFramebuffer();
+    EXPECT_EQ(m_view.renderer().sceneSize(), full);
+}
+
+TEST_F(ShownView, MotionKeepsFullResolutionWhenFramesAreFastOrTheOptionIsOff) {
+    m_view.setMotionFrameBudget(1e9);  // every frame is fast enough
+    (void)m_view.grabFramebuffer();
+    QMouseEvent press(QEvent::MouseButtonPress, QPoint(200, 150),
+                      m_view.mapToGlobal(QPoint(200, 150)), Qt::LeftButton, Qt::LeftButton, {});
+    QApplication::sendEvent(&m_view, &press);
+    QMouseEvent move(QEvent::MouseMove, QPoint(230, 150), m_view.mapToGlobal(QPoint(230, 150)),
+                     Qt::NoButton, Qt::LeftButton, {});
+    QApplication::sendEvent(&m_view, &move);
+    (void)m_view.grabFramebuffer();
+    EXPECT_TRUE(m_view.cameraMoving());
+    EXPECT_EQ(m_view.renderer().resolutionScale(), 1.0F);
+
+    m_view.setMotionFrameBudget(0.001);
+    m_view.setAdaptiveResolution(false);
+    (void)m_view.grabFramebuffer();
+    EXPECT_EQ(m_view.renderer().resolutionScale(), 1.0F) << "switched off by the user";
+    m_view.setAdaptiveResolution(true);
+    (void)m_view.grabFramebuffer();  // a motion frame at full resolution, timed: too slow
+    (void)m_view.grabFramebuffer();
+    EXPECT_LT(m_view.renderer().resolutionScale(), 1.0F) << "each slow frame steps down";
+}
