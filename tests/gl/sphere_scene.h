@@ -33,10 +33,13 @@ inline data::Ensemble spheres(const std::vector<glm::vec3>& centres,
         const float offset = n < offsets.size() ? offsets[n] : 0.0F;
         data::Member m;
         m.values.resize(e.grid.pointCount());
-        for (std::size_t k = 0; k < 32; ++k)
-            for (std::size_t j = 0; j < 32; ++j)
-                for (std::size_t i = 0; i < 32; ++i)
+        for (std::size_t k = 0; k < 32; ++k) {
+            for (std::size_t j = 0; j < 32; ++j) {
+                for (std::size_t i = 0; i < 32; ++i) {
                     m.values[e.grid.index(i, j, k)] = glm::length(glm::vec3(i, j, k) - c) - offset;
+                }
+            }
+        }
         e.members.push_back(std::move(m));
     }
     return e;
@@ -79,6 +82,7 @@ protected:
         m_renderer.camera().fit(m_renderer.frame().center(), 0.45F);
         m_renderer.setMeshes(meshesOf(e));
         std::vector<gl::MemberAppearance> look;
+        look.reserve(colours.size());
         for (const glm::vec3& c : colours) look.push_back({c, true, false});
         m_renderer.setAppearance(look);
     }

@@ -14,14 +14,16 @@ using namespace ensil;
 namespace {
 int countNear(const QImage& image, const QColor& colour, int tolerance) {
     int n = 0;
-    for (int y = 0; y < image.height(); ++y)
+    for (int y = 0; y < image.height(); ++y) {
         for (int x = 0; x < image.width(); ++x) {
             const QColor c = image.pixelColor(x, y);
             if (std::abs(c.red() - colour.red()) <= tolerance &&
                 std::abs(c.green() - colour.green()) <= tolerance &&
-                std::abs(c.blue() - colour.blue()) <= tolerance)
+                std::abs(c.blue() - colour.blue()) <= tolerance) {
                 ++n;
+            }
         }
+    }
     return n;
 }
 
