@@ -56,6 +56,9 @@ TEST_F(ResolutionScaleTest, HalfResolutionFillsTheFrameWithTheSamePicture) {
     EXPECT_NEAR(drawnAtHalf.top(), drawn.top(), 2);
     EXPECT_NEAR(drawnAtHalf.bottom(), drawn.bottom(), 2);
 
+    half.save(test::testOutputDir() + "/resolution_scale_half.png");
+    full.save(test::testOutputDir() + "/resolution_scale_full.png");
+
     m_renderer.setResolutionScale(1.0F);
     EXPECT_EQ(test::differingFraction(draw(), full, 0), 0.0) << "scale 1 is the full picture";
 }
