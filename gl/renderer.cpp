@@ -106,55 +106,56 @@ void Renderer::releaseGpuResources() {
 
 ViewOverlay Renderer::overlay(int width, int height) const {
     OverlayInput in;
-    in.grid = m_hasGrid ? &m_grid : nullptr;
-    in.frame = &m_frame;
-    in.viewProjection = m_camera.viewProjection(static_cast<float>(width) /
-                                                static_cast<float>(std::max(height, 1)));
-    in.eye = m_camera.eye();
+    in.grid = m_scene.hasGrid ? &m_scene.grid : nullptr;
+    in.frame = &m_scene.frame;
+    in.viewProjection = m_scene.camera.viewProjection(static_cast<float>(width) /
+                                                      static_cast<float>(std::max(height, 1)));
+    in.eye = m_scene.camera.eye();
     in.width = width;
     in.height = height;
-    in.appearance = m_meshes ? &m_appearance : nullptr;
-    in.showMean = m_settings.showMean && m_meshes && !m_meshes->mean.vertices.empty();
-    in.showAxes = m_settings.showAxes;
-    in.showLegend = m_settings.showLegend;
+    in.appearance = m_scene.meshes ? &m_scene.appearance : nullptr;
+    in.showMean =
+        m_scene.settings.showMean && m_scene.meshes && !m_scene.meshes->mean.vertices.empty();
+    in.showAxes = m_scene.settings.showAxes;
+    in.showLegend = m_scene.settings.showLegend;
     in.background = glm::vec3(m_background);
     return computeOverlay(in);
 }
 
 void Renderer::setGrid(const data::Grid& grid) {
-    m_grid = grid;
-    m_hasGrid = true;
-    m_frame = data::DisplayFrame(grid, m_frame.verticalExaggeration());
+    m_scene.grid = grid;
+    m_scene.hasGrid = true;
+    m_scene.frame = data::DisplayFrame(grid, m_scene.frame.verticalExaggeration());
     m_axisTablesDirty = true;
     resetCamera();
 }
 
 void Renderer::setVerticalExaggeration(float exaggeration) {
-    if (m_hasGrid) {
-        m_frame = data::DisplayFrame(m_grid, exaggeration);
+    if (m_scene.hasGrid) {
+        m_scene.frame = data::DisplayFrame(m_scene.grid, exaggeration);
         m_axisTablesDirty = true;
-        m_camera.frameBox(m_frame.boxMin(), m_frame.boxMax(), viewAspect());
+        m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
     }
 }
 
 void Renderer::resetCamera() {
-    m_camera.reset(m_frame.center(), 0.5F * glm::length(m_frame.boxMax()));
-    m_camera.frameBox(m_frame.boxMin(), m_frame.boxMax(), viewAspect());
+    m_scene.camera.reset(m_scene.frame.center(), 0.5F * glm::length(m_scene.frame.boxMax()));
+    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
 }
 
 void Renderer::setViewSize(int width, int height) {
     if (width > 0 && height > 0)
-        m_viewAspect = static_cast<float>(width) / static_cast<float>(height);
+        m_scene.viewAspect = static_cast<float>(width) / static_cast<float>(height);
 }
 
 void Renderer::setFloorMap(FloorMap map) {
-    m_floor = std::move(map);
+    m_scene.floor = std::move(map);
     m_floorDirty = true;
 }
 
 void Renderer::uploadFloorMap() {
     m_floorDirty = false;
-    if (!m_hasGrid || m_floor.values.size() != m_grid.nx() * m_grid.ny()) {
+    if (!m_scene.hasGrid || m_scene.floor.values.size() != m_scene.grid.nx() * m_scene.grid.ny()) {
         m_gpu->floorSize = {0, 0};
         return;
     }
@@ -162,21 +163,21 @@ void Renderer::uploadFloorMap() {
     // smear gaps into their neighbours.
     // Texture rows and columns run from the smallest coordinate up, as display space does;
     // many files store latitude from north to south.
-    const float span = m_floor.maximum - m_floor.minimum;
-    const std::size_t nx = m_grid.nx(), ny = m_grid.ny();
-    const bool flipX = m_grid.x().back() < m_grid.x().front();
-    const bool flipY = m_grid.y().back() < m_grid.y().front();
-    std::vector<float> normalised(m_floor.values.size());
+    const float span = m_scene.floor.maximum - m_scene.floor.minimum;
+    const std::size_t nx = m_scene.grid.nx(), ny = m_scene.grid.ny();
+    const bool flipX = m_scene.grid.x().back() < m_scene.grid.x().front();
+    const bool flipY = m_scene.grid.y().back() < m_scene.grid.y().front();
+    std::vector<float> normalised(m_scene.floor.values.size());
     for (std::size_t j = 0; j < ny; ++j) {
         for (std::size_t i = 0; i < nx; ++i) {
             const float v =
-                m_floor.values[(flipX ? nx - 1 - i : i) + nx * (flipY ? ny - 1 - j : j)];
+                m_scene.floor.values[(flipX ? nx - 1 - i : i) + nx * (flipY ? ny - 1 - j : j)];
             normalised[i + nx * j] =
-                std::isnan(v) ? -1.0F : (span > 0 ? (v - m_floor.minimum) / span : 0.5F);
+                std::isnan(v) ? -1.0F : (span > 0 ? (v - m_scene.floor.minimum) / span : 0.5F);
         }
     }
     GlFunctions& f = *m_gpu->f;
-    m_gpu->floorSize = {static_cast<int>(m_grid.nx()), static_cast<int>(m_grid.ny())};
+    m_gpu->floorSize = {static_cast<int>(m_scene.grid.nx()), static_cast<int>(m_scene.grid.ny())};
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->floorTexture);
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     f.glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, m_gpu->floorSize.x, m_gpu->floorSize.y, 0, GL_RED,
@@ -194,15 +195,15 @@ void Renderer::setResolutionScale(float scale) {
 void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
     if (width <= 0 || height <= 0) return;
-    m_lastSize = {width, height};
+    m_scene.lastSize = {width, height};
     setViewSize(width, height);
     // The scene is drawn at its own size, the same shape as the frame.
     const auto scaled = [&](int size) {
         return std::max(
             1, static_cast<int>(std::lround(static_cast<float>(size) * m_resolutionScale)));
     };
-    m_sceneSize = {scaled(width), scaled(height)};
-    const int sceneWidth = m_sceneSize.x, sceneHeight = m_sceneSize.y;
+    m_scene.sceneSize = {scaled(width), scaled(height)};
+    const int sceneWidth = m_scene.sceneSize.x, sceneHeight = m_scene.sceneSize.y;
     GlFunctions& f = *m_gpu->f;
     m_gpu->targets.ensure(f, sceneWidth, sceneHeight);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());
@@ -211,11 +212,11 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     f.glClearDepth(1.0);
     f.glDepthMask(GL_TRUE);
     f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (m_hasGrid) {
+    if (m_scene.hasGrid) {
         if (m_floorDirty) uploadFloorMap();
         if (m_axisTablesDirty) uploadAxisTables();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        const glm::mat4 viewProjection = m_camera.viewProjection(aspect);
+        const glm::mat4 viewProjection = m_scene.camera.viewProjection(aspect);
         drawFloorAndBox(viewProjection);
         drawMeshes(viewProjection, sceneWidth, sceneHeight);
     }
@@ -232,7 +233,7 @@ void Renderer::present(unsigned framebuffer, int width, int height) {
     program.bind();
     program.setUniformValue("u_scene", 0);
     // Pixel for pixel at full resolution; a smaller scene is scaled up, filtered.
-    program.setUniformValue("u_scaled", m_sceneSize != m_lastSize);
+    program.setUniformValue("u_scaled", m_scene.sceneSize != m_scene.lastSize);
     program.setUniformValue("u_frameSize", static_cast<float>(width), static_cast<float>(height));
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->targets.sceneColor());
@@ -246,8 +247,8 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
     GlFunctions& f = *m_gpu->f;
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthFunc(GL_LEQUAL);
-    const glm::vec3 lo = m_frame.boxMin();
-    const glm::vec3 hi = m_frame.boxMax();
+    const glm::vec3 lo = m_scene.frame.boxMin();
+    const glm::vec3 hi = m_scene.frame.boxMax();
     if (m_gpu->floorSize.x > 0) {
         QOpenGLShaderProgram& floor = m_gpu->shaders.program(QStringLiteral("floor_map"));
         floor.bind();

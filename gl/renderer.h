@@ -68,7 +68,7 @@ public:
     void setResolutionScale(float scale);
     [[nodiscard]] float resolutionScale() const { return m_resolutionScale; }
     // The size the last frame's scene was drawn at, in pixels.
-    [[nodiscard]] glm::ivec2 sceneSize() const { return m_sceneSize; }
+    [[nodiscard]] glm::ivec2 sceneSize() const { return m_scene.sceneSize; }
     static constexpr float kMinimumResolutionScale = 0.25F;
 
     // The member drawn at pixel (x, y) of the last frame (origin top left, framebuffer pixels):
@@ -91,28 +91,32 @@ public:
     void setAnimatedMember(int member) { m_animated = member; }
     [[nodiscard]] int animatedMember() const { return m_animated; }
 
-    [[nodiscard]] bool hasGrid() const { return m_hasGrid; }
+    [[nodiscard]] bool hasGrid() const { return m_scene.hasGrid; }
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
     void setVerticalExaggeration(float exaggeration);
     // The meshes of the current isovalue (uploaded at the next frame); null clears them.
     void setMeshes(std::shared_ptr<const data::MeshSet> meshes);
-    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& meshes() const { return m_meshes; }
+    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& meshes() const {
+        return m_scene.meshes;
+    }
     // One entry per member; members without an entry are drawn light gray.
     void setAppearance(std::vector<MemberAppearance> appearance) {
-        m_appearance = std::move(appearance);
+        m_scene.appearance = std::move(appearance);
     }
-    [[nodiscard]] const std::vector<MemberAppearance>& appearances() const { return m_appearance; }
-    [[nodiscard]] RenderSettings& settings() { return m_settings; }
-    [[nodiscard]] const RenderSettings& settings() const { return m_settings; }
+    [[nodiscard]] const std::vector<MemberAppearance>& appearances() const {
+        return m_scene.appearance;
+    }
+    [[nodiscard]] RenderSettings& settings() { return m_scene.settings; }
+    [[nodiscard]] const RenderSettings& settings() const { return m_scene.settings; }
     // Bytes of mesh data on the GPU now.
     [[nodiscard]] std::size_t gpuBytes() const;
     void setBackground(const glm::vec4& color) { m_background = color; }
 
-    [[nodiscard]] const data::DisplayFrame& frame() const { return m_frame; }
-    [[nodiscard]] Camera& camera() { return m_camera; }
-    [[nodiscard]] const Camera& camera() const { return m_camera; }
+    [[nodiscard]] const data::DisplayFrame& frame() const { return m_scene.frame; }
+    [[nodiscard]] Camera& camera() { return m_scene.camera; }
+    [[nodiscard]] const Camera& camera() const { return m_scene.camera; }
     void resetCamera();
     // The shape of the frames to come (a window's resize), which the camera is fitted to.
     void setViewSize(int width, int height);
@@ -126,7 +130,7 @@ private:
     void uploadMeshesIfChanged();
     [[nodiscard]] MemberAppearance appearance(std::size_t member) const;
     [[nodiscard]] bool translucentMode() const;
-    [[nodiscard]] float viewAspect() const { return m_viewAspect; }
+    [[nodiscard]] float viewAspect() const { return m_scene.viewAspect; }
     // The data box's bounding rectangle on screen (x, y, width, height in GL pixels, clamped to
     // the frame); the whole frame when the camera is inside the box.
     [[nodiscard]] glm::ivec4 screenRectangle(const glm::mat4& viewProjection, int width,
@@ -154,23 +158,29 @@ private:
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
     void present(unsigned framebuffer, int width, int height);
 
+    // What is drawn and from where: everything warmUp() puts aside while it draws its own.
+    struct Scene {
+        data::Grid grid;
+        bool hasGrid = false;
+        data::DisplayFrame frame;
+        Camera camera;
+        FloorMap floor;
+        std::shared_ptr<const data::MeshSet> meshes;
+        std::vector<MemberAppearance> appearance;
+        RenderSettings settings;
+        glm::ivec2 lastSize{0};   // the last frame's size, which picking draws at
+        glm::ivec2 sceneSize{0};  // the size its scene was drawn at (lastSize times the scale)
+        float viewAspect = 1.6F;  // before the first frame: the usual window's shape
+    };
+
     std::unique_ptr<Gpu> m_gpu;
-    data::Grid m_grid;
-    bool m_hasGrid = false;
-    data::DisplayFrame m_frame;
-    Camera m_camera;
-    FloorMap m_floor;
+    Scene m_scene;
+    // What has changed in the scene since it was last uploaded.
     bool m_floorDirty = false;
     bool m_axisTablesDirty = false;
-    std::shared_ptr<const data::MeshSet> m_meshes;
     bool m_meshesDirty = false;
-    std::vector<MemberAppearance> m_appearance;
-    RenderSettings m_settings;
     glm::vec4 m_background = kDefaultBackground;
-    glm::ivec2 m_lastSize{0};   // the last frame's size, which picking draws at
-    glm::ivec2 m_sceneSize{0};  // the size its scene was drawn at (m_lastSize times the scale)
     float m_resolutionScale = 1.0F;
-    float m_viewAspect = 1.6F;  // before the first frame: the usual window's shape
     int m_highlighted = -1;
     int m_animated = -1;
 };

@@ -43,7 +43,7 @@ void drawMesh(GlFunctions& f, QOpenGLShaderProgram& program, const GpuMesh& mesh
 }  // namespace
 
 void Renderer::setMeshes(std::shared_ptr<const data::MeshSet> meshes) {
-    m_meshes = std::move(meshes);
+    m_scene.meshes = std::move(meshes);
     m_meshesDirty = true;
 }
 
@@ -52,8 +52,8 @@ std::size_t Renderer::gpuBytes() const { return m_gpu ? m_gpu->meshes.bytes() : 
 void Renderer::uploadAxisTables() {
     m_axisTablesDirty = false;
     GlFunctions& f = *m_gpu->f;
-    std::array<std::vector<double>, 3> tables{m_frame.axisTable(0), m_frame.axisTable(1),
-                                              m_frame.axisTable(2)};
+    std::array<std::vector<double>, 3> tables{
+        m_scene.frame.axisTable(0), m_scene.frame.axisTable(1), m_scene.frame.axisTable(2)};
     const std::size_t width = std::max({tables[0].size(), tables[1].size(), tables[2].size()});
     std::vector<float> texels(width * 3, 0.0F);
     for (std::size_t a = 0; a < 3; ++a) {
@@ -75,15 +75,15 @@ void Renderer::uploadMeshesIfChanged() {
     if (!m_meshesDirty) return;
     m_meshesDirty = false;
     GlFunctions& f = *m_gpu->f;
-    if (m_meshes) {
-        m_gpu->meshes.upload(f, *m_meshes);
+    if (m_scene.meshes) {
+        m_gpu->meshes.upload(f, *m_scene.meshes);
     } else {
         m_gpu->meshes.release(f);
     }
 }
 
 MemberAppearance Renderer::appearance(std::size_t member) const {
-    return member < m_appearance.size() ? m_appearance[member] : MemberAppearance{};
+    return member < m_scene.appearance.size() ? m_scene.appearance[member] : MemberAppearance{};
 }
 
 Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection,
@@ -91,7 +91,7 @@ Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewPro
     SurfacePrograms programs{
         &m_gpu->shaders.program(QStringLiteral("surface")),
         &m_gpu->shaders.program(QStringLiteral("silhouette"), kSilhouetteShaderFiles)};
-    if (!m_settings.silhouetteCulling) programs.culled = programs.full;
+    if (!m_scene.settings.silhouetteCulling) programs.culled = programs.full;
     programs.culled->bind();
     configureSurfaceProgram(*programs.culled, viewProjection, pick);
     if (programs.full != programs.culled) {
@@ -107,26 +107,26 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     GlFunctions& f = *m_gpu->f;
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
                          glm::value_ptr(viewProjection));
-    const glm::vec3 eye = m_camera.eye();
-    const glm::vec3 viewDirection = glm::normalize(m_camera.target() - eye);
+    const glm::vec3 eye = m_scene.camera.eye();
+    const glm::vec3 viewDirection = glm::normalize(m_scene.camera.target() - eye);
     program.setUniformValue("u_eye", eye.x, eye.y, eye.z);
     program.setUniformValue("u_viewDirection", viewDirection.x, viewDirection.y, viewDirection.z);
     program.setUniformValue("u_orthographic",
-                            m_camera.projection() == Camera::Projection::Orthographic);
-    program.setUniformValue("u_tau", m_settings.thickness);
-    program.setUniformValue("u_surfaceAlpha", m_settings.surfaceAlpha);
-    program.setUniformValue("u_removal", m_settings.removal);
-    program.setUniformValue("u_removalMin", m_settings.removalMin);
-    program.setUniformValue("u_removalMax", m_settings.removalMax);
-    program.setUniformValue("u_groupSize", m_settings.groupSize);
+                            m_scene.camera.projection() == Camera::Projection::Orthographic);
+    program.setUniformValue("u_tau", m_scene.settings.thickness);
+    program.setUniformValue("u_surfaceAlpha", m_scene.settings.surfaceAlpha);
+    program.setUniformValue("u_removal", m_scene.settings.removal);
+    program.setUniformValue("u_removalMin", m_scene.settings.removalMin);
+    program.setUniformValue("u_removalMax", m_scene.settings.removalMax);
+    program.setUniformValue("u_groupSize", m_scene.settings.groupSize);
     program.setUniformValue("u_pick", pick);
 
     // The plane's normal is turned towards the viewer, so the shader discards n.p > offset.
-    const CuttingPlane& plane = m_settings.plane;
+    const CuttingPlane& plane = m_scene.settings.plane;
     glm::vec3 normal = plane.normal;
     float offset = plane.offset;
-    const glm::vec3 viewerPoint = m_camera.projection() == Camera::Projection::Orthographic
-                                      ? m_camera.target() - 1e3F * viewDirection
+    const glm::vec3 viewerPoint = m_scene.camera.projection() == Camera::Projection::Orthographic
+                                      ? m_scene.camera.target() - 1e3F * viewDirection
                                       : eye;
     if (glm::dot(normal, viewerPoint) < offset) {
         normal = -normal;
@@ -145,7 +145,7 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
 }
 
 glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width, int height) const {
-    const glm::vec3 lo = m_frame.boxMin(), hi = m_frame.boxMax();
+    const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
     glm::vec2 minimum(std::numeric_limits<float>::max()), maximum(-minimum);
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec4 p =
@@ -165,8 +165,8 @@ glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width,
 }
 
 bool Renderer::translucentMode() const {
-    return m_settings.mode == RenderMode::ShadedSilhouettes ||
-           m_settings.mode == RenderMode::Surfaces;
+    return m_scene.settings.mode == RenderMode::ShadedSilhouettes ||
+           m_scene.settings.mode == RenderMode::Surfaces;
 }
 
 void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
@@ -190,9 +190,10 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         program->setUniformValue("u_color", colour.x, colour.y, colour.z);
     };
     const bool translucent = translucentMode();
-    const int translucentShaderMode = m_settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
-    const int opaqueMode = m_settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
-    if (pass != MemberPass::Translucent && m_settings.showMean) {
+    const int translucentShaderMode =
+        m_scene.settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
+    const int opaqueMode = m_scene.settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
+    if (pass != MemberPass::Translucent && m_scene.settings.showMean) {
         setMember(0, 0, kSolid, kMeanSurfaceColor);
         drawMesh(f, *program, m_gpu->meshes.mean());
     }
@@ -272,7 +273,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
 
 std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     GlFunctions& f = *m_gpu->f;
-    const int width = m_lastSize.x, height = m_lastSize.y;
+    const int width = m_scene.lastSize.x, height = m_scene.lastSize.y;
     uploadMeshesIfChanged();
     if (m_axisTablesDirty) uploadAxisTables();
     m_gpu->targets.ensurePick(f, width, height);
@@ -290,7 +291,7 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     f.glDisable(GL_BLEND);
     f.glDisable(GL_DITHER);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    SurfacePrograms programs = bindSurfacePrograms(m_camera.viewProjection(aspect), true);
+    SurfacePrograms programs = bindSurfacePrograms(m_scene.camera.viewProjection(aspect), true);
     drawMemberPass(programs, MemberPass::All);
     f.glBindVertexArray(0);
     programs.bound->release();
@@ -310,13 +311,13 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
 }
 
 bool Renderer::canPick() const {
-    return m_gpu && m_hasGrid && m_lastSize.x > 0 && m_lastSize.y > 0;
+    return m_gpu && m_scene.hasGrid && m_scene.lastSize.x > 0 && m_scene.lastSize.y > 0;
 }
 
 PickResult Renderer::pick(int x, int y, int radius) {
     PickResult result;
     if (!canPick()) return result;
-    const int width = m_lastSize.x, height = m_lastSize.y;
+    const int width = m_scene.lastSize.x, height = m_scene.lastSize.y;
     if (x < 0 || y < 0 || x >= width || y >= height) return result;
     radius = std::max(radius, 0);
     const int glY = height - 1 - y;  // GL rows run bottom-up
@@ -349,7 +350,7 @@ PickResult Renderer::pick(int x, int y, int radius) {
 
 std::vector<int> Renderer::membersIn(int x0, int y0, int x1, int y1) {
     if (!canPick()) return {};
-    const int width = m_lastSize.x, height = m_lastSize.y;
+    const int width = m_scene.lastSize.x, height = m_scene.lastSize.y;
     const int left = std::clamp(std::min(x0, x1), 0, width - 1);
     const int right = std::clamp(std::max(x0, x1), 0, width - 1);
     const int top = std::clamp(std::min(y0, y1), 0, height - 1);

@@ -34,18 +34,7 @@ data::PackedMesh triangle() {
 
 void Renderer::warmUp() {
     if (!m_gpu) return;
-    // Everything the scene below replaces, put back afterwards.
-    const data::Grid grid = m_grid;
-    const bool hasGrid = m_hasGrid;
-    const data::DisplayFrame frame = m_frame;
-    const Camera camera = m_camera;
-    const FloorMap floor = m_floor;
-    const auto meshes = m_meshes;
-    const auto appearance = m_appearance;
-    const RenderSettings settings = m_settings;
-    const glm::ivec2 lastSize = m_lastSize;
-    const glm::ivec2 sceneSize = m_sceneSize;
-    const float viewAspect = m_viewAspect;
+    Scene saved = m_scene;  // put back afterwards
 
     setGrid(data::Grid(data::makeUniformAxis("x", "", 0, 1, 2),
                        data::makeUniformAxis("y", "", 0, 1, 2),
@@ -55,33 +44,23 @@ void Renderer::warmUp() {
     set->members = {triangle(), triangle()};
     set->mean = triangle();
     setMeshes(set);
-    m_appearance = {{glm::vec3(1.0F), true, true, 0}, {glm::vec3(0.5F), true, false, 1}};
+    m_scene.appearance = {{glm::vec3(1.0F), true, true, 0}, {glm::vec3(0.5F), true, false, 1}};
     {
         QOpenGLFramebufferObject target(8, 8, QOpenGLFramebufferObject::CombinedDepthStencil);
         for (const RenderMode mode : {RenderMode::ShadedSilhouettes, RenderMode::Spaghetti,
                                       RenderMode::Surfaces, RenderMode::OpaqueSurfaces}) {
-            m_settings.mode = mode;
-            m_settings.removal = mode == RenderMode::ShadedSilhouettes;
-            m_settings.plane.enabled = mode == RenderMode::Spaghetti;
+            m_scene.settings.mode = mode;
+            m_scene.settings.removal = mode == RenderMode::ShadedSilhouettes;
+            m_scene.settings.plane.enabled = mode == RenderMode::Spaghetti;
             render(target.handle(), 8, 8);
             (void)pick(4, 4);
         }
     }
 
-    m_grid = grid;
-    m_hasGrid = hasGrid;
-    m_frame = frame;
-    m_camera = camera;
-    m_floor = floor;
+    m_scene = std::move(saved);
     m_floorDirty = true;
     m_axisTablesDirty = true;
-    m_meshes = meshes;
     m_meshesDirty = true;
-    m_appearance = appearance;
-    m_settings = settings;
-    m_lastSize = lastSize;
-    m_sceneSize = sceneSize;
-    m_viewAspect = viewAspect;
 }
 
 }  // namespace ensil::gl
