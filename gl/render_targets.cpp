@@ -1,7 +1,9 @@
 #include "gl/render_targets.h"
 
-#include <array>
+#include <initializer_list>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace ensil::gl {
 namespace {
@@ -18,11 +20,25 @@ GLuint texture(GlFunctions& f, GLint internalFormat, GLenum format, GLenum type,
     return t;
 }
 
-void checkComplete(GlFunctions& f, const char* what) {
+// A framebuffer drawing into these colour textures (attachments 0, 1, ...) with this depth.
+GLuint framebuffer(GlFunctions& f, std::initializer_list<GLuint> colours, GLuint depth,
+                   const char* what) {
+    GLuint fbo = 0;
+    f.glGenFramebuffers(1, &fbo);
+    f.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    std::vector<GLenum> buffers;
+    for (const GLuint colour : colours) {
+        const auto attachment = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + buffers.size());
+        f.glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, colour, 0);
+        buffers.push_back(attachment);
+    }
+    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    f.glDrawBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
     if (f.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
         throw std::runtime_error(std::string("the OpenGL driver refused the ") + what +
                                  " framebuffer");
     }
+    return fbo;
 }
 }  // namespace
 
@@ -37,21 +53,9 @@ void RenderTargets::ensure(GlFunctions& f, int width, int height) {
     m_accumulation = texture(f, GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT, width, height);
     m_revealage = texture(f, GL_R16F, GL_RED, GL_HALF_FLOAT, width, height);
 
-    f.glGenFramebuffers(1, &m_scene);
-    f.glBindFramebuffer(GL_FRAMEBUFFER, m_scene);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_color, 0);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depth, 0);
-    checkComplete(f, "scene");
-
-    f.glGenFramebuffers(1, &m_transparency);
-    f.glBindFramebuffer(GL_FRAMEBUFFER, m_transparency);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_accumulation,
-                             0);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, m_revealage, 0);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_depth, 0);
-    const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    f.glDrawBuffers(2, buffers.data());
-    checkComplete(f, "transparency");
+    m_scene = framebuffer(f, {m_color}, m_depth, "scene");
+    // The transparent members test against the opaque scene's depth.
+    m_transparency = framebuffer(f, {m_accumulation, m_revealage}, m_depth, "transparency");
 }
 
 void RenderTargets::ensurePick(GlFunctions& f, int width, int height) {
@@ -61,11 +65,7 @@ void RenderTargets::ensurePick(GlFunctions& f, int width, int height) {
     m_pickHeight = height;
     m_pickIds = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height);
     m_pickDepth = texture(f, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, width, height);
-    f.glGenFramebuffers(1, &m_pick);
-    f.glBindFramebuffer(GL_FRAMEBUFFER, m_pick);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_pickIds, 0);
-    f.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m_pickDepth, 0);
-    checkComplete(f, "picking");
+    m_pick = framebuffer(f, {m_pickIds}, m_pickDepth, "picking");
 }
 
 void RenderTargets::releasePick(GlFunctions& f) {
