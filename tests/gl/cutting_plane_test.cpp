@@ -34,8 +34,7 @@ TEST_F(CuttingPlaneTest, TheViewersSideIsCutAwayAndTheCurveDrawnWhereTheSurfaceC
     const QImage whole = draw();
     ASSERT_LE(nearestMatch(whole, rightRim, kOrange), 40) << "the right rim is drawn uncut";
 
-    m_renderer.settings().plane =
-        gl::CuttingPlane::through({1, 0, 0}, display({12, 15.5F, 15.5F}));
+    m_renderer.settings().plane = gl::CuttingPlane::through({1, 0, 0}, display({12, 15.5F, 15.5F}));
     m_renderer.settings().plane.thickness = 0.5F / 31.0F;  // half a cell
     const QImage cut = draw();
     EXPECT_LE(channelDistance(cut.pixelColor(rightRim), {0, 0, 0}), 3) << "cut away";

@@ -19,19 +19,11 @@ QRect drawnRectangle(const QImage& image) {
     return r;
 }
 
-class ResolutionScaleTest : public test::SphereSceneTest {
-protected:
-    void SetUp() override {
-        test::SphereSceneTest::SetUp();
-        if (IsSkipped() || HasFatalFailure()) return;
-        show(test::spheres({{12, 15.5F, 15.5F}, {19, 15.5F, 17}}),
-             {gl::clusterColor(0), gl::clusterColor(1)});
-        m_renderer.settings().thickness = 0.05F;
-    }
-};
+using ResolutionScaleTest = test::TwoSpheresTest;
 }  // namespace
 
 TEST_F(ResolutionScaleTest, HalfResolutionFillsTheFrameWithTheSamePicture) {
+    m_renderer.settings().thickness = 0.05F;
     const QImage full = draw();
     EXPECT_EQ(m_renderer.sceneSize(), glm::ivec2(kWidth, kHeight));
 

@@ -101,4 +101,15 @@ protected:
     gl::Renderer m_renderer;
 };
 
+// Two overlapping spheres in the first two cluster colours, seen head-on.
+class TwoSpheresTest : public SphereSceneTest {
+protected:
+    void SetUp() override {
+        SphereSceneTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        show(spheres({{12, 15.5F, 15.5F}, {19, 15.5F, 17}}),
+             {gl::clusterColor(0), gl::clusterColor(1)});
+    }
+};
+
 }  // namespace ensil::test

@@ -6,17 +6,7 @@
 
 using namespace ensil;
 
-namespace {
-class WarmUpTest : public test::SphereSceneTest {
-protected:
-    void SetUp() override {
-        test::SphereSceneTest::SetUp();
-        if (IsSkipped() || HasFatalFailure()) return;
-        show(test::spheres({{12, 15.5F, 15.5F}, {19, 15.5F, 17}}),
-             {gl::clusterColor(0), gl::clusterColor(1)});
-    }
-};
-}  // namespace
+using WarmUpTest = test::TwoSpheresTest;
 
 TEST_F(WarmUpTest, PutsTheSceneBack) {
     m_renderer.settings().mode = gl::RenderMode::Spaghetti;
