@@ -144,7 +144,8 @@ private:
         QOpenGLShaderProgram* bound = nullptr;
         [[nodiscard]] bool clips() const { return bound == culled && culled != full; }
     };
-    SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, bool pick);
+    // `cull`: whether the silhouette modes may use the culling program (if the settings let it).
+    SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, bool pick, bool cull);
     void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,
                                  bool pick);
     void drawMemberPass(SurfacePrograms& programs, MemberPass pass);

@@ -86,12 +86,12 @@ MemberAppearance Renderer::appearance(std::size_t member) const {
     return member < m_scene.appearance.size() ? m_scene.appearance[member] : MemberAppearance{};
 }
 
-Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection,
-                                                        bool pick) {
+Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection, bool pick,
+                                                        bool cull) {
     SurfacePrograms programs{
         &m_gpu->shaders.program(QStringLiteral("surface")),
         &m_gpu->shaders.program(QStringLiteral("silhouette"), kSilhouetteShaderFiles)};
-    if (!m_scene.settings.silhouetteCulling) programs.culled = programs.full;
+    if (!cull || !m_scene.settings.silhouetteCulling) programs.culled = programs.full;
     programs.culled->bind();
     configureSurfaceProgram(*programs.culled, viewProjection, pick);
     if (programs.full != programs.culled) {
@@ -221,7 +221,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     uploadMeshesIfChanged();
     if (m_gpu->meshes.members().empty() && m_gpu->meshes.mean().vao == 0) return;
 
-    SurfacePrograms programs = bindSurfacePrograms(viewProjection, false);
+    SurfacePrograms programs = bindSurfacePrograms(viewProjection, false, true);
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
@@ -291,7 +291,11 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     f.glDisable(GL_BLEND);
     f.glDisable(GL_DITHER);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    SurfacePrograms programs = bindSurfacePrograms(m_scene.camera.viewProjection(aspect), true);
+    // The culling shader's work per triangle pays off over many pixels (a brush), not over the
+    // few of a pick under the cursor, where it would double the time.
+    const bool cull = static_cast<long long>(w) * h * 16 > static_cast<long long>(width) * height;
+    SurfacePrograms programs =
+        bindSurfacePrograms(m_scene.camera.viewProjection(aspect), true, cull);
     drawMemberPass(programs, MemberPass::All);
     f.glBindVertexArray(0);
     programs.bound->release();
