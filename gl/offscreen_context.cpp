@@ -17,9 +17,8 @@ namespace {
 bool g_withoutDisplay = false;
 QtMessageHandler g_previousHandler = nullptr;
 
-// eglfs complains that the stand-in framebuffer device has no screen to describe, and Qt that
-// llvmpipe is slow, once per context: true, and of no use to someone rendering a picture in a batch
-// job.
+// eglfs complains that the stand-in framebuffer device describes no screen, and Qt that llvmpipe
+// is slow: true, and of no use to someone rendering a picture in a batch job.
 void dropEglfsNoise(QtMsgType type, const QMessageLogContext& context, const QString& message) {
     if (type == QtWarningMsg &&
         (message.startsWith(QLatin1String("eglconvenience: Could not")) ||
@@ -47,19 +46,12 @@ std::optional<std::string> checkSurfacelessEgl() {
 // A configuration for desktop OpenGL on pbuffers. Qt reads the context's format (renderable
 // type, then version and profile) through it, so the context is made with one.
 EGLConfig desktopGlConfig(EGLDisplay display) {
-    const EGLint wanted[] = {EGL_SURFACE_TYPE,
-                             EGL_PBUFFER_BIT,
-                             EGL_RENDERABLE_TYPE,
-                             EGL_OPENGL_BIT,
-                             EGL_RED_SIZE,
-                             8,
-                             EGL_GREEN_SIZE,
-                             8,
-                             EGL_BLUE_SIZE,
-                             8,
-                             EGL_ALPHA_SIZE,
-                             8,
+    // clang-format off
+    const EGLint wanted[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,
+                             EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                             EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
                              EGL_NONE};
+    // clang-format on
     EGLConfig config = nullptr;
     EGLint count = 0;
     if (eglChooseConfig(display, wanted, &config, 1, &count) == EGL_FALSE || count < 1) {
@@ -116,13 +108,13 @@ OffscreenContext::OffscreenContext() {
         if (eglBindAPI(EGL_OPENGL_API) == EGL_FALSE) {
             throw std::runtime_error("EGL cannot render desktop OpenGL here");
         }
-        const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
-                                     format.majorVersion(),
-                                     EGL_CONTEXT_MINOR_VERSION,
-                                     format.minorVersion(),
-                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                     EGL_NONE};
+        // clang-format off
+        const EGLint attributes[] = {
+            EGL_CONTEXT_MAJOR_VERSION, format.majorVersion(),
+            EGL_CONTEXT_MINOR_VERSION, format.minorVersion(),
+            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            EGL_NONE};
+        // clang-format on
         m_egl->context = eglCreateContext(m_egl->display, desktopGlConfig(m_egl->display),
                                           EGL_NO_CONTEXT, attributes);
         if (m_egl->context == EGL_NO_CONTEXT) {
