@@ -105,7 +105,7 @@ HOME=$work XDG_RUNTIME_DIR=$work xvfb-run -a -s "-screen 0 1280x1024x24" \
 python3 "$checks" png "$work/demo.png" --size 320x240 --min-covered 0.05 --min-colours 50
 # And on a batch node with no display server at all: Mesa's EGL surfaceless platform.
 step "ensil render --demo with no display server"
-env -u DISPLAY -u WAYLAND_DISPLAY HOME=$work XDG_RUNTIME_DIR=$work \
+env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM HOME=$work XDG_RUNTIME_DIR=$work \
     /usr/bin/ensil render --demo --iso 30 --size 320x240 --out "$work/batch.png"
 python3 "$checks" png "$work/batch.png" --size 320x240 --min-covered 0.05 --min-colours 50
 # The workbench window shows the icon: the embedded SVG renders with the installed Qt plugins.
