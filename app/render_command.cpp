@@ -84,7 +84,8 @@ std::optional<std::vector<float>> parseNumbers(const QString& text, int count) {
 int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "Draw an ensemble's isosurfaces as silhouettes into a PNG, without a window."));
+        "Draw an ensemble's isosurfaces as silhouettes into a PNG, without a window. With no "
+        "display server (a batch node), it draws through Mesa's EGL surfaceless platform."));
     parser.addHelpOption();
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
