@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "gl/axis_ticks.h"
 #include "widgets/member_selection.h"
 
 namespace ensil::ui {
@@ -53,8 +54,8 @@ void drawAxis(QPainter& painter, const DendrogramFrame& frame, const DendrogramS
     const QFontMetricsF metrics(style.font);
     const double x = frame.plot.left();
     painter.drawLine(QPointF(x, frame.plot.top()), QPointF(x, frame.plot.bottom()));
-    for (int t = 0; t <= kTicks; ++t) {
-        const double h = frame.topHeight * t / kTicks;
+    // Round merge heights (1, 2, 2.5 or 5 times a power of ten), as on the view's axes.
+    for (const double h : gl::niceTicks(0.0, frame.topHeight, kTicks)) {
         const double y = frame.pixelY(h);
         painter.drawLine(QPointF(x - kTickLength, y), QPointF(x, y));
         const QString label = QString::number(h, 'g', 3);

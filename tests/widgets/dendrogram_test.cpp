@@ -251,6 +251,26 @@ TEST(DendrogramExport, WritesAnSvgWithEveryMemberName) {
     EXPECT_GT(reader.defaultSize().width(), 6 * 10) << "one leaf per text line";
 }
 
+TEST(DendrogramExport, LabelsMergeHeightsWithRoundNumbers) {
+    // The two groups merge at the mean of their nine cross distances, 92.1 / 9 = 10.23: the
+    // axis reads 0, 5, 10, not quarters of 10.23.
+    ui::MemberSelection s;
+    test::loadTwoGroups(s);
+    test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("tree.svg"));
+    QString error;
+    ASSERT_TRUE(ui::writeDendrogramSvg(s, path, &error)) << error.toStdString();
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(file.readAll());
+    for (const char* tick : {">0<", ">5<", ">10<"}) {
+        EXPECT_TRUE(svg.contains(QLatin1String(tick))) << tick;
+    }
+    for (const char* quarter : {">2.56<", ">5.12<", ">7.67<"}) {
+        EXPECT_FALSE(svg.contains(QLatin1String(quarter))) << quarter;
+    }
+}
+
 TEST(DendrogramExport, ExplainsWhatWentWrong) {
     ui::MemberSelection s;
     QString error;
