@@ -48,6 +48,14 @@ int main(int argc, char* argv[]) {
     }
     const auto outcome = ensil::app::runCommandLine(args, out, err);
     if (!outcome.workbench) return outcome.exitCode;
+    if (!ensil::gl::displayServerAvailable()) {
+        // Qt would only say that no platform plugin could be initialised.
+        err << "ensil: the workbench needs a display server (X11 or Wayland), and there is none "
+               "(DISPLAY and WAYLAND_DISPLAY are empty). Run it on a desktop, through ssh -X, or "
+               "under a virtual display: xvfb-run -a ensil. `ensil render` draws pictures "
+               "without one.\n";
+        return 4;
+    }
 
     // The default format must be set before the QApplication exists.
     QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());

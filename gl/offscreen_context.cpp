@@ -72,11 +72,19 @@ struct OffscreenContext::Egl {
 #endif
 };
 
-std::optional<std::string> prepareOffscreenPlatform() {
+bool displayServerAvailable() {
 #if defined(Q_OS_LINUX)
     for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
-        if (!qEnvironmentVariableIsEmpty(variable)) return std::nullopt;
+        if (!qEnvironmentVariableIsEmpty(variable)) return true;
     }
+    return false;
+#else
+    return true;
+#endif
+}
+
+std::optional<std::string> prepareOffscreenPlatform() {
+    if (displayServerAvailable()) return std::nullopt;
 #if defined(ENSIL_HAVE_EGL)
     if (qEnvironmentVariableIsEmpty("EGL_PLATFORM")) qputenv("EGL_PLATFORM", "surfaceless");
     if (auto problem = checkSurfacelessEgl()) return problem;
@@ -91,9 +99,6 @@ std::optional<std::string> prepareOffscreenPlatform() {
     return std::nullopt;
 #else
     return "this build of ensil has no EGL";
-#endif
-#else
-    return std::nullopt;
 #endif
 }
 

@@ -14,6 +14,10 @@ class QOpenGLContext;
 
 namespace ensil::gl {
 
+// Whether Qt will find a display server for windows: on Linux, DISPLAY or WAYLAND_DISPLAY is
+// set (or the user chose a platform through QT_QPA_PLATFORM); elsewhere, always.
+bool displayServerAvailable();
+
 // Call before the QGuiApplication exists. With a display server (or a platform the user chose
 // through QT_QPA_PLATFORM) it changes nothing and returns nothing. Without one, it checks that
 // EGL can render with no display and sets Qt up for it; if EGL cannot, it returns what to do.

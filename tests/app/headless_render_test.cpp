@@ -1,7 +1,8 @@
 // `ensil render` on a machine with no display server at all, as on a batch node: the real
 // executable, started without DISPLAY or WAYLAND_DISPLAY, draws through Mesa's EGL surfaceless
-// platform, and its picture matches the one drawn under the test's X server. Also the message
-// and exit status when EGL cannot render without a display either.
+// platform, and its picture matches the one drawn under the test's X server. Also the messages
+// and exit status when EGL cannot render without a display either, and when the workbench is
+// started with no display.
 #include <gtest/gtest.h>
 
 #include <QImage>
@@ -16,6 +17,15 @@
 using namespace ensil;
 
 namespace {
+// This process's environment as on a machine with no display server.
+QProcessEnvironment withoutDisplay() {
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
+        environment.remove(QString::fromLatin1(variable));
+    }
+    return environment;
+}
+
 struct RenderRun {
     int exitCode = -1;
     QJsonObject json;
@@ -24,12 +34,8 @@ struct RenderRun {
 
 // Runs `ensil render` on era5_eda_members.nc into `png`, with or without a display server.
 RenderRun renderEra5(const QString& png, bool withDisplay, const QString& eglPlatform = {}) {
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    if (!withDisplay) {
-        for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
-            environment.remove(QString::fromLatin1(variable));
-        }
-    }
+    QProcessEnvironment environment =
+        withDisplay ? QProcessEnvironment::systemEnvironment() : withoutDisplay();
     if (!eglPlatform.isEmpty()) environment.insert(QStringLiteral("EGL_PLATFORM"), eglPlatform);
     const QString era5 = QStringLiteral(ENSIL_SHARED_DATA_DIR) + "/era5_eda_members.nc";
     QProcess process;
@@ -82,4 +88,17 @@ TEST(HeadlessRender, SaysWhatToDoWhenEglCannotRenderWithoutADisplay) {
         << run.errors.toStdString();
     EXPECT_TRUE(run.errors.contains(QLatin1String("xvfb-run -a ensil render")))
         << run.errors.toStdString();
+}
+
+TEST(HeadlessRender, TheWorkbenchSaysItNeedsADisplayServer) {
+    QProcess process;
+    process.setProcessEnvironment(withoutDisplay());
+    process.start(QStringLiteral(ENSIL_EXECUTABLE), QStringList{});
+    ASSERT_TRUE(process.waitForFinished(60000));
+    const QString errors = QString::fromLocal8Bit(process.readAllStandardError());
+    EXPECT_EQ(process.exitStatus(), QProcess::NormalExit) << "no abort inside Qt";
+    EXPECT_EQ(process.exitCode(), 4);
+    EXPECT_TRUE(errors.contains(QLatin1String("the workbench needs a display server")))
+        << errors.toStdString();
+    EXPECT_TRUE(errors.contains(QLatin1String("xvfb-run -a ensil"))) << errors.toStdString();
 }
