@@ -7,6 +7,7 @@
 #include <QTextStream>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "app/command_line.h"
 #include "app/main_window.h"
@@ -32,7 +33,7 @@ int main(int argc, char* argv[]) {
     if (args.size() >= 2 && args.at(1) == QLatin1String("render")) {
         // With no display server, Mesa's surfaceless EGL renders (a batch node).
         if (const auto problem = ensil::gl::prepareOffscreenPlatform()) {
-            err << "ensil render: there is no display server, and " << problem->c_str()
+            err << "ensil render: no display server: " << problem->c_str()
                 << "; run it under a virtual display instead: xvfb-run -a ensil render ...\n";
             return 4;
         }
@@ -48,12 +49,11 @@ int main(int argc, char* argv[]) {
     }
     const auto outcome = ensil::app::runCommandLine(args, out, err);
     if (!outcome.workbench) return outcome.exitCode;
-    if (!ensil::gl::displayServerAvailable()) {
+    if (std::string why; !ensil::gl::displayServerAvailable(&why)) {
         // Qt would only say that no platform plugin could be initialised.
-        err << "ensil: the workbench needs a display server (X11 or Wayland), and there is none "
-               "(DISPLAY and WAYLAND_DISPLAY are empty). Run it on a desktop, through ssh -X, or "
-               "under a virtual display: xvfb-run -a ensil. `ensil render` draws pictures "
-               "without one.\n";
+        err << "ensil: the workbench needs a display server (X11 or Wayland), and " << why.c_str()
+            << ". Run it on a desktop, through ssh -X, or under a virtual display: xvfb-run -a "
+               "ensil. `ensil render` draws pictures without one.\n";
         return 4;
     }
 

@@ -11,6 +11,9 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #endif
+#if defined(ENSIL_HAVE_XCB)
+#include <xcb/xcb.h>
+#endif
 
 namespace ensil::gl {
 namespace {
@@ -72,22 +75,43 @@ struct OffscreenContext::Egl {
 #endif
 };
 
-bool displayServerAvailable() {
+bool displayServerAvailable(std::string* why) {
 #if defined(Q_OS_LINUX)
-    for (const char* variable : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
+    for (const char* variable : {"WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) {
         if (!qEnvironmentVariableIsEmpty(variable)) return true;
     }
-    return false;
+    const QByteArray display = qgetenv("DISPLAY");
+    if (display.isEmpty()) {
+        if (why != nullptr) *why = "there is none (DISPLAY and WAYLAND_DISPLAY are empty)";
+        return false;
+    }
+#if defined(ENSIL_HAVE_XCB)
+    // A DISPLAY left behind (an ssh -X session that ended) would make Qt abort at start-up.
+    xcb_connection_t* connection = xcb_connect(display.constData(), nullptr);
+    const bool answers = xcb_connection_has_error(connection) == 0;
+    xcb_disconnect(connection);
+    if (!answers) {
+        if (why != nullptr) {
+            *why = "the X display '" + display.toStdString() + "' (DISPLAY) does not answer";
+        }
+        return false;
+    }
+#endif
+    return true;
 #else
+    (void)why;
     return true;
 #endif
 }
 
 std::optional<std::string> prepareOffscreenPlatform() {
-    if (displayServerAvailable()) return std::nullopt;
+    std::string why;
+    if (displayServerAvailable(&why)) return std::nullopt;
 #if defined(ENSIL_HAVE_EGL)
+    // Qt must not try the X display that does not answer.
+    qunsetenv("DISPLAY");
     if (qEnvironmentVariableIsEmpty("EGL_PLATFORM")) qputenv("EGL_PLATFORM", "surfaceless");
-    if (auto problem = checkSurfacelessEgl()) return problem;
+    if (auto problem = checkSurfacelessEgl()) return why + ", and " + *problem;
     // eglfs insists on a framebuffer device for the screen's size and on input devices; a
     // batch render needs neither.
     qputenv("QT_QPA_PLATFORM", "eglfs");
@@ -98,7 +122,7 @@ std::optional<std::string> prepareOffscreenPlatform() {
     g_withoutDisplay = true;
     return std::nullopt;
 #else
-    return "this build of ensil has no EGL";
+    return why + ", and this build of ensil has no EGL";
 #endif
 }
 

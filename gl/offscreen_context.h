@@ -14,9 +14,10 @@ class QOpenGLContext;
 
 namespace ensil::gl {
 
-// Whether Qt will find a display server for windows: on Linux, DISPLAY or WAYLAND_DISPLAY is
-// set (or the user chose a platform through QT_QPA_PLATFORM); elsewhere, always.
-bool displayServerAvailable();
+// Whether Qt will find a display server for windows: on Linux, WAYLAND_DISPLAY is set, or the
+// X display DISPLAY names answers (or the user chose a platform through QT_QPA_PLATFORM);
+// elsewhere, always. When not, `why` (if given) says what is missing.
+bool displayServerAvailable(std::string* why = nullptr);
 
 // Call before the QGuiApplication exists. With a display server (or a platform the user chose
 // through QT_QPA_PLATFORM) it changes nothing and returns nothing. Without one, it checks that

@@ -16,8 +16,9 @@ packages=(
     libnetcdf-dev netcdf-bin libhdf5-dev hdf5-tools libvtk9-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
-    # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering
-    xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev
+    # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
+    # that an X display answers before Qt is started on it
+    xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev libxcb1-dev
     # packages and desktop integration: dpkg-shlibdeps for CPack's Debian dependencies, the
     # validators of the desktop entry, AppStream metadata and MIME type, and the package checks
     # (x11-utils: xwininfo and xprop read the workbench window's icon)

@@ -1,8 +1,8 @@
 // `ensil render` on a machine with no display server at all, as on a batch node: the real
 // executable, started without DISPLAY or WAYLAND_DISPLAY, draws through Mesa's EGL surfaceless
-// platform, and its picture matches the one drawn under the test's X server. Also the messages
-// and exit status when EGL cannot render without a display either, and when the workbench is
-// started with no display.
+// platform, and its picture matches the one drawn under the test's X server; so does one
+// started with a DISPLAY that does not answer. Also the messages and exit status when EGL cannot
+// render without a display either, and when the workbench is started with no display.
 #include <gtest/gtest.h>
 
 #include <QImage>
@@ -33,9 +33,11 @@ struct RenderRun {
 };
 
 // Runs `ensil render` on era5_eda_members.nc into `png`, with or without a display server.
-RenderRun renderEra5(const QString& png, bool withDisplay, const QString& eglPlatform = {}) {
+RenderRun renderEra5(const QString& png, bool withDisplay, const QString& eglPlatform = {},
+                     const QString& staleDisplay = {}) {
     QProcessEnvironment environment =
         withDisplay ? QProcessEnvironment::systemEnvironment() : withoutDisplay();
+    if (!staleDisplay.isEmpty()) environment.insert(QStringLiteral("DISPLAY"), staleDisplay);
     if (!eglPlatform.isEmpty()) environment.insert(QStringLiteral("EGL_PLATFORM"), eglPlatform);
     const QString era5 = QStringLiteral(ENSIL_SHARED_DATA_DIR) + "/era5_eda_members.nc";
     QProcess process;
@@ -79,26 +81,44 @@ TEST(HeadlessRender, DrawsWithNoDisplayServerLikeUnderOne) {
     withoutDisplay.save(test::testOutputDir() + "/headless_render_era5.png");
 }
 
+TEST(HeadlessRender, ADisplayThatDoesNotAnswerIsPassedOverForEgl) {
+    // A DISPLAY left behind by an ssh -X session that ended: nothing listens at :987.
+    test::TempDir dir;
+    const QString png = QString::fromStdString(dir.file("stale.png"));
+    const RenderRun run = renderEra5(png, false, {}, QStringLiteral(":987"));
+    ASSERT_EQ(run.exitCode, 0) << run.errors.toStdString();
+    EXPECT_EQ(run.json["display"].toString(), QStringLiteral("none (EGL surfaceless)"));
+    EXPECT_EQ(QImage(png).size(), QSize(320, 240));
+}
+
 TEST(HeadlessRender, SaysWhatToDoWhenEglCannotRenderWithoutADisplay) {
     test::TempDir dir;
     // EGL's X11 platform needs the display server that is not there.
     const RenderRun run = renderEra5(QString::fromStdString(dir.file("none.png")), false, "x11");
     EXPECT_EQ(run.exitCode, 4);
-    EXPECT_TRUE(run.errors.contains(QLatin1String("there is no display server")))
+    EXPECT_TRUE(run.errors.contains(QLatin1String("no display server")))
         << run.errors.toStdString();
     EXPECT_TRUE(run.errors.contains(QLatin1String("xvfb-run -a ensil render")))
         << run.errors.toStdString();
 }
 
 TEST(HeadlessRender, TheWorkbenchSaysItNeedsADisplayServer) {
-    QProcess process;
-    process.setProcessEnvironment(withoutDisplay());
-    process.start(QStringLiteral(ENSIL_EXECUTABLE), QStringList{});
-    ASSERT_TRUE(process.waitForFinished(60000));
-    const QString errors = QString::fromLocal8Bit(process.readAllStandardError());
-    EXPECT_EQ(process.exitStatus(), QProcess::NormalExit) << "no abort inside Qt";
-    EXPECT_EQ(process.exitCode(), 4);
-    EXPECT_TRUE(errors.contains(QLatin1String("the workbench needs a display server")))
-        << errors.toStdString();
-    EXPECT_TRUE(errors.contains(QLatin1String("xvfb-run -a ensil"))) << errors.toStdString();
+    for (const QString& display : {QString(), QStringLiteral(":987")}) {
+        QProcessEnvironment environment = withoutDisplay();
+        if (!display.isEmpty()) environment.insert(QStringLiteral("DISPLAY"), display);
+        QProcess process;
+        process.setProcessEnvironment(environment);
+        process.start(QStringLiteral(ENSIL_EXECUTABLE), QStringList{});
+        ASSERT_TRUE(process.waitForFinished(60000));
+        const QString errors = QString::fromLocal8Bit(process.readAllStandardError());
+        EXPECT_EQ(process.exitStatus(), QProcess::NormalExit) << "no abort inside Qt";
+        EXPECT_EQ(process.exitCode(), 4);
+        EXPECT_TRUE(errors.contains(QLatin1String("the workbench needs a display server")))
+            << errors.toStdString();
+        const QString reason = display.isEmpty()
+                                   ? QStringLiteral("DISPLAY and WAYLAND_DISPLAY are empty")
+                                   : QStringLiteral("':987' (DISPLAY) does not answer");
+        EXPECT_TRUE(errors.contains(reason)) << errors.toStdString();
+        EXPECT_TRUE(errors.contains(QLatin1String("xvfb-run -a ensil"))) << errors.toStdString();
+    }
 }
