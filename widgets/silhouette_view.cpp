@@ -234,7 +234,7 @@ void SilhouetteView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void SilhouetteView::pickHovered() {
-    if (!underMouse()) return;
+    // No need to ask whether the pointer is still here: leaving the view stops the timer.
     const gl::PickResult hit = pickAt(m_hoverPosition);
     setHovered(hit.member, m_hoverPosition, hit.cluster);
 }

@@ -9,6 +9,7 @@
 #include <QTest>
 
 #include "tests/gl/sphere_scene.h"
+#include "tests/widgets/panel_fixtures.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -99,7 +100,7 @@ TEST_F(ViewPicking, ARestingCursorHighlightsTheMemberUnderIt) {
     QSignalSpy hovered(&m_view, &ui::SilhouetteView::memberHovered);
     const QPoint rim = at({22 + 7.9F, 15.5F, 15.5F});
     const QImage before = m_view.grabFramebuffer();
-    QTest::mouseMove(&m_view, rim);
+    test::moveMouse(&m_view, rim);  // not the display's real pointer: tests share the display
     ASSERT_TRUE(hovered.wait(2000));
     EXPECT_EQ(hovered.last()[0].toInt(), 1);
     EXPECT_EQ(m_view.renderer().highlightedMember(), 1);
@@ -113,7 +114,7 @@ TEST_F(ViewPicking, ARestingCursorHighlightsTheMemberUnderIt) {
         }
     EXPECT_GT(redAfter, redBefore + 100) << "the hovered silhouette should be mixed toward white";
 
-    QTest::mouseMove(&m_view, QPoint(3, 3));
+    test::moveMouse(&m_view, QPoint(3, 3));
     ASSERT_TRUE(hovered.wait(2000));
     EXPECT_EQ(hovered.last()[0].toInt(), -1);
     EXPECT_EQ(m_view.renderer().highlightedMember(), -1);
