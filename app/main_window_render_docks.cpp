@@ -8,6 +8,7 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalBlocker>
+#include <QSlider>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -57,6 +58,14 @@ void MainWindow::createRenderDocks() {
         tabifyDockWidget(clusters, renderDock);
         tabifyDockWidget(renderDock, planeDock);
         clusters->raise();
+    }
+
+    // Dragging a slider (the plane's position) redraws the view continuously, like moving the
+    // camera: the view draws those frames as it draws camera motion.
+    for (QSlider* slider :
+         m_planePanel->findChildren<QSlider*>() + m_renderPanel->findChildren<QSlider*>()) {
+        connect(slider, &QSlider::sliderPressed, m_view, &ui::SilhouetteView::beginInteraction);
+        connect(slider, &QSlider::sliderReleased, m_view, &ui::SilhouetteView::endInteraction);
     }
 
     restoreRenderSettings();

@@ -53,8 +53,9 @@ public:
     void setAdaptiveResolution(bool on);
     [[nodiscard]] bool adaptiveResolution() const { return m_adaptiveResolution; }
     void setMotionFrameBudget(double milliseconds) { m_motionBudgetMs = milliseconds; }
-    // Whether the camera is moving now (a drag, or wheel turns in quick succession).
-    [[nodiscard]] bool cameraMoving() const { return m_moving; }
+    // Whether the picture is in motion now: the camera moves (a drag, or wheel turns in quick
+    // succession), or a control is being dragged (beginInteraction).
+    [[nodiscard]] bool inMotion() const { return m_moving; }
     static constexpr double kDefaultMotionBudgetMs = 33.0;
 
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
@@ -72,6 +73,10 @@ public:
 
 public slots:
     void resetCamera();
+    // Another control changes the picture continuously (a slider being dragged): its frames are
+    // drawn as camera motion is, until it ends.
+    void beginInteraction() { m_moving = true; }
+    void endInteraction() { stopMoving(); }
 
 signals:
     // Emitted once when the view cannot render (no OpenGL 4.1 core, a shader that fails).

@@ -5,6 +5,7 @@
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTest>
 
 #include "app/isovalue_session.h"
@@ -101,4 +102,16 @@ TEST(MainWindowRenderDocks, LowerResolutionWhileMovingIsAViewOptionRememberedNex
     EXPECT_FALSE(option->isChecked());
     EXPECT_FALSE(again.view()->adaptiveResolution());
     QSettings().remove(QStringLiteral("view/adaptiveResolution"));
+}
+
+TEST(MainWindowRenderDocks, DraggingThePlaneSliderDrawsLikeCameraMotion) {
+    app::MainWindow window;
+    QSlider* position = window.findChild<ui::CuttingPlanePanel*>()->findChild<QSlider*>();
+    ASSERT_NE(position, nullptr);
+    ui::SilhouetteView* view = window.view();
+    EXPECT_FALSE(view->inMotion());
+    position->setSliderDown(true);  // what a press on the handle does
+    EXPECT_TRUE(view->inMotion());
+    position->setSliderDown(false);
+    EXPECT_FALSE(view->inMotion()) << "the frame after the drag is a still one";
 }

@@ -136,7 +136,7 @@ TEST_F(ShownView, MovingTheCameraOnASlowRendererLowersTheResolutionUntilItStops)
     QMouseEvent move(QEvent::MouseMove, to, m_view.mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
                      {});
     QApplication::sendEvent(&m_view, &move);
-    EXPECT_TRUE(m_view.cameraMoving());
+    EXPECT_TRUE(m_view.inMotion());
     (void)m_view.grabFramebuffer();
     EXPECT_EQ(m_view.renderer().resolutionScale(), gl::Renderer::kMinimumResolutionScale);
     const glm::ivec2 full(m_view.width() * m_view.devicePixelRatioF(),
@@ -146,7 +146,7 @@ TEST_F(ShownView, MovingTheCameraOnASlowRendererLowersTheResolutionUntilItStops)
     QMouseEvent release(QEvent::MouseButtonRelease, to, m_view.mapToGlobal(to), Qt::LeftButton, {},
                         {});
     QApplication::sendEvent(&m_view, &release);
-    EXPECT_FALSE(m_view.cameraMoving());
+    EXPECT_FALSE(m_view.inMotion());
     (void)m_view.grabFramebuffer();
     EXPECT_EQ(m_view.renderer().sceneSize(), full) << "the still frame is full resolution";
 
@@ -154,10 +154,10 @@ TEST_F(ShownView, MovingTheCameraOnASlowRendererLowersTheResolutionUntilItStops)
     QWheelEvent wheel(QPointF(200, 150), m_view.mapToGlobal(QPointF(200, 150)), QPoint(),
                       QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
     QApplication::sendEvent(&m_view, &wheel);
-    EXPECT_TRUE(m_view.cameraMoving());
+    EXPECT_TRUE(m_view.inMotion());
     (void)m_view.grabFramebuffer();
     EXPECT_LT(m_view.renderer().resolutionScale(), 1.0F);
-    EXPECT_TRUE(QTest::qWaitFor([&] { return !m_view.cameraMoving(); }, 2000));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !m_view.inMotion(); }, 2000));
     (void)m_view.grabFramebuffer();
     EXPECT_EQ(m_view.renderer().sceneSize(), full);
 }
@@ -172,7 +172,7 @@ TEST_F(ShownView, MotionKeepsFullResolutionWhenFramesAreFastOrTheOptionIsOff) {
                      Qt::NoButton, Qt::LeftButton, {});
     QApplication::sendEvent(&m_view, &move);
     (void)m_view.grabFramebuffer();
-    EXPECT_TRUE(m_view.cameraMoving());
+    EXPECT_TRUE(m_view.inMotion());
     EXPECT_EQ(m_view.renderer().resolutionScale(), 1.0F);
 
     m_view.setMotionFrameBudget(0.001);
