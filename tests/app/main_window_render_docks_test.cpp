@@ -106,7 +106,7 @@ TEST(MainWindowRenderDocks, LowerResolutionWhileMovingIsAViewOptionRememberedNex
 
 TEST(MainWindowRenderDocks, DraggingThePlaneSliderDrawsLikeCameraMotion) {
     app::MainWindow window;
-    QSlider* position = window.findChild<ui::CuttingPlanePanel*>()->findChild<QSlider*>();
+    auto* position = window.findChild<ui::CuttingPlanePanel*>()->findChild<QSlider*>();
     ASSERT_NE(position, nullptr);
     ui::SilhouetteView* view = window.view();
     EXPECT_FALSE(view->inMotion());
