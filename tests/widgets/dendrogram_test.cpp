@@ -37,6 +37,17 @@ void showAndWait(QWidget& w) {
     w.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
 }
+
+// A dendrogram view of the two groups, shown.
+class ShownDendrogram : public ::testing::Test {
+protected:
+    void SetUp() override {
+        test::loadTwoGroups(s);
+        showAndWait(view);
+    }
+    ui::MemberSelection s;
+    ui::DendrogramView view{&s};
+};
 }  // namespace
 
 TEST(DendrogramLayout, PlacesLeavesInTreeOrderAndMergesBetweenTheirChildren) {
@@ -120,11 +131,7 @@ TEST(DendrogramLayout, FindsTheBranchUnderAPoint) {
     EXPECT_EQ(ui::nodeAt(layout, frame, bar + QPointF(-100, 2)), group);
 }
 
-TEST(DendrogramView, ClickingABranchSelectsItsMembers) {
-    ui::MemberSelection s;
-    ui::DendrogramView view(&s);
-    test::loadTwoGroups(s);
-    showAndWait(view);
+TEST_F(ShownDendrogram, ClickingABranchSelectsItsMembers) {
     const auto& layout = view.layout();
     const ui::DendrogramFrame frame = view.frame();
     const int group = mergeOf(layout, {1, 3, 5});
@@ -141,11 +148,7 @@ TEST(DendrogramView, ClickingABranchSelectsItsMembers) {
     EXPECT_TRUE(s.selectedMembers().isEmpty()) << "a click on empty space clears";
 }
 
-TEST(DendrogramView, DraggingTheCutLineSetsTheNumberOfClustersLive) {
-    ui::MemberSelection s;
-    ui::DendrogramView view(&s);
-    test::loadTwoGroups(s, 2);
-    showAndWait(view);
+TEST_F(ShownDendrogram, DraggingTheCutLineSetsTheNumberOfClustersLive) {
     const auto& layout = view.layout();
     const ui::DendrogramFrame frame = view.frame();
     const int x = static_cast<int>(frame.plot.right()) - 10;
@@ -162,11 +165,7 @@ TEST(DendrogramView, DraggingTheCutLineSetsTheNumberOfClustersLive) {
     EXPECT_TRUE(s.selectedMembers().isEmpty()) << "dragging the line selects nothing";
 }
 
-TEST(DendrogramView, TellsTheMergeHeightUnderThePointer) {
-    ui::MemberSelection s;
-    ui::DendrogramView view(&s);
-    test::loadTwoGroups(s);
-    showAndWait(view);
+TEST_F(ShownDendrogram, TellsTheMergeHeightUnderThePointer) {
     const auto& layout = view.layout();
     const ui::DendrogramFrame frame = view.frame();
     const int pair = mergeOf(layout, {1, 3});
@@ -213,11 +212,7 @@ TEST(DendrogramView, TheWheelZoomsAroundThePointer) {
     EXPECT_GT(view.horizontalScrollBar()->maximum(), 0) << "the zoomed tree scrolls";
 }
 
-TEST(DendrogramView, ShowsSelectedMembersUnderTheirLeaves) {
-    ui::MemberSelection s;
-    ui::DendrogramView view(&s);
-    test::loadTwoGroups(s);
-    showAndWait(view);
+TEST_F(ShownDendrogram, ShowsSelectedMembersUnderTheirLeaves) {
     s.setSelection({3});
     QTest::qWait(20);
     const QImage image = view.viewport()->grab().toImage();

@@ -25,6 +25,19 @@ QList<int> selectedTableMembers(const ui::MemberTablePanel& panel) {
     std::sort(members.begin(), members.end());
     return members;
 }
+
+// The member table panel of the two groups, shown.
+class ShownMemberTable : public ::testing::Test {
+protected:
+    void SetUp() override {
+        test::loadTwoGroups(s);
+        panel.resize(500, 300);
+        panel.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    }
+    ui::MemberSelection s;
+    ui::MemberTablePanel panel{&s};
+};
 }  // namespace
 
 // A model that breaks the contract: a table whose cells claim children.
@@ -152,13 +165,7 @@ TEST(MemberFilterProxy, FiltersByNameOrIndex) {
     EXPECT_EQ(proxy.rowCount(), 12);
 }
 
-TEST(MemberTablePanel, SelectingRowsSelectsMembersAndTheOtherWayRound) {
-    ui::MemberSelection s;
-    ui::MemberTablePanel panel(&s);
-    test::loadTwoGroups(s);
-    panel.resize(500, 300);
-    panel.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+TEST_F(ShownMemberTable, SelectingRowsSelectsMembersAndTheOtherWayRound) {
     // Sorted by distance to the mean, descending: row 0 is member 5 (12.0).
     panel.table()->sortByColumn(MemberTableModel::DistanceToMean, Qt::DescendingOrder);
     ASSERT_EQ(panel.memberAtRow(0), 5);
@@ -186,13 +193,7 @@ TEST(MemberTablePanel, SelectingRowsSelectsMembersAndTheOtherWayRound) {
     EXPECT_EQ(selectedTableMembers(panel), (QList<int>{0, 2, 4}));
 }
 
-TEST(MemberTablePanel, HoveringARowHoversItsMember) {
-    ui::MemberSelection s;
-    ui::MemberTablePanel panel(&s);
-    test::loadTwoGroups(s);
-    panel.resize(500, 300);
-    panel.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+TEST_F(ShownMemberTable, HoveringARowHoversItsMember) {
     const QRect row3 = panel.table()->visualRect(panel.proxy()->index(3, MemberTableModel::Name));
     test::moveMouse(panel.table()->viewport(), row3.center());
     EXPECT_EQ(s.hovered(), panel.memberAtRow(3));
