@@ -22,10 +22,8 @@ using namespace ensil;
 TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(1000, 700);
-    window.show();
-    window.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&window)) << "shortcuts need an active window";
+    ASSERT_TRUE(test::showActiveWorkbench(window, {1000, 700}))
+        << "shortcuts need an active window";
     ASSERT_TRUE(
         test::loadDemoAndWait(window, {.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4}));
     gl::Renderer& renderer = window.view()->renderer();

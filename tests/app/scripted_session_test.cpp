@@ -38,10 +38,7 @@ void typeIsovalue(app::MainWindow& window, double value) {
 TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(1400, 900);
-    window.show();
-    window.activateWindow();
-    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    ASSERT_TRUE(test::showActiveWorkbench(window, {1400, 900}));
     app::IsovalueSession& session = *window.isovalueSession();
     QSignalSpy built(&session, &app::IsovalueSession::finished);
     QSignalSpy failed(&session, &app::IsovalueSession::failed);

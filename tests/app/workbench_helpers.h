@@ -19,6 +19,14 @@ namespace ensil::test {
     return QTest::qWaitForWindowExposed(&window);
 }
 
+// Shows the window at this size and makes it the active one, which keyboard shortcuts need;
+// false when it never became active.
+[[nodiscard]] inline bool showActiveWorkbench(app::MainWindow& window, QSize size) {
+    if (!showWorkbench(window, size)) return false;
+    window.activateWindow();
+    return QTest::qWaitForWindowActive(&window);
+}
+
 // Loads the demo and waits until its first surfaces are built; false when they never came.
 [[nodiscard]] inline bool loadDemoAndWait(app::MainWindow& window,
                                           const data::DemoEnsembleParams& params,
