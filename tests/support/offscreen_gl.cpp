@@ -1,28 +1,23 @@
 #include "tests/support/offscreen_gl.h"
 
+#include <QOpenGLContext>
 #include <cstdlib>
-
-#include "gl/surface_format.h"
+#include <exception>
 
 namespace ensil::test {
 
 void OffscreenGlTest::SetUp() {
-    const QSurfaceFormat format = gl::preferredSurfaceFormat();
-    m_surface = std::make_unique<QOffscreenSurface>();
-    m_surface->setFormat(format);
-    m_surface->create();
-    m_context = std::make_unique<QOpenGLContext>();
-    m_context->setFormat(format);
     QString problem;
-    if (!m_context->create()) {
-        problem = QStringLiteral("cannot create an OpenGL context");
-    } else if (m_context->format().version() < qMakePair(4, 1) ||
-               m_context->format().profile() != QSurfaceFormat::CoreProfile) {
-        problem = QStringLiteral("the OpenGL context is %1.%2, not 4.1 core")
-                      .arg(m_context->format().majorVersion())
-                      .arg(m_context->format().minorVersion());
-    } else if (!m_context->makeCurrent(m_surface.get())) {
-        problem = QStringLiteral("cannot make the OpenGL context current");
+    try {
+        m_context = std::make_unique<gl::OffscreenContext>();
+        const QSurfaceFormat format = m_context->context().format();
+        if (format.version() < qMakePair(4, 1) || format.profile() != QSurfaceFormat::CoreProfile) {
+            problem = QStringLiteral("the OpenGL context is %1.%2, not 4.1 core")
+                          .arg(format.majorVersion())
+                          .arg(format.minorVersion());
+        }
+    } catch (const std::exception& e) {
+        problem = QString::fromUtf8(e.what());
     }
     if (!problem.isEmpty()) {
         if (std::getenv("CI") != nullptr) {
@@ -38,10 +33,8 @@ void OffscreenGlTest::SetUp() {
 }
 
 void OffscreenGlTest::TearDown() {
-    if (m_context && QOpenGLContext::currentContext() == m_context.get()) {
-        m_fbo.reset();
-        m_context->doneCurrent();
-    }
+    m_fbo.reset();  // while its context is current
+    m_context.reset();
 }
 
 unsigned OffscreenGlTest::framebuffer() {

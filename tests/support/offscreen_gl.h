@@ -1,16 +1,17 @@
-// A GoogleTest fixture with an OpenGL 4.1 core context current on an offscreen surface and a
-// multisampled framebuffer object of fixed size to draw into. Works under Xvfb with Mesa's
-// llvmpipe. When no context can be made the test fails if the CI environment variable is set
-// (CI must never silently skip GL tests) and is skipped, with the reason, otherwise.
+// A GoogleTest fixture with the product's OpenGL 4.1 core offscreen context (gl::OffscreenContext,
+// as `ensil render` uses) current and a multisampled framebuffer object of fixed size to draw into.
+// Works under Xvfb with Mesa's llvmpipe. When no context can be made the test fails if the CI
+// environment variable is set (CI must never silently skip GL tests) and is skipped, with the
+// reason, otherwise.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <QImage>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
 #include <memory>
+
+#include "gl/offscreen_context.h"
 
 namespace ensil::test {
 
@@ -27,8 +28,7 @@ protected:
     // The framebuffer's pixels (resolved from multisampling).
     QImage grab();
 
-    std::unique_ptr<QOffscreenSurface> m_surface;
-    std::unique_ptr<QOpenGLContext> m_context;
+    std::unique_ptr<gl::OffscreenContext> m_context;
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
 };
 
