@@ -10,7 +10,7 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
                                        const prep::Progress& progress) {
     EnsembleOverview overview;
     overview.statistics = prep::computeFieldStatistics(
-        *ensemble, 128, stop, [&](double f) { prep::report(progress, 0.5 * f); });
+        *ensemble, prep::kIsovalueHistogramBins, stop, [&](double f) { prep::report(progress, 0.5 * f); });
     if (overview.statistics.validCount == 0) {
         throw data::Error(data::ErrorKind::AllValuesMissing,
                           "every value of '" + ensemble->variable + "' in " + ensemble->source +

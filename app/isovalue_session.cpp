@@ -3,27 +3,11 @@
 #include <QElapsedTimer>
 #include <numeric>
 
-#include "app/isovalue_job.h"
-#include "preprocessing/member_summaries.h"
+#include "app/headless/isovalue_job.h"
 #include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
-
-float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum) {
-    const std::uint64_t total =
-        std::accumulate(histogram.begin(), histogram.end(), std::uint64_t{0});
-    if (total == 0 || histogram.empty()) return 0.5F * (minimum + maximum);
-    std::uint64_t running = 0;
-    for (std::size_t b = 0; b < histogram.size(); ++b) {
-        running += histogram[b];
-        if (static_cast<double>(running) >= 0.9 * static_cast<double>(total)) {
-            const double t = (static_cast<double>(b) + 0.5) / static_cast<double>(histogram.size());
-            return static_cast<float>(minimum + t * (maximum - minimum));
-        }
-    }
-    return maximum;
-}
 
 IsovalueSession::IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* selection,
                                  QString cacheDirectory, QObject* parent)
@@ -91,12 +75,8 @@ void IsovalueSession::setIsovalue(float isovalue) {
             r.meshes = std::move(set);
             r.distances = std::move(outcome.distances);
             r.tree = std::move(outcome.tree);
-            const auto& mean = moments->mean.values;
-            r.distancesToMean =
-                prep::distancesToField(*ensemble, {mean.data(), mean.size()}, isovalue, stop);
-            for (const data::PackedMesh& mesh : r.meshes->members) {
-                r.meanOutlyingness.push_back(prep::meanOutlyingness(mesh));
-            }
+            r.distancesToMean = std::move(outcome.distancesToMean);
+            r.meanOutlyingness = std::move(outcome.meanOutlyingness);
             r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
             return r;
         },

@@ -78,8 +78,4 @@ private:
     BackgroundJob<IsovalueResult> m_job{this};
 };
 
-// An isovalue worth looking at first: the 90th percentile of the values (for the demo's wind
-// speed about the paper's 30 m/s), from a histogram over [minimum, maximum].
-float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum);
-
 }  // namespace ensil::app

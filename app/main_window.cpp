@@ -22,7 +22,7 @@
 #include "app/ensemble_facts.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
-#include "app/project_renderer.h"
+#include "app/headless/session_renderer.h"
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
@@ -377,7 +377,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_info->showFacts(describeEnsemble(*m_overview));
     // Show isosurfaces right away, at an isovalue worth looking at.
     const prep::FieldStatistics& stats = m_overview->statistics;
-    float iso = defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+    float iso = prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
     int clusters = std::min<int>(5, static_cast<int>(e.memberCount()));
     if (m_pendingProject) {
         applyPendingProjectView();
@@ -388,7 +388,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_view->setMemberNames(memberNames());
     if (m_pendingProject) {
         m_session->setClusterCount(clusters);
-        const prep::Linkage linkage = prep::parseLinkage(m_pendingProject->linkage);
+        const prep::Linkage linkage = m_pendingProject->linkage;
         m_session->setLinkage(linkage);
         m_clusterPanel->setLinkage(linkage);
     }

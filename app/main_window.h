@@ -13,10 +13,10 @@
 
 #include "app/background_job.h"
 #include "app/ensemble_overview.h"
-#include "app/project.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
+#include "widgets/session/session_state.h"
 
 class QProgressBar;
 class QToolButton;
@@ -85,7 +85,8 @@ public:
     // changes nothing when it is refused; projectOpened() follows once it is applied.
     bool openProject(const QString& path);
     bool saveProjectTo(const QString& path, QString* error = nullptr);
-    [[nodiscard]] Project captureProject() const;
+    // The session on screen, as a project saves it.
+    [[nodiscard]] session::SessionState captureSession() const;
     [[nodiscard]] QString projectPath() const { return m_projectPath; }
     // Who is asked where a project's missing data file went (a file dialog by default);
     // an empty answer cancels opening.
@@ -184,7 +185,7 @@ private:
     std::optional<data::DataSelection> m_shownSelection;
     std::optional<data::DemoEnsembleParams> m_shownDemo;
     // A project being opened: applied when its data has loaded and its surfaces are built.
-    std::unique_ptr<Project> m_pendingProject;
+    std::unique_ptr<session::SessionState> m_pendingProject;
     QString m_pendingProjectPath;
     QString m_projectPath;
     QMenu* m_recentProjectsMenu = nullptr;

@@ -2,6 +2,7 @@
 // (validated whole first, missing data files located by the user, then applied once its data
 // has loaded), saving (atomic), and the recent projects menu.
 #include <QFileDialog>
+#include <algorithm>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
@@ -10,7 +11,6 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/project.h"
 #include "app/project_members.h"
 #include "preprocessing/clustering.h"
 #include "widgets/cluster_panel.h"
@@ -18,6 +18,7 @@
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/project_file.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -68,8 +69,8 @@ void MainWindow::saveProjectReporting(const QString& path) {
     if (!saveProjectTo(path, &error)) QMessageBox::warning(this, tr("Project not saved"), error);
 }
 
-Project MainWindow::captureProject() const {
-    Project p;
+session::SessionState MainWindow::captureSession() const {
+    session::SessionState p;
     if (m_shownDemo) {
         p.demo = true;
         p.demoParams = *m_shownDemo;
@@ -79,15 +80,16 @@ Project MainWindow::captureProject() const {
     gl::Renderer& renderer = m_view->renderer();
     if (m_session->result() != nullptr) p.isovalue = static_cast<float>(m_toolbar->isovalue());
     const gl::Camera& camera = renderer.camera();
-    p.camera =
-        ProjectCamera{camera.azimuth(), camera.elevation(), camera.distance(), camera.target(),
-                      camera.projection() == gl::Camera::Projection::Orthographic};
+    p.camera.azimuth = camera.azimuth();
+    p.camera.elevation = camera.elevation();
+    p.camera.orthographic = camera.projection() == gl::Camera::Projection::Orthographic;
+    p.camera.placement = session::CameraState::Placement{camera.distance(), camera.target()};
     p.render = renderer.settings();
     p.verticalExaggeration = renderer.frame().verticalExaggeration();
     const QColor bg = m_renderPanel->background();
     p.background = {bg.redF(), bg.greenF(), bg.blueF()};
     p.clusters = m_selection->requestedClusterCount();
-    p.linkage = prep::linkageName(m_session->linkage());
+    p.linkage = m_session->linkage();
     for (int m = 0; m < m_selection->memberCount(); ++m) {
         if (!m_selection->isMemberVisible(m)) p.hiddenMembers.push_back(m);
     }
@@ -104,8 +106,8 @@ bool MainWindow::saveProjectTo(const QString& path, QString* error) {
         return false;
     }
     try {
-        saveProject(captureProject(), path);
-    } catch (const ProjectError& e) {
+        session::saveProject(captureSession(), path);
+    } catch (const session::ProjectError& e) {
         if (error != nullptr) *error = QString::fromStdString(e.what());
         return false;
     }
@@ -117,10 +119,10 @@ bool MainWindow::saveProjectTo(const QString& path, QString* error) {
 }
 
 bool MainWindow::openProject(const QString& path) {
-    Project project;
+    session::SessionState project;
     try {
-        project = loadProject(path);
-    } catch (const ProjectError& e) {
+        project = session::loadProject(path);
+    } catch (const session::ProjectError& e) {
         const QString message = QString::fromStdString(e.what());
         auto* box =
             new QMessageBox(QMessageBox::Warning, tr("Cannot open the project"),
@@ -146,7 +148,7 @@ bool MainWindow::openProject(const QString& path) {
         file = found.toStdString();
     }
     QSettings().setValue("project/lastFolder", QFileInfo(path).absolutePath());
-    m_pendingProject = std::make_unique<Project>(project);
+    m_pendingProject = std::make_unique<session::SessionState>(project);
     m_pendingProjectPath = path;
     if (!project.windowState.isEmpty()) restoreState(project.windowState);
     if (project.demo) {
@@ -168,7 +170,7 @@ QString MainWindow::locateMissingFileWithDialog(const QString& missing) {
 
 void MainWindow::applyPendingProjectView() {
     if (!m_pendingProject) return;
-    const Project& p = *m_pendingProject;
+    const session::SessionState& p = *m_pendingProject;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setVerticalExaggeration(p.verticalExaggeration);
     m_renderPanel->setVerticalExaggeration(p.verticalExaggeration);
@@ -176,14 +178,18 @@ void MainWindow::applyPendingProjectView() {
     m_renderPanel->setSettings(p.render);
     m_renderPanel->setBackground(QColor::fromRgbF(p.background.r, p.background.g, p.background.b));
     renderer.setBackground({p.background, 1.0F});
-    if (p.camera) {
-        gl::Camera& camera = renderer.camera();
-        camera.setAngles(p.camera->azimuth, p.camera->elevation);
-        camera.setTarget(p.camera->target);
-        camera.setDistance(p.camera->distance);
-        camera.setProjection(p.camera->orthographic ? gl::Camera::Projection::Orthographic
-                                                    : gl::Camera::Projection::Perspective);
-        m_renderPanel->setOrthographic(p.camera->orthographic);
+    gl::Camera& camera = renderer.camera();
+    camera.setAngles(p.camera.azimuth, p.camera.elevation);
+    camera.setProjection(p.camera.orthographic ? gl::Camera::Projection::Orthographic
+                                               : gl::Camera::Projection::Perspective);
+    m_renderPanel->setOrthographic(p.camera.orthographic);
+    if (p.camera.placement) {
+        camera.setTarget(p.camera.placement->target);
+        camera.setDistance(p.camera.placement->distance);
+    } else {
+        camera.frameBox(renderer.frame().boxMin(), renderer.frame().boxMax(),
+                        static_cast<float>(m_view->width()) /
+                            static_cast<float>(std::max(1, m_view->height())));
     }
     updatePlaneBox();
     m_planePanel->setPlane(p.render.plane);
@@ -192,7 +198,7 @@ void MainWindow::applyPendingProjectView() {
 
 void MainWindow::applyPendingProjectMembers() {
     if (!m_pendingProject) return;
-    const Project p = *m_pendingProject;
+    const session::SessionState p = *m_pendingProject;
     m_pendingProject.reset();
     applyProjectMembers(p, *m_selection);
     m_projectPath = m_pendingProjectPath;

@@ -16,6 +16,7 @@
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/remembered_settings.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -126,50 +127,28 @@ void MainWindow::createRenderDocks() {
 }
 
 void MainWindow::restoreRenderSettings() {
-    // How the user last drew things; the cutting plane and exaggeration belong to the data.
-    QSettings settings;
-    settings.beginGroup(QStringLiteral("rendering"));
-    gl::RenderSettings& r = m_view->renderer().settings();
-    gl::RenderSettings saved = r;
-    const int mode = settings.value(QStringLiteral("mode"), static_cast<int>(r.mode)).toInt();
-    if (mode >= 0 && mode <= static_cast<int>(gl::RenderMode::OpaqueSurfaces)) {
-        saved.mode = static_cast<gl::RenderMode>(mode);
-    }
-    saved.thickness = settings.value(QStringLiteral("thickness"), r.thickness).toFloat();
-    saved.surfaceAlpha = settings.value(QStringLiteral("opacity"), r.surfaceAlpha).toFloat();
-    saved.showMean = settings.value(QStringLiteral("mean"), r.showMean).toBool();
-    saved.showAxes = settings.value(QStringLiteral("axes"), r.showAxes).toBool();
-    saved.showLegend = settings.value(QStringLiteral("legend"), r.showLegend).toBool();
-    saved.groupSize = settings.value(QStringLiteral("groupSize"), r.groupSize).toInt();
-    // Through the panel, whose controls hold values to their ranges (a hand-edited file).
-    m_renderPanel->setSettings(saved);
-    r = m_renderPanel->applyTo(r);
-    const auto background =
-        settings.value(QStringLiteral("background"), m_renderPanel->background()).value<QColor>();
-    if (background.isValid()) {
-        m_renderPanel->setBackground(background);
-        m_view->renderer().setBackground(
-            {background.redF(), background.greenF(), background.blueF(), 1.0F});
-    }
-    const bool orthographic = settings.value(QStringLiteral("orthographic"), false).toBool();
-    m_renderPanel->setOrthographic(orthographic);
-    m_view->renderer().camera().setProjection(orthographic ? gl::Camera::Projection::Orthographic
-                                                           : gl::Camera::Projection::Perspective);
+    // How the user last drew things (the remembered settings of the setting table); the cutting
+    // plane and exaggeration belong to the data.
+    gl::Renderer& renderer = m_view->renderer();
+    session::SessionState state;
+    state.render = renderer.settings();
+    const QColor shown = m_renderPanel->background();
+    state.background = {shown.redF(), shown.greenF(), shown.blueF()};
+    session::restoreRemembered(QSettings(), state);
+    renderer.settings() = state.render;
+    m_renderPanel->setSettings(state.render);
+    m_renderPanel->setBackground(
+        QColor::fromRgbF(state.background.r, state.background.g, state.background.b));
+    renderer.setBackground({state.background, 1.0F});
+    m_renderPanel->setOrthographic(state.camera.orthographic);
+    renderer.camera().setProjection(state.camera.orthographic
+                                        ? gl::Camera::Projection::Orthographic
+                                        : gl::Camera::Projection::Perspective);
 }
 
 void MainWindow::rememberRenderSettings() const {
     QSettings settings;
-    settings.beginGroup(QStringLiteral("rendering"));
-    const gl::RenderSettings& r = m_view->renderer().settings();
-    settings.setValue(QStringLiteral("mode"), static_cast<int>(r.mode));
-    settings.setValue(QStringLiteral("thickness"), r.thickness);
-    settings.setValue(QStringLiteral("opacity"), r.surfaceAlpha);
-    settings.setValue(QStringLiteral("mean"), r.showMean);
-    settings.setValue(QStringLiteral("axes"), r.showAxes);
-    settings.setValue(QStringLiteral("legend"), r.showLegend);
-    settings.setValue(QStringLiteral("groupSize"), r.groupSize);
-    settings.setValue(QStringLiteral("background"), m_renderPanel->background());
-    settings.setValue(QStringLiteral("orthographic"), m_renderPanel->orthographic());
+    session::remember(settings, captureSession());
 }
 
 void MainWindow::setVerticalExaggeration(double factor) {

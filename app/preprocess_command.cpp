@@ -6,15 +6,17 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "app/data_selection_options.h"
-#include "app/isovalue_job.h"
+#include "app/headless/isovalue_job.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/field_statistics.h"
+#include "widgets/session/setting_options.h"
 
 namespace ensil::app {
 namespace {
@@ -22,14 +24,9 @@ namespace {
 struct Options {
     QCommandLineOption iso{QStringLiteral("iso"), QStringLiteral("The isovalue (required)."),
                            QStringLiteral("X")};
-    QCommandLineOption clusters{QStringLiteral("clusters"),
-                                QStringLiteral("Number of clusters to label (default 5)."),
-                                QStringLiteral("K"), QStringLiteral("5")};
-    QCommandLineOption linkage{QStringLiteral("linkage"),
-                               QStringLiteral("average (default), single, complete or ward."),
-                               QStringLiteral("L"), QStringLiteral("average")};
     QCommandLineOption error{QStringLiteral("error"),
-                             QStringLiteral("Decimation error bound in grid cells (default 0.25)."),
+                             QStringLiteral("Decimation error bound in grid cells (default 0.25; a "
+                                            "number from 0.001 to 10)."),
                              QStringLiteral("CELLS"), QStringLiteral("0.25")};
     QCommandLineOption noDecimation{QStringLiteral("no-decimation"),
                                     QStringLiteral("Keep every marching-cubes triangle.")};
@@ -44,6 +41,12 @@ struct Options {
     QCommandLineOption json{QStringLiteral("json"), QStringLiteral("Print one JSON object.")};
 };
 
+// Clusters and linkage, with their ranges from the one setting table.
+const session::SettingOptions& clusterOptions() {
+    static const session::SettingOptions options{"clusters", "linkage"};
+    return options;
+}
+
 double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
 
 struct Result {
@@ -52,6 +55,8 @@ struct Result {
     prep::DistanceMatrix distances;
     prep::MergeTree tree;
     std::vector<int> labels;
+    std::vector<double> distancesToMean;
+    std::vector<double> meanOutlyingness;
     std::map<std::string, double> seconds;
     QString cache;
 };
@@ -59,7 +64,7 @@ struct Result {
 QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonObject o;
     const data::Grid& g = r.ensemble.grid;
-    o[QStringLiteral("members")] = static_cast<qint64>(r.ensemble.memberCount());
+    o[QStringLiteral("member_count")] = static_cast<qint64>(r.ensemble.memberCount());
     o[QStringLiteral("grid")] = QJsonArray{static_cast<qint64>(g.nx()), static_cast<qint64>(g.ny()),
                                            static_cast<qint64>(g.nz())};
     o[QStringLiteral("variable")] = QString::fromStdString(r.ensemble.variable);
@@ -89,6 +94,19 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonArray labels;
     for (int l : r.labels) labels.append(l);
     o[QStringLiteral("clusters")] = labels;
+    // What the workbench's member table shows; NaN (no isosurface) and infinity are null.
+    const auto figure = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
+    QJsonArray members;
+    for (std::size_t m = 0; m < r.ensemble.memberCount(); ++m) {
+        const std::string& name = r.ensemble.members[m].name;
+        members.append(QJsonObject{
+            {"name", name.empty() ? QStringLiteral("member %1").arg(m + 1)
+                                  : QString::fromStdString(name)},
+            {"cluster", m < r.labels.size() ? r.labels[m] : -1},
+            {"distance_to_mean", figure(r.distancesToMean[m])},
+            {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
+    }
+    o[QStringLiteral("members")] = members;
     return o;
 }
 
@@ -126,32 +144,38 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.clusters, o.linkage, o.error, o.noDecimation, o.noCache, o.cacheDir,
-                       o.demo, o.json});
+    parser.addOptions(
+        {o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json});
+    clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
     QString problem;
     const auto selection = selectionOptions.selection(parser, problem);
-    bool ok = false;
-    const float iso = parser.value(o.iso).toFloat(&ok);
-    const int k = parser.value(o.clusters).toInt();
-    const float errorCells = parser.value(o.error).toFloat();
-    if (!selection) {
+    session::SessionState requested;
+    if (selection && selection->paths.empty() != parser.isSet(o.demo)) {
+        problem = QStringLiteral("name the files to preprocess, or use --demo");
+    } else if (selection && !parser.isSet(o.iso)) {
+        problem = QStringLiteral("say which isovalue with --iso X (a number)");
+    }
+    const auto iso = problem.isEmpty() && selection
+                         ? session::parseBoundedNumber(QStringLiteral("--iso"),
+                                                       parser.value(o.iso), -1e30, 1e30, false,
+                                                       problem)
+                         : std::nullopt;
+    const auto errorCells = iso ? session::parseBoundedNumber(QStringLiteral("--error"),
+                                                              parser.value(o.error), 0.001, 10.0,
+                                                              false, problem)
+                                : std::nullopt;
+    if (!selection || !iso || !errorCells ||
+        !clusterOptions().applyTo(parser, requested, problem)) {
         err << "ensil preprocess: " << problem << "\n";
         return 2;
     }
-    if (selection->paths.empty() != parser.isSet(o.demo)) {
-        err << "ensil preprocess: name the files to preprocess, or use --demo\n";
-        return 2;
-    }
-    if (!parser.isSet(o.iso) || !ok || !std::isfinite(iso)) {
-        err << "ensil preprocess: say which isovalue with --iso X (a number)\n";
-        return 2;
-    }
+    const int k = requested.clusters;
     QElapsedTimer total, stage;
     total.start();
     try {
-        const prep::Linkage linkage = prep::parseLinkage(parser.value(o.linkage).toStdString());
+        const prep::Linkage linkage = requested.linkage;
         Result r;
         stage.start();
         const data::DemoEnsembleParams demo;
@@ -164,8 +188,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
             return 2;
         }
         const prep::FieldStatistics stats = prep::computeFieldStatistics(r.ensemble, 0);
-        if (iso <= stats.minimum || iso >= stats.maximum) {
-            err << "ensil preprocess: isovalue " << iso << " is outside the values of '"
+        if (*iso <= stats.minimum || *iso >= stats.maximum) {
+            err << "ensil preprocess: isovalue " << *iso << " is outside the values of '"
                 << QString::fromStdString(r.ensemble.variable) << "' (" << stats.minimum << " .. "
                 << stats.maximum << " " << QString::fromStdString(r.ensemble.units)
                 << "): no member has a surface there. Choose an isovalue inside that range\n";
@@ -173,9 +197,9 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
         IsovalueJobInput job;
         job.ensemble = &r.ensemble;
-        job.options.isovalue = iso;
+        job.options.isovalue = static_cast<float>(*iso);
         job.options.decimate = !parser.isSet(o.noDecimation);
-        job.options.maxErrorCells = errorCells;
+        job.options.maxErrorCells = static_cast<float>(*errorCells);
         job.linkage = linkage;
         if (!parser.isSet(o.noCache)) {
             job.cacheDirectory = parser.isSet(o.cacheDir) ? parser.value(o.cacheDir).toStdString()
@@ -197,6 +221,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         r.distances = std::move(outcome.distances);
         r.tree = std::move(outcome.tree);
         r.labels = prep::clusterLabels(r.tree, k);
+        r.distancesToMean = std::move(outcome.distancesToMean);
+        r.meanOutlyingness = std::move(outcome.meanOutlyingness);
         r.seconds["total"] = seconds(total);
         if (parser.isSet(o.json)) {
             out << QJsonDocument(toJson(r, k, linkage)).toJson(QJsonDocument::Compact) << "\n";

@@ -1,13 +1,18 @@
 #include "app/project_members.h"
 
+#include "widgets/session/member_appearance.h"
+
 namespace ensil::app {
 
-void applyProjectMembers(const Project& project, ui::MemberSelection& selection) {
-    for (const int m : project.hiddenMembers) selection.setMemberVisible(m, false);
-    for (const int c : project.hiddenClusters) {
-        if (c < selection.clusterCount()) selection.setClusterVisible(c, false);
+void applyProjectMembers(const session::SessionState& state, ui::MemberSelection& selection) {
+    const session::MemberFlags flags =
+        session::memberFlags(state, selection.labels(), selection.memberCount());
+    QList<int> selected;
+    for (int m = 0; m < selection.memberCount(); ++m) {
+        selection.setMemberVisible(m, flags.visible[static_cast<std::size_t>(m)]);
+        if (flags.selected[static_cast<std::size_t>(m)]) selected << m;
     }
-    selection.setSelection(QList<int>(project.selection.begin(), project.selection.end()));
+    selection.setSelection(selected);
 }
 
 }  // namespace ensil::app

@@ -1,4 +1,4 @@
-// The GPU format of an isosurface mesh, 20 bytes a vertex (algorithms.md section 3). Every
+// The GPU format of an isosurface mesh, 20 bytes a vertex (METHODS.md section 6). Every
 // field is a vertex format OpenGL 4.1 converts in hardware:
 //   position      3 x uint16, normalised within the mesh's bounds in grid index space
 //   kappa1,kappa2 2 x IEEE half

@@ -12,7 +12,7 @@ namespace ensil::gl {
 // OpaqueSurfaces draws every member as a solid lit isosurface (a reference; occludes).
 enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces, OpaqueSurfaces };
 
-// A plane that cuts the scene (algorithms.md section 8): points p with dot(normal, p) > offset,
+// A plane that cuts the scene (METHODS.md section 11): points p with dot(normal, p) > offset,
 // in display space, are removed when they lie on the viewer's side; where each member's
 // isosurface crosses the plane, its intersection curve is drawn `thickness` wide.
 struct CuttingPlane {
@@ -53,7 +53,7 @@ struct RenderSettings {
     float thickness = 0.006F;   // tau, in display units (the data box is about 1 wide)
     float surfaceAlpha = 0.2F;  // for RenderMode::Surfaces
     bool showMean = true;       // the mean member as a solid gray surface
-    bool removal = false;       // density-based silhouette removal (algorithms.md section 7)
+    bool removal = false;       // density-based silhouette removal (METHODS.md section 10)
     float removalMin = 0.0F;    // o*_min, in the variable's units squared
     float removalMax = 1.0F;    // o*_max
     int groupSize = 4;          // s_G

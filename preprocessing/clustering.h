@@ -1,4 +1,4 @@
-// Agglomerative hierarchical clustering of ensemble members (algorithms.md sections 4 and 9):
+// Agglomerative hierarchical clustering of ensemble members (METHODS.md sections 8 and 13):
 // the full merge tree is kept, so any number of clusters 1..N is available instantly for
 // coloring, showing and hiding clusters, the dendrogram, and the animation order.
 // Pure functions on plain values; run on any thread.
@@ -75,7 +75,7 @@ std::vector<int> clusterLabels(const MergeTree& tree, int k);
 // Throws data::Error(InvalidArgument) for k outside 1..N.
 double mergeHeightForClusters(const MergeTree& tree, int k);
 
-// The order the animation shows members in (algorithms.md section 9): clusters by label
+// The order the animation shows members in (METHODS.md section 13): clusters by label
 // (clusterLabels(tree, k)), and within a cluster a nearest-neighbour chain: it starts at the
 // cluster's medoid (the member with the smallest sum of distances to the others in its
 // cluster) and goes on to the nearest member not shown yet. Ties pick the smaller member index.

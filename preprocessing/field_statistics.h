@@ -22,9 +22,17 @@ struct FieldStatistics {
     std::vector<std::uint64_t> histogram;  // bins of equal width over [minimum, maximum]
 };
 
+// The histogram the workbench's isovalue control shows and the default isovalue is taken from.
+inline constexpr std::size_t kIsovalueHistogramBins = 128;
+
 // Throws Cancelled if stop is requested.
 FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size_t bins,
                                        const std::stop_token& stop = {},
                                        const Progress& progress = {});
+
+// An isovalue worth looking at first: the 90th percentile of the values (for the demo's wind
+// speed about the paper's 30 m/s), from a histogram over [minimum, maximum]; the middle of the
+// range when the histogram is empty.
+float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum);
 
 }  // namespace ensil::prep

@@ -1,4 +1,4 @@
-// The mean member (algorithms.md section 5): the grid-point mean over all members, meshed
+// The mean member (METHODS.md section 5): the grid-point mean over all members, meshed
 // later like any member and drawn as a gray surface for context. A point missing (NaN) in some
 // members is averaged over the members that have it; it is NaN only where every member misses
 // it, so masked regions stay masked without one member's gap punching holes in the mean.

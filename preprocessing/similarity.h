@@ -1,4 +1,4 @@
-// Pairwise distances between ensemble members for one isovalue (algorithms.md section 4), the
+// Pairwise distances between ensemble members for one isovalue (METHODS.md section 7), the
 // input of the member clustering:
 //   d(i, j) = sum_x ( sqrt|f_i(x) - mu| - sqrt|f_j(x) - mu| )^2 / m_ij
 // over the m_ij grid points valid in both members. The square root weights changes near the

@@ -1,4 +1,4 @@
-// Per-vertex attributes for silhouette rendering (algorithms.md section 2), computed in display
+// Per-vertex attributes for silhouette rendering (METHODS.md section 4), computed in display
 // space, where the silhouette test happens: the normal, the principal curvatures kappa_1 >=
 // kappa_2 and the first principal curvature direction (Kindlmann et al. 2003), and the
 // member's outlyingness. Derivatives come from central differences on the grid (one-sided at

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+#include "widgets/setting_controls.h"
+
 namespace ensil::ui {
 namespace {
 // Linear interpolation of ys over xs at x; xs monotone (either way), clamped at the ends.
@@ -71,12 +73,8 @@ CuttingPlanePanel::CuttingPlanePanel(QWidget* parent)
     m_position->setToolTip(tr("Where the plane lies across the data box"));
     m_dataValue->setKeyboardTracking(false);
     m_dataValue->setToolTip(tr("The plane's position in the axis's units"));
-    m_thickness->setRange(0.0005, 0.05);
-    m_thickness->setDecimals(4);
-    m_thickness->setSingleStep(0.001);
+    shapeBySetting(*m_thickness, "plane_thickness");
     m_thickness->setValue(gl::CuttingPlane{}.thickness);
-    m_thickness->setToolTip(
-        tr("Width eps of the intersection curves, in units of the data box's width"));
 
     auto* form = new QFormLayout(this);
     form->addRow(m_enabled);

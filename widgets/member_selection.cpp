@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gl/palette.h"
+#include "widgets/session/member_appearance.h"
 
 namespace ensil::ui {
 namespace {
@@ -205,16 +206,7 @@ void MemberSelection::setHovered(int member) {
 }
 
 std::vector<gl::MemberAppearance> MemberSelection::appearance() const {
-    std::vector<gl::MemberAppearance> look(static_cast<std::size_t>(memberCount()));
-    for (int m = 0; m < memberCount(); ++m) {
-        gl::MemberAppearance& a = look[static_cast<std::size_t>(m)];
-        const int cluster = clusterOf(m);
-        a.color = cluster < 0 ? gl::kClusterPalette.back() : gl::clusterColor(cluster);
-        a.cluster = cluster;
-        a.visible = isMemberVisible(m);
-        a.selected = isSelected(m);
-    }
-    return look;
+    return session::memberAppearance(m_labels, {m_visible, m_selected});
 }
 
 }  // namespace ensil::ui

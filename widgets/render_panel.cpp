@@ -16,6 +16,8 @@
 #include <initializer_list>
 #include <utility>
 
+#include "widgets/setting_controls.h"
+
 namespace ensil::ui {
 namespace {
 // Enough decimals to step through a hundredth of the range.
@@ -61,49 +63,34 @@ RenderPanel::RenderPanel(QWidget* parent)
                       tr("Semi-transparent surfaces"), tr("Opaque surfaces")});
     m_mode->setToolTip(tr("How members are drawn (keys 1 to 4 in the view)"));
     form->addRow(tr("Mode"), m_mode);
-    m_thickness->setRange(0.001, 0.1);
-    m_thickness->setDecimals(3);
-    m_thickness->setSingleStep(0.001);
-    m_thickness->setToolTip(
-        tr("Silhouette thickness tau, in units of the data box's width: thicker shows more of "
-           "each member where it curves away"));
+    shapeBySetting(*m_thickness, "thickness");
     form->addRow(tr("Thickness \u03c4"), m_thickness);
-    m_opacity->setRange(0.02, 1.0);
-    m_opacity->setDecimals(2);
-    m_opacity->setSingleStep(0.05);
-    m_opacity->setToolTip(tr("Opacity of each member in the semi-transparent surfaces mode"));
+    shapeBySetting(*m_opacity, "surface_opacity");
     form->addRow(tr("Surface opacity"), m_opacity);
-    m_mean->setToolTip(tr("The mean member's isosurface as a solid gray surface, for context"));
+    m_mean->setToolTip(settingHelp("show_mean"));
     form->addRow(m_mean);
 
     m_removal->setCheckable(true);
-    m_removal->setToolTip(
-        tr("Thins silhouettes where members agree: members are split into groups of s_G, and "
-           "each group fades out over its own slice of [o*min, o*max] of outlyingness"));
+    m_removal->setToolTip(settingHelp("removal"));
     auto* removalForm = new QFormLayout(m_removal);
     for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) box->setRange(0.0, 1.0);
     removalForm->addRow(tr("o*min"), m_removalMin);
     removalForm->addRow(tr("o*max"), m_removalMax);
-    m_groupSize->setRange(1, 64);
-    m_groupSize->setToolTip(tr("Group size s_G: how many slices the range is cut into"));
+    shapeBySetting(*m_groupSize, "group_size");
     removalForm->addRow(tr("Group size s_G"), m_groupSize);
 
     auto* sceneForm = new QFormLayout;
-    m_exaggeration->setRange(0.1, 50.0);
-    m_exaggeration->setDecimals(1);
-    m_exaggeration->setSingleStep(0.5);
+    shapeBySetting(*m_exaggeration, "vertical_exaggeration");
     m_exaggeration->setValue(1.0);
     m_exaggeration->setKeyboardTracking(false);
-    m_exaggeration->setToolTip(
-        tr("Stretches the vertical axis (flat atmospheric grids); the surfaces are rebuilt"));
     sceneForm->addRow(tr("Vertical exaggeration"), m_exaggeration);
     m_projection->addItems({tr("Perspective"), tr("Orthographic")});
     sceneForm->addRow(tr("Projection"), m_projection);
     m_backgroundButton->setToolTip(tr("Choose the view's background colour"));
     sceneForm->addRow(tr("Background"), m_backgroundButton);
-    m_axes->setToolTip(tr("Tick labels in data units along the edges of the data box"));
+    m_axes->setToolTip(settingHelp("axis_labels"));
     sceneForm->addRow(m_axes);
-    m_legend->setToolTip(tr("The cluster colours and sizes in the view's corner"));
+    m_legend->setToolTip(settingHelp("legend"));
     sceneForm->addRow(m_legend);
 
     auto* layout = new QVBoxLayout(this);

@@ -1,5 +1,5 @@
 #version 410 core
-// Silhouettes of isosurfaces (algorithms.md sections 6 to 8). Modes:
+// Silhouettes of isosurfaces (METHODS.md sections 9 to 12). Modes:
 //   0 shaded silhouettes, 1 3D spaghetti plot, 2 semi-transparent surfaces, 3 solid lit surface.
 // Modes 0 and 2 are translucent and write weighted blended order-independent transparency
 // (McGuire & Bavoil 2013): the image does not depend on the order members are drawn in, and
@@ -61,7 +61,7 @@ float removalFactor() {
 }
 
 // The intersection curve's coefficient, like sigma: 0 on the plane, 1 at eps behind it, above 1
-// farther away (section 8). Fragments on the viewer's side are discarded by the caller.
+// farther away (METHODS.md section 11). Fragments on the viewer's side are discarded by the caller.
 float planeCoefficient(float behind) {
     if (!u_planeEnabled) return 2.0;
     return behind / max(u_planeEpsilon, 1e-6);

@@ -4,6 +4,7 @@
 
 #include <QAbstractButton>
 #include <QAction>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QItemSelectionModel>
@@ -54,8 +55,10 @@ protected:
         return members;
     }
 
+    // The view's picture, once the events the last change posted (layouts, repaints) are handled.
     QImage frame() {
-        QTest::qWait(30);
+        QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QApplication::processEvents();
         return window.view()->grabFramebuffer();
     }
 
@@ -201,8 +204,7 @@ TEST_F(LoadedWindow, EscapeStopsWorkFirstAndOtherwiseClearsTheSelection) {
                                           1.0F);
     ASSERT_TRUE(window.isBusy());
     clear->trigger();
-    for (int i = 0; i < 3000 && window.isBusy(); ++i) QTest::qWait(10);
-    ASSERT_FALSE(window.isBusy());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !window.isBusy(); }, 60000));
     EXPECT_EQ(selection->selectedMembers(), (QList<int>{1, 2})) << "Esc stopped work only";
     clear->trigger();
     EXPECT_TRUE(selection->selectedMembers().isEmpty());
@@ -239,7 +241,9 @@ TEST(MainWindowLayout, GivesTheViewMostOfTheWindowWithThreeDocks) {
         window.resize(c.window);
         window.show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-        QTest::qWait(50);
+        // The docks take their places in the layout.
+        QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QApplication::processEvents();
         for (const char* name : {"clusterDock", "memberTableDock", "dendrogramDock"}) {
             auto* dock = window.findChild<QDockWidget*>(QString::fromLatin1(name));
             ASSERT_NE(dock, nullptr) << name;
@@ -265,7 +269,9 @@ TEST(MainWindowLayout, ScreenshotWithTheDemoLoaded) {
     window.loadDemo({.members = 20, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
     ASSERT_TRUE(built.wait(120000)) << "no isosurfaces were built";
     window.memberSelection()->setSelection(window.memberSelection()->membersOfCluster(1));
-    QTest::qWait(200);
+    // The panels lay out what the surfaces and the selection brought before the picture.
+    QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QApplication::processEvents();
     const QImage shot = window.grab().toImage();
     ASSERT_FALSE(shot.isNull());
     EXPECT_EQ(shot.width(), 1600 * shot.devicePixelRatio());

@@ -3,6 +3,7 @@
 // file is located by the user.
 #include <gtest/gtest.h>
 
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTest>
@@ -19,6 +20,7 @@
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/project_file.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -136,7 +138,7 @@ TEST_F(ProjectWindow, ARefusedProjectChangesNothing) {
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
     EXPECT_FALSE(window.openProject(path));
     ASSERT_EQ(failed.count(), 1);
-    EXPECT_TRUE(failed[0][0].toString().contains("rendering.thickness must lie between"))
+    EXPECT_TRUE(failed[0][0].toString().contains("rendering.thickness must be a number from"))
         << failed[0][0].toString().toStdString();
     EXPECT_FALSE(window.isLoading());
     EXPECT_EQ(window.overview()->ensemble->memberCount(), kSmallDemo.members);
@@ -177,4 +179,64 @@ TEST_F(ProjectWindow, AMovedDataFileIsLocatedByTheUser) {
     ASSERT_EQ(asked.size(), 2);
     EXPECT_EQ(asked[0], original);
     EXPECT_EQ(window.overview()->ensemble->variable, "t");
+}
+
+TEST_F(ProjectWindow, AThickTauFromAProjectSurvivesTheFirstEditInThePanel) {
+    // The panel used to clamp tau to 0.1 and write that back into the renderer at the first
+    // edit of any of its controls: the workbench and `ensil render PROJECT` then differed.
+    session::SessionState state;
+    state.demo = true;
+    state.demoParams = kSmallDemo;
+    state.render.thickness = 0.3F;
+    const QString path = QString::fromStdString(m_dir.file("thick.ensil"));
+    session::saveProject(state, path);
+
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    ASSERT_TRUE(window.openProject(path));
+    ASSERT_TRUE(opened.wait(60000));
+    EXPECT_FLOAT_EQ(window.view()->renderer().settings().thickness, 0.3F);
+    auto* thickness = window.renderPanel()->findChild<QDoubleSpinBox*>("thickness");
+    ASSERT_NE(thickness, nullptr);
+    EXPECT_DOUBLE_EQ(thickness->value(), 0.3);
+    auto* opacity = window.renderPanel()->findChild<QDoubleSpinBox*>("opacity");
+    ASSERT_NE(opacity, nullptr);
+    opacity->setValue(0.5);
+    EXPECT_FLOAT_EQ(window.view()->renderer().settings().surfaceAlpha, 0.5F);
+    EXPECT_FLOAT_EQ(window.view()->renderer().settings().thickness, 0.3F);
+    EXPECT_FLOAT_EQ(window.captureSession().render.thickness, 0.3F);
+}
+
+TEST_F(ProjectWindow, AProjectSavedByEnsilRenderOpensInTheWorkbenchAsDrawn) {
+    const QString path = QString::fromStdString(m_dir.file("rendered.ensil"));
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    const int code =
+        app::runCommandLine({"ensil", "render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                             "--var", "t", "--iso", "260", "--out",
+                             QString::fromStdString(m_dir.file("r.png")), "--size", "480x320",
+                             "--frames", "1", "--azimuth", "10", "--elevation", "45",
+                             "--thickness", "0.015", "--mode", "spaghetti", "--clusters", "3",
+                             "--save-project", path},
+                            out, err)
+            .exitCode;
+    err.flush();
+    ASSERT_EQ(code, 0) << errText.toStdString();
+    const session::SessionState drawn = session::loadProject(path);
+
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    ASSERT_TRUE(window.openProject(path));
+    ASSERT_TRUE(opened.wait(60000));
+    const gl::Renderer& r = window.view()->renderer();
+    EXPECT_EQ(r.settings().mode, gl::RenderMode::Spaghetti);
+    EXPECT_FLOAT_EQ(r.settings().thickness, 0.015F);
+    EXPECT_NEAR(r.camera().azimuth(), 10.0F, 1e-4F);
+    EXPECT_NEAR(r.camera().elevation(), 45.0F, 1e-4F);
+    ASSERT_TRUE(drawn.camera.placement);
+    EXPECT_NEAR(r.camera().distance(), drawn.camera.placement->distance, 1e-5F);
+    EXPECT_NEAR(window.renderToolbar()->isovalue(), 260.0, 1e-3);
+    EXPECT_EQ(window.memberSelection()->clusterCount(), 3);
 }

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
+#include <QDir>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QInputDialog>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
 #include <algorithm>
@@ -20,6 +22,15 @@
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
+
+TEST(TestIsolation, RememberedSettingsLiveInAFolderOfThisTestProcessAlone) {
+    const QString file = QSettings().fileName();
+    EXPECT_TRUE(
+        file.contains(QStringLiteral("ensil-test-home-%1/").arg(QCoreApplication::applicationPid())))
+        << file.toStdString();
+    EXPECT_FALSE(file.startsWith(QDir::homePath() + QStringLiteral("/.config")))
+        << file.toStdString();
+}
 
 TEST(MainWindow, LoadsTheDemoInTheBackgroundAndShowsIt) {
     app::MainWindow window;
@@ -40,7 +51,9 @@ TEST(MainWindow, LoadsTheDemoInTheBackgroundAndShowsIt) {
     // The screenshot shows the floor map: many pixels that are neither background nor gray.
     ensil::test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("shot.png"));
-    QTest::qWait(50);
+    // The view has its place in the settled layout before it is drawn.
+    QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QApplication::processEvents();
     ASSERT_TRUE(window.saveScreenshot(path));
     const QImage shot(path);
     ASSERT_FALSE(shot.isNull());
@@ -63,11 +76,11 @@ TEST(MainWindow, CancelledLoadLeavesNothingHalfLoaded) {
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
     window.loadDemo({.members = 20, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
     window.cancelLoading();
-    QElapsedTimer timer;
-    timer.start();
-    while (window.isLoading() && timer.elapsed() < 30000) QTest::qWait(10);
-    ASSERT_FALSE(window.isLoading());
-    QTest::qWait(20);  // let the queued finished signal arrive
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !window.isLoading(); }, 60000));
+    // The job's end arrives through a queued signal: handled, it tells that loading was cancelled.
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return window.infoPanel()->text().contains("loading was cancelled"); }, 60000))
+        << window.infoPanel()->text().toStdString();
     EXPECT_EQ(window.overview(), nullptr);
     EXPECT_EQ(loaded.count(), 0);
     EXPECT_EQ(failed.count(), 0) << "a cancel is not a failure";
@@ -110,13 +123,13 @@ TEST(MainWindow, AsksWhichDimensionHoldsTheMembersWhenTheFileDoesNotSay) {
     selection.variable = "T";
     window.openFiles(selection);
     QInputDialog* dialog = nullptr;
-    QElapsedTimer timer;
-    timer.start();
-    while (dialog == nullptr && timer.elapsed() < 30000) {
-        QTest::qWait(20);
-        dialog = window.findChild<QInputDialog*>(QStringLiteral("memberDimensionDialog"));
-    }
-    ASSERT_NE(dialog, nullptr) << "no question about the member dimension";
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            dialog = window.findChild<QInputDialog*>(QStringLiteral("memberDimensionDialog"));
+            return dialog != nullptr;
+        },
+        60000))
+        << "no question about the member dimension";
     EXPECT_EQ(dialog->comboBoxItems(), QStringList{QStringLiteral("frtime")});
     dialog->setTextValue(QStringLiteral("frtime"));
     dialog->accept();

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QPointer>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -47,7 +49,9 @@ TEST(OpenDataFlow, ChoosesVariableAndTimeIndexThenLoadsThem) {
     EXPECT_EQ(itemNamed(list, "t")->text(3), "Temperature");
     EXPECT_TRUE(dialog->memberDimensionBox()->currentText().startsWith("number"));
     EXPECT_EQ(dialog->timeIndexBox()->maximum(), 3);
-    QTest::qWait(50);  // let the layout follow the new details before the picture is taken
+    // The layout follows the new details before the picture is taken.
+    QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QApplication::processEvents();
     dialog->grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/open_data_dialog.png"));
 
     list->setCurrentItem(itemNamed(list, "t"));
@@ -96,8 +100,10 @@ TEST(OpenDataFlow, AGarbageFileIsExplainedInTheDialogAndNothingIsOpened) {
     EXPECT_TRUE(dialog->errorText().contains("broken.nc")) << dialog->errorText().toStdString();
     EXPECT_TRUE(dialog->errorText().contains("not in a format ensil reads"));
     EXPECT_FALSE(dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok)->isEnabled());
+    const QPointer<ui::OpenDataDialog> closed(dialog);
     dialog->reject();
-    QTest::qWait(20);
+    // Rejected, the dialog deletes itself; whatever the rejection set off has been handled.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return closed.isNull(); }, 60000));
     EXPECT_FALSE(window.isLoading());
     EXPECT_EQ(failed.count(), 0) << "nothing was started";
     EXPECT_EQ(window.overview(), nullptr);

@@ -44,7 +44,18 @@ TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
     const CommandRun first = preprocess(args);
     ASSERT_EQ(first.code, 0) << first.err.toStdString();
     const QJsonObject o = QJsonDocument::fromJson(first.out.toUtf8()).object();
-    EXPECT_EQ(o["members"].toInt(), 10);
+    EXPECT_EQ(o["member_count"].toInt(), 10);
+    // The member table's figures, per member, from the same job as the workbench's.
+    const QJsonArray members = o["members"].toArray();
+    ASSERT_EQ(members.size(), 10);
+    const QJsonArray memberClusters = o["clusters"].toArray();
+    for (int m = 0; m < members.size(); ++m) {
+        const QJsonObject member = members[m].toObject();
+        EXPECT_FALSE(member["name"].toString().isEmpty());
+        EXPECT_EQ(member["cluster"].toInt(), memberClusters[m].toInt());
+        EXPECT_GT(member["distance_to_mean"].toDouble(), 0.0) << m;
+        EXPECT_GE(member["mean_outlyingness"].toDouble(-1.0), 0.0) << m;
+    }
     EXPECT_EQ(o["grid"].toArray(), (QJsonArray{120, 61, 2}));
     EXPECT_EQ(o["isovalue"].toDouble(), 260.0);
     EXPECT_EQ(o["cache"].toString(), "miss");
@@ -88,8 +99,19 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
     const CommandRun linkage =
         preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "260",
                     "--linkage", "median", "--no-cache"});
-    EXPECT_EQ(linkage.code, 1);
+    EXPECT_EQ(linkage.code, 2) << "a bad option is a usage error";
     EXPECT_TRUE(linkage.err.contains("ward"))
         << "lists the linkages: " << linkage.err.toStdString();
+    // These used to turn decimation off silently, or take a fraction as a count.
+    for (const QStringList& bad : {QStringList{"--error", "-1"}, QStringList{"--error", "abc"},
+                                   QStringList{"--clusters", "2.5"}, QStringList{"--iso", "nan"}}) {
+        QStringList args{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
+                         "260", "--no-cache"};
+        args += bad;
+        const CommandRun run = preprocess(args);
+        EXPECT_EQ(run.code, 2) << bad.join(' ').toStdString();
+        EXPECT_TRUE(run.err.contains(QStringLiteral("%1 '%2' is refused").arg(bad[0], bad[1])))
+            << run.err.toStdString();
+    }
     EXPECT_EQ(preprocess({"--iso", "3"}).code, 2) << "neither files nor --demo";
 }

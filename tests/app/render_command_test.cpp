@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <QFile>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -114,4 +115,73 @@ TEST(RenderCommand, RefusesMalformedPlaneRemovalAndGroupSize) {
         EXPECT_EQ(code, 2) << bad.join(' ').toStdString();
         EXPECT_TRUE(error.contains(bad[0])) << error.toStdString();
     }
+}
+
+TEST(RenderCommand, BadValuesAreRefusedNamingTheOptionTheValueAndWhatIsAllowed) {
+    // Each of these used to draw a wrong or blank picture and exit 0.
+    for (const QStringList& bad :
+         {QStringList{"--thickness", "abc"}, QStringList{"--thickness", "-5"},
+          QStringList{"--thickness", "nan"}, QStringList{"--exaggeration", "0"},
+          QStringList{"--exaggeration", "nan"}, QStringList{"--exaggeration", "1e30"},
+          QStringList{"--azimuth", "nan"}, QStringList{"--size", "4294967298x200"},
+          QStringList{"--clusters", "2.5"}, QStringList{"--frames", "0"},
+          QStringList{"--mode", "wireframe"}, QStringList{"--background", "pinkish"}}) {
+        QString error;
+        int code = 0;
+        EXPECT_TRUE(renderEra5(bad, &error, &code).isNull()) << bad.join(' ').toStdString();
+        EXPECT_EQ(code, 2) << bad.join(' ').toStdString();
+        EXPECT_TRUE(error.contains(QStringLiteral("%1 '%2' is refused").arg(bad[0], bad[1])))
+            << error.toStdString();
+        EXPECT_TRUE(error.contains(QStringLiteral("must be"))) << error.toStdString();
+    }
+}
+
+TEST(RenderCommand, ASavedProjectDrawsTheIdenticalPicture) {
+    test::TempDir dir;
+    const QString project = QString::fromStdString(dir.file("drawn.ensil"));
+    QString error;
+    const QImage first = renderEra5({"--azimuth", "20", "--clusters", "3", "--thickness", "0.02",
+                                     "--plane", "0,1,0,0.2", "--background", "#204060",
+                                     "--projection", "orthographic", "--save-project", project},
+                                    &error);
+    ASSERT_FALSE(first.isNull()) << error.toStdString();
+    ASSERT_TRUE(QFile::exists(project));
+
+    const QString png = QString::fromStdString(dir.file("again.png"));
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    const int code = app::runCommandLine({"ensil", "render", project, "--out", png, "--size",
+                                          "320x240", "--frames", "1", "--no-cache"},
+                                         out, err)
+                         .exitCode;
+    err.flush();
+    ASSERT_EQ(code, 0) << errText.toStdString();
+    const QImage second(png);
+    ASSERT_EQ(second.size(), first.size());
+    EXPECT_EQ(test::differingFraction(first, second, 0), 0.0)
+        << "the project must hold everything the picture was drawn from";
+    // And the project is not the default session: the options went into it.
+    QFile file(project);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QJsonObject saved = QJsonDocument::fromJson(file.readAll()).object();
+    EXPECT_EQ(saved["rendering"].toObject()["thickness"].toDouble(), 0.02F);
+    EXPECT_EQ(saved["camera"].toObject()["projection"].toString(), "orthographic");
+    EXPECT_EQ(saved["clusters"].toObject()["count"].toInt(), 3);
+}
+
+TEST(RenderCommand, AProjectDefinesThePictureSoSceneOptionsAreRefusedWithIt) {
+    test::TempDir dir;
+    const QString project = QString::fromStdString(dir.file("drawn.ensil"));
+    QString error;
+    ASSERT_FALSE(renderEra5({"--save-project", project}, &error).isNull()) << error.toStdString();
+    QString outText, errText;
+    QTextStream out(&outText), err(&errText);
+    const int code =
+        app::runCommandLine({"ensil", "render", project, "--out",
+                             QString::fromStdString(dir.file("x.png")), "--thickness", "0.02"},
+                            out, err)
+            .exitCode;
+    err.flush();
+    EXPECT_EQ(code, 2);
+    EXPECT_TRUE(errText.contains("--thickness comes from the project")) << errText.toStdString();
 }

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QApplication>
 #include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
+#include <cmath>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -32,6 +34,14 @@ void typeIsovalue(app::MainWindow& window, double value) {
     box->selectAll();
     QTest::keyClicks(box, QString::number(value, 'f', 1));
     QTest::keyClick(box, Qt::Key_Return);
+}
+
+// Whether the view's last frame was drawn at the view's full size, which picks draw at.
+bool drewFullFrame(ui::SilhouetteView& view) {
+    const qreal ratio = view.devicePixelRatioF();
+    const glm::ivec2 full(static_cast<int>(std::lround(view.width() * ratio)),
+                          static_cast<int>(std::lround(view.height() * ratio)));
+    return view.renderer().resolutionScale() == 1.0F && view.renderer().sceneSize() == full;
 }
 }  // namespace
 
@@ -70,7 +80,10 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     // Pick a member by clicking a pixel of its silhouette: the first pixel along the view's
     // middle row that the id pass names.
     ui::SilhouetteView& view = *window.view();
-    QTest::qWait(100);
+    QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    QApplication::processEvents();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return drewFullFrame(view); }, 60000))
+        << "the view was not drawn at its size";
     QPoint onSilhouette(-1, -1);
     int expected = -1;
     for (int y = view.height() / 3; y < 2 * view.height() / 3 && expected < 0; y += 7) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "app/isovalue_session.h"
+#include "widgets/session/project_file.h"
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
 #include "timing.h"
@@ -59,10 +60,10 @@ int main(int argc, char** argv) {
     QApplication app(argc, argv);
     const QString path = home.filePath(QStringLiteral("paper.ensil"));
     {
-        ensil::app::Project project;
+        ensil::session::SessionState project;
         project.demo = true;
         project.isovalue = 30.0F;
-        ensil::app::saveProject(project, path);
+        ensil::session::saveProject(project, path);
     }
     const Reopening cold = reopen(path);
     std::printf("project of the paper-sized demo (50 members, 256 x 128 x 16, isovalue 30)\n");

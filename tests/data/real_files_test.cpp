@@ -1,4 +1,4 @@
-// The real files in ../shared/data, written by others: each opens, or is refused with the
+// The real files in tests/data/real, written by others: each opens, or is refused with the
 // right message.
 #include <gtest/gtest.h>
 #include <netcdf.h>

@@ -1,4 +1,4 @@
-// The cutting plane (algorithms.md section 8) and density-based removal (section 7) on spheres,
+// The cutting plane (METHODS.md section 11) and density-based removal (section 10) on spheres,
 // whose geometry says exactly which pixels must change.
 #include <QImage>
 

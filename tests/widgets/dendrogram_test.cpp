@@ -214,7 +214,7 @@ TEST(DendrogramView, TheWheelZoomsAroundThePointer) {
 
 TEST_F(ShownDendrogram, ShowsSelectedMembersUnderTheirLeaves) {
     s.setSelection({3});
-    QTest::qWait(20);
+    QApplication::processEvents();  // the repaint the selection asked for
     const QImage image = view.viewport()->grab().toImage();
     const ui::DendrogramFrame frame = view.frame();
     const double radius = std::clamp(frame.leafWidth * 0.3, 2.0, 5.0);

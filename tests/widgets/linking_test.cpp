@@ -2,6 +2,7 @@
 // selected or cut in one shows in the others, with no panel calling another.
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QItemSelectionModel>
 #include <QTableView>
 #include <QTest>
@@ -42,7 +43,7 @@ protected:
 
     // The colour the dendrogram draws under a member's leaf: its cluster's when selected.
     QColor dendrogramMarker(int member) {
-        QTest::qWait(10);
+        QApplication::processEvents();  // the repaint the last change asked for
         const QImage image = dendrogram.viewport()->grab().toImage();
         const ui::DendrogramFrame frame = dendrogram.frame();
         const double radius = std::clamp(frame.leafWidth * 0.3, 2.0, 5.0);

@@ -1,6 +1,6 @@
 // Everything one isovalue needs, in one job: the meshes (read from the disk cache when this data,
 // isovalue and display mapping were processed before, built and stored otherwise), the
-// similarity matrix and the merge tree. Shared by the workbench, `ensil preprocess` and
+// similarity matrix, the merge tree and the per-member figures. Shared by the workbench, `ensil preprocess` and
 // `ensil render`. A pure function; runs on any thread.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <vector>
 
 #include "data/ensemble.h"
 #include "preprocessing/clustering.h"
@@ -31,6 +32,10 @@ struct IsovalueOutcome {
     prep::IsovalueMeshes meshes;
     prep::DistanceMatrix distances;
     prep::MergeTree tree;
+    // Per member (preprocessing/member_summaries.h): the distance to the mean member in the
+    // similarity measure, and the mean outlyingness over its isosurface's vertices.
+    std::vector<double> distancesToMean;
+    std::vector<double> meanOutlyingness;
     bool fromCache = false;
     std::map<std::string, double>
         seconds;  // cache_read or meshes/decimation/attributes, similarity, clustering

@@ -1,8 +1,9 @@
-// Renders a project headless: reads its data (or makes the demo), builds its isovalue's meshes
+// Draws a session headless: reads its data (or makes the demo), builds its isovalue's meshes
 // through the cache, clusters, and draws the picture offscreen exactly as the workbench shows
-// that project (same settings, camera, colours, visibility, selection, labels). Used by
+// that session (same settings, camera, colours, visibility, selection, labels). Used by
 // `ensil render`, for projects and for the command-line options alike. Creates its own
-// offscreen OpenGL context. GUI (main) thread.
+// offscreen OpenGL context. Links no Qt Widgets (the link graph enforces it: this target does
+// not link them). GUI (main) thread.
 #pragma once
 
 #include <QImage>
@@ -11,7 +12,7 @@
 #include <optional>
 #include <string>
 
-#include "app/project.h"
+#include "widgets/session/session_state.h"
 
 namespace ensil::app {
 
@@ -20,27 +21,26 @@ struct RenderRequest {
     int height = 1000;
     int frames = 1;  // frames drawn and timed; the median is reported
     bool useCache = true;
-    bool labels = true;  // axis labels and legend
-    // Without a saved camera: the angles to look from (the camera is fitted to the data box).
-    float azimuth = -75.0F;
-    float elevation = 30.0F;
-    // A plane given across the box (gl::CuttingPlane::acrossBox) rather than in display units.
+    // A plane given across the box (gl::CuttingPlane::acrossBox: normal, position from -1 to
+    // 1) rather than in display units; it replaces the session's plane normal and offset.
     std::optional<glm::vec4> planeAcrossBox;
 };
 
 struct RenderOutcome {
     QImage image;
+    // The session as drawn: the isovalue, the camera's placement and the plane resolved, so
+    // that drawing it again (saved as a project) gives the same picture.
+    session::SessionState drawn;
     double frameMs = 0.0;  // median
     std::size_t gpuBytes = 0;
     std::size_t triangles = 0;
     std::size_t members = 0;
-    float isovalue = 0.0F;
     std::string glRenderer;       // GL_RENDERER: the driver that drew it
     bool withoutDisplay = false;  // drawn through EGL's surfaceless platform
 };
 
-// Throws data::Error, ProjectError (isovalue outside the values) or std::runtime_error.
-RenderOutcome renderProject(const Project& project, const RenderRequest& request);
+// Throws data::Error, session::ProjectError (isovalue outside the values) or std::runtime_error.
+RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request);
 
 // The source key the workbench uses for the mesh cache, so both share cached meshes.
 std::string demoSourceKey(const data::DemoEnsembleParams& params);

@@ -1,9 +1,10 @@
-#include "app/isovalue_job.h"
+#include "app/headless/isovalue_job.h"
 
 #include <QStandardPaths>
 #include <chrono>
 
 #include "data/error.h"
+#include "preprocessing/member_summaries.h"
 #include "preprocessing/mesh_cache.h"
 
 namespace ensil::app {
@@ -58,6 +59,15 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
     start = Clock::now();
     out.tree = prep::clusterMembers(out.distances, in.linkage, stop);
     out.seconds["clustering"] = since(start);
+    start = Clock::now();
+    const auto& mean = in.moments->mean.values;
+    out.distancesToMean =
+        prep::distancesToField(*in.ensemble, {mean.data(), mean.size()}, in.options.isovalue, stop);
+    out.meanOutlyingness.reserve(out.meshes.members.size());
+    for (const data::PackedMesh& mesh : out.meshes.members) {
+        out.meanOutlyingness.push_back(prep::meanOutlyingness(mesh));
+    }
+    out.seconds["member_summaries"] = since(start);
     return out;
 }
 

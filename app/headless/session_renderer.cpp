@@ -1,4 +1,4 @@
-#include "app/project_renderer.h"
+#include "app/headless/session_renderer.h"
 
 #include <QElapsedTimer>
 #include <QOpenGLContext>
@@ -7,15 +7,15 @@
 #include <QPainter>
 #include <algorithm>
 
-#include "app/isovalue_job.h"
-#include "app/isovalue_session.h"
-#include "app/project_members.h"
+#include "app/headless/isovalue_job.h"
 #include "data/demo_ensemble.h"
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
 #include "gl/surface_format.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/field_statistics.h"
+#include "widgets/session/member_appearance.h"
+#include "widgets/session/project_file.h"
 
 namespace ensil::app {
 
@@ -25,29 +25,30 @@ std::string demoSourceKey(const data::DemoEnsembleParams& params) {
            " seed=" + std::to_string(params.seed);
 }
 
-RenderOutcome renderProject(const Project& project, const RenderRequest& request) {
-    const data::Ensemble ensemble = project.demo
-                                        ? data::makeDemoEnsemble(project.demoParams).ensemble
-                                        : data::openEnsemble(project.data);
-    const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
+RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request) {
+    const data::Ensemble ensemble = state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
+                                               : data::openEnsemble(state.data);
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
     const float iso =
-        project.isovalue.value_or(defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+        state.isovalue.value_or(prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
     if (iso <= stats.minimum || iso >= stats.maximum) {
-        throw ProjectError("isovalue " + std::to_string(iso) + " is outside the values (" +
-                           std::to_string(stats.minimum) + " .. " + std::to_string(stats.maximum) +
-                           " " + ensemble.units + ")");
+        throw session::ProjectError("isovalue " + std::to_string(iso) +
+                                    " is outside the values (" + std::to_string(stats.minimum) +
+                                    " .. " + std::to_string(stats.maximum) + " " +
+                                    ensemble.units + ")");
     }
-    const int k = std::clamp(project.clusters, 1, static_cast<int>(ensemble.memberCount()));
+    const int members = static_cast<int>(ensemble.memberCount());
+    const int k = std::clamp(state.clusters, 1, members);
     const prep::EnsembleMoments moments = prep::computeEnsembleMoments(ensemble);
     IsovalueJobInput job;
     job.ensemble = &ensemble;
     job.moments = &moments;
     job.options.isovalue = iso;
-    job.verticalExaggeration = project.verticalExaggeration;
-    job.linkage = prep::parseLinkage(project.linkage);
+    job.verticalExaggeration = state.verticalExaggeration;
+    job.linkage = state.linkage;
     if (request.useCache) job.cacheDirectory = defaultMeshCacheDirectory();
-    job.sourceKey =
-        project.demo ? demoSourceKey(project.demoParams) : data::sourceIdentity(project.data);
+    job.sourceKey = state.demo ? demoSourceKey(state.demoParams) : data::sourceIdentity(state.data);
     IsovalueOutcome outcome = runIsovalueJob(job);
 
     const gl::OffscreenContext context;
@@ -55,8 +56,9 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
                                     QOpenGLFramebufferObject::CombinedDepthStencil);
     gl::Renderer renderer;
     renderer.initialize();
+    renderer.setViewSize(request.width, request.height);
     renderer.setGrid(ensemble.grid);
-    renderer.setVerticalExaggeration(project.verticalExaggeration);
+    renderer.setVerticalExaggeration(state.verticalExaggeration);
     renderer.setFloorMap(
         gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
     auto set = std::make_shared<data::MeshSet>();
@@ -64,31 +66,31 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
     set->members = std::move(outcome.meshes.members);
     set->mean = std::move(outcome.meshes.mean);
     renderer.setMeshes(set);
-    // Coloured, hidden and selected as the workbench shows the project.
-    ui::MemberSelection members;
-    members.setMembers({QStringList(static_cast<qsizetype>(ensemble.memberCount())), {}, {}});
-    members.setTree(outcome.tree);
-    members.setClusterCount(k);
-    applyProjectMembers(project, members);
-    renderer.setAppearance(members.appearance());
-    renderer.settings() = project.render;
-    renderer.setBackground({project.background, 1.0F});
+    // Coloured, hidden and selected as the workbench shows the session.
+    const std::vector<int> labels = prep::clusterLabels(outcome.tree, k);
+    renderer.setAppearance(
+        session::memberAppearance(labels, session::memberFlags(state, labels, members)));
+    renderer.settings() = state.render;
+    renderer.setBackground({state.background, 1.0F});
     gl::Camera& camera = renderer.camera();
-    if (project.camera) {
-        camera.setAngles(project.camera->azimuth, project.camera->elevation);
-        camera.setTarget(project.camera->target);
-        camera.setDistance(project.camera->distance);
-        camera.setProjection(project.camera->orthographic ? gl::Camera::Projection::Orthographic
-                                                          : gl::Camera::Projection::Perspective);
+    camera.setAngles(state.camera.azimuth, state.camera.elevation);
+    camera.setProjection(state.camera.orthographic ? gl::Camera::Projection::Orthographic
+                                                   : gl::Camera::Projection::Perspective);
+    if (state.camera.placement) {
+        camera.setTarget(state.camera.placement->target);
+        camera.setDistance(state.camera.placement->distance);
     } else {
-        camera.setAngles(request.azimuth, request.elevation);
+        // Fitted from the session's angles to this picture's shape, as Reset Camera does.
+        camera.frameBox(renderer.frame().boxMin(), renderer.frame().boxMax(),
+                        static_cast<float>(request.width) / static_cast<float>(request.height));
     }
     if (request.planeAcrossBox) {
         const glm::vec4 p = *request.planeAcrossBox;
-        const float thickness = renderer.settings().plane.thickness;
+        const gl::CuttingPlane given = renderer.settings().plane;
         renderer.settings().plane = gl::CuttingPlane::acrossBox(
             glm::vec3(p), p.w, renderer.frame().boxMin(), renderer.frame().boxMax());
-        renderer.settings().plane.thickness = thickness;
+        renderer.settings().plane.enabled = given.enabled;
+        renderer.settings().plane.thickness = given.thickness;
     }
 
     auto* f = QOpenGLContext::currentContext()->functions();
@@ -108,15 +110,23 @@ RenderOutcome renderProject(const Project& project, const RenderRequest& request
     constexpr int kDotsPerMeter = 3780;  // 96 dpi
     result.image.setDotsPerMeterX(kDotsPerMeter);
     result.image.setDotsPerMeterY(kDotsPerMeter);
-    if (request.labels) {
+    if (state.render.showAxes || state.render.showLegend) {
         QPainter painter(&result.image);
         gl::paintOverlay(painter, renderer.overlay(request.width, request.height), 1.0);
     }
+    result.drawn = state;
+    result.drawn.isovalue = iso;
+    result.drawn.clusters = k;
+    result.drawn.render.plane = renderer.settings().plane;
+    // The camera as it stood, fitted or not: the same picture again from a saved project.
+    result.drawn.camera.azimuth = camera.azimuth();
+    result.drawn.camera.elevation = camera.elevation();
+    result.drawn.camera.placement =
+        session::CameraState::Placement{camera.distance(), camera.target()};
     result.frameMs = times[times.size() / 2];
     result.gpuBytes = renderer.gpuBytes();
     result.triangles = outcome.meshes.triangles;
     result.members = ensemble.memberCount();
-    result.isovalue = iso;
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();
     renderer.releaseGpuResources();

@@ -1,7 +1,7 @@
-// Project files: what is saved comes back, paths travel with the project, bad files are
+// Project files (the session's serialisation): what is saved comes back, paths travel with the project, bad files are
 // refused with the line or field and the reason, newer formats are refused, and a failed write
 // leaves the previous file as it was.
-#include "app/project.h"
+#include "widgets/session/project_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -15,14 +15,17 @@
 using namespace ensil;
 
 namespace {
-app::Project sample(const QString& dataFile) {
-    app::Project p;
+session::SessionState sample(const QString& dataFile) {
+    session::SessionState p;
     p.data.paths = {dataFile.toStdString()};
     p.data.variable = "t";
     p.data.memberDimension = "number";
     p.data.timeIndex = 2;
     p.isovalue = 261.5F;
-    p.camera = app::ProjectCamera{-40.0F, 55.0F, 2.25F, {0.4F, 0.3F, 0.05F}, true};
+    p.camera.azimuth = -40.0F;
+    p.camera.elevation = 55.0F;
+    p.camera.orthographic = true;
+    p.camera.placement = session::CameraState::Placement{2.25F, {0.4F, 0.3F, 0.05F}};
     p.render.mode = gl::RenderMode::Spaghetti;
     p.render.thickness = 0.011F;
     p.render.surfaceAlpha = 0.4F;
@@ -37,7 +40,7 @@ app::Project sample(const QString& dataFile) {
     p.verticalExaggeration = 4.0F;
     p.background = {1.0F, 1.0F, 0.9F};
     p.clusters = 3;
-    p.linkage = "ward";
+    p.linkage = prep::Linkage::Ward;
     p.hiddenClusters = {2};
     p.hiddenMembers = {0, 7};
     p.selection = {3, 4};
@@ -59,21 +62,21 @@ TEST(Project, EverythingSavedComesBack) {
     const test::TempDir dir;
     const QString data = writeText(dir, "members.nc", "not read here");
     const QString path = QString::fromStdString(dir.file("session.ensil"));
-    app::saveProject(sample(data), path);
-    const app::Project p = app::loadProject(path);
-    const app::Project e = sample(data);
+    session::saveProject(sample(data), path);
+    const session::SessionState p = session::loadProject(path);
+    const session::SessionState e = sample(data);
     EXPECT_EQ(p.data.paths, e.data.paths);
     EXPECT_EQ(p.data.variable, "t");
     EXPECT_EQ(p.data.memberDimension, "number");
     EXPECT_EQ(p.data.timeIndex, 2u);
     ASSERT_TRUE(p.isovalue);
     EXPECT_FLOAT_EQ(*p.isovalue, 261.5F);
-    ASSERT_TRUE(p.camera);
-    EXPECT_FLOAT_EQ(p.camera->azimuth, -40.0F);
-    EXPECT_FLOAT_EQ(p.camera->elevation, 55.0F);
-    EXPECT_FLOAT_EQ(p.camera->distance, 2.25F);
-    EXPECT_FLOAT_EQ(p.camera->target.y, 0.3F);
-    EXPECT_TRUE(p.camera->orthographic);
+    EXPECT_FLOAT_EQ(p.camera.azimuth, -40.0F);
+    EXPECT_FLOAT_EQ(p.camera.elevation, 55.0F);
+    ASSERT_TRUE(p.camera.placement);
+    EXPECT_FLOAT_EQ(p.camera.placement->distance, 2.25F);
+    EXPECT_FLOAT_EQ(p.camera.placement->target.y, 0.3F);
+    EXPECT_TRUE(p.camera.orthographic);
     EXPECT_EQ(p.render.mode, gl::RenderMode::Spaghetti);
     EXPECT_FLOAT_EQ(p.render.thickness, 0.011F);
     EXPECT_FLOAT_EQ(p.render.surfaceAlpha, 0.4F);
@@ -89,9 +92,10 @@ TEST(Project, EverythingSavedComesBack) {
     EXPECT_FLOAT_EQ(p.render.plane.offset, 0.2F);
     EXPECT_FLOAT_EQ(p.render.plane.thickness, 0.006F);
     EXPECT_FLOAT_EQ(p.verticalExaggeration, 4.0F);
-    EXPECT_FLOAT_EQ(p.background.z, 0.9F);
+    // Colours are kept to 8 bits a channel, as the colour dialog gives them.
+    EXPECT_NEAR(p.background.z, 0.9F, 1.0F / 255.0F);
     EXPECT_EQ(p.clusters, 3);
-    EXPECT_EQ(p.linkage, "ward");
+    EXPECT_EQ(p.linkage, prep::Linkage::Ward);
     EXPECT_EQ(p.hiddenClusters, e.hiddenClusters);
     EXPECT_EQ(p.hiddenMembers, e.hiddenMembers);
     EXPECT_EQ(p.selection, e.selection);
@@ -104,38 +108,38 @@ TEST(Project, DataPathsAreRelativeSoTheProjectCanMoveWithItsData) {
     QDir(QString::fromStdString(dir.path().string())).mkpath("a/data");
     const QString data = writeText(dir, "a/data/members.nc", "x");
     const QString path = QString::fromStdString(dir.file("a/session.ensil"));
-    app::saveProject(sample(data), path);
+    session::saveProject(sample(data), path);
     QFile saved(path);
     ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
     EXPECT_TRUE(saved.readAll().contains("\"path\": \"data/members.nc\""));
     // Move the folder: the project finds the data beside it, not at the old absolute path.
     const QString root = QString::fromStdString(dir.path().string());
     ASSERT_TRUE(QDir(root).rename("a", "b"));
-    const app::Project moved = app::loadProject(root + "/b/session.ensil");
+    const session::SessionState moved = session::loadProject(root + "/b/session.ensil");
     EXPECT_EQ(QString::fromStdString(moved.data.paths.front()), root + "/b/data/members.nc");
 }
 
 TEST(Project, AMinimalFileOpensWithDefaultsForEverythingLeftOut) {
     const test::TempDir dir;
-    const app::Project p = app::projectFromJson(
+    const session::SessionState p = session::projectFromJson(
         R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {"members": 8}}})",
         QDir(QString::fromStdString(dir.path().string())));
     EXPECT_TRUE(p.demo);
     EXPECT_EQ(p.demoParams.members, 8u);
     EXPECT_FALSE(p.isovalue);
-    EXPECT_FALSE(p.camera);
+    EXPECT_FALSE(p.camera.placement) << "no saved camera: fitted to the data";
     EXPECT_EQ(p.render.mode, gl::RenderMode::ShadedSilhouettes);
     EXPECT_EQ(p.clusters, 5);
 }
 
 TEST(Project, ANewerFormatIsRefusedSayingSo) {
     try {
-        (void)app::projectFromJson(
+        (void)session::projectFromJson(
             R"({"format": "ensil project", "schema_version": 7, "written_by": "ensil 9.0.0",
                 "data": {"demo": {}}})",
             QDir::temp());
         FAIL() << "a newer format must be refused";
-    } catch (const app::ProjectError& e) {
+    } catch (const session::ProjectError& e) {
         EXPECT_TRUE(std::string(e.what()).find("newer ensil (ensil 9.0.0") != std::string::npos)
             << e.what();
         EXPECT_TRUE(std::string(e.what()).find("Update ensil") != std::string::npos) << e.what();
@@ -145,8 +149,8 @@ TEST(Project, ANewerFormatIsRefusedSayingSo) {
 TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
     const auto error = [](const char* json) -> std::pair<std::string, int> {
         try {
-            (void)app::projectFromJson(json, QDir::temp());
-        } catch (const app::ProjectError& e) {
+            (void)session::projectFromJson(json, QDir::temp());
+        } catch (const session::ProjectError& e) {
             return {e.what(), e.line()};
         }
         return {"accepted", -1};
@@ -163,13 +167,13 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
             R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
             "rendering": {"thickness": "thick"}})")
             .first;
-    EXPECT_EQ(thickness, "rendering.thickness must be a number");
+    EXPECT_EQ(thickness, "rendering.thickness must be a number from 0.0001 to 0.5");
     const std::string band =
         error(
             R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
             "rendering": {"removal": {"min": 5, "max": 2}}})")
             .first;
-    EXPECT_EQ(band, "rendering.removal.min must be below max");
+    EXPECT_EQ(band, "rendering.removal.min must be below rendering.removal.max");
     const std::string members =
         error(
             R"({"format": "ensil project", "schema_version": 1, "data": {"demo": {}},
@@ -183,16 +187,16 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
 TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {
     const test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("session.ensil"));
-    app::Project small;
+    session::SessionState small;
     small.demo = true;
-    app::saveProject(small, path);
+    session::saveProject(small, path);
     QFile before(path);
     ASSERT_TRUE(before.open(QIODevice::ReadOnly));
     const QByteArray original = before.readAll();
     before.close();
 
     // A disk that fills up: no file may grow past 200 bytes while saving a bigger project.
-    app::Project big = sample(QString::fromStdString(dir.file("members.nc")));
+    session::SessionState big = sample(QString::fromStdString(dir.file("members.nc")));
     big.windowState = QByteArray(4096, 'x');
     std::signal(SIGXFSZ, SIG_IGN);
     rlimit previous{};
@@ -202,8 +206,8 @@ TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {
     ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
     bool refused = false;
     try {
-        app::saveProject(big, path);
-    } catch (const app::ProjectError& e) {
+        session::saveProject(big, path);
+    } catch (const session::ProjectError& e) {
         refused = true;
         EXPECT_TRUE(std::string(e.what()).find("as it was") != std::string::npos) << e.what();
     }

@@ -1,0 +1,53 @@
+// The whole state of a session, as one value: what is shown (the data, or the demo), the
+// isovalue, the clusters, every rendering setting, the camera, the cutting plane, which members
+// are hidden and selected, and the window layout. A project file (.ensil) is its serialisation
+// (project_file.h); the command line builds one (setting_options.h); headless rendering draws
+// one; the workbench keeps its panels in step with one. Every scalar setting in it is defined
+// once, with its range and names, in setting_table.h. A plain value; any thread.
+#pragma once
+
+#include <QByteArray>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
+
+#include "data/demo_ensemble.h"
+#include "data/ensemble_reader.h"
+#include "gl/render_settings.h"
+#include "preprocessing/clustering.h"
+
+namespace ensil::session {
+
+struct CameraState {
+    float azimuth = -75.0F;   // degrees
+    float elevation = 30.0F;  // degrees
+    bool orthographic = false;
+    // Where the camera stands: none means "fitted to the data box" (what the workbench's Reset
+    // Camera does); set once a user moved it, or a picture was drawn.
+    struct Placement {
+        float distance = 3.0F;
+        glm::vec3 target{0.5F};
+    };
+    std::optional<Placement> placement;
+};
+
+struct SessionState {
+    // Either the built-in demo (with its parameters) or files; paths are absolute in memory.
+    bool demo = false;
+    data::DemoEnsembleParams demoParams;
+    data::DataSelection data;
+    std::optional<float> isovalue;  // none: the default for the variable (its 90th percentile)
+    CameraState camera;
+    gl::RenderSettings render;
+    float verticalExaggeration = 1.0F;
+    glm::vec3 background{0.11F, 0.12F, 0.14F};
+    int clusters = 5;
+    prep::Linkage linkage = prep::Linkage::Average;
+    std::vector<int> hiddenMembers;
+    std::vector<int> hiddenClusters;
+    std::vector<int> selection;
+    QByteArray windowGeometry;  // QMainWindow::saveGeometry / saveState, kept as they are
+    QByteArray windowState;
+};
+
+}  // namespace ensil::session
