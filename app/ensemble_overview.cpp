@@ -9,8 +9,9 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
                                        const std::stop_token& stop,
                                        const prep::Progress& progress) {
     EnsembleOverview overview;
-    overview.statistics = prep::computeFieldStatistics(
-        *ensemble, prep::kIsovalueHistogramBins, stop, [&](double f) { prep::report(progress, 0.5 * f); });
+    overview.statistics =
+        prep::computeFieldStatistics(*ensemble, prep::kIsovalueHistogramBins, stop,
+                                     [&](double f) { prep::report(progress, 0.5 * f); });
     if (overview.statistics.validCount == 0) {
         throw data::Error(data::ErrorKind::AllValuesMissing,
                           "every value of '" + ensemble->variable + "' in " + ensemble->source +

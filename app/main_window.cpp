@@ -20,9 +20,9 @@
 #include <limits>
 
 #include "app/ensemble_facts.h"
+#include "app/headless/session_renderer.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
-#include "app/headless/session_renderer.h"
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"

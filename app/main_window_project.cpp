@@ -2,12 +2,12 @@
 // (validated whole first, missing data files located by the user, then applied once its data
 // has loaded), saving (atomic), and the recent projects menu.
 #include <QFileDialog>
-#include <algorithm>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <algorithm>
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"

@@ -99,12 +99,11 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonArray members;
     for (std::size_t m = 0; m < r.ensemble.memberCount(); ++m) {
         const std::string& name = r.ensemble.members[m].name;
-        members.append(QJsonObject{
-            {"name", name.empty() ? QStringLiteral("member %1").arg(m + 1)
-                                  : QString::fromStdString(name)},
-            {"cluster", m < r.labels.size() ? r.labels[m] : -1},
-            {"distance_to_mean", figure(r.distancesToMean[m])},
-            {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
+        members.append(QJsonObject{{"name", name.empty() ? QStringLiteral("member %1").arg(m + 1)
+                                                         : QString::fromStdString(name)},
+                                   {"cluster", m < r.labels.size() ? r.labels[m] : -1},
+                                   {"distance_to_mean", figure(r.distancesToMean[m])},
+                                   {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
     }
     o[QStringLiteral("members")] = members;
     return o;
@@ -144,8 +143,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions(
-        {o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json});
+    parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -158,14 +156,13 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         problem = QStringLiteral("say which isovalue with --iso X (a number)");
     }
     const auto iso = problem.isEmpty() && selection
-                         ? session::parseBoundedNumber(QStringLiteral("--iso"),
-                                                       parser.value(o.iso), -1e30, 1e30, false,
-                                                       problem)
+                         ? session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso),
+                                                       -1e30, 1e30, false, problem)
                          : std::nullopt;
-    const auto errorCells = iso ? session::parseBoundedNumber(QStringLiteral("--error"),
-                                                              parser.value(o.error), 0.001, 10.0,
-                                                              false, problem)
-                                : std::nullopt;
+    const auto errorCells =
+        iso ? session::parseBoundedNumber(QStringLiteral("--error"), parser.value(o.error), 0.001,
+                                          10.0, false, problem)
+            : std::nullopt;
     if (!selection || !iso || !errorCells ||
         !clusterOptions().applyTo(parser, requested, problem)) {
         err << "ensil preprocess: " << problem << "\n";

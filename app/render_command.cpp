@@ -48,9 +48,10 @@ struct Options {
 // The settings the command line sets, each with its range from the one setting table.
 const session::SettingOptions& sceneOptions() {
     static const session::SettingOptions options{
-        "mode", "clusters", "linkage", "show_mean", "thickness",
-        "surface_opacity", "group_size", "vertical_exaggeration", "azimuth", "elevation",
-        "projection", "background", "axis_labels", "legend", "plane_thickness"};
+        "mode",        "clusters",        "linkage",        "show_mean",
+        "thickness",   "surface_opacity", "group_size",     "vertical_exaggeration",
+        "azimuth",     "elevation",       "projection",     "background",
+        "axis_labels", "legend",          "plane_thickness"};
     return options;
 }
 
@@ -60,8 +61,9 @@ std::optional<std::vector<double>> parseNumbers(const QString& name, const QStri
     const QStringList parts = text.split(QLatin1Char(','));
     const auto count = form.count(QLatin1Char(',')) + 1;
     if (parts.size() != count) {
-        problem = QStringLiteral("%1 '%2' is refused: it must be %3 (%4 numbers separated by "
-                                 "commas)")
+        problem = QStringLiteral(
+                      "%1 '%2' is refused: it must be %3 (%4 numbers separated by "
+                      "commas)")
                       .arg(name, text, form)
                       .arg(count);
         return std::nullopt;
@@ -79,8 +81,7 @@ std::optional<std::vector<double>> parseNumbers(const QString& name, const QStri
 std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser& parser,
                                                         const Options& o,
                                                         const data::DataSelection& selection,
-                                                        RenderRequest& request,
-                                                        QString& problem) {
+                                                        RenderRequest& request, QString& problem) {
     session::SessionState state;
     state.demo = parser.isSet(o.demo);
     if (!state.demo) state.data = selection;
@@ -147,8 +148,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.frames,
-                       o.noCache, o.demo, o.json, o.saveProject});
+    parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.frames, o.noCache,
+                       o.demo, o.json, o.saveProject});
     sceneOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
 
@@ -156,11 +157,10 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     RenderRequest request;
     std::optional<session::SessionState> state;
     const auto selection = selectionOptions.selection(parser, problem);
-    const auto size = session::parseImageSize(QStringLiteral("--size"), parser.value(o.size),
-                                              problem);
-    const auto frames = session::parseBoundedNumber(QStringLiteral("--frames"),
-                                                    parser.value(o.frames), 1, 10000, true,
-                                                    problem);
+    const auto size =
+        session::parseImageSize(QStringLiteral("--size"), parser.value(o.size), problem);
+    const auto frames = session::parseBoundedNumber(
+        QStringLiteral("--frames"), parser.value(o.frames), 1, 10000, true, problem);
     const bool fromProject =
         selection && selection->paths.size() == 1 &&
         QString::fromStdString(selection->paths.front()).endsWith(QLatin1String(".ensil"));
@@ -190,7 +190,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         return 2;
     }
     try {
-        if (fromProject) state = session::loadProject(QString::fromStdString(selection->paths.front()));
+        if (fromProject)
+            state = session::loadProject(QString::fromStdString(selection->paths.front()));
         request.width = size->first;
         request.height = size->second;
         request.frames = static_cast<int>(*frames);
@@ -200,7 +201,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
             err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";
             return 1;
         }
-        if (parser.isSet(o.saveProject)) session::saveProject(result.drawn, parser.value(o.saveProject));
+        if (parser.isSet(o.saveProject))
+            session::saveProject(result.drawn, parser.value(o.saveProject));
         if (parser.isSet(o.json)) {
             const QJsonObject json{
                 {"frame_ms", result.frameMs},

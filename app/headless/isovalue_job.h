@@ -1,7 +1,7 @@
 // Everything one isovalue needs, in one job: the meshes (read from the disk cache when this data,
 // isovalue and display mapping were processed before, built and stored otherwise), the
-// similarity matrix, the merge tree and the per-member figures. Shared by the workbench, `ensil preprocess` and
-// `ensil render`. A pure function; runs on any thread.
+// similarity matrix, the merge tree and the per-member figures. Shared by the workbench, `ensil
+// preprocess` and `ensil render`. A pure function; runs on any thread.
 #pragma once
 
 #include <map>

@@ -30,13 +30,12 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
                                                : data::openEnsemble(state.data);
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
-    const float iso =
-        state.isovalue.value_or(prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+    const float iso = state.isovalue.value_or(
+        prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
     if (iso <= stats.minimum || iso >= stats.maximum) {
-        throw session::ProjectError("isovalue " + std::to_string(iso) +
-                                    " is outside the values (" + std::to_string(stats.minimum) +
-                                    " .. " + std::to_string(stats.maximum) + " " +
-                                    ensemble.units + ")");
+        throw session::ProjectError("isovalue " + std::to_string(iso) + " is outside the values (" +
+                                    std::to_string(stats.minimum) + " .. " +
+                                    std::to_string(stats.maximum) + " " + ensemble.units + ")");
     }
     const int members = static_cast<int>(ensemble.memberCount());
     const int k = std::clamp(state.clusters, 1, members);

@@ -61,9 +61,7 @@ TEST_F(ProjectWindow, ASavedSessionComesBackAsItWas) {
     }
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
-    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
-    ASSERT_TRUE(window.openProject(path));
-    ASSERT_TRUE(opened.wait(60000));
+    ASSERT_TRUE(test::openProjectAndWait(window, path));
     const gl::Renderer& r = window.view()->renderer();
     EXPECT_EQ(window.overview()->ensemble->memberCount(), kSmallDemo.members);
     EXPECT_EQ(r.settings().mode, gl::RenderMode::Spaghetti);
@@ -193,9 +191,7 @@ TEST_F(ProjectWindow, AThickTauFromAProjectSurvivesTheFirstEditInThePanel) {
 
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
-    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
-    ASSERT_TRUE(window.openProject(path));
-    ASSERT_TRUE(opened.wait(60000));
+    ASSERT_TRUE(test::openProjectAndWait(window, path));
     EXPECT_FLOAT_EQ(window.view()->renderer().settings().thickness, 0.3F);
     auto* thickness = window.renderPanel()->findChild<QDoubleSpinBox*>("thickness");
     ASSERT_NE(thickness, nullptr);
@@ -212,24 +208,25 @@ TEST_F(ProjectWindow, AProjectSavedByEnsilRenderOpensInTheWorkbenchAsDrawn) {
     const QString path = QString::fromStdString(m_dir.file("rendered.ensil"));
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
-    const int code =
-        app::runCommandLine({"ensil", "render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                             "--var", "t", "--iso", "260", "--out",
-                             QString::fromStdString(m_dir.file("r.png")), "--size", "480x320",
-                             "--frames", "1", "--azimuth", "10", "--elevation", "45",
-                             "--thickness", "0.015", "--mode", "spaghetti", "--clusters", "3",
-                             "--save-project", path},
-                            out, err)
-            .exitCode;
+    const int code = app::runCommandLine(
+                         {"ensil",       "render",    ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                          "--var",       "t",         "--iso",
+                          "260",         "--out",     QString::fromStdString(m_dir.file("r.png")),
+                          "--size",      "480x320",   "--frames",
+                          "1",           "--azimuth", "10",
+                          "--elevation", "45",        "--thickness",
+                          "0.015",       "--mode",    "spaghetti",
+                          "--clusters",  "3",         "--save-project",
+                          path},
+                         out, err)
+                         .exitCode;
     err.flush();
     ASSERT_EQ(code, 0) << errText.toStdString();
     const session::SessionState drawn = session::loadProject(path);
 
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
-    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
-    ASSERT_TRUE(window.openProject(path));
-    ASSERT_TRUE(opened.wait(60000));
+    ASSERT_TRUE(test::openProjectAndWait(window, path));
     const gl::Renderer& r = window.view()->renderer();
     EXPECT_EQ(r.settings().mode, gl::RenderMode::Spaghetti);
     EXPECT_FLOAT_EQ(r.settings().thickness, 0.015F);

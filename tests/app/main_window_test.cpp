@@ -25,8 +25,8 @@ using namespace ensil;
 
 TEST(TestIsolation, RememberedSettingsLiveInAFolderOfThisTestProcessAlone) {
     const QString file = QSettings().fileName();
-    EXPECT_TRUE(
-        file.contains(QStringLiteral("ensil-test-home-%1/").arg(QCoreApplication::applicationPid())))
+    EXPECT_TRUE(file.contains(
+        QStringLiteral("ensil-test-home-%1/").arg(QCoreApplication::applicationPid())))
         << file.toStdString();
     EXPECT_FALSE(file.startsWith(QDir::homePath() + QStringLiteral("/.config")))
         << file.toStdString();

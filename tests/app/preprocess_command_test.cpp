@@ -105,8 +105,12 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
     // These used to turn decimation off silently, or take a fraction as a count.
     for (const QStringList& bad : {QStringList{"--error", "-1"}, QStringList{"--error", "abc"},
                                    QStringList{"--clusters", "2.5"}, QStringList{"--iso", "nan"}}) {
-        QStringList args{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
-                         "260", "--no-cache"};
+        QStringList args{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                         "--var",
+                         "t",
+                         "--iso",
+                         "260",
+                         "--no-cache"};
         args += bad;
         const CommandRun run = preprocess(args);
         EXPECT_EQ(run.code, 2) << bad.join(' ').toStdString();

@@ -140,10 +140,10 @@ TEST(RenderCommand, ASavedProjectDrawsTheIdenticalPicture) {
     test::TempDir dir;
     const QString project = QString::fromStdString(dir.file("drawn.ensil"));
     QString error;
-    const QImage first = renderEra5({"--azimuth", "20", "--clusters", "3", "--thickness", "0.02",
-                                     "--plane", "0,1,0,0.2", "--background", "#204060",
-                                     "--projection", "orthographic", "--save-project", project},
-                                    &error);
+    const QImage first = renderEra5(
+        {"--azimuth", "20", "--clusters", "3", "--thickness", "0.02", "--plane", "0,1,0,0.2",
+         "--background", "#204060", "--projection", "orthographic", "--save-project", project},
+        &error);
     ASSERT_FALSE(first.isNull()) << error.toStdString();
     ASSERT_TRUE(QFile::exists(project));
 

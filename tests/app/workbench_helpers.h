@@ -36,4 +36,12 @@ namespace ensil::test {
     return built.count() > 0 || built.wait(timeoutMs);
 }
 
+// Opens a project and waits until it is applied (data loaded, surfaces built, members shown as
+// saved); false when it was refused or never came.
+[[nodiscard]] inline bool openProjectAndWait(app::MainWindow& window, const QString& path,
+                                             int timeoutMs = 60000) {
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    return window.openProject(path) && (opened.count() > 0 || opened.wait(timeoutMs));
+}
+
 }  // namespace ensil::test

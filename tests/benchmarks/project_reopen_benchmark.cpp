@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "app/isovalue_session.h"
-#include "widgets/session/project_file.h"
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
 #include "timing.h"
+#include "widgets/session/project_file.h"
 
 namespace {
 struct Reopening {

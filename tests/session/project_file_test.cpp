@@ -1,6 +1,6 @@
-// Project files (the session's serialisation): what is saved comes back, paths travel with the project, bad files are
-// refused with the line or field and the reason, newer formats are refused, and a failed write
-// leaves the previous file as it was.
+// Project files (the session's serialisation): what is saved comes back, paths travel with the
+// project, bad files are refused with the line or field and the reason, newer formats are refused,
+// and a failed write leaves the previous file as it was.
 #include "widgets/session/project_file.h"
 
 #include <gtest/gtest.h>

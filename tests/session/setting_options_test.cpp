@@ -9,8 +9,8 @@ using namespace ensil;
 namespace {
 QString refusal(std::string_view id, const char* text) {
     QString problem;
-    const auto value = session::parseSettingValue(session::setting(id), QString::fromLatin1(text),
-                                                  problem);
+    const auto value =
+        session::parseSettingValue(session::setting(id), QString::fromLatin1(text), problem);
     return value ? QString() : problem;
 }
 }  // namespace
@@ -38,9 +38,8 @@ TEST(SettingOptions, GoodValuesAreTakenAsTyped) {
     EXPECT_DOUBLE_EQ(*session::parseSettingValue(session::setting("thickness"), "0.01", problem),
                      0.01);
     EXPECT_DOUBLE_EQ(*session::parseSettingValue(session::setting("mode"), "Opaque", problem), 3);
-    EXPECT_DOUBLE_EQ(*session::parseSettingValue(session::setting("background"), "#ffffff",
-                                                 problem),
-                     0xFFFFFF);
+    EXPECT_DOUBLE_EQ(
+        *session::parseSettingValue(session::setting("background"), "#ffffff", problem), 0xFFFFFF);
 }
 
 TEST(SettingOptions, ImageSizesNeverWrap) {

@@ -66,8 +66,8 @@ TEST(SettingTable, GetAndSetReachTheSameField) {
         session::SessionState state;
         // A value other than the default, inside the range.
         const double other = s.kind == session::SettingKind::Colour ? 0x123456
-                             : s.defaultValue() == s.maximum         ? s.minimum
-                                                                     : s.maximum;
+                             : s.defaultValue() == s.maximum        ? s.minimum
+                                                                    : s.maximum;
         s.set(state, other);
         EXPECT_NEAR(s.get(state), other, std::abs(other) * 1e-6) << s.id;
         // ... and only that setting changed.

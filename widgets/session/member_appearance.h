@@ -20,8 +20,7 @@ struct MemberFlags {
 // The session's hidden members, hidden clusters (by `labels`, one cluster label per member or
 // empty when not clustered) and selection, for `memberCount` members. Indices out of range are
 // ignored: a project may name members of a larger ensemble.
-MemberFlags memberFlags(const SessionState& state, const std::vector<int>& labels,
-                        int memberCount);
+MemberFlags memberFlags(const SessionState& state, const std::vector<int>& labels, int memberCount);
 
 // What the renderer needs per member; `labels` as above (-1 or empty: gray, not clustered).
 std::vector<gl::MemberAppearance> memberAppearance(const std::vector<int>& labels,

@@ -262,8 +262,8 @@ QByteArray projectToJson(const SessionState& p, const QDir& projectDir) {
         {"schema_version", kProjectSchemaVersion},
         {"written_by", QStringLiteral("ensil " ENSIL_VERSION)},
         {"data", dataJson(p, projectDir)},
-        {"cutting_plane",
-         QJsonObject{{"normal", vec3Json(p.render.plane.normal)}, {"offset", p.render.plane.offset}}},
+        {"cutting_plane", QJsonObject{{"normal", vec3Json(p.render.plane.normal)},
+                                      {"offset", p.render.plane.offset}}},
         {"clusters", QJsonObject{{"hidden", intsJson(p.hiddenClusters)}}},
         {"members",
          QJsonObject{{"hidden", intsJson(p.hiddenMembers)}, {"selected", intsJson(p.selection)}}},
@@ -337,7 +337,8 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
             static_cast<float>(f.number(QStringLiteral("offset"), 0.0, -1e6, 1e6));
     }
     if (root.has(QStringLiteral("clusters"))) {
-        p.hiddenClusters = root.object(QStringLiteral("clusters")).indices(QStringLiteral("hidden"));
+        p.hiddenClusters =
+            root.object(QStringLiteral("clusters")).indices(QStringLiteral("hidden"));
     }
     if (root.has(QStringLiteral("members"))) {
         const Fields f = root.object(QStringLiteral("members"));

@@ -75,12 +75,13 @@ std::optional<double> parseBoundedNumber(const QString& name, const QString& tex
     const bool allowed = ok && std::isfinite(value) && value >= minimum && value <= maximum &&
                          (!whole || value == std::floor(value));
     if (allowed) return value;
-    problem = refusal(name, text,
-                      QStringLiteral("must be %1 from %2 to %3")
-                          .arg(whole ? QStringLiteral("a whole number") : QStringLiteral("a number"))
-                          .arg(minimum)
-                          .arg(maximum)
-                          .toStdString());
+    problem =
+        refusal(name, text,
+                QStringLiteral("must be %1 from %2 to %3")
+                    .arg(whole ? QStringLiteral("a whole number") : QStringLiteral("a number"))
+                    .arg(minimum)
+                    .arg(maximum)
+                    .toStdString());
     return std::nullopt;
 }
 
@@ -109,22 +110,21 @@ SettingOptions::SettingOptions(std::initializer_list<std::string_view> ids) {
         if (s.kind == SettingKind::Flag) {
             m_entries.push_back(
                 {&s,
-                 QCommandLineOption(name, QStringLiteral("%1 (the default: %2).")
-                                              .arg(qs(s.help), s.defaultValue() != 0.0
-                                                                   ? QStringLiteral("on")
-                                                                   : QStringLiteral("off"))),
+                 QCommandLineOption(
+                     name, QStringLiteral("%1 (the default: %2).")
+                               .arg(qs(s.help), s.defaultValue() != 0.0 ? QStringLiteral("on")
+                                                                        : QStringLiteral("off"))),
                  QCommandLineOption(QStringLiteral("no-") + name,
                                     QStringLiteral("The opposite of --%1.").arg(name))});
             continue;
         }
-        m_entries.push_back(
-            {&s,
-             QCommandLineOption(name,
-                                QStringLiteral("%1 (default %2; %3).")
-                                    .arg(qs(s.help), defaultText,
-                                         QString::fromStdString(s.allowed())),
-                                valueName(s), defaultText),
-             std::nullopt});
+        m_entries.push_back({&s,
+                             QCommandLineOption(name,
+                                                QStringLiteral("%1 (default %2; %3).")
+                                                    .arg(qs(s.help), defaultText,
+                                                         QString::fromStdString(s.allowed())),
+                                                valueName(s), defaultText),
+                             std::nullopt});
     }
 }
 
