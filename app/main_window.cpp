@@ -131,11 +131,13 @@ void MainWindow::createMenus() {
     addExportActions(file);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+    m_resetCameraAction = new QAction(tr("&Reset Camera"), this);
+    m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_resetCameraAction, &QAction::triggered, m_view, &ui::SilhouetteView::resetCamera);
     createEditMenu();
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    viewMenu->addAction(tr("&Reset Camera"), QKeySequence(Qt::CTRL | Qt::Key_R), m_view,
-                        &ui::SilhouetteView::resetCamera);
+    viewMenu->addAction(m_resetCameraAction);
     QAction* fullScreen = viewMenu->addAction(tr("&Full Screen"));
     fullScreen->setShortcut(QKeySequence::FullScreen);
     fullScreen->setCheckable(true);
@@ -366,6 +368,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_overview = std::move(overview);
     m_shownSelection = m_requested;
     m_shownDemo = m_requestedDemo;
+    m_historyStartsAfresh = true;
     if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();

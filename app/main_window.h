@@ -38,6 +38,10 @@ class ClusterPanel;
 class DendrogramView;
 }  // namespace ensil::ui
 
+namespace ensil::session {
+class SessionHistory;
+}
+
 namespace ensil::app {
 
 class IsovalueSession;
@@ -87,6 +91,11 @@ public:
     bool saveProjectTo(const QString& path, QString* error = nullptr);
     // The session on screen, as a project saves it.
     [[nodiscard]] session::SessionState captureSession() const;
+    // Shows a session of the data on screen: settings, camera, plane, isovalue, clusters,
+    // linkage and visibility (undo and redo; main_window_history.cpp).
+    void applySession(const session::SessionState& state);
+    // Edit > Undo and Redo, whose names say the step ("Undo Isovalue 35.6 -> 30").
+    [[nodiscard]] session::SessionHistory* history() const { return m_history; }
     [[nodiscard]] QString projectPath() const { return m_projectPath; }
     // Who is asked where a project's missing data file went (a file dialog by default);
     // an empty answer cancels opening.
@@ -148,6 +157,7 @@ private:
     void setBusy(const QString& what);
     void setIdle(const QString& message);
     void createProjectActions(QMenu* file);
+    void createHistory(QMenu* edit);  // main_window_history.cpp
     void chooseScreenshot();
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);
@@ -171,6 +181,10 @@ private:
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;
+    session::SessionHistory* m_history = nullptr;
+    QAction* m_resetCameraAction = nullptr;
+    // New data is on screen: its first surfaces start the undo history afresh.
+    bool m_historyStartsAfresh = false;
     ui::MemberSelection* m_selection = nullptr;
     ui::MemberTablePanel* m_memberTable = nullptr;
     ui::ClusterPanel* m_clusterPanel = nullptr;

@@ -125,6 +125,8 @@ void MainWindow::createEditMenu() {
         m_selection->setSelection(all);
     });
     edit->addAction(tr("&Show All Members"), this, [this] { m_selection->showAll(); });
+    edit->addSeparator();
+    createHistory(edit);
 }
 
 bool MainWindow::isBusy() const {

@@ -17,6 +17,7 @@
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/session/remembered_settings.h"
+#include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -122,7 +123,11 @@ void MainWindow::createRenderDocks() {
                                 : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
                                     ? QStringLiteral("(%1)\u00b2").arg(units)
                                     : units + QStringLiteral("\u00b2");
-        m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared);
+        if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
+            // The first band the panel now shows is the one drawn (and saved, and undone).
+            m_view->renderer().settings() = m_renderPanel->applyTo(m_view->renderer().settings());
+            if (m_history != nullptr) m_history->absorb();
+        }
     });
 }
 

@@ -174,13 +174,15 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
 
 void RenderPanel::setMode(gl::RenderMode mode) { m_mode->setCurrentIndex(static_cast<int>(mode)); }
 
-void RenderPanel::setOutlyingnessRange(double maximum, const QString& unitsSquared) {
+bool RenderPanel::setOutlyingnessRange(double maximum, const QString& unitsSquared) {
     maximum = std::max(maximum, 1e-9);
     const bool firstRange = m_removalMax->maximum() <= 1.0 && m_removalMax->value() == 1.0;
+    // Values beyond the new range are kept as they are (a project's), never clamped.
+    const double held = std::max(m_removalMin->value(), m_removalMax->value());
     for (QDoubleSpinBox* box : {m_removalMin, m_removalMax}) {
         const QSignalBlocker block(box);
         box->setDecimals(decimalsFor(maximum));
-        box->setMaximum(maximum);
+        box->setMaximum(firstRange ? maximum : std::max(maximum, held));
         box->setSingleStep(maximum / 100.0);
         box->setSuffix(unitsSquared.isEmpty() ? QString() : QLatin1Char(' ') + unitsSquared);
     }
@@ -190,6 +192,7 @@ void RenderPanel::setOutlyingnessRange(double maximum, const QString& unitsSquar
         m_removalMin->setValue(0.0);
         m_removalMax->setValue(maximum / 2.0);
     }
+    return firstRange;
 }
 
 void RenderPanel::setVerticalExaggeration(double factor) {

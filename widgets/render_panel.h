@@ -33,8 +33,10 @@ public:
     void setMode(gl::RenderMode mode);
 
     // The largest outlyingness of the meshes on screen, in the variable's units squared: the
-    // removal thresholds range over [0, maximum].
-    void setOutlyingnessRange(double maximum, const QString& unitsSquared);
+    // removal thresholds range over [0, maximum] (wider when they hold larger values). The
+    // first range also sets a first band, the lower half: returns true then (applyTo() holds
+    // thresholds that differ from the settings last given).
+    bool setOutlyingnessRange(double maximum, const QString& unitsSquared);
     void setVerticalExaggeration(double factor);
     [[nodiscard]] double verticalExaggeration() const;
     void setOrthographic(bool orthographic);

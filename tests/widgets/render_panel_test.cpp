@@ -71,11 +71,23 @@ TEST(RenderPanel, UserEditsSignalOnceAndKeepTheRemovalBandOrdered) {
 
 TEST(RenderPanel, AFirstOutlyingnessRangeProposesTheLowerHalf) {
     ui::RenderPanel panel;
-    panel.setOutlyingnessRange(12.0, {});
+    EXPECT_TRUE(panel.setOutlyingnessRange(12.0, {})) << "the first range proposes a band";
     const gl::RenderSettings s = panel.applyTo({});
     EXPECT_FLOAT_EQ(s.removalMin, 0.0F);
     EXPECT_FLOAT_EQ(s.removalMax, 6.0F);
     // A later range (another isovalue) keeps what the user chose.
-    panel.setOutlyingnessRange(30.0, {});
+    EXPECT_FALSE(panel.setOutlyingnessRange(30.0, {}));
     EXPECT_FLOAT_EQ(panel.applyTo({}).removalMax, 6.0F);
+}
+
+TEST(RenderPanel, ASmallerRangeNeverClampsThresholdsAProjectHolds) {
+    // Clamping them would draw the project otherwise than `ensil render PROJECT` does.
+    ui::RenderPanel panel;
+    gl::RenderSettings saved;
+    saved.removalMin = 5.0F;
+    saved.removalMax = 40.0F;
+    panel.setSettings(saved);
+    EXPECT_FALSE(panel.setOutlyingnessRange(12.0, {}));
+    EXPECT_FLOAT_EQ(panel.applyTo({}).removalMin, 5.0F);
+    EXPECT_FLOAT_EQ(panel.applyTo({}).removalMax, 40.0F);
 }

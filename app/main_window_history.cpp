@@ -1,0 +1,99 @@
+// Undo and redo in the main window: which edits are recorded as steps (every control that
+// changes the session: the toolbar, the rendering and plane panels, the clusters and linkage,
+// visibility, Reset Camera), and how a step's session is shown again.
+#include <QAction>
+#include <QMenu>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "widgets/cluster_panel.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/member_selection.h"
+#include "widgets/render_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/session/member_appearance.h"
+#include "widgets/session/session_history.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+
+void MainWindow::createHistory(QMenu* edit) {
+    m_history = new session::SessionHistory(
+        [this] { return captureSession(); },
+        [this](const session::SessionState& s) { applySession(s); }, this);
+    QAction* undo = m_history->stack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
+    QAction* redo = m_history->stack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    // New data: what was done to the old data cannot be undone on it.
+    connect(m_session, &IsovalueSession::finished, this, [this] {
+        if (!m_historyStartsAfresh) return;
+        m_historyStartsAfresh = false;
+        m_history->reset();
+    });
+    // Recorded after the edit has reached the view (queued: every direct handler ran first).
+    const auto record = [this] { m_history->record(); };
+    const auto queued = Qt::QueuedConnection;
+    connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, record, queued);
+    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this, record, queued);
+    connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, record, queued);
+    connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, record, queued);
+    connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, record, queued);
+    connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, record, queued);
+    connect(m_selection, &ui::MemberSelection::clustersChanged, this, record, queued);
+    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, record, queued);
+    connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, record, queued);
+    connect(
+        m_resetCameraAction, &QAction::triggered, this,
+        [this] { m_history->record(/*cameraStep=*/true); }, queued);
+}
+
+void MainWindow::applySession(const session::SessionState& s) {
+    if (!m_overview) return;
+    gl::Renderer& renderer = m_view->renderer();
+    renderer.settings() = s.render;
+    m_renderPanel->setSettings(s.render);
+    m_renderPanel->setBackground(QColor::fromRgbF(s.background.r, s.background.g, s.background.b));
+    renderer.setBackground({s.background, 1.0F});
+    m_renderPanel->setOrthographic(s.camera.orthographic);
+    gl::Camera& camera = renderer.camera();
+    camera.setProjection(s.camera.orthographic ? gl::Camera::Projection::Orthographic
+                                               : gl::Camera::Projection::Perspective);
+    camera.setAngles(s.camera.azimuth, s.camera.elevation);
+    if (s.camera.placement) {
+        camera.setTarget(s.camera.placement->target);
+        camera.setDistance(s.camera.placement->distance);
+    }
+    if (renderer.frame().verticalExaggeration() != s.verticalExaggeration) {
+        setVerticalExaggeration(s.verticalExaggeration);  // rebuilds the attributes
+    }
+    m_planePanel->setPlane(s.render.plane);
+    renderer.settings().plane = s.render.plane;
+    if (s.linkage != m_session->linkage()) {
+        m_session->setLinkage(s.linkage);
+        m_clusterPanel->setLinkage(s.linkage);
+    }
+    if (s.clusters != m_selection->requestedClusterCount())
+        m_selection->setClusterCount(s.clusters);
+    if (s.isovalue && static_cast<float>(m_toolbar->isovalue()) != *s.isovalue) {
+        const prep::FieldStatistics& stats = m_overview->statistics;
+        m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, *s.isovalue,
+                                    QString::fromStdString(m_overview->ensemble->units));
+        // From the mesh cache when this isovalue was shown before.
+        m_session->setIsovalue(*s.isovalue);
+    }
+    const session::MemberFlags flags =
+        session::memberFlags(s, m_selection->labels(), m_selection->memberCount());
+    for (int m = 0; m < m_selection->memberCount(); ++m) {
+        m_selection->setMemberVisible(m, flags.visible[static_cast<std::size_t>(m)]);
+    }
+    m_view->update();
+}
+
+}  // namespace ensil::app
