@@ -23,7 +23,7 @@ QString describeDimensions(const data::VariableInfo& variable) {
     return dims.join(QStringLiteral(", "));
 }
 
-ui::EnsembleFacts describeEnsemble(const EnsembleOverview& overview) {
+ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
     const data::Ensemble& e = *overview.ensemble;
     ui::EnsembleFacts facts;
     facts.source = QString::fromStdString(e.source);

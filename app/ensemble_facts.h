@@ -7,7 +7,7 @@
 
 namespace ensil::app {
 
-ui::EnsembleFacts describeEnsemble(const EnsembleOverview& overview);
+ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview);
 // "lon: -80 .. 40 degrees_east, 256 points, uniform"
 QString describeAxis(const data::Axis& axis);
 // A variable's dimensions with their lengths where known: "number=10, plev=7, lat=61, lon=120"

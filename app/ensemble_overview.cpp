@@ -7,21 +7,21 @@ namespace ensil::app {
 
 EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
                                        const std::stop_token& stop,
-                                       const prep::Progress& progress) {
+                                       const data::Progress& progress) {
     EnsembleOverview overview;
     overview.statistics =
         prep::computeFieldStatistics(*ensemble, prep::kIsovalueHistogramBins, stop,
-                                     [&](double f) { prep::report(progress, 0.5 * f); });
+                                     [&](double f) { data::report(progress, 0.5 * f); });
     if (overview.statistics.validCount == 0) {
         throw data::Error(data::ErrorKind::AllValuesMissing,
                           "every value of '" + ensemble->variable + "' in " + ensemble->source +
                               " is missing: there is nothing to draw");
     }
     auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
-        *ensemble, stop, [&](double f) { prep::report(progress, 0.5 + 0.45 * f); }));
+        *ensemble, stop, [&](double f) { data::report(progress, 0.5 + 0.45 * f); }));
     overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, moments->mean);
     overview.moments = std::move(moments);
-    prep::report(progress, 1.0);
+    data::report(progress, 1.0);
     overview.ensemble = std::move(ensemble);
     return overview;
 }

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "data/ensemble.h"
+#include "data/job.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
-#include "preprocessing/job.h"
 
 namespace ensil::app {
 
@@ -22,8 +22,8 @@ struct EnsembleOverview {
     std::vector<float> meanColumnMaximum;                  // nx * ny
 };
 
-// Throws prep::Cancelled, data::Error.
+// Throws data::Cancelled, data::Error.
 EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
-                                       const std::stop_token& stop, const prep::Progress& progress);
+                                       const std::stop_token& stop, const data::Progress& progress);
 
 }  // namespace ensil::app

@@ -68,11 +68,7 @@ void IsovalueSession::setIsovalue(float isovalue) {
             IsovalueResult r;
             r.fromCache = outcome.fromCache;
             r.triangles = outcome.meshes.triangles;
-            auto set = std::make_shared<data::MeshSet>();
-            set->isovalue = outcome.meshes.isovalue;
-            set->members = std::move(outcome.meshes.members);
-            set->mean = std::move(outcome.meshes.mean);
-            r.meshes = std::move(set);
+            r.meshes = std::make_shared<data::MeshSet>(std::move(outcome.meshes));
             r.distances = std::move(outcome.distances);
             r.tree = std::move(outcome.tree);
             r.distancesToMean = std::move(outcome.distancesToMean);

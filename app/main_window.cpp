@@ -377,7 +377,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
     m_view->update();
-    m_info->showFacts(describeEnsemble(*m_overview));
+    m_info->showFacts(ensembleFacts(*m_overview));
     // Show isosurfaces right away, at an isovalue worth looking at.
     const prep::FieldStatistics& stats = m_overview->statistics;
     float iso = prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);

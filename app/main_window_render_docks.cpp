@@ -12,7 +12,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"

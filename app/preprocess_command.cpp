@@ -77,7 +77,7 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     o[QStringLiteral("triangles")] = static_cast<qint64>(r.meshes.triangles);
     o[QStringLiteral("triangles_extracted")] = static_cast<qint64>(r.meshes.trianglesExtracted);
     o[QStringLiteral("decimation_error_cells")] = r.meshes.worstErrorCells;
-    o[QStringLiteral("bytes_per_vertex")] = static_cast<int>(sizeof(prep::PackedVertex));
+    o[QStringLiteral("bytes_per_vertex")] = static_cast<int>(sizeof(data::PackedVertex));
     o[QStringLiteral("gpu_bytes")] = static_cast<qint64>(r.meshes.gpuBytes());
     QJsonArray matrix;
     for (std::size_t i = 0; i < r.distances.size; ++i) {
@@ -117,7 +117,7 @@ void printText(QTextStream& out, const Result& r, int k) {
         << "\n";
     out << "Triangles:  " << m.trianglesExtracted << " extracted, " << m.triangles
         << " after decimation (error <= " << m.worstErrorCells << " cells); " << m.vertices
-        << " vertices, " << sizeof(prep::PackedVertex) << " bytes each\n";
+        << " vertices, " << sizeof(data::PackedVertex) << " bytes each\n";
     out << "GPU data:   " << QString::number(static_cast<double>(m.gpuBytes()) / 1048576.0, 'f', 2)
         << " MiB (cache: " << r.cache << ")\n";
     out << "Seconds:   ";

@@ -39,8 +39,15 @@ struct PackedMesh {
 // The meshes of one isovalue as the renderer takes them: every member's and the mean's.
 struct MeshSet {
     float isovalue = 0.0F;
-    std::vector<PackedMesh> members;
+    std::vector<PackedMesh> members;  // one per member, in member order (may be empty meshes)
     PackedMesh mean;
+
+    // Bytes on the GPU: every member's and the mean's.
+    [[nodiscard]] std::size_t gpuBytes() const {
+        std::size_t bytes = mean.gpuBytes();
+        for (const PackedMesh& m : members) bytes += m.gpuBytes();
+        return bytes;
+    }
 };
 
 }  // namespace ensil::data

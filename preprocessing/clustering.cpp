@@ -223,7 +223,7 @@ std::string linkageName(Linkage linkage) {
 }
 
 MergeTree clusterMembers(const DistanceMatrix& distances, Linkage linkage,
-                         const std::stop_token& stop, const Progress& progress) {
+                         const std::stop_token& stop, const data::Progress& progress) {
     validateDistances(distances);
     MergeTree tree;
     tree.memberCount = static_cast<int>(distances.size);
@@ -231,11 +231,11 @@ MergeTree clusterMembers(const DistanceMatrix& distances, Linkage linkage,
     tree.merges.reserve(static_cast<std::size_t>(steps));
     Agglomeration agglomeration(distances, linkage);
     for (int step = 0; step < steps; ++step) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         tree.merges.push_back(agglomeration.mergeClosest(step));
-        report(progress, static_cast<double>(step + 1) / static_cast<double>(steps));
+        data::report(progress, static_cast<double>(step + 1) / static_cast<double>(steps));
     }
-    report(progress, 1.0);
+    data::report(progress, 1.0);
     return tree;
 }
 

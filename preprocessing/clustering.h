@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "preprocessing/job.h"
+#include "data/job.h"
 #include "preprocessing/similarity.h"
 
 namespace ensil::prep {
@@ -54,10 +54,10 @@ struct MergeTree {
 // Clusters the members whose distances are given (N >= 1). O(N^2) memory, O(N^3) time: about
 // 1 ms for N = 200 in an optimised build. Distances may be +infinity (members with no valid
 // point in common); such pairs merge last, at infinite height.
-// Throws Cancelled if stop is requested, data::Error(InvalidArgument) for an empty, non-square
-// or asymmetric matrix, or for negative or NaN distances.
+// Throws data::Cancelled if stop is requested, data::Error(InvalidArgument) for an empty,
+// non-square or asymmetric matrix, or for negative or NaN distances.
 MergeTree clusterMembers(const DistanceMatrix& distances, Linkage linkage = Linkage::Average,
-                         const std::stop_token& stop = {}, const Progress& progress = {});
+                         const std::stop_token& stop = {}, const data::Progress& progress = {});
 
 // The members in dendrogram order: depth-first through the tree from the root, the child `a`
 // of each merge before `b`. Every cluster of every cut is a contiguous run of this order.

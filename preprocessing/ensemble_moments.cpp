@@ -8,15 +8,16 @@
 namespace ensil::prep {
 
 EnsembleMoments computeEnsembleMoments(const data::Ensemble& ensemble, const std::stop_token& stop,
-                                       const Progress& progress) {
+                                       const data::Progress& progress) {
     EnsembleMoments moments;
-    moments.mean = computeMeanMember(ensemble, stop, [&](double f) { report(progress, 0.5 * f); });
+    moments.mean =
+        computeMeanMember(ensemble, stop, [&](double f) { data::report(progress, 0.5 * f); });
     const std::size_t n = ensemble.grid.pointCount();
     std::vector<double> sum(n, 0.0);
     std::vector<std::uint32_t> count(n, 0);
     const float* mean = moments.mean.values.data();
     for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         const float* f = ensemble.members[m].values.data();
         for (std::size_t p = 0; p < n; ++p) {
             if (!std::isnan(f[p])) {
@@ -25,8 +26,8 @@ EnsembleMoments computeEnsembleMoments(const data::Ensemble& ensemble, const std
                 ++count[p];
             }
         }
-        report(progress, 0.5 + 0.5 * static_cast<double>(m + 1) /
-                                   static_cast<double>(ensemble.memberCount()));
+        data::report(progress, 0.5 + 0.5 * static_cast<double>(m + 1) /
+                                         static_cast<double>(ensemble.memberCount()));
     }
     moments.variance.resize(n);
     for (std::size_t p = 0; p < n; ++p) {

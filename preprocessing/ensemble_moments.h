@@ -9,7 +9,7 @@
 #include <stop_token>
 
 #include "data/ensemble.h"
-#include "preprocessing/job.h"
+#include "data/job.h"
 
 namespace ensil::prep {
 
@@ -18,9 +18,9 @@ struct EnsembleMoments {
     data::FieldValues variance;
 };
 
-// Throws Cancelled, data::Error(InvalidArgument) for an empty ensemble.
+// Throws data::Cancelled, data::Error(InvalidArgument) for an empty ensemble.
 EnsembleMoments computeEnsembleMoments(const data::Ensemble& ensemble,
                                        const std::stop_token& stop = {},
-                                       const Progress& progress = {});
+                                       const data::Progress& progress = {});
 
 }  // namespace ensil::prep

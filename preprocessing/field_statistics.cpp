@@ -8,7 +8,8 @@
 namespace ensil::prep {
 
 FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size_t bins,
-                                       const std::stop_token& stop, const Progress& progress) {
+                                       const std::stop_token& stop,
+                                       const data::Progress& progress) {
     FieldStatistics stats;
     float lo = std::numeric_limits<float>::infinity();
     float hi = -lo;
@@ -16,7 +17,7 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
     const std::size_t members = ensemble.memberCount();
     // Two passes over the members: the range first, then the histogram over that range.
     for (std::size_t m = 0; m < members; ++m) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         for (const float v : ensemble.members[m].values) {
             if (std::isnan(v)) {
                 ++stats.missingCount;
@@ -27,11 +28,11 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
             sum += v;
             ++stats.validCount;
         }
-        report(progress, 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
+        data::report(progress, 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
     }
     stats.histogram.assign(bins, 0);
     if (stats.validCount == 0) {
-        report(progress, 1.0);
+        data::report(progress, 1.0);
         return stats;
     }
     stats.minimum = lo;
@@ -41,13 +42,14 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
         const double width = static_cast<double>(hi) - static_cast<double>(lo);
         const double scale = width > 0.0 ? static_cast<double>(bins) / width : 0.0;
         for (std::size_t m = 0; m < members; ++m) {
-            throwIfStopped(stop);
+            data::throwIfStopped(stop);
             for (const float v : ensemble.members[m].values) {
                 if (std::isnan(v)) continue;
                 const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
                 ++stats.histogram[std::min(bin, bins - 1)];
             }
-            report(progress, 0.5 + 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
+            data::report(progress,
+                         0.5 + 0.5 * static_cast<double>(m + 1) / static_cast<double>(members));
         }
     }
     return stats;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "data/ensemble.h"
-#include "preprocessing/job.h"
+#include "data/job.h"
 
 namespace ensil::prep {
 
@@ -25,10 +25,10 @@ struct FieldStatistics {
 // The histogram the workbench's isovalue control shows and the default isovalue is taken from.
 inline constexpr std::size_t kIsovalueHistogramBins = 128;
 
-// Throws Cancelled if stop is requested.
+// Throws data::Cancelled if stop is requested.
 FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size_t bins,
                                        const std::stop_token& stop = {},
-                                       const Progress& progress = {});
+                                       const data::Progress& progress = {});
 
 // An isovalue worth looking at first: the 90th percentile of the values (for the demo's wind
 // speed about the paper's 30 m/s), from a histogram over [minimum, maximum]; the middle of the

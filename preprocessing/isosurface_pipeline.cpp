@@ -20,8 +20,8 @@ double since(Clock::time_point start) {
 
 // Runs work(i) for i in [0, n) in parallel; reports progress between lo and hi of the whole.
 template <typename Work>
-void forEachField(std::size_t n, const std::stop_token& stop, const Progress& progress, double lo,
-                  double hi, Work&& work) {
+void forEachField(std::size_t n, const std::stop_token& stop, const data::Progress& progress,
+                  double lo, double hi, Work&& work) {
     std::atomic<std::size_t> done{0};
     std::mutex reportMutex;
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
@@ -29,22 +29,17 @@ void forEachField(std::size_t n, const std::stop_token& stop, const Progress& pr
         work(i);
         const std::size_t finished = ++done;
         const std::lock_guard lock(reportMutex);  // keeps reports monotonic
-        report(progress, lo + (hi - lo) * static_cast<double>(finished) / static_cast<double>(n));
+        data::report(progress,
+                     lo + (hi - lo) * static_cast<double>(finished) / static_cast<double>(n));
     });
-    throwIfStopped(stop);
+    data::throwIfStopped(stop);
 }
 
 }  // namespace
 
-std::size_t IsovalueMeshes::gpuBytes() const {
-    std::size_t bytes = mean.gpuBytes();
-    for (const PackedMesh& m : members) bytes += m.gpuBytes();
-    return bytes;
-}
-
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
                                    const data::DisplayFrame& frame, const PipelineOptions& options,
-                                   const std::stop_token& stop, const Progress& progress) {
+                                   const std::stop_token& stop, const data::Progress& progress) {
     const std::size_t n = ensemble.memberCount();
     // Field n is the mean member.
     const auto field = [&](std::size_t i) -> const data::FieldValues& {

@@ -10,9 +10,9 @@
 
 #include "data/display_frame.h"
 #include "data/ensemble.h"
+#include "data/job.h"
 #include "preprocessing/ensemble_moments.h"
-#include "preprocessing/job.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 
 namespace ensil::prep {
 
@@ -28,22 +28,21 @@ struct StageSeconds {
     double meshes = 0, decimation = 0, attributes = 0;
 };
 
-struct IsovalueMeshes {
-    float isovalue = 0.0F;
-    std::vector<PackedMesh> members;  // one per member, in member order (may be empty meshes)
-    PackedMesh mean;
+// The meshes of one isovalue (a data::MeshSet, what the renderer and the cache take) and how
+// they were built. The renderer takes the MeshSet part as it is: nothing is copied field by
+// field.
+struct IsovalueMeshes : data::MeshSet {
     StageSeconds seconds;
     std::size_t trianglesExtracted = 0;  // before decimation, all members and the mean
     std::size_t triangles = 0;           // after
     std::size_t vertices = 0;
     float worstErrorCells = 0.0F;  // largest decimation error estimate over the meshes
-
-    [[nodiscard]] std::size_t gpuBytes() const;
 };
 
-// Throws Cancelled.
+// Throws data::Cancelled.
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
                                    const data::DisplayFrame& frame, const PipelineOptions& options,
-                                   const std::stop_token& stop = {}, const Progress& progress = {});
+                                   const std::stop_token& stop = {},
+                                   const data::Progress& progress = {});
 
 }  // namespace ensil::prep

@@ -84,7 +84,7 @@ void countThenFill(std::size_t layers, const std::stop_token& stop, Count&& coun
             if (!stopped) offsets[k + 1] = count(k);
         }
     });
-    if (stopped) throw Cancelled();
+    if (stopped) throw data::Cancelled();
     std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
     resize(offsets.back());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, layers), [&](const auto& r) {
@@ -96,7 +96,7 @@ void countThenFill(std::size_t layers, const std::stop_token& stop, Count&& coun
 
 data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const float> values,
                                      float isovalue, const std::stop_token& stop,
-                                     const Progress& progress) {
+                                     const data::Progress& progress) {
     data::TriangleMesh mesh;
     if (values.size() != grid.pointCount() || grid.nz() < 2) return mesh;
     Extraction x(grid, values, isovalue);
@@ -117,12 +117,13 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                 const float t = (isovalue - values[p]) / (values[q] - values[p]);
                 // Grid indices of the edge's lower point (integer division on purpose).
                 const std::size_t pi = p % x.nx, pj = (p / x.nx) % x.ny, pk = p / x.nxy;
-                glm::vec3 pos{static_cast<float>(pi), static_cast<float>(pj), static_cast<float>(pk)};
+                glm::vec3 pos{static_cast<float>(pi), static_cast<float>(pj),
+                              static_cast<float>(pk)};
                 pos[a] += t;
                 mesh.positions[id++] = pos;
             });
         });
-    report(progress, 0.5);
+    data::report(progress, 0.5);
 
     // 2. Triangles from the case table, cell layer by cell layer.
     const auto& table = mc::caseTable();
@@ -153,7 +154,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                 }
             });
         });
-    report(progress, 1.0);
+    data::report(progress, 1.0);
     return mesh;
 }
 

@@ -12,14 +12,14 @@
 #include <stop_token>
 
 #include "data/grid.h"
+#include "data/job.h"
 #include "data/triangle_mesh.h"
-#include "preprocessing/job.h"
 
 namespace ensil::prep {
 
-// values: grid.pointCount() values, x fastest. Throws Cancelled.
+// values: grid.pointCount() values, x fastest. Throws data::Cancelled.
 data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const float> values,
                                      float isovalue, const std::stop_token& stop = {},
-                                     const Progress& progress = {});
+                                     const data::Progress& progress = {});
 
 }  // namespace ensil::prep

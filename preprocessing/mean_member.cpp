@@ -9,7 +9,7 @@
 namespace ensil::prep {
 
 data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_token& stop,
-                               const Progress& progress) {
+                               const data::Progress& progress) {
     if (ensemble.members.empty()) {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           "cannot compute the mean member of an ensemble with no members");
@@ -19,7 +19,7 @@ data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_t
     std::vector<std::uint32_t> count(n, 0);
     const std::size_t members = ensemble.memberCount();
     for (std::size_t m = 0; m < members; ++m) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         const float* values = ensemble.members[m].values.data();
         for (std::size_t p = 0; p < n; ++p) {
             if (!std::isnan(values[p])) {
@@ -27,7 +27,7 @@ data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_t
                 ++count[p];
             }
         }
-        report(progress, static_cast<double>(m + 1) / static_cast<double>(members));
+        data::report(progress, static_cast<double>(m + 1) / static_cast<double>(members));
     }
     data::Member mean;
     mean.name = "mean";

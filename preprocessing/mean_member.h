@@ -8,12 +8,12 @@
 #include <stop_token>
 
 #include "data/ensemble.h"
-#include "preprocessing/job.h"
+#include "data/job.h"
 
 namespace ensil::prep {
 
-// Throws Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble.
+// Throws data::Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble.
 data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_token& stop = {},
-                               const Progress& progress = {});
+                               const data::Progress& progress = {});
 
 }  // namespace ensil::prep

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "data/error.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "preprocessing/similarity.h"
 
 namespace ensil::prep {
@@ -25,7 +25,7 @@ void validate(const data::Ensemble& ensemble, std::span<const float> field, floa
 
 std::vector<double> distancesToField(const data::Ensemble& ensemble, std::span<const float> field,
                                      float isovalue, const std::stop_token& stop,
-                                     const Progress& progress) {
+                                     const data::Progress& progress) {
     validate(ensemble, field, isovalue);
     const double mu = isovalue;
     // The field's square roots are the same for every member: compute them once (NaN where
@@ -40,7 +40,7 @@ std::vector<double> distancesToField(const data::Ensemble& ensemble, std::span<c
     const std::size_t n = ensemble.memberCount();
     std::vector<double> distances(n);
     for (std::size_t m = 0; m < n; ++m) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         const float* values = ensemble.members[m].values.data();
         double sum = 0.0;
         std::size_t common = 0;
@@ -56,7 +56,7 @@ std::vector<double> distancesToField(const data::Ensemble& ensemble, std::span<c
         }
         distances[m] = common > 0 ? sum / static_cast<double>(common)
                                   : std::numeric_limits<double>::infinity();
-        report(progress, static_cast<double>(m + 1) / static_cast<double>(n));
+        data::report(progress, static_cast<double>(m + 1) / static_cast<double>(n));
     }
     return distances;
 }

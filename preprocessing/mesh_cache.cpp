@@ -53,18 +53,18 @@ private:
     std::size_t m_offset = 0;
 };
 
-void putMesh(Writer& w, const PackedMesh& m) {
+void putMesh(Writer& w, const data::PackedMesh& m) {
     w.put(m.boundsMin);
     w.put(m.boundsMax);
     w.put(m.outlyingnessScale);
     w.put(static_cast<std::uint64_t>(m.vertices.size()));
     w.put(static_cast<std::uint64_t>(m.indices.size()));
-    w.putBytes(m.vertices.data(), m.vertices.size() * sizeof(PackedVertex));
+    w.putBytes(m.vertices.data(), m.vertices.size() * sizeof(data::PackedVertex));
     w.putBytes(m.indices.data(), m.indices.size() * sizeof(std::uint32_t));
 }
 
-PackedMesh getMesh(Reader& r) {
-    PackedMesh m;
+data::PackedMesh getMesh(Reader& r) {
+    data::PackedMesh m;
     m.boundsMin = r.get<glm::vec3>();
     m.boundsMax = r.get<glm::vec3>();
     m.outlyingnessScale = r.get<float>();
@@ -75,7 +75,7 @@ PackedMesh getMesh(Reader& r) {
     }
     m.vertices.resize(vertices);
     m.indices.resize(indices);
-    r.getBytes(m.vertices.data(), vertices * sizeof(PackedVertex));
+    r.getBytes(m.vertices.data(), vertices * sizeof(data::PackedVertex));
     r.getBytes(m.indices.data(), indices * sizeof(std::uint32_t));
     for (std::uint32_t i : m.indices) {
         if (i >= vertices) throw std::runtime_error("index out of range");
@@ -93,7 +93,7 @@ std::vector<char> serialise(const IsovalueMeshes& s) {
     w.put(static_cast<std::uint64_t>(s.vertices));
     w.put(s.worstErrorCells);
     putMesh(w, s.mean);
-    for (const PackedMesh& m : s.members) putMesh(w, m);
+    for (const data::PackedMesh& m : s.members) putMesh(w, m);
     return w.bytes();
 }
 

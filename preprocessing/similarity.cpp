@@ -120,7 +120,7 @@ void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
 }
 
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
-                                     const std::stop_token& stop, const Progress& progress) {
+                                     const std::stop_token& stop, const data::Progress& progress) {
     checkDistanceArguments(ensemble, isovalue, "compare the members");
     const std::size_t n = ensemble.memberCount();
     const std::size_t points = ensemble.grid.pointCount();
@@ -130,7 +130,7 @@ DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isova
     Matrix mask(static_cast<Eigen::Index>(maxRows), columns);
     PairSums sums(columns);
     for (std::size_t first = 0; first < points; first += maxRows) {
-        throwIfStopped(stop);
+        data::throwIfStopped(stop);
         const std::size_t rows = std::min(maxRows, points - first);
         if (rows < maxRows) {  // the last block is shorter
             s.resize(static_cast<Eigen::Index>(rows), columns);
@@ -138,11 +138,11 @@ DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isova
         }
         const bool missing = fillBlock(ensemble, isovalue, first, rows, s, mask);
         accumulateBlock(s, mask, missing, sums);
-        report(progress, static_cast<double>(first + rows) / static_cast<double>(points));
+        data::report(progress, static_cast<double>(first + rows) / static_cast<double>(points));
     }
-    throwIfStopped(stop);
+    data::throwIfStopped(stop);
     DistanceMatrix result = assemble(sums, n);
-    report(progress, 1.0);
+    data::report(progress, 1.0);
     return result;
 }
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "data/ensemble.h"
-#include "preprocessing/job.h"
+#include "data/job.h"
 
 namespace ensil::prep {
 
@@ -31,16 +31,16 @@ struct DistanceMatrix {
 // with a plain double loop over the points to about 1e-15 times the mean of s_i^2 + s_j^2
 // (s = sqrt|f - mu|), since the expanded square cancels; nearly identical members get distances
 // at that floor (never negative) rather than exactly 0.
-// Throws Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble, a
-// non-finite isovalue or a member whose value count differs from the grid's point count.
-// The argument checks every distance of this measure needs (here and in member_summaries.h):
-// throws data::Error(InvalidArgument) for an empty ensemble (`what` says what was being done),
-// a non-finite isovalue, or a member whose value count differs from the grid's point count.
+// Throws data::Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble,
+// a non-finite isovalue or a member whose value count differs from the grid's point count. The
+// argument checks every distance of this measure needs (here and in member_summaries.h): throws
+// data::Error(InvalidArgument) for an empty ensemble (`what` says what was being done), a
+// non-finite isovalue, or a member whose value count differs from the grid's point count.
 void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
                             const std::string& what);
 
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop = {},
-                                     const Progress& progress = {});
+                                     const data::Progress& progress = {});
 
 }  // namespace ensil::prep

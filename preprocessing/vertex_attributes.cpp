@@ -188,7 +188,7 @@ VertexAttributes computeVertexAttributes(const data::Grid& grid, std::span<const
     out.principalDirections.resize(n);
     out.outlyingness.assign(n, 0.0F);
     for (std::size_t v = 0; v < n; ++v) {
-        if (v % 4096 == 0) throwIfStopped(stop);
+        if (v % 4096 == 0) data::throwIfStopped(stop);
         const glm::vec3& pos = mesh.positions[v];
         const Curvature c = curvatureOf(atVertex(derivatives, grid, pos));
         out.normals[v] = c.normal;

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "data/display_frame.h"
+#include "data/job.h"
 #include "data/triangle_mesh.h"
 #include "preprocessing/ensemble_moments.h"
-#include "preprocessing/job.h"
 
 namespace ensil::prep {
 
@@ -33,7 +33,7 @@ struct VertexAttributes {
 using AxisTables = std::array<std::vector<double>, 3>;
 AxisTables axisTables(const data::DisplayFrame& frame);
 
-// mesh positions are in index space; values is the member's field. Throws Cancelled.
+// mesh positions are in index space; values is the member's field. Throws data::Cancelled.
 VertexAttributes computeVertexAttributes(const data::Grid& grid, std::span<const float> values,
                                          const data::TriangleMesh& mesh, const AxisTables& axes,
                                          float isovalue, const EnsembleMoments* moments = nullptr,

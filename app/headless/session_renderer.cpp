@@ -60,11 +60,8 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setVerticalExaggeration(state.verticalExaggeration);
     renderer.setFloorMap(
         gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
-    auto set = std::make_shared<data::MeshSet>();
-    set->isovalue = iso;
-    set->members = std::move(outcome.meshes.members);
-    set->mean = std::move(outcome.meshes.mean);
-    renderer.setMeshes(set);
+    const std::size_t triangles = outcome.meshes.triangles;
+    renderer.setMeshes(std::make_shared<data::MeshSet>(std::move(outcome.meshes)));
     // Coloured, hidden and selected as the workbench shows the session.
     const std::vector<int> labels = prep::clusterLabels(outcome.tree, k);
     renderer.setAppearance(
@@ -124,7 +121,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
         session::CameraState::Placement{camera.distance(), camera.target()};
     result.frameMs = times[times.size() / 2];
     result.gpuBytes = renderer.gpuBytes();
-    result.triangles = outcome.meshes.triangles;
+    result.triangles = triangles;
     result.members = ensemble.memberCount();
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();

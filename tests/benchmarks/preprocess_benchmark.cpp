@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
                 result.vertices);
     std::printf("decimation error estimate: %.3f cells (worst mesh)\n", result.worstErrorCells);
     std::printf("bytes per vertex: %zu; GPU bytes: %.2f MiB for %zu meshes (goal <= 16 MiB)\n",
-                sizeof(ensil::prep::PackedVertex),
+                sizeof(ensil::data::PackedVertex),
                 static_cast<double>(result.gpuBytes()) / (1024.0 * 1024.0), e.memberCount() + 1);
     const double ensembleMiB = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
     const double peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;
@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
         const auto m = ensil::prep::computeEnsembleMoments(e);
         try {
             (void)ensil::prep::buildIsovalueMeshes(e, m, frame, options, stop.get_token());
-        } catch (const ensil::prep::Cancelled&) {
+        } catch (const ensil::data::Cancelled&) {
         }
         canceller.join();
         if (Clock::now() > requested) {

@@ -22,7 +22,7 @@
 #include "preprocessing/clustering.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/isosurface_pipeline.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "preprocessing/similarity.h"
 #include "timing.h"
 

@@ -4,7 +4,7 @@
 // radii 7, 8 and 9.5 at different centres, overlapping, with the mean, seen from the
 // south-west above.
 // Regenerate with ENSIL_UPDATE_BASELINES=1 after a deliberate change, and look at them.
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "tests/gl/sphere_scene.h"
 
 using namespace ensil;

@@ -9,7 +9,7 @@
 #include "gl/palette.h"
 #include "gl/renderer.h"
 #include "preprocessing/clustering.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "tests/gl/sphere_scene.h"
 
 using namespace ensil;

@@ -39,7 +39,7 @@ TEST(Cancel, AtRandomMomentsEveryStepStopsCleanly) {
             (void)prep::clusterMembers(d, prep::Linkage::Ward, stop.get_token());
             ++finished;
             EXPECT_EQ(meshes.members.size(), 8u);
-        } catch (const prep::Cancelled&) {
+        } catch (const data::Cancelled&) {
             ++cancelled;
         }
     }

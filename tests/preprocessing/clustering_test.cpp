@@ -360,7 +360,7 @@ TEST(Clustering, CancelThrowsAndProgressIsMonotonic) {
                                       [&](double) {
                                           if (++calls == 3) stop.request_stop();
                                       }),
-                 prep::Cancelled);
+                 data::Cancelled);
     EXPECT_EQ(calls, 3) << "the step must stop at the next merge after the request";
 }
 

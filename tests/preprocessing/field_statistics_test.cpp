@@ -57,5 +57,5 @@ TEST(FieldStatistics, StopsWhenCancelled) {
     const auto e = test::analyticEnsemble(2, 2, 2, 2, [](auto, auto, auto, auto) { return 1.0F; });
     std::stop_source stop;
     stop.request_stop();
-    EXPECT_THROW(prep::computeFieldStatistics(e, 4, stop.get_token()), prep::Cancelled);
+    EXPECT_THROW(prep::computeFieldStatistics(e, 4, stop.get_token()), data::Cancelled);
 }

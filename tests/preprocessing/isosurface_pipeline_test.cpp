@@ -71,7 +71,7 @@ TEST(IsosurfacePipeline, MeshesEveryMemberAndTheMean) {
         return b;
     }());
     // Members farther from the others are more outlying: member 0 (radius 12) vs member 1.
-    const auto meanOutlyingness = [](const prep::PackedMesh& m) {
+    const auto meanOutlyingness = [](const data::PackedMesh& m) {
         double s = 0;
         for (const auto& v : m.vertices)
             s += prep::unpackHalf(v.outlyingness) * m.outlyingnessScale;
@@ -88,5 +88,5 @@ TEST(IsosurfacePipeline, CancelStopsIt) {
     std::stop_source stop;
     EXPECT_THROW(prep::buildIsovalueMeshes(e, moments, data::DisplayFrame(e.grid, 1.0F), options,
                                            stop.get_token(), [&](double) { stop.request_stop(); }),
-                 prep::Cancelled);
+                 data::Cancelled);
 }

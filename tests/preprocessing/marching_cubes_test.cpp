@@ -136,5 +136,5 @@ TEST(MarchingCubes, StopsWhenCancelled) {
     std::stop_source stop;
     stop.request_stop();
     EXPECT_THROW(prep::extractIsosurface(e.grid, e.members[0].values, 12.0F, stop.get_token()),
-                 prep::Cancelled);
+                 data::Cancelled);
 }

@@ -52,7 +52,7 @@ TEST(MeanMember, CancelThrowsAndProgressIsMonotonic) {
                                          [&](double) {
                                              if (++calls == 2) stop.request_stop();
                                          }),
-                 prep::Cancelled);
+                 data::Cancelled);
     EXPECT_EQ(calls, 2) << "the step must stop at the next member after the request";
 }
 

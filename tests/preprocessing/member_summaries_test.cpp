@@ -10,7 +10,7 @@
 
 #include "data/error.h"
 #include "fixtures.h"
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 #include "preprocessing/similarity.h"
 
 using namespace ensil;
@@ -76,7 +76,7 @@ TEST(DistancesToField, StopsWhenAsked) {
     const std::vector<float> field(e.grid.pointCount(), 1.0F);
     std::stop_source source;
     source.request_stop();
-    EXPECT_THROW((void)prep::distancesToField(e, field, 1.0F, source.get_token()), prep::Cancelled);
+    EXPECT_THROW((void)prep::distancesToField(e, field, 1.0F, source.get_token()), data::Cancelled);
 }
 
 TEST(MeanOutlyingness, IsTheMeanOfTheStoredVertexValues) {

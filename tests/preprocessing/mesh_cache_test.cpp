@@ -24,12 +24,12 @@ prep::IsovalueMeshes sample() {
                                      data::DisplayFrame(e.grid, 1.0F), options);
 }
 
-bool sameBytes(const prep::PackedMesh& a, const prep::PackedMesh& b) {
+bool sameBytes(const data::PackedMesh& a, const data::PackedMesh& b) {
     return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
            a.boundsMin == b.boundsMin && a.boundsMax == b.boundsMax &&
            a.outlyingnessScale == b.outlyingnessScale &&
            std::memcmp(a.vertices.data(), b.vertices.data(),
-                       a.vertices.size() * sizeof(prep::PackedVertex)) == 0;
+                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
 }
 
 std::size_t filesIn(const std::filesystem::path& dir) {

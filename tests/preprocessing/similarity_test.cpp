@@ -160,12 +160,12 @@ TEST(Similarity, CancelThrowsAndProgressIsMonotonic) {
                                              [&](double) {
                                                  if (++calls == 1) stop.request_stop();
                                              }),
-                 prep::Cancelled);
+                 data::Cancelled);
     EXPECT_EQ(calls, 1) << "the step must stop at the next block after the request";
 
     std::stop_source stopped;
     stopped.request_stop();
-    EXPECT_THROW(prep::computeDistanceMatrix(e, 5.0F, stopped.get_token()), prep::Cancelled);
+    EXPECT_THROW(prep::computeDistanceMatrix(e, 5.0F, stopped.get_token()), data::Cancelled);
 }
 
 TEST(Similarity, RejectsEmptyEnsemblesBadIsovaluesAndShortMembers) {

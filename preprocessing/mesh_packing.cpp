@@ -1,4 +1,4 @@
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,8 +64,8 @@ glm::vec3 unpackUnitVector(const std::int16_t e[2]) {
                              std::max(static_cast<float>(e[1]) / 32767.0F, -1.0F)});
 }
 
-PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
-    PackedMesh packed;
+data::PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
+    data::PackedMesh packed;
     packed.indices = mesh.indices;
     if (mesh.positions.empty()) return packed;
     packed.boundsMin = packed.boundsMax = mesh.positions.front();
@@ -80,7 +80,7 @@ PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
     const glm::vec3 extent = glm::max(packed.boundsMax - packed.boundsMin, glm::vec3(1e-20F));
     packed.vertices.resize(mesh.positions.size());
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-        PackedVertex& out = packed.vertices[v];
+        data::PackedVertex& out = packed.vertices[v];
         const glm::vec3 t = (mesh.positions[v] - packed.boundsMin) / extent;
         for (int c = 0; c < 3; ++c) out.position[c] = unorm16(t[c]);
         out.kappa1 = packHalf(a.kappa1[v]);
@@ -92,7 +92,7 @@ PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& a) {
     return packed;
 }
 
-glm::vec3 unpackPosition(const PackedMesh& mesh, const PackedVertex& v) {
+glm::vec3 unpackPosition(const data::PackedMesh& mesh, const data::PackedVertex& v) {
     const glm::vec3 t{static_cast<float>(v.position[0]) / 65535.0F,
                       static_cast<float>(v.position[1]) / 65535.0F,
                       static_cast<float>(v.position[2]) / 65535.0F};
@@ -101,11 +101,11 @@ glm::vec3 unpackPosition(const PackedMesh& mesh, const PackedVertex& v) {
 
 float maximumOutlyingness(const data::MeshSet& meshes) {
     float maximum = 0.0F;
-    for (const PackedMesh& mesh : meshes.members) {
+    for (const data::PackedMesh& mesh : meshes.members) {
         // Finite non-negative halves (bit patterns below 0x7C00, the first infinity) order
         // like their bits.
         std::uint16_t largest = 0;
-        for (const PackedVertex& v : mesh.vertices) {
+        for (const data::PackedVertex& v : mesh.vertices) {
             if (v.outlyingness < 0x7C00U) largest = std::max(largest, v.outlyingness);
         }
         maximum = std::max(maximum, unpackHalf(largest) * mesh.outlyingnessScale);

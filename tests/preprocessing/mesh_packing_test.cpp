@@ -1,4 +1,4 @@
-#include "preprocessing/packed_mesh.h"
+#include "preprocessing/mesh_packing.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ glm::vec3 roundTrip(const glm::vec3& n) {
 }
 }  // namespace
 
-TEST(PackedMesh, VertexIsTwentyBytes) { EXPECT_EQ(sizeof(prep::PackedVertex), 20u); }
+TEST(PackedMesh, VertexIsTwentyBytes) { EXPECT_EQ(sizeof(data::PackedVertex), 20u); }
 
 TEST(PackedMesh, UnitVectorsSurviveWithinTwoTenThousandthsOfARadian) {
     std::mt19937 rng(3);
@@ -73,13 +73,13 @@ TEST(PackedMesh, PositionsAndAttributesRoundTripWithinTheStatedErrors) {
         prep::computeVertexAttributes(e.grid, e.members[0].values, mesh, axes, 9.0F);
     for (std::size_t v = 0; v < attr.outlyingness.size(); ++v)
         attr.outlyingness[v] = 5000.0F * static_cast<float>(v % 7);
-    const prep::PackedMesh packed = prep::packMesh(mesh, attr);
+    const data::PackedMesh packed = prep::packMesh(mesh, attr);
     ASSERT_EQ(packed.vertices.size(), mesh.vertexCount());
     EXPECT_EQ(packed.indices, mesh.indices);
     EXPECT_EQ(packed.gpuBytes(), mesh.vertexCount() * 20 + mesh.indices.size() * 4);
     const glm::vec3 step = (packed.boundsMax - packed.boundsMin) / 65535.0F;
     for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
-        const prep::PackedVertex& p = packed.vertices[v];
+        const data::PackedVertex& p = packed.vertices[v];
         const glm::vec3 d = glm::abs(prep::unpackPosition(packed, p) - mesh.positions[v]);
         for (int a = 0; a < 3; ++a) ASSERT_LE(d[a], 0.5F * step[a] + 1e-5F);
         ASSERT_NEAR(prep::unpackHalf(p.kappa1), attr.kappa1[v],
@@ -96,14 +96,14 @@ TEST(PackedMesh, MaximumOutlyingnessIsTheLargestFiniteValueOverAllMembersScaled)
     EXPECT_EQ(prep::maximumOutlyingness(set), 0.0F);
     set.members.resize(2);
     for (const float o : {0.5F, 3.0F, 1.25F}) {
-        prep::PackedVertex v{};
+        data::PackedVertex v{};
         v.outlyingness = prep::packHalf(o);
         set.members[0].vertices.push_back(v);
     }
-    prep::PackedVertex infinite{};
+    data::PackedVertex infinite{};
     infinite.outlyingness = 0x7C00;  // +inf: not a value the removal range should reach
     set.members[1].vertices.push_back(infinite);
-    prep::PackedVertex two{};
+    data::PackedVertex two{};
     two.outlyingness = prep::packHalf(2.0F);
     set.members[1].vertices.push_back(two);
     set.members[1].outlyingnessScale = 4.0F;  // 2 x 4 = 8 beats member 0's 3

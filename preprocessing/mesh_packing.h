@@ -16,13 +16,10 @@
 
 namespace ensil::prep {
 
-using data::PackedMesh;
-using data::PackedVertex;
-
-PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& attributes);
+data::PackedMesh packMesh(const data::TriangleMesh& mesh, const VertexAttributes& attributes);
 
 // Decoders: what the vertex shader computes. For tests and CPU-side picking.
-glm::vec3 unpackPosition(const PackedMesh& mesh, const PackedVertex& v);
+glm::vec3 unpackPosition(const data::PackedMesh& mesh, const data::PackedVertex& v);
 float unpackHalf(std::uint16_t h);
 std::uint16_t packHalf(float f);
 glm::vec2 octahedralEncode(const glm::vec3& unit);  // into [-1, 1]^2
