@@ -32,7 +32,13 @@ public:
     // reports up to 25 steps a second, which kept the GUI thread busy most of the time.
     static constexpr int kProgressIntervalMs = 200;
 
-    explicit BackgroundJob(QObject* context) {
+    // What destroying a running job does. Wait: blocks until it returns (its work may use what
+    // the owner destroys next). Abandon: it runs on unheard and its outcome is dropped; only for
+    // work that captures nothing but values (a probe of files for a dialog being closed).
+    enum class WhenDestroyed { Wait, Abandon };
+
+    explicit BackgroundJob(QObject* context, WhenDestroyed whenDestroyed = WhenDestroyed::Wait)
+        : m_whenDestroyed(whenDestroyed) {
         QObject::connect(&m_watcher, &QFutureWatcher<T>::progressValueChanged, context,
                          [this](int value) {
                              if (!m_progressed || !progressDue()) return;
@@ -44,7 +50,7 @@ public:
     BackgroundJob& operator=(const BackgroundJob&) = delete;
     ~BackgroundJob() {
         cancel();
-        wait();
+        if (m_whenDestroyed == WhenDestroyed::Wait) wait();
     }
 
     void start(Work work, Done done, Failed failed, Progressed progressed = {}) {
@@ -100,6 +106,7 @@ private:
         }
     }
 
+    WhenDestroyed m_whenDestroyed;
     QFutureWatcher<T> m_watcher;
     std::shared_ptr<std::stop_source> m_stop;
     Done m_done;

@@ -1,25 +1,43 @@
 #include "app/open_data_flow.h"
 
-#include <QFutureWatcher>
-#include <QtConcurrent/QtConcurrentRun>
-
+#include "app/background_job.h"
 #include "app/data_probe.h"
 #include "widgets/open_data_dialog.h"
 
 namespace ensil::app {
 
+namespace {
+// The dialog's probes, on the one job path of the workbench (BackgroundJob: a lower priority,
+// throttled progress, a newer probe supersedes the running one). Owned by the dialog; closing
+// it drops a probe's answer instead of waiting for it (the probe captures only values).
+class ProbeJobs : public QObject {
+public:
+    explicit ProbeJobs(ui::OpenDataDialog* dialog) : QObject(dialog), m_dialog(dialog) {}
+    void answer(const data::DataSelection& selection, int request) {
+        m_job.start([selection](const std::stop_token&,
+                                const data::Progress&) { return probeData(selection); },
+                    [this, request](ui::DataProbe probe) { m_dialog->showProbe(probe, request); },
+                    [this, request](const std::exception_ptr&, bool cancelled) {
+                        // probeData reports problems in its result; anything else is a bug
+                        // worth saying, but a superseded probe is no news.
+                        if (cancelled) return;
+                        ui::DataProbe failed;
+                        failed.error = QObject::tr("The files could not be read.");
+                        m_dialog->showProbe(failed, request);
+                    });
+    }
+
+private:
+    ui::OpenDataDialog* m_dialog;
+    BackgroundJob<ui::DataProbe> m_job{this, BackgroundJob<ui::DataProbe>::WhenDestroyed::Abandon};
+};
+}  // namespace
+
 void answerProbesInBackground(ui::OpenDataDialog* dialog) {
-    QObject::connect(dialog, &ui::OpenDataDialog::probeRequested, dialog,
-                     [dialog](const data::DataSelection& selection, int request) {
-                         // Owned by the dialog: closing it drops the answer instead of waiting for
-                         // it.
-                         auto* watcher = new QFutureWatcher<ui::DataProbe>(dialog);
-                         QObject::connect(watcher, &QFutureWatcherBase::finished, dialog,
-                                          [dialog, watcher, request] {
-                                              dialog->showProbe(watcher->result(), request);
-                                              watcher->deleteLater();
-                                          });
-                         watcher->setFuture(QtConcurrent::run(&probeData, selection));
+    auto* jobs = new ProbeJobs(dialog);
+    QObject::connect(dialog, &ui::OpenDataDialog::probeRequested, jobs,
+                     [jobs](const data::DataSelection& selection, int request) {
+                         jobs->answer(selection, request);
                      });
 }
 
