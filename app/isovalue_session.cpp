@@ -41,9 +41,8 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_view->update();
 }
 
-void IsovalueSession::setIsovalue(float isovalue) {
+void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     if (!m_ensemble) return;
-    const float exaggeration = m_view->renderer().frame().verticalExaggeration();
     prep::PipelineOptions options;
     options.isovalue = isovalue;
     const std::string sourceKey = m_sourceKey;

@@ -46,7 +46,9 @@ public:
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
     void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                      std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
-    void setIsovalue(float isovalue);
+    // Builds (or reads from the cache) this isovalue's surfaces, their attributes taken in the
+    // display space of this vertical exaggeration.
+    void setIsovalue(float isovalue, float verticalExaggeration);
     void setClusterCount(int k);
     // Clusters the current distances again (at once) and uses this linkage from now on.
     void setLinkage(prep::Linkage linkage);

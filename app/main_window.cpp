@@ -11,6 +11,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScopedValueRollback>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -30,6 +31,7 @@
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -71,7 +73,10 @@ std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
 }
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::SilhouetteView) {
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent),
+      m_view(new ui::SilhouetteView),
+      m_model(new session::SessionModel(this)) {
     setWindowTitle(QStringLiteral("ensil"));
     setCentralWidget(m_view);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
@@ -82,6 +87,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_view(new ui::Si
     createAnimation();
     createMenus();
     linkPanels();
+    // Last: everything the bindings show the session in exists now.
+    bindSession();
+    restoreRenderSettings();
     connect(m_view, &ui::SilhouetteView::renderingFailed, this, [this](const QString& message) {
         QMessageBox::critical(this, tr("ensil cannot draw"),
                               tr("The 3D view needs OpenGL 4.1 (core profile), which this "
@@ -177,10 +185,6 @@ void MainWindow::createToolbar() {
     m_session = new IsovalueSession(
         m_view, m_selection,
         QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
-    connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this,
-            [this](double v) { m_session->setIsovalue(static_cast<float>(v)); });
-    connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, m_session,
-            &IsovalueSession::setClusterCount);
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
     connect(m_session, &IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
@@ -366,38 +370,46 @@ void MainWindow::askForMemberDimension(const data::Error& error) {
 
 void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_overview = std::move(overview);
-    m_shownSelection = m_requested;
-    m_shownDemo = m_requestedDemo;
     m_historyStartsAfresh = true;
     if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
-    updatePlaneBox();
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
-    m_view->update();
     m_info->showFacts(ensembleFacts(*m_overview));
-    // Show isosurfaces right away, at an isovalue worth looking at.
-    const prep::FieldStatistics& stats = m_overview->statistics;
-    float iso = prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
-    int clusters = std::min<int>(5, static_cast<int>(e.memberCount()));
-    if (m_pendingProject) {
-        applyPendingProjectView();
-        if (m_pendingProject->isovalue) iso = *m_pendingProject->isovalue;
-        clusters = std::clamp(m_pendingProject->clusters, 1, static_cast<int>(e.memberCount()));
-    }
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
     m_view->setMemberNames(memberNames());
-    if (m_pendingProject) {
-        m_session->setClusterCount(clusters);
-        const prep::Linkage linkage = m_pendingProject->linkage;
-        m_session->setLinkage(linkage);
-        m_clusterPanel->setLinkage(linkage);
-    }
-    m_toolbar->setMemberCount(static_cast<int>(e.memberCount()), clusters);
-    m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, iso, QString::fromStdString(e.units));
+    const prep::FieldStatistics& stats = m_overview->statistics;
+    const int members = static_cast<int>(e.memberCount());
+    m_toolbar->setMemberCount(members, std::min(5, members));
+    m_toolbar->setIsovalueRange(
+        stats.minimum, stats.maximum,
+        prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum),
+        QString::fromStdString(e.units));
     m_toolbar->setIsovalueHistogram(stats.histogram);
+    updatePlaneBox();
+    {
+        // The session of this data: a project's, or the default isovalue (the toolbar shows
+        // it, rounded to its precision: what gets built) and clusters; one rebuild below.
+        const QScopedValueRollback showing(m_showingNewData, true);
+        const float shownIsovalue = static_cast<float>(m_toolbar->isovalue());
+        m_model->update([&](session::SessionState& s) {
+            if (m_pendingProject) {
+                s = *m_pendingProject;
+                // Its members are shown once their surfaces are built (applyPendingProject).
+                s.hiddenMembers.clear();
+                s.hiddenClusters.clear();
+                s.selection.clear();
+            }
+            s.demo = m_requestedDemo.has_value();
+            s.demoParams = m_requestedDemo.value_or(data::DemoEnsembleParams{});
+            s.data = m_requested.value_or(data::DataSelection{});
+            if (!m_pendingProject || !s.isovalue) s.isovalue = shownIsovalue;
+            s.clusters = std::clamp(m_pendingProject ? s.clusters : 5, 1, members);
+        });
+        if (m_pendingProject) applyPendingProjectCamera();
+    }
     updateWindowTitle();
     setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6")
                 .arg(QString::fromStdString(e.source))
@@ -407,8 +419,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
                 .arg(e.grid.ny())
                 .arg(e.grid.nz()));
     emit ensembleLoaded();
-    // What the toolbar shows, rounded to its precision, is what gets built.
-    m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
+    const session::SessionState& s = m_model->state();
+    m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
 }
 
 void MainWindow::chooseScreenshot() {

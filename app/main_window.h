@@ -1,5 +1,7 @@
 // The workbench window: the silhouette view in the centre, dock panels around it, menus with
-// standard shortcuts, and the status bar that shows background work with a cancel button.
+// standard shortcuts, and the status bar that shows background work with a cancel button. It
+// is a composition around one session model: every control writes into the session, and the
+// bindings (main_window_session.cpp) show the session in the view and every control.
 // Loading runs on a worker thread (QtConcurrent); results come back through QFutureWatcher's
 // queued signals. Window layout is remembered with QSettings. GUI thread only.
 #pragma once
@@ -16,6 +18,7 @@
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
+#include "widgets/session/session_model.h"
 #include "widgets/session/session_state.h"
 
 class QProgressBar;
@@ -40,7 +43,8 @@ class DendrogramView;
 
 namespace ensil::session {
 class SessionHistory;
-}
+class SessionModel;
+}  // namespace ensil::session
 
 namespace ensil::app {
 
@@ -133,13 +137,15 @@ private:
     void createMenus();
     void createDocks();
     void createRenderDocks();  // main_window_render_docks.cpp
-    void setVerticalExaggeration(double factor);
     void restoreRenderSettings();
     void rememberRenderSettings() const;
     void createAnimation();  // main_window_animation.cpp
     [[nodiscard]] std::vector<int> animationSequence() const;
     void chooseAnimationSequence();
     [[nodiscard]] QStringList memberNames() const;
+    // The plane panel's box from the renderer's display frame; updatePlaneBox also keeps the
+    // plane's place across the box (written into the session).
+    void setPlaneBox();
     void updatePlaneBox();
     void createStatusBar();
     // main_window_panels.cpp
@@ -158,11 +164,13 @@ private:
     void setIdle(const QString& message);
     void createProjectActions(QMenu* file);
     void createHistory(QMenu* edit);  // main_window_history.cpp
+    void bindSession();               // main_window_session.cpp
+    void showSessionParts(session::SessionParts parts);
     void chooseScreenshot();
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);
     QString locateMissingFileWithDialog(const QString& missing);
-    void applyPendingProjectView();
+    void applyPendingProjectCamera();
     void applyPendingProjectMembers();
     void rememberRecentProject(const QString& path);
     void rebuildRecentProjectsMenu();
@@ -181,6 +189,10 @@ private:
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;
+    // The session on screen: every control writes into it, and its bindings show it.
+    session::SessionModel* m_model;
+    bool m_showingNewData = false;  // showOverview: one rebuild at its end, not one per part
+    bool m_showingMembers = false;  // the session's visibility and selection being shown
     session::SessionHistory* m_history = nullptr;
     QAction* m_resetCameraAction = nullptr;
     // New data is on screen: its first surfaces start the undo history afresh.
@@ -195,9 +207,6 @@ private:
     std::unique_ptr<EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
     std::optional<data::DemoEnsembleParams> m_requestedDemo;
-    // What is on screen, for the project file.
-    std::optional<data::DataSelection> m_shownSelection;
-    std::optional<data::DemoEnsembleParams> m_shownDemo;
     // A project being opened: applied when its data has loaded and its surfaces are built.
     std::unique_ptr<session::SessionState> m_pendingProject;
     QString m_pendingProjectPath;

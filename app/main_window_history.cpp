@@ -11,7 +11,6 @@
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/member_appearance.h"
 #include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
 
@@ -56,42 +55,12 @@ void MainWindow::createHistory(QMenu* edit) {
 
 void MainWindow::applySession(const session::SessionState& s) {
     if (!m_overview) return;
-    gl::Renderer& renderer = m_view->renderer();
-    renderer.settings() = s.render;
-    m_renderPanel->setSettings(s.render);
-    m_renderPanel->setBackground(QColor::fromRgbF(s.background.r, s.background.g, s.background.b));
-    renderer.setBackground({s.background, 1.0F});
-    m_renderPanel->setOrthographic(s.camera.orthographic);
-    gl::Camera& camera = renderer.camera();
-    camera.setProjection(s.camera.orthographic ? gl::Camera::Projection::Orthographic
-                                               : gl::Camera::Projection::Perspective);
+    m_model->replace(s);  // the bindings show it (main_window_session.cpp)
+    gl::Camera& camera = m_view->renderer().camera();
     camera.setAngles(s.camera.azimuth, s.camera.elevation);
     if (s.camera.placement) {
         camera.setTarget(s.camera.placement->target);
         camera.setDistance(s.camera.placement->distance);
-    }
-    if (renderer.frame().verticalExaggeration() != s.verticalExaggeration) {
-        setVerticalExaggeration(s.verticalExaggeration);  // rebuilds the attributes
-    }
-    m_planePanel->setPlane(s.render.plane);
-    renderer.settings().plane = s.render.plane;
-    if (s.linkage != m_session->linkage()) {
-        m_session->setLinkage(s.linkage);
-        m_clusterPanel->setLinkage(s.linkage);
-    }
-    if (s.clusters != m_selection->requestedClusterCount())
-        m_selection->setClusterCount(s.clusters);
-    if (s.isovalue && static_cast<float>(m_toolbar->isovalue()) != *s.isovalue) {
-        const prep::FieldStatistics& stats = m_overview->statistics;
-        m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, *s.isovalue,
-                                    QString::fromStdString(m_overview->ensemble->units));
-        // From the mesh cache when this isovalue was shown before.
-        m_session->setIsovalue(*s.isovalue);
-    }
-    const session::MemberFlags flags =
-        session::memberFlags(s, m_selection->labels(), m_selection->memberCount());
-    for (int m = 0; m < m_selection->memberCount(); ++m) {
-        m_selection->setMemberVisible(m, flags.visible[static_cast<std::size_t>(m)]);
     }
     m_view->update();
 }

@@ -90,8 +90,6 @@ void MainWindow::linkPanels() {
             m_toolbar->setMemberCount(m_selection->memberCount(), m_selection->clusterCount());
         }
     });
-    connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, m_session,
-            &IsovalueSession::setLinkage);
     // The view reports picks, hovers and rubber bands here.
     connect(m_view, &ui::SilhouetteView::memberClicked, this, &MainWindow::onMemberClicked);
     connect(m_view, &ui::SilhouetteView::memberHovered, this, &MainWindow::onMemberHovered);

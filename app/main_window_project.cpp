@@ -11,14 +11,15 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/project_members.h"
 #include "preprocessing/clustering.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/member_appearance.h"
 #include "widgets/session/project_file.h"
+#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -70,31 +71,13 @@ void MainWindow::saveProjectReporting(const QString& path) {
 }
 
 session::SessionState MainWindow::captureSession() const {
-    session::SessionState p;
-    if (m_shownDemo) {
-        p.demo = true;
-        p.demoParams = *m_shownDemo;
-    } else if (m_shownSelection) {
-        p.data = *m_shownSelection;
-    }
-    gl::Renderer& renderer = m_view->renderer();
-    if (m_session->result() != nullptr) p.isovalue = static_cast<float>(m_toolbar->isovalue());
-    const gl::Camera& camera = renderer.camera();
+    session::SessionState p = m_model->state();
+    if (m_session->result() == nullptr) p.isovalue.reset();  // nothing built yet
+    // The camera moves in the view; the session takes it as it stands.
+    const gl::Camera& camera = m_view->renderer().camera();
     p.camera.azimuth = camera.azimuth();
     p.camera.elevation = camera.elevation();
-    p.camera.orthographic = camera.projection() == gl::Camera::Projection::Orthographic;
     p.camera.placement = session::CameraState::Placement{camera.distance(), camera.target()};
-    p.render = renderer.settings();
-    p.verticalExaggeration = renderer.frame().verticalExaggeration();
-    const QColor bg = m_renderPanel->background();
-    p.background = {bg.redF(), bg.greenF(), bg.blueF()};
-    p.clusters = m_selection->requestedClusterCount();
-    p.linkage = m_session->linkage();
-    for (int m = 0; m < m_selection->memberCount(); ++m) {
-        if (!m_selection->isMemberVisible(m)) p.hiddenMembers.push_back(m);
-    }
-    const QList<int> selected = m_selection->selectedMembers();
-    p.selection.assign(selected.begin(), selected.end());
     p.windowGeometry = saveGeometry();
     p.windowState = saveState();
     return p;
@@ -168,21 +151,11 @@ QString MainWindow::locateMissingFileWithDialog(const QString& missing) {
                                         QFileInfo(missing).absolutePath());
 }
 
-void MainWindow::applyPendingProjectView() {
-    if (!m_pendingProject) return;
+void MainWindow::applyPendingProjectCamera() {
     const session::SessionState& p = *m_pendingProject;
     gl::Renderer& renderer = m_view->renderer();
-    renderer.setVerticalExaggeration(p.verticalExaggeration);
-    m_renderPanel->setVerticalExaggeration(p.verticalExaggeration);
-    renderer.settings() = p.render;
-    m_renderPanel->setSettings(p.render);
-    m_renderPanel->setBackground(QColor::fromRgbF(p.background.r, p.background.g, p.background.b));
-    renderer.setBackground({p.background, 1.0F});
     gl::Camera& camera = renderer.camera();
     camera.setAngles(p.camera.azimuth, p.camera.elevation);
-    camera.setProjection(p.camera.orthographic ? gl::Camera::Projection::Orthographic
-                                               : gl::Camera::Projection::Perspective);
-    m_renderPanel->setOrthographic(p.camera.orthographic);
     if (p.camera.placement) {
         camera.setTarget(p.camera.placement->target);
         camera.setDistance(p.camera.placement->distance);
@@ -191,16 +164,23 @@ void MainWindow::applyPendingProjectView() {
                         static_cast<float>(m_view->width()) /
                             static_cast<float>(std::max(1, m_view->height())));
     }
-    updatePlaneBox();
-    m_planePanel->setPlane(p.render.plane);
-    renderer.settings().plane = p.render.plane;
 }
 
 void MainWindow::applyPendingProjectMembers() {
     if (!m_pendingProject) return;
     const session::SessionState p = *m_pendingProject;
     m_pendingProject.reset();
-    applyProjectMembers(p, *m_selection);
+    // Hidden clusters are hidden by their members, now that the clusters are known.
+    const session::MemberFlags flags =
+        session::memberFlags(p, m_selection->labels(), m_selection->memberCount());
+    m_model->update([&flags, &p](session::SessionState& s) {
+        s.hiddenMembers.clear();
+        for (std::size_t m = 0; m < flags.visible.size(); ++m) {
+            if (!flags.visible[m]) s.hiddenMembers.push_back(static_cast<int>(m));
+        }
+        s.hiddenClusters.clear();
+        s.selection = p.selection;
+    });
     m_projectPath = m_pendingProjectPath;
     rememberRecentProject(m_projectPath);
     updateWindowTitle();

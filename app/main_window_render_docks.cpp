@@ -18,6 +18,7 @@
 #include "widgets/render_toolbar.h"
 #include "widgets/session/remembered_settings.h"
 #include "widgets/session/session_history.h"
+#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -70,29 +71,28 @@ void MainWindow::createRenderDocks() {
         connect(slider, &QSlider::sliderReleased, m_view, &ui::SilhouetteView::endInteraction);
     }
 
-    restoreRenderSettings();
+    // Every edit goes into the session; the session's bindings show it (main_window_session.cpp).
     connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, [this] {
-        gl::RenderSettings& settings = m_view->renderer().settings();
-        settings = m_renderPanel->applyTo(settings);
-        m_view->update();
+        m_model->update(
+            [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
     });
-    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this,
-            &MainWindow::setVerticalExaggeration);
+    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this, [this](double f) {
+        m_model->update(
+            [f](session::SessionState& s) { s.verticalExaggeration = static_cast<float>(f); });
+    });
     connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, [this](bool orthographic) {
-        m_view->renderer().camera().setProjection(orthographic
-                                                      ? gl::Camera::Projection::Orthographic
-                                                      : gl::Camera::Projection::Perspective);
-        m_view->update();
+        m_model->update(
+            [orthographic](session::SessionState& s) { s.camera.orthographic = orthographic; });
     });
     connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, [this](const QColor& c) {
-        m_view->renderer().setBackground({static_cast<float>(c.redF()),
-                                          static_cast<float>(c.greenF()),
-                                          static_cast<float>(c.blueF()), 1.0F});
-        m_view->update();
+        m_model->update([&c](session::SessionState& s) {
+            s.background = {static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
+                            static_cast<float>(c.blueF())};
+        });
     });
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
-        m_view->renderer().settings().plane = m_planePanel->plane();
-        m_view->update();
+        m_model->update(
+            [this](session::SessionState& s) { s.render.plane = m_planePanel->plane(); });
     });
     // Keys 1 to 4 switch the mode; Ctrl+Shift+P toggles the plane.
     const QStringList modes{tr("Shaded Silhouettes"), tr("3D Spaghetti Plot"),
@@ -108,10 +108,6 @@ void MainWindow::createRenderDocks() {
     m_planeAction->setCheckable(true);
     m_planeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     connect(m_planeAction, &QAction::toggled, m_planePanel, &ui::CuttingPlanePanel::setCutting);
-    connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
-        const QSignalBlocker block(m_planeAction);
-        m_planeAction->setChecked(m_planePanel->cutting());
-    });
 
     // The removal thresholds range over the outlyingness of the meshes on screen.
     connect(m_session, &IsovalueSession::finished, this, [this] {
@@ -125,7 +121,8 @@ void MainWindow::createRenderDocks() {
                                     : units + QStringLiteral("\u00b2");
         if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
             // The first band the panel now shows is the one drawn (and saved, and undone).
-            m_view->renderer().settings() = m_renderPanel->applyTo(m_view->renderer().settings());
+            m_model->update(
+                [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
             if (m_history != nullptr) m_history->absorb();
         }
     });
@@ -134,21 +131,9 @@ void MainWindow::createRenderDocks() {
 void MainWindow::restoreRenderSettings() {
     // How the user last drew things (the remembered settings of the setting table); the cutting
     // plane and exaggeration belong to the data.
-    gl::Renderer& renderer = m_view->renderer();
-    session::SessionState state;
-    state.render = renderer.settings();
-    const QColor shown = m_renderPanel->background();
-    state.background = {shown.redF(), shown.greenF(), shown.blueF()};
+    session::SessionState state = m_model->state();
     session::restoreRemembered(QSettings(), state);
-    renderer.settings() = state.render;
-    m_renderPanel->setSettings(state.render);
-    m_renderPanel->setBackground(
-        QColor::fromRgbF(state.background.r, state.background.g, state.background.b));
-    renderer.setBackground({state.background, 1.0F});
-    m_renderPanel->setOrthographic(state.camera.orthographic);
-    renderer.camera().setProjection(state.camera.orthographic
-                                        ? gl::Camera::Projection::Orthographic
-                                        : gl::Camera::Projection::Perspective);
+    m_model->replace(state);
 }
 
 void MainWindow::rememberRenderSettings() const {
@@ -156,25 +141,20 @@ void MainWindow::rememberRenderSettings() const {
     session::remember(settings, captureSession());
 }
 
-void MainWindow::setVerticalExaggeration(double factor) {
-    m_renderPanel->setVerticalExaggeration(factor);
-    m_view->renderer().setVerticalExaggeration(static_cast<float>(factor));
-    updatePlaneBox();
-    // Normals and curvatures live in display space: rebuild them (the meshes come from the
-    // cache when this exaggeration was seen before).
-    if (m_overview) m_session->setIsovalue(static_cast<float>(m_toolbar->isovalue()));
-    m_view->update();
+void MainWindow::setPlaneBox() {
+    if (!m_overview) return;
+    const data::DisplayFrame& frame = m_view->renderer().frame();
+    m_planePanel->setBox(frame.boxMin(), frame.boxMax(),
+                         planeAxes(m_overview->ensemble->grid, frame));
 }
 
 void MainWindow::updatePlaneBox() {
     if (!m_overview) return;
-    const data::DisplayFrame& frame = m_view->renderer().frame();
     // The plane keeps its place across the box when the box changes shape.
     const double position = m_planePanel->position();
-    m_planePanel->setBox(frame.boxMin(), frame.boxMax(),
-                         planeAxes(m_overview->ensemble->grid, frame));
+    setPlaneBox();
     m_planePanel->setPosition(position);
-    m_view->renderer().settings().plane = m_planePanel->plane();
+    m_model->update([this](session::SessionState& s) { s.render.plane = m_planePanel->plane(); });
 }
 
 }  // namespace ensil::app

@@ -200,8 +200,9 @@ TEST_F(LoadedWindow, EscapeStopsWorkFirstAndOtherwiseClearsTheSelection) {
     ASSERT_NE(clear, nullptr);
 
     selection->setSelection({1, 2});
-    window.isovalueSession()->setIsovalue(static_cast<float>(window.renderToolbar()->isovalue()) +
-                                          1.0F);
+    window.isovalueSession()->setIsovalue(
+        static_cast<float>(window.renderToolbar()->isovalue()) + 1.0F,
+        window.view()->renderer().frame().verticalExaggeration());
     ASSERT_TRUE(window.isBusy());
     clear->trigger();
     ASSERT_TRUE(QTest::qWaitFor([&] { return !window.isBusy(); }, 60000));

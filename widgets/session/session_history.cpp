@@ -2,6 +2,7 @@
 
 #include <QUndoCommand>
 
+#include "widgets/session/session_model.h"
 #include "widgets/session/setting_table.h"
 
 namespace ensil::session {
@@ -11,18 +12,6 @@ QString qs(std::string_view text) {
 }
 
 bool isCameraSetting(const Setting& s) { return s.projectKey.starts_with("camera."); }
-
-bool samePlane(const gl::CuttingPlane& a, const gl::CuttingPlane& b) {
-    return a.enabled == b.enabled && a.thickness == b.thickness && a.offset == b.offset &&
-           a.normal == b.normal;
-}
-
-bool sameCamera(const CameraState& a, const CameraState& b) {
-    const bool samePlacement = a.placement.has_value() == b.placement.has_value() &&
-                               (!a.placement || (a.placement->distance == b.placement->distance &&
-                                                 a.placement->target == b.placement->target));
-    return a.azimuth == b.azimuth && a.elevation == b.elevation && samePlacement;
-}
 
 // Merge keys: a setting's index in the table, or one of these past its end.
 constexpr int kPlaneKey = 1000;
@@ -54,16 +43,16 @@ std::optional<SessionChange> describeChange(const SessionState& before, const Se
                                         QString::fromStdString(s.format(to))),
                                continuous ? static_cast<int>(i) : -1};
     }
-    if (cameraCounts && !sameCamera(before.camera, after.camera)) {
+    const SessionParts parts = differences(before, after);
+    if (cameraCounts && parts.testFlag(SessionPart::Camera)) {
         return SessionChange{QStringLiteral("Reset Camera"), -1};
     }
     if (changed > 1) return SessionChange{QStringLiteral("Rendering Settings"), -1};
     if (change) return change;
-    if (!samePlane(before.render.plane, after.render.plane)) {
+    if (parts.testFlag(SessionPart::Plane)) {
         return SessionChange{QStringLiteral("Cutting Plane"), kPlaneKey};
     }
-    if (before.hiddenMembers != after.hiddenMembers ||
-        before.hiddenClusters != after.hiddenClusters) {
+    if (parts.testFlag(SessionPart::Visibility)) {
         return SessionChange{QStringLiteral("Visibility"), -1};
     }
     return std::nullopt;

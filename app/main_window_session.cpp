@@ -1,0 +1,128 @@
+// The main window's bindings to its session model: whatever part of the session changed (an
+// edit in any panel, the toolbar, the dendrogram, undo, a project, the remembered settings) is
+// shown by the view, the panels, the toolbar and the shared selection, and the surfaces are
+// rebuilt when the isovalue or the vertical exaggeration changed. Every control writes into
+// the session (never into another control), so the window holds no second copy of it.
+#include <QAction>
+#include <QScopedValueRollback>
+#include <QSignalBlocker>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "widgets/cluster_panel.h"
+#include "widgets/cutting_plane_panel.h"
+#include "widgets/member_selection.h"
+#include "widgets/render_panel.h"
+#include "widgets/render_toolbar.h"
+#include "widgets/session/member_appearance.h"
+#include "widgets/session/session_model.h"
+#include "widgets/silhouette_view.h"
+
+namespace ensil::app {
+
+using session::SessionPart;
+
+void MainWindow::bindSession() {
+    connect(m_model, &session::SessionModel::changed, this, &MainWindow::showSessionParts);
+    // What the shared selection changes by itself (the dendrogram's cut line, visibility,
+    // selection; a new ensemble's members) goes into the session too.
+    connect(m_selection, &ui::MemberSelection::clustersChanged, this, [this] {
+        if (!m_selection->isClustered()) return;
+        const int k = m_selection->requestedClusterCount();
+        m_model->update([k](session::SessionState& s) { s.clusters = k; });
+    });
+    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, [this] {
+        if (m_showingMembers) return;  // the session's own visibility being shown
+        std::vector<int> hidden;
+        for (int m = 0; m < m_selection->memberCount(); ++m) {
+            if (!m_selection->isMemberVisible(m)) hidden.push_back(m);
+        }
+        m_model->update([&hidden](session::SessionState& s) {
+            s.hiddenMembers = hidden;
+            s.hiddenClusters.clear();  // resolved into their members
+        });
+    });
+    connect(m_selection, &ui::MemberSelection::selectionChanged, this, [this] {
+        if (m_showingMembers) return;
+        const QList<int> selected = m_selection->selectedMembers();
+        m_model->update([&selected](session::SessionState& s) {
+            s.selection.assign(selected.begin(), selected.end());
+        });
+    });
+    connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, [this](double v) {
+        m_model->update([v](session::SessionState& s) { s.isovalue = static_cast<float>(v); });
+    });
+    connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this,
+            [this](int k) { m_model->update([k](session::SessionState& s) { s.clusters = k; }); });
+    connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, [this](prep::Linkage l) {
+        m_model->update([l](session::SessionState& s) { s.linkage = l; });
+    });
+}
+
+void MainWindow::showSessionParts(session::SessionParts parts) {
+    gl::Renderer& renderer = m_view->renderer();
+    // First the box, which the plane is placed across: without a new plane, the plane keeps
+    // its place across the reshaped box (a change of the session of its own, made here).
+    if (parts & SessionPart::Exaggeration) {
+        const float exaggeration = m_model->state().verticalExaggeration;
+        m_renderPanel->setVerticalExaggeration(exaggeration);
+        renderer.setVerticalExaggeration(exaggeration);
+        if (parts & SessionPart::Plane) {
+            setPlaneBox();
+        } else {
+            updatePlaneBox();
+        }
+    }
+    const session::SessionState& s = m_model->state();
+    if (parts & (SessionPart::Rendering | SessionPart::Plane)) {
+        renderer.settings() = s.render;
+        m_renderPanel->setSettings(s.render);
+    }
+    if (parts & SessionPart::Plane) {
+        m_planePanel->setPlane(s.render.plane);
+        const QSignalBlocker block(m_planeAction);
+        m_planeAction->setChecked(s.render.plane.enabled);
+    }
+    if (parts & SessionPart::Background) {
+        m_renderPanel->setBackground(
+            QColor::fromRgbF(s.background.r, s.background.g, s.background.b));
+        renderer.setBackground({s.background, 1.0F});
+    }
+    if (parts & SessionPart::Projection) {
+        m_renderPanel->setOrthographic(s.camera.orthographic);
+        renderer.camera().setProjection(s.camera.orthographic
+                                            ? gl::Camera::Projection::Orthographic
+                                            : gl::Camera::Projection::Perspective);
+    }
+    if (parts & SessionPart::Linkage) {
+        m_clusterPanel->setLinkage(s.linkage);
+        m_session->setLinkage(s.linkage);
+    }
+    if (parts & SessionPart::Clusters) m_selection->setClusterCount(s.clusters);
+    if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview &&
+        static_cast<float>(m_toolbar->isovalue()) != *s.isovalue) {
+        const prep::FieldStatistics& stats = m_overview->statistics;
+        m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, *s.isovalue,
+                                    QString::fromStdString(m_overview->ensemble->units));
+    }
+    // Normals and curvatures live in display space: a new exaggeration rebuilds them (the
+    // meshes come from the cache when this isovalue and exaggeration were seen before).
+    if ((parts & (SessionPart::Isovalue | SessionPart::Exaggeration)) && s.isovalue && m_overview &&
+        !m_showingNewData) {
+        m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
+    }
+    if (parts & (SessionPart::Visibility | SessionPart::Selection)) {
+        const session::MemberFlags flags =
+            session::memberFlags(s, m_selection->labels(), m_selection->memberCount());
+        const QScopedValueRollback showing(m_showingMembers, true);
+        QList<int> selected;
+        for (int m = 0; m < m_selection->memberCount(); ++m) {
+            m_selection->setMemberVisible(m, flags.visible[static_cast<std::size_t>(m)]);
+            if (flags.selected[static_cast<std::size_t>(m)]) selected << m;
+        }
+        m_selection->setSelection(selected);
+    }
+    m_view->update();
+}
+
+}  // namespace ensil::app
