@@ -21,13 +21,11 @@
 using namespace ensil;
 
 namespace {
-constexpr data::DemoEnsembleParams kSmallDemo{.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5};
-
-class History : public ::testing::Test {
+class History : public test::SmallDemoWorkbench {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
-        ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
+        test::SmallDemoWorkbench::SetUp();
+        if (HasFatalFailure()) return;
         // The first surfaces start the history; let the queued records of loading pass.
         QCoreApplication::processEvents();
         ASSERT_EQ(stack()->count(), 0);
@@ -38,9 +36,6 @@ protected:
     bool recorded(int count) {
         return QTest::qWaitFor([&] { return stack()->count() == count; }, 10000);
     }
-
-    test::ScopedCacheHome cache;
-    app::MainWindow window;
 };
 }  // namespace
 

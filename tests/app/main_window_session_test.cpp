@@ -21,17 +21,7 @@
 using namespace ensil;
 
 namespace {
-constexpr data::DemoEnsembleParams kSmallDemo{.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5};
-
-class SessionBindings : public ::testing::Test {
-protected:
-    void SetUp() override {
-        ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
-        ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
-    }
-    test::ScopedCacheHome cache;
-    app::MainWindow window;
-};
+using SessionBindings = test::SmallDemoWorkbench;
 }  // namespace
 
 TEST_F(SessionBindings, EveryControlWritesIntoTheSessionThatIsSaved) {

@@ -2,6 +2,8 @@
 // first isovalue's surfaces built.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <QSignalSpy>
 #include <QSize>
 #include <QTest>
@@ -9,6 +11,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
+#include "tests/support/scoped_cache_home.h"
 
 namespace ensil::test {
 
@@ -43,5 +46,19 @@ namespace ensil::test {
     QSignalSpy opened(&window, &app::MainWindow::projectOpened);
     return window.openProject(path) && (opened.count() > 0 || opened.wait(timeoutMs));
 }
+
+// A test with the workbench shown and a small demo (6 members, 64 x 32 x 8) loaded, its mesh
+// cache in a folder of its own.
+class SmallDemoWorkbench : public ::testing::Test {
+protected:
+    static constexpr data::DemoEnsembleParams kSmallDemo{
+        .members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5};
+    void SetUp() override {
+        ASSERT_TRUE(showWorkbench(window, {900, 600}));
+        ASSERT_TRUE(loadDemoAndWait(window, kSmallDemo));
+    }
+    ScopedCacheHome cache;
+    app::MainWindow window;
+};
 
 }  // namespace ensil::test
