@@ -142,10 +142,28 @@ void MainWindow::createMenus() {
     m_resetCameraAction = new QAction(tr("&Reset Camera"), this);
     m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_resetCameraAction, &QAction::triggered, m_view, &ui::SilhouetteView::resetCamera);
+    // Views a meteorologist asks for: a map (north up, from straight above), and side views.
+    struct ViewPreset {
+        const char* name;
+        float azimuth, elevation;
+        QKeySequence shortcut;
+    };
+    for (const ViewPreset& preset :
+         {ViewPreset{QT_TR_NOOP("&Map View (North Up)"), -90.0F, 90.0F,
+                     QKeySequence(Qt::CTRL | Qt::Key_T)},
+          ViewPreset{QT_TR_NOOP("View From the &South"), -90.0F, 15.0F, {}},
+          ViewPreset{QT_TR_NOOP("View From the &West"), 180.0F, 15.0F, {}}}) {
+        auto* action = new QAction(tr(preset.name), this);
+        action->setShortcut(preset.shortcut);
+        connect(action, &QAction::triggered, m_view,
+                [this, preset] { m_view->lookFrom(preset.azimuth, preset.elevation); });
+        m_viewPresetActions << action;
+    }
     createEditMenu();
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     viewMenu->addAction(m_resetCameraAction);
+    viewMenu->addActions(m_viewPresetActions);
     QAction* fullScreen = viewMenu->addAction(tr("&Full Screen"));
     fullScreen->setShortcut(QKeySequence::FullScreen);
     fullScreen->setCheckable(true);

@@ -195,6 +195,7 @@ private:
     bool m_showingMembers = false;  // the session's visibility and selection being shown
     session::SessionHistory* m_history = nullptr;
     QAction* m_resetCameraAction = nullptr;
+    QList<QAction*> m_viewPresetActions;  // map view, views from the sides
     // New data is on screen: its first surfaces start the undo history afresh.
     bool m_historyStartsAfresh = false;
     ui::MemberSelection* m_selection = nullptr;

@@ -51,6 +51,14 @@ void MainWindow::createHistory(QMenu* edit) {
     connect(
         m_resetCameraAction, &QAction::triggered, this,
         [this] { m_history->record(/*cameraStep=*/true); }, queued);
+    for (QAction* preset : m_viewPresetActions) {
+        connect(
+            preset, &QAction::triggered, this,
+            [this, preset] {
+                m_history->record(/*cameraStep=*/true, preset->text().remove(QLatin1Char('&')));
+            },
+            queued);
+    }
 }
 
 void MainWindow::applySession(const session::SessionState& s) {

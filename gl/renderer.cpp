@@ -143,6 +143,12 @@ void Renderer::resetCamera() {
     m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
 }
 
+void Renderer::lookFrom(float azimuth, float elevation) {
+    resetCamera();
+    m_scene.camera.setAngles(azimuth, elevation);
+    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+}
+
 void Renderer::setViewSize(int width, int height) {
     if (width > 0 && height > 0)
         m_scene.viewAspect = static_cast<float>(width) / static_cast<float>(height);

@@ -118,6 +118,8 @@ public:
     [[nodiscard]] Camera& camera() { return m_scene.camera; }
     [[nodiscard]] const Camera& camera() const { return m_scene.camera; }
     void resetCamera();
+    // Looks from these angles (degrees; see Camera), fitted to the data box like resetCamera.
+    void lookFrom(float azimuth, float elevation);
     // The shape of the frames to come (a window's resize), which the camera is fitted to.
     void setViewSize(int width, int height);
 

@@ -149,6 +149,11 @@ void SilhouetteView::resetCamera() {
     update();
 }
 
+void SilhouetteView::lookFrom(float azimuth, float elevation) {
+    m_renderer.lookFrom(azimuth, elevation);
+    update();
+}
+
 void SilhouetteView::resizeGL(int width, int height) { m_renderer.setViewSize(width, height); }
 
 QPoint SilhouetteView::toFramebuffer(QPoint position) const {

@@ -73,6 +73,7 @@ public:
 
 public slots:
     void resetCamera();
+    void lookFrom(float azimuth, float elevation);
     // Another control changes the picture continuously (a slider being dragged): its frames are
     // drawn as camera motion is, until it ends.
     void beginInteraction() { m_moving = true; }

@@ -87,3 +87,19 @@ TEST_F(History, VisibilityAndClustersAreStepsOfTheirOwn) {
     EXPECT_TRUE(window.memberSelection()->isMemberVisible(2));
     EXPECT_FALSE(action("undoAction")->isEnabled());
 }
+
+TEST_F(History, AViewPresetIsACameraStepThatUndoTakesBack) {
+    QAction* map = nullptr;
+    for (QAction* a : window.findChildren<QAction*>()) {
+        if (a->text() == "&Map View (North Up)") map = a;
+    }
+    ASSERT_NE(map, nullptr);
+    const float elevation = window.view()->renderer().camera().elevation();
+    map->trigger();
+    ASSERT_TRUE(recorded(1));
+    EXPECT_EQ(action("undoAction")->text(), "&Undo Map View (North Up)");
+    EXPECT_FLOAT_EQ(window.view()->renderer().camera().elevation(), 89.0F) << "straight down";
+    EXPECT_FLOAT_EQ(window.view()->renderer().camera().azimuth(), -90.0F) << "north up";
+    action("undoAction")->trigger();
+    EXPECT_FLOAT_EQ(window.view()->renderer().camera().elevation(), elevation);
+}

@@ -107,10 +107,11 @@ void SessionHistory::absorb() {
     if (!m_applying) m_last = m_capture();
 }
 
-void SessionHistory::record(bool cameraStep) {
+void SessionHistory::record(bool cameraStep, const QString& cameraStepName) {
     if (m_applying) return;
     SessionState now = m_capture();
-    const auto change = describeChange(m_last, now, cameraStep);
+    auto change = describeChange(m_last, now, cameraStep);
+    if (change && cameraStep && !cameraStepName.isEmpty()) change->name = cameraStepName;
     if (change) m_stack.push(new SessionStep(*this, m_last, now, *change, cameraStep));
     m_last = std::move(now);
 }

@@ -40,8 +40,9 @@ public:
     // the removal thresholds): no step, and the next step starts from here.
     void absorb();
     // Records what changed since the last record as one step (or merges it into the last).
-    // `cameraStep`: a camera reset or view preset, whose camera is part of the step.
-    void record(bool cameraStep = false);
+    // `cameraStep`: a camera reset or view preset, whose camera is part of the step, named
+    // `cameraStepName` ("Map View (North Up)").
+    void record(bool cameraStep = false, const QString& cameraStepName = {});
     [[nodiscard]] QUndoStack* stack() { return &m_stack; }
     // True while a step is being undone or redone (its own changes are not recorded).
     [[nodiscard]] bool applying() const { return m_applying; }
