@@ -2,6 +2,8 @@
 
 #include <QCommandLineParser>
 #include <array>
+#include <exception>
+#include <new>
 
 #include "app/data_selection_options.h"
 #include "app/generate_command.h"
@@ -77,7 +79,17 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
         if (const Subcommand* sub = findSubcommand(args.at(1))) {
             QStringList rest = args.mid(2);
             rest.prepend(QStringLiteral("ensil ") + QLatin1String(sub->name));
-            return {sub->run(rest, out, err), std::nullopt};
+            // The edge of every command: whatever a step throws is said, never an abort.
+            try {
+                return {sub->run(rest, out, err), std::nullopt};
+            } catch (const std::bad_alloc&) {
+                err << rest.front() << ": there is not enough memory for this\n";
+            } catch (const std::exception& e) {
+                err << rest.front() << ": " << e.what() << "\n";
+            } catch (...) {
+                err << rest.front() << ": an unexpected error stopped it\n";
+            }
+            return {1, std::nullopt};
         }
     }
     QCommandLineParser parser;

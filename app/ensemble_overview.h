@@ -20,6 +20,7 @@ struct EnsembleOverview {
     prep::FieldStatistics statistics;
     std::shared_ptr<const prep::EnsembleMoments> moments;  // mean member and variance
     std::vector<float> meanColumnMaximum;                  // nx * ny
+    std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache
 };
 
 // Throws data::Cancelled, data::Error.

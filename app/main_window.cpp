@@ -243,15 +243,17 @@ void MainWindow::setIdle(const QString& message) {
 void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
     m_requested.reset();
     m_requestedDemo = params;
-    const std::string key = demoSourceKey(params);
-    startLoading(tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
-                     .arg(params.members)
-                     .arg(params.nx)
-                     .arg(params.ny)
-                     .arg(params.nz),
-                 key, [params](const std::stop_token&, const data::Progress&) {
-                     return data::makeDemoEnsemble(params).ensemble;
-                 });
+
+    startLoading(
+        tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
+            .arg(params.members)
+            .arg(params.nx)
+            .arg(params.ny)
+            .arg(params.nz),
+        [params] { return demoSourceKey(params); },
+        [params](const std::stop_token&, const data::Progress&) {
+            return data::makeDemoEnsemble(params).ensemble;
+        });
 }
 
 void MainWindow::openFiles(const data::DataSelection& selection) {
@@ -261,25 +263,30 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
     rememberRecent(selection);
     m_requested = selection;
     m_requestedDemo.reset();
-    startLoading(tr("Reading %1...").arg(name), data::sourceIdentity(selection),
-                 [selection](const std::stop_token& stop, const data::Progress& progress) {
-                     return data::openEnsemble(selection, stop, progress);
-                 });
+    startLoading(
+        tr("Reading %1...").arg(name), [selection] { return data::sourceIdentity(selection); },
+        [selection](const std::stop_token& stop, const data::Progress& progress) {
+            return data::openEnsemble(selection, stop, progress);
+        });
 }
 
-void MainWindow::startLoading(const QString& what, std::string sourceKey, EnsembleSource source) {
-    m_loadingKey = std::move(sourceKey);
+void MainWindow::startLoading(const QString& what, std::function<std::string()> identify,
+                              EnsembleSource source) {
     setBusy(what);
     if (!m_overview) {
         m_info->showMessage(tr("Loading..."));
         m_view->setPlaceholderText(what);
     }
     m_loader.start(
-        [source = std::move(source)](const std::stop_token& stop, const data::Progress& progress) {
+        [source = std::move(source), identify = std::move(identify)](
+            const std::stop_token& stop, const data::Progress& progress) {
             auto ensemble = std::make_shared<const data::Ensemble>(
                 source(stop, [&](double f) { data::report(progress, 0.6 * f); }));
-            return buildEnsembleOverview(std::move(ensemble), stop,
-                                         [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+            EnsembleOverview overview =
+                buildEnsembleOverview(std::move(ensemble), stop,
+                                      [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+            overview.sourceKey = identify();
+            return overview;
         },
         [this](EnsembleOverview overview) {
             showOverview(std::make_unique<EnsembleOverview>(std::move(overview)));
@@ -396,7 +403,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
     m_info->showFacts(ensembleFacts(*m_overview));
-    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_loadingKey);
+    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
     m_view->setMemberNames(memberNames());
     const prep::FieldStatistics& stats = m_overview->statistics;
     const int members = static_cast<int>(e.memberCount());

@@ -129,7 +129,10 @@ protected:
 private:
     using EnsembleSource =
         std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
-    void startLoading(const QString& what, std::string sourceKey, EnsembleSource source);
+    // `identify` gives the data's identity for the mesh cache; it runs on the worker, since it
+    // reads the files (a content hash).
+    void startLoading(const QString& what, std::function<std::string()> identify,
+                      EnsembleSource source);
     void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);
@@ -203,7 +206,6 @@ private:
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;
     bool m_hasSavedLayout = false;
-    std::string m_loadingKey;  // identity of the data being loaded, for the mesh cache
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices

@@ -199,6 +199,11 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         job.options.maxErrorCells = static_cast<float>(*errorCells);
         job.linkage = linkage;
         if (!parser.isSet(o.noCache)) {
+            if (parser.isSet(o.cacheDir) && parser.value(o.cacheDir).trimmed().isEmpty()) {
+                err << "ensil preprocess: --cache-dir '' is refused: name a folder, or use "
+                       "--no-cache\n";
+                return 2;
+            }
             job.cacheDirectory = parser.isSet(o.cacheDir) ? parser.value(o.cacheDir).toStdString()
                                                           : defaultMeshCacheDirectory();
         }
@@ -211,6 +216,10 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         job.moments = &moments;
         IsovalueOutcome outcome = runIsovalueJob(job);
         r.seconds.insert(outcome.seconds.begin(), outcome.seconds.end());
+        if (!outcome.cacheWarning.empty()) {
+            err << "ensil preprocess: warning: " << QString::fromStdString(outcome.cacheWarning)
+                << "; going on without storing the results\n";
+        }
         r.cache = !job.cacheDirectory ? QStringLiteral("off")
                   : outcome.fromCache ? QStringLiteral("hit")
                                       : QStringLiteral("miss");

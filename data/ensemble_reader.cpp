@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "data/content_hash.h"
 #include "data/error.h"
 #include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
@@ -67,6 +68,13 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
             message += "/*.nc')";
             throw Error(ErrorKind::InvalidArgument, message);
         }
+        // Opening a named pipe (or a device) to look at its first bytes would wait forever.
+        if (!std::filesystem::is_regular_file(p)) {
+            throw Error(ErrorKind::InvalidArgument,
+                        "'" + p +
+                            "' is not a regular file (a named pipe, a device or a socket); "
+                            "name a file that holds the data");
+        }
     }
     std::ifstream in(path, std::ios::binary);
     std::array<char, 4> magic{};
@@ -100,8 +108,16 @@ std::string sourceIdentity(const DataSelection& selection) {
         const auto absolute = std::filesystem::absolute(p, error).lexically_normal();
         const auto size = std::filesystem::file_size(p, error);
         const auto time = std::filesystem::last_write_time(p, error).time_since_epoch().count();
+        // The contents too: a file rewritten with its size and time kept is other data.
+        char hash[17] = "unreadable";
+        try {
+            std::snprintf(hash, sizeof hash, "%016llx",
+                          static_cast<unsigned long long>(contentHash(p)));
+        } catch (const Error&) {
+            // Reading it will say what is wrong; the key only has to differ.
+        }
         id += "file=" + absolute.string() + " size=" + std::to_string(size) +
-              " mtime=" + std::to_string(time) + "; ";
+              " mtime=" + std::to_string(time) + " xxh3=" + hash + "; ";
     }
     return id + "var=" + selection.variable + " member-dim=" + selection.memberDimension +
            " time-index=" + std::to_string(selection.timeIndex);

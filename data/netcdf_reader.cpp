@@ -212,6 +212,15 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
                 d.memberDimensionReason = "one file per member";
             }
         } else {
+            // Without a named variable each file picks its own first 3D one: files that hold
+            // different variables must not be mixed into one ensemble under the first's name.
+            if (plan.name != d.variable) {
+                throw Error(ErrorKind::InvalidArgument,
+                            "'" + file.path() + "' holds '" + plan.name + "' where '" +
+                                selection.paths.front() + "' holds '" + d.variable +
+                                "': every member file must hold the same variable; name it "
+                                "with --var (the Variable box of the Open dialog)");
+            }
             checkSameGrid(selection.paths.front(), d.grid, file.path(), plan.grid);
         }
         std::vector<std::string> names = memberNames(file, plan);

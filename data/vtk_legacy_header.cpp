@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cctype>
+#include <charconv>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -111,6 +112,24 @@ private:
         if (!(m_in >> value)) fail("has no valid " + what);
         return value;
     }
+    // A count of values the file must hold: digits only (a sign is refused, where a plain read
+    // into an unsigned number would wrap -5 around to 2^64 - 5), and no more values than the
+    // file has bytes, so nothing is allocated for values that cannot be there.
+    std::size_t count(const std::string& what) {
+        std::string text;
+        if (!token(text)) fail("ends where " + what + " should be");
+        std::size_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
+            fail("gives '" + text + "' as " + what +
+                 ", which must be a whole number without a sign");
+        }
+        if (value > m_size) {
+            fail("gives " + what + " " + text + ", more values than its " + std::to_string(m_size) +
+                 " bytes can hold");
+        }
+        return value;
+    }
     std::array<double, 3> triple(const std::string& what) {
         return {number<double>(what), number<double>(what), number<double>(what)};
     }
@@ -121,7 +140,7 @@ private:
     void skipMetadata();
     void geometry(LegacyStructure& s, const std::string& keyword);
     void attribute(LegacyStructure& s, const std::string& keyword);
-    void fieldArrays(LegacyStructure* s, std::size_t count);
+    void fieldArrays(LegacyStructure* s, std::size_t arrays);
     void recordAndSkip(LegacyStructure* s, const std::string& name, const std::string& type,
                        std::size_t components, std::size_t tuples);
 
@@ -194,16 +213,21 @@ void Scanner::skipMetadata() {
 void Scanner::recordAndSkip(LegacyStructure* s, const std::string& name, const std::string& type,
                             std::size_t components, std::size_t tuples) {
     if (s) s->pointArrays.push_back({name, type, components});
+    if (tuples > 0 && components > m_size / tuples) {
+        fail("declares " + std::to_string(components) + " x " + std::to_string(tuples) +
+             " values in array '" + name + "', more than its " + std::to_string(m_size) +
+             " bytes can hold");
+    }
     skipValues(type, components * tuples, "array '" + name + "'");
 }
 
 // `s` is null for field data that belongs to the dataset rather than to its points.
-void Scanner::fieldArrays(LegacyStructure* s, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) {
+void Scanner::fieldArrays(LegacyStructure* s, std::size_t arrays) {
+    for (std::size_t i = 0; i < arrays; ++i) {
         const std::string name = decodeName(need("a field array name"));
         if (name == "NULL_ARRAY") continue;
-        const auto components = number<std::size_t>("component count of '" + name + "'");
-        const auto tuples = number<std::size_t>("tuple count of '" + name + "'");
+        const auto components = count("the component count of '" + name + "'");
+        const auto tuples = count("the tuple count of '" + name + "'");
         const std::string type = lower(need("the type of '" + name + "'"));
         recordAndSkip(s, name, type, components, tuples);
     }
@@ -211,7 +235,18 @@ void Scanner::fieldArrays(LegacyStructure* s, std::size_t count) {
 
 void Scanner::geometry(LegacyStructure& s, const std::string& keyword) {
     if (keyword == "dimensions") {
-        for (std::size_t& n : s.dimensions) n = number<std::size_t>("DIMENSIONS");
+        std::size_t points = 1;
+        for (std::size_t& n : s.dimensions) {
+            n = count("a DIMENSIONS size");
+            if (n == 0) fail("gives 0 in its DIMENSIONS: every axis needs at least one point");
+            points = n > m_size * 8 / points ? m_size * 8 + 1 : points * n;
+        }
+        // Every point needs at least one bit of data in the file.
+        if (points > m_size * 8) {
+            fail("declares DIMENSIONS of " + std::to_string(s.dimensions[0]) + " x " +
+                 std::to_string(s.dimensions[1]) + " x " + std::to_string(s.dimensions[2]) +
+                 " points, more than its " + std::to_string(m_size) + " bytes can hold");
+        }
     } else if (keyword == "origin") {
         s.origin = triple("ORIGIN");
     } else if (keyword == "spacing" || keyword == "aspect_ratio") {
@@ -219,12 +254,12 @@ void Scanner::geometry(LegacyStructure& s, const std::string& keyword) {
     } else if (keyword.size() == 13 && keyword.ends_with("_coordinates")) {
         const auto axis = static_cast<std::size_t>(keyword[0] - 'x');
         if (axis > 2) fail("has an unknown keyword '" + keyword + "'");
-        const auto count = number<std::size_t>(keyword + " count");
+        const auto values = count(keyword + " count");
         const std::string type = lower(need(keyword + " type"));
-        s.coordinates[axis] = readValues(type, count, keyword);
+        s.coordinates[axis] = readValues(type, values, keyword);
     } else if (keyword == "field") {
         need("a field name");
-        fieldArrays(nullptr, number<std::size_t>("field array count"));
+        fieldArrays(nullptr, count("field array count"));
     } else {
         fail("has an unknown keyword '" + keyword + "' in its " + s.dataset + " geometry");
     }
@@ -243,7 +278,7 @@ void Scanner::attribute(LegacyStructure& s, const std::string& keyword) {
     LegacyStructure* record = m_pointSection ? &s : nullptr;
     if (keyword == "field") {
         need("a field name");
-        fieldArrays(record, number<std::size_t>("field array count"));
+        fieldArrays(record, count("field array count"));
     } else if (keyword == "scalars") {
         const std::string name = decodeName(need("a scalar array name"));
         const std::string type = lower(need("the type of '" + name + "'"));
@@ -258,15 +293,15 @@ void Scanner::attribute(LegacyStructure& s, const std::string& keyword) {
         recordAndSkip(record, name, type, count, m_tuples);
     } else if (keyword == "color_scalars") {
         const std::string name = decodeName(need("a color scalar name"));
-        const auto count = number<std::size_t>("color component count");
-        recordAndSkip(record, name, m_binary ? "unsigned_char" : "float", count, m_tuples);
+        const auto components = count("the color component count");
+        recordAndSkip(record, name, m_binary ? "unsigned_char" : "float", components, m_tuples);
     } else if (keyword == "lookup_table") {
         const std::string name = need("a lookup table name");
-        const auto size = number<std::size_t>("lookup table size");
+        const auto size = count("the lookup table size");
         skipValues(m_binary ? "unsigned_char" : "float", 4 * size, "lookup table '" + name + "'");
     } else if (keyword == "texture_coordinates") {
         const std::string name = decodeName(need("a texture coordinate name"));
-        const auto dim = number<std::size_t>("texture coordinate dimension");
+        const auto dim = count("the texture coordinate dimension");
         recordAndSkip(record, name, lower(need("the type of '" + name + "'")), dim, m_tuples);
     } else if (const std::size_t components = fixedComponents(keyword); components > 0) {
         const std::string name = decodeName(need("an array name"));
@@ -299,7 +334,8 @@ LegacyStructure Scanner::scan() {
         if (keyword == "point_data" || keyword == "cell_data") {
             attributes = true;
             m_pointSection = keyword == "point_data";
-            m_tuples = number<std::size_t>(keyword == "point_data" ? "POINT_DATA" : "CELL_DATA");
+            m_tuples =
+                count(keyword == "point_data" ? "the POINT_DATA count" : "the CELL_DATA count");
         } else if (keyword == "metadata") {
             skipMetadata();
         } else if (attributes) {

@@ -14,6 +14,8 @@ packages=(
     libglm-dev libopenmesh-dev libmeshoptimizer-dev libtbb-dev libeigen3-dev
     # file formats
     libnetcdf-dev netcdf-bin libhdf5-dev hdf5-tools libvtk9-dev
+    # content hashes of input files (the mesh cache key)
+    libxxhash-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check

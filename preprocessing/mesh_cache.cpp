@@ -47,6 +47,7 @@ public:
         m_offset += size;
     }
     [[nodiscard]] bool atEnd() const { return m_offset == m_bytes.size(); }
+    [[nodiscard]] std::size_t left() const { return m_bytes.size() - m_offset; }
 
 private:
     const std::vector<char>& m_bytes;
@@ -70,8 +71,10 @@ data::PackedMesh getMesh(Reader& r) {
     m.outlyingnessScale = r.get<float>();
     const auto vertices = r.get<std::uint64_t>();
     const auto indices = r.get<std::uint64_t>();
-    if (vertices > (std::uint64_t{1} << 32) || indices > (std::uint64_t{1} << 34)) {
-        throw std::runtime_error("implausible sizes");
+    // Counts are checked against the bytes the entry holds before anything is allocated.
+    if (vertices > r.left() / sizeof(data::PackedVertex) ||
+        indices > (r.left() - vertices * sizeof(data::PackedVertex)) / sizeof(std::uint32_t)) {
+        throw std::runtime_error("sizes beyond the entry");
     }
     m.vertices.resize(vertices);
     m.indices.resize(indices);
@@ -161,7 +164,14 @@ std::optional<IsovalueMeshes> MeshCache::load(const std::string& key) const {
         std::uint64_t size = 0, checksum = 0;
         in.read(reinterpret_cast<char*>(&size), sizeof size);
         in.read(reinterpret_cast<char*>(&checksum), sizeof checksum);
-        if (!in || size > (std::uint64_t{1} << 40)) throw std::runtime_error("bad header");
+        // The payload is the rest of the file: a length field that says more is not believed
+        // (nor allocated for).
+        std::error_code sizeError;
+        const std::uintmax_t fileSize = std::filesystem::file_size(path, sizeError);
+        const auto at = static_cast<std::uintmax_t>(in.tellg());
+        if (!in || sizeError || at > fileSize || size != fileSize - at) {
+            throw std::runtime_error("bad header");
+        }
         std::vector<char> payload(size);
         in.read(payload.data(), static_cast<std::streamsize>(size));
         if (!in || fnv1a(payload.data(), payload.size()) != checksum) {

@@ -46,8 +46,9 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         if (cache) {
             try {
                 cache->store(key, out.meshes);
-            } catch (const data::Error&) {
-                // A cache that cannot be written only costs time next time.
+            } catch (const data::Error& e) {
+                // A cache that cannot be written only costs time next time: said, not fatal.
+                out.cacheWarning = e.what();
             }
         }
     }

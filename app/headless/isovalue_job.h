@@ -37,6 +37,9 @@ struct IsovalueOutcome {
     std::vector<double> distancesToMean;
     std::vector<double> meanOutlyingness;
     bool fromCache = false;
+    // Why the results could not be stored in the cache (a read-only folder, a full disk);
+    // empty when they were, or when there is no cache.
+    std::string cacheWarning;
     std::map<std::string, double>
         seconds;  // cache_read or meshes/decimation/attributes, similarity, clustering
 };

@@ -1,0 +1,39 @@
+// The identity of input data (the mesh cache key) follows the file's contents: a file
+// rewritten with the same size and its modification time put back is other data.
+#include "data/content_hash.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "data/ensemble_reader.h"
+#include "data/error.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+TEST(ContentHash, ARewriteWithTheSameSizeAndTimeIsOtherData) {
+    const test::TempDir dir;
+    const std::string path = dir.file("members.nc");
+    { std::ofstream(path, std::ios::binary) << "the first contents"; }
+    const auto time = std::filesystem::last_write_time(path);
+    data::DataSelection selection;
+    selection.paths = {path};
+    const std::string before = data::sourceIdentity(selection);
+    const std::uint64_t hashBefore = data::contentHash(path);
+    { std::ofstream(path, std::ios::binary) << "other contents!!!!"; }
+    ASSERT_EQ(std::filesystem::file_size(path), 18U) << "the same size";
+    std::filesystem::last_write_time(path, time);
+    EXPECT_NE(data::contentHash(path), hashBefore);
+    EXPECT_NE(data::sourceIdentity(selection), before)
+        << "the stale cache entry would be taken for this data";
+    // The same contents again: the same identity (the cache still hits when nothing changed).
+    { std::ofstream(path, std::ios::binary) << "the first contents"; }
+    std::filesystem::last_write_time(path, time);
+    EXPECT_EQ(data::sourceIdentity(selection), before);
+}
+
+TEST(ContentHash, AFileThatCannotBeReadIsSaid) {
+    EXPECT_THROW((void)data::contentHash("/nonexistent/members.nc"), data::Error);
+}
