@@ -1,5 +1,6 @@
 #include "app/preprocess_command.h"
 
+#include <QColor>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QJsonArray>
@@ -14,6 +15,8 @@
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
+#include "gl/palette.h"
+#include "preprocessing/cluster_identity.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/field_statistics.h"
 #include "widgets/session/setting_options.h"
@@ -94,6 +97,16 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonArray labels;
     for (int l : r.labels) labels.append(l);
     o[QStringLiteral("clusters")] = labels;
+    // The colour each member is drawn in, by the stable identity rule from the tree (the
+    // workbench's colours for this tree and k when it opens the data).
+    const std::vector<int> identities =
+        prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, k));
+    QJsonArray colors;
+    for (const int identity : identities) {
+        const glm::vec3 c = gl::clusterColor(identity);
+        colors.append(QColor::fromRgbF(c.r, c.g, c.b).name());
+    }
+    o[QStringLiteral("colors")] = colors;
     // What the workbench's member table shows; NaN (no isosurface) and infinity are null.
     const auto figure = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
     QJsonArray members;

@@ -1,5 +1,8 @@
-// A qualitative palette for clusters, safe for colour-blind viewers (Okabe & Ito 2008), with
-// black replaced by light gray because the view's background is dark.
+// A qualitative palette of 12 colours for clusters: the seven colours of Okabe & Ito (2008),
+// safe for colour-blind viewers, then five light ones of Paul Tol's schemes that stay apart
+// from them as thin lines on a dark background. None is near the mean's gray or the gray of
+// members that are not clustered. Colour i belongs to the cluster whose stable identity is i
+// (preprocessing/cluster_identity.h); beyond 12 clusters colours repeat.
 #pragma once
 
 #include <array>
@@ -10,7 +13,7 @@
 
 namespace ensil::gl {
 
-inline constexpr std::array<glm::vec3, 8> kClusterPalette{{
+inline constexpr std::array<glm::vec3, 12> kClusterPalette{{
     {0.902F, 0.624F, 0.000F},  // orange
     {0.337F, 0.706F, 0.914F},  // sky blue
     {0.000F, 0.620F, 0.451F},  // bluish green
@@ -18,11 +21,20 @@ inline constexpr std::array<glm::vec3, 8> kClusterPalette{{
     {0.000F, 0.447F, 0.698F},  // blue
     {0.835F, 0.369F, 0.000F},  // vermillion
     {0.800F, 0.475F, 0.655F},  // reddish purple
-    {0.733F, 0.733F, 0.733F},  // light gray
+    {1.000F, 0.667F, 0.733F},  // pink (Tol light)
+    {0.267F, 0.733F, 0.600F},  // mint (Tol light)
+    {0.733F, 0.800F, 0.200F},  // pear (Tol light)
+    {0.600F, 0.867F, 1.000F},  // light cyan (Tol light)
+    {0.667F, 0.267F, 0.600F},  // purple (Tol muted)
 }};
 
-inline glm::vec3 clusterColor(int cluster) {
-    return kClusterPalette[static_cast<std::size_t>(cluster) % kClusterPalette.size()];
+// Members that are not clustered (before the first clustering).
+inline constexpr glm::vec3 kUnclusteredColor{0.733F, 0.733F, 0.733F};
+
+// The colour of a cluster identity; kUnclusteredColor for -1.
+inline glm::vec3 clusterColor(int identity) {
+    if (identity < 0) return kUnclusteredColor;
+    return kClusterPalette[static_cast<std::size_t>(identity) % kClusterPalette.size()];
 }
 
 // Every member visible, coloured by its cluster label.

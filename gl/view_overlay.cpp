@@ -103,7 +103,8 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
     }
 
     if (in.showLegend && in.appearance != nullptr) {
-        std::map<int, std::pair<glm::vec3, int>> clusters;  // label -> colour, visible members
+        // cluster (its stable number) -> colour, visible members
+        std::map<int, std::pair<glm::vec3, int>> clusters;
         for (const MemberAppearance& a : *in.appearance) {
             if (a.cluster < 0) continue;
             auto [it, added] = clusters.try_emplace(a.cluster, a.color, 0);
@@ -112,9 +113,11 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
         for (const auto& [cluster, entry] : clusters) {
             const int n = entry.second;
             overlay.legend.push_back(
-                {clusterColor(cluster),
-                 n == 1 ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)
-                        : QStringLiteral("Cluster %1 \u00b7 %2 members").arg(cluster + 1).arg(n)});
+                {entry.first,
+                 n == 0 ? QStringLiteral("Cluster %1 \u00b7 hidden").arg(cluster + 1)
+                 : n == 1
+                     ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)
+                     : QStringLiteral("Cluster %1 \u00b7 %2 members").arg(cluster + 1).arg(n)});
         }
         if (in.showMean)
             overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});

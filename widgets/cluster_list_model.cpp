@@ -28,8 +28,10 @@ QVariant ClusterListModel::data(const QModelIndex& index, int role) const {
     const int c = index.row();
     switch (index.column()) {
         case Cluster:
-            if (role == Qt::DisplayRole) return tr("Cluster %1").arg(c + 1);
-            if (role == Qt::DecorationRole) return MemberSelection::clusterColor(c);
+            if (role == Qt::DisplayRole) {
+                return tr("Cluster %1").arg(m_selection->clusterNumber(c));
+            }
+            if (role == Qt::DecorationRole) return m_selection->clusterColor(c);
             break;
         case Size:
             if (role == Qt::DisplayRole) {

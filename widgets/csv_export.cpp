@@ -30,10 +30,10 @@ QString memberTableCsv(const MemberSelection& selection) {
     lines << QStringLiteral(
         "index,name,cluster,distance_to_mean,mean_outlyingness,visible,selected");
     for (int m = 0; m < selection.memberCount(); ++m) {
-        const int cluster = selection.clusterOf(m);
+        const int cluster = selection.clusterNumber(selection.clusterOf(m));
         lines << QStringList{QString::number(m + 1),
                              field(selection.name(m)),
-                             cluster < 0 ? QString() : QString::number(cluster + 1),
+                             cluster <= 0 ? QString() : QString::number(cluster),
                              number(selection.distanceToMean(m)),
                              number(selection.meanOutlyingness(m)),
                              selection.isMemberVisible(m) ? QStringLiteral("1")

@@ -104,7 +104,7 @@ QString DendrogramView::toolTipAt(QPointF p) const {
     if (node < m_layout.memberCount()) {
         return tr("%1 (cluster %2)")
             .arg(m_selection->name(node))
-            .arg(m_selection->clusterOf(node) + 1);
+            .arg(m_selection->clusterNumber(m_selection->clusterOf(node)));
     }
     const double h = m_layout.mergeHeight(node);
     return tr("Merge height %1: %2 members")

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gl/palette.h"
+#include "preprocessing/cluster_identity.h"
 #include "widgets/session/member_appearance.h"
 
 namespace ensil::ui {
@@ -42,8 +43,9 @@ void MemberSelection::setMembers(MemberFigures figures) {
         m_selected.assign(n, false);
         m_hovered = -1;
         m_tree = {};
+        m_identities.clear();  // other members: colours start afresh
     }
-    relabel();
+    relabel(/*newTree=*/false, m_clusters);
     emit clustersChanged();
     emit membersReset();
     if (!sameMembers) {
@@ -60,25 +62,36 @@ void MemberSelection::setTree(prep::MergeTree tree) {
     }
     emit clustersAboutToChange();
     m_tree = std::move(tree);
-    relabel();
+    relabel(/*newTree=*/true, m_clusters);
     emit clustersChanged();
 }
 
 void MemberSelection::setClusterCount(int k) {
     if (k < 1 || k == m_clusters) return;
     emit clustersAboutToChange();
+    const int previous = std::clamp(m_clusters, 1, std::max(1, m_tree.memberCount));
     m_clusters = k;
-    relabel();
+    relabel(/*newTree=*/false, previous);
     emit clustersChanged();
 }
 
-void MemberSelection::relabel() {
+void MemberSelection::relabel(bool newTree, int previousK) {
     if (!isClustered()) {
         m_labels.clear();
-        return;
+        return;  // identities stay for the next tree of the same members
     }
-    m_labels = prep::clusterLabels(m_tree, std::clamp(m_clusters, 1, m_tree.memberCount));
+    const std::vector<int> previous = prep::memberIdentities(m_labels, m_identities);
     m_clusters = std::clamp(m_clusters, 1, m_tree.memberCount);
+    const std::vector<int> labels = prep::clusterLabels(m_tree, m_clusters);
+    const bool known = !m_identities.empty() && previous.size() == labels.size();
+    if (!known) {
+        m_identities = prep::identitiesFromTree(m_tree, m_clusters);
+    } else if (newTree) {
+        m_identities = prep::matchIdentities(labels, m_clusters, previous);
+    } else if (previousK != m_clusters) {
+        m_identities = prep::followTree(m_tree, previousK, m_identities, m_clusters);
+    }
+    m_labels = labels;
 }
 
 double MemberSelection::distanceToMean(int member) const {
@@ -101,8 +114,15 @@ QList<int> MemberSelection::membersOfCluster(int cluster) const {
     return members;
 }
 
-QColor MemberSelection::clusterColor(int cluster) {
-    const glm::vec3 c = cluster < 0 ? gl::kClusterPalette.back() : gl::clusterColor(cluster);
+int MemberSelection::identityOf(int cluster) const {
+    return cluster >= 0 && static_cast<std::size_t>(cluster) < m_identities.size() &&
+                   !m_labels.empty()
+               ? m_identities[static_cast<std::size_t>(cluster)]
+               : -1;
+}
+
+QColor MemberSelection::clusterColor(int cluster) const {
+    const glm::vec3 c = gl::clusterColor(identityOf(cluster));
     return QColor::fromRgbF(c.r, c.g, c.b);
 }
 
@@ -206,7 +226,7 @@ void MemberSelection::setHovered(int member) {
 }
 
 std::vector<gl::MemberAppearance> MemberSelection::appearance() const {
-    return session::memberAppearance(m_labels, {m_visible, m_selected});
+    return session::memberAppearance(m_labels, m_identities, {m_visible, m_selected});
 }
 
 }  // namespace ensil::ui

@@ -57,7 +57,11 @@ public:
     [[nodiscard]] const std::vector<int>& labels() const { return m_labels; }
     [[nodiscard]] int clusterOf(int member) const;  // -1 when not clustered
     [[nodiscard]] QList<int> membersOfCluster(int cluster) const;
-    [[nodiscard]] static QColor clusterColor(int cluster);  // gray for -1
+    // A cluster's stable identity (preprocessing/cluster_identity.h): its colour, and its
+    // number (identity + 1) in the legend, the cluster list and tooltips. -1 for -1.
+    [[nodiscard]] int identityOf(int cluster) const;
+    [[nodiscard]] int clusterNumber(int cluster) const { return identityOf(cluster) + 1; }
+    [[nodiscard]] QColor clusterColor(int cluster) const;  // gray for -1
     [[nodiscard]] QColor memberColor(int member) const { return clusterColor(clusterOf(member)); }
 
     [[nodiscard]] bool isMemberVisible(int member) const;
@@ -94,12 +98,15 @@ signals:
 
 private:
     [[nodiscard]] bool valid(int member) const { return member >= 0 && member < memberCount(); }
-    void relabel();
+    // Recomputes the labels of the cut, and the identities: matched to the previous ones
+    // after a new tree, followed along the tree after a new k, from the tree when new.
+    void relabel(bool newTree, int previousK);
 
     MemberFigures m_figures;
     prep::MergeTree m_tree;
     int m_clusters = 5;
     std::vector<int> m_labels;
+    std::vector<int> m_identities;  // per label
     std::vector<bool> m_visible;
     std::vector<bool> m_selected;
     int m_hovered = -1;

@@ -65,9 +65,10 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
             case Name:
                 return m_selection->name(m);
             case Cluster: {
-                const int c = m_selection->clusterOf(m);
+                // The cluster's stable number, as the legend and the cluster list show it.
+                const int c = m_selection->clusterNumber(m_selection->clusterOf(m));
                 if (sort) return c;
-                return c < 0 ? QVariant() : QVariant(c + 1);  // people count clusters from 1
+                return c <= 0 ? QVariant() : QVariant(c);
             }
             case DistanceToMean:
                 return sort ? number(m_selection->distanceToMean(m))

@@ -12,6 +12,7 @@
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
 #include "gl/surface_format.h"
+#include "preprocessing/cluster_identity.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/field_statistics.h"
 #include "widgets/session/member_appearance.h"
@@ -64,8 +65,9 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setMeshes(std::make_shared<data::MeshSet>(std::move(outcome.meshes)));
     // Coloured, hidden and selected as the workbench shows the session.
     const std::vector<int> labels = prep::clusterLabels(outcome.tree, k);
-    renderer.setAppearance(
-        session::memberAppearance(labels, session::memberFlags(state, labels, members)));
+    renderer.setAppearance(session::memberAppearance(labels,
+                                                     prep::identitiesFromTree(outcome.tree, k),
+                                                     session::memberFlags(state, labels, members)));
     renderer.settings() = state.render;
     renderer.setBackground({state.background, 1.0F});
     gl::Camera& camera = renderer.camera();

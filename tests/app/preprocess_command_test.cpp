@@ -49,6 +49,15 @@ TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
     const QJsonArray members = o["members"].toArray();
     ASSERT_EQ(members.size(), 10);
     const QJsonArray memberClusters = o["clusters"].toArray();
+    // One colour per member, the same for members of one cluster and apart across clusters.
+    const QJsonArray colors = o["colors"].toArray();
+    ASSERT_EQ(colors.size(), 10);
+    for (int a = 0; a < 10; ++a) {
+        EXPECT_TRUE(colors[a].toString().startsWith('#'));
+        for (int b = 0; b < 10; ++b) {
+            EXPECT_EQ(colors[a] == colors[b], memberClusters[a] == memberClusters[b]) << a << b;
+        }
+    }
     for (int m = 0; m < members.size(); ++m) {
         const QJsonObject member = members[m].toObject();
         EXPECT_FALSE(member["name"].toString().isEmpty());

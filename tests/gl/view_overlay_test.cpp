@@ -103,6 +103,21 @@ TEST(ViewOverlay, TheLegendCountsVisibleMembersPerClusterAndNamesTheMean) {
     EXPECT_EQ(o.legend[2].text, QStringLiteral("Mean member"));
 }
 
+TEST(ViewOverlay, AHiddenClusterReadsHiddenAndEntriesTakeTheMembersColours) {
+    Scene scene;
+    // Cluster 2 (stable identity 1) drawn in another colour, all its members hidden.
+    for (gl::MemberAppearance& a : scene.look) {
+        if (a.cluster == 1) {
+            a.visible = false;
+            a.color = gl::clusterColor(9);
+        }
+    }
+    const gl::ViewOverlay o = gl::computeOverlay(scene.input());
+    ASSERT_GE(o.legend.size(), 2u);
+    EXPECT_EQ(o.legend[1].text, QStringLiteral("Cluster 2 \u00b7 hidden"));
+    EXPECT_EQ(o.legend[1].color, gl::clusterColor(9));
+}
+
 TEST(ViewOverlay, TextIsLightOnDarkBackgroundsAndDarkOnLightOnes) {
     Scene scene;
     gl::OverlayInput in = scene.input();

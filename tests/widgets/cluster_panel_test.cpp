@@ -42,7 +42,7 @@ TEST(ClusterListModel, ShowsColourSizeAndVisibility) {
         sizes << model.index(c, ClusterListModel::Size).data().toInt();
         EXPECT_EQ(
             model.index(c, ClusterListModel::Cluster).data(Qt::DecorationRole).value<QColor>(),
-            ui::MemberSelection::clusterColor(c));
+            s.clusterColor(c));
     }
     std::sort(sizes.begin(), sizes.end());
     EXPECT_EQ(sizes, (QList<int>{1, 2, 3}));

@@ -119,9 +119,9 @@ TEST_F(LinkedPanels, DraggingTheCutLineUpdatesTheClusterListTheTableAndTheColour
     const auto look = selection.appearance();
     for (int m = 0; m < 6; ++m) {
         const QModelIndex cell = table.model()->index(m, ui::MemberTableModel::Cluster);
-        EXPECT_EQ(cell.data().toInt(), selection.clusterOf(m) + 1);
+        const int identity = selection.identityOf(selection.clusterOf(m));
+        EXPECT_EQ(cell.data().toInt(), identity + 1);
         EXPECT_EQ(cell.data(Qt::DecorationRole).value<QColor>(), selection.memberColor(m));
-        EXPECT_EQ(look[static_cast<std::size_t>(m)].color,
-                  gl::clusterColor(selection.clusterOf(m)));
+        EXPECT_EQ(look[static_cast<std::size_t>(m)].color, gl::clusterColor(identity));
     }
 }

@@ -137,3 +137,43 @@ TEST(MemberSelection, HoverIgnoresMembersThatDoNotExist) {
     EXPECT_EQ(hover.at(1).at(0).toInt(), -1);
     EXPECT_EQ(s.hovered(), -1);
 }
+
+namespace {
+std::vector<QColor> colours(const MemberSelection& s) {
+    std::vector<QColor> c;
+    for (int m = 0; m < s.memberCount(); ++m) c.push_back(s.memberColor(m));
+    return c;
+}
+}  // namespace
+
+TEST(MemberSelection, ColoursKeepTheirMeaningWhenTheCountGoesUpAndDown) {
+    MemberSelection s;
+    test::loadTwoGroups(s, 2);
+    const std::vector<QColor> two = colours(s);
+    s.setClusterCount(3);  // {1, 3, 5} splits into {1, 3} and {5}
+    const std::vector<QColor> three = colours(s);
+    EXPECT_EQ(three[0], two[0]) << "the group that did not split keeps its colour";
+    EXPECT_EQ(three[1], two[1]) << "the larger part of the split keeps its colour";
+    EXPECT_EQ(three[3], two[3]);
+    EXPECT_NE(three[5], two[5]) << "the smaller part takes a new one";
+    EXPECT_EQ(s.clusterNumber(s.clusterOf(5)), 3);
+    s.setClusterCount(2);
+    EXPECT_EQ(colours(s), two) << "merging back gives the colours back";
+}
+
+TEST(MemberSelection, ANewTreeOfTheSameMembersKeepsColoursByTheirMembers) {
+    MemberSelection s;
+    test::loadTwoGroups(s, 2);
+    const std::vector<QColor> before = colours(s);
+    // Another isovalue: the two groups swap places along the line, so the dendrogram (and the
+    // labels 0, 1 of the cut) come in the other order; the members of each group are the same.
+    s.setTree(test::treeOnALine({10.0, 0.0, 10.5, 0.7, 11.5, 2.0}));
+    EXPECT_EQ(colours(s), before);
+    // Member 4 moves to the other group, which becomes the larger one. From the tree alone the
+    // larger group would take the first colour; matched by shared members, each group keeps
+    // its colour and only member 4 changes.
+    s.setTree(test::treeOnALine({0.0, 10.0, 0.5, 10.7, 11.0, 12.0}));
+    const std::vector<QColor> after = colours(s);
+    for (const int m : {0, 1, 2, 3, 5}) EXPECT_EQ(after[m], before[m]) << m;
+    EXPECT_EQ(after[4], before[1]);
+}

@@ -26,13 +26,17 @@ MemberFlags memberFlags(const SessionState& state, const std::vector<int>& label
 }
 
 std::vector<gl::MemberAppearance> memberAppearance(const std::vector<int>& labels,
+                                                   const std::vector<int>& identities,
                                                    const MemberFlags& flags) {
     std::vector<gl::MemberAppearance> look(flags.visible.size());
     for (std::size_t m = 0; m < look.size(); ++m) {
         gl::MemberAppearance& a = look[m];
-        const int cluster = m < labels.size() ? labels[m] : -1;
-        a.color = cluster < 0 ? gl::kClusterPalette.back() : gl::clusterColor(cluster);
-        a.cluster = cluster;
+        const int label = m < labels.size() ? labels[m] : -1;
+        const int identity = label >= 0 && static_cast<std::size_t>(label) < identities.size()
+                                 ? identities[static_cast<std::size_t>(label)]
+                                 : -1;
+        a.color = gl::clusterColor(identity);
+        a.cluster = identity;
         a.visible = flags.visible[m];
         a.selected = m < flags.selected.size() && flags.selected[m];
     }

@@ -22,8 +22,11 @@ struct MemberFlags {
 // ignored: a project may name members of a larger ensemble.
 MemberFlags memberFlags(const SessionState& state, const std::vector<int>& labels, int memberCount);
 
-// What the renderer needs per member; `labels` as above (-1 or empty: gray, not clustered).
+// What the renderer needs per member; `labels` as above (-1 or empty: gray, not clustered),
+// `identities` the stable identity of each label (preprocessing/cluster_identity.h): its
+// colour, and the cluster number picking and the legend report.
 std::vector<gl::MemberAppearance> memberAppearance(const std::vector<int>& labels,
+                                                   const std::vector<int>& identities,
                                                    const MemberFlags& flags);
 
 }  // namespace ensil::session
