@@ -8,7 +8,7 @@
 #include <QTextStream>
 #include <fstream>
 
-#include "app/command_line.h"
+#include "tests/app/ensil_run.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -16,18 +16,8 @@ using namespace ensil;
 namespace {
 const QString kBad = QStringLiteral(ENSIL_SHARED_DATA_DIR "/../bad/");
 
-struct Outcome {
-    int code;
-    QString err;
-};
-
-Outcome run(const QStringList& args) {
-    QString outText, errText;
-    QTextStream out(&outText), err(&errText);
-    const int code = app::runCommandLine(QStringList{"ensil"} + args, out, err).exitCode;
-    err.flush();
-    return {code, errText};
-}
+using Outcome = test::EnsilRun;
+const auto run = test::runEnsil;
 
 struct Case {
     const char* file;

@@ -12,6 +12,7 @@
 #include "app/command_line.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/ensil_run.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
@@ -206,22 +207,20 @@ TEST_F(ProjectWindow, AThickTauFromAProjectSurvivesTheFirstEditInThePanel) {
 
 TEST_F(ProjectWindow, AProjectSavedByEnsilRenderOpensInTheWorkbenchAsDrawn) {
     const QString path = QString::fromStdString(m_dir.file("rendered.ensil"));
-    QString outText, errText;
-    QTextStream out(&outText), err(&errText);
-    const int code = app::runCommandLine(
-                         {"ensil",       "render",    ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                          "--var",       "t",         "--iso",
-                          "260",         "--out",     QString::fromStdString(m_dir.file("r.png")),
-                          "--size",      "480x320",   "--frames",
-                          "1",           "--azimuth", "10",
-                          "--elevation", "45",        "--thickness",
-                          "0.015",       "--mode",    "spaghetti",
-                          "--clusters",  "3",         "--save-project",
-                          path},
-                         out, err)
-                         .exitCode;
-    err.flush();
-    ASSERT_EQ(code, 0) << errText.toStdString();
+    const test::EnsilRun rendered =
+        test::runEnsil({"render",         ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                        "--var",          "t",
+                        "--iso",          "260",
+                        "--out",          QString::fromStdString(m_dir.file("r.png")),
+                        "--size",         "480x320",
+                        "--frames",       "1",
+                        "--azimuth",      "10",
+                        "--elevation",    "45",
+                        "--thickness",    "0.015",
+                        "--mode",         "spaghetti",
+                        "--clusters",     "3",
+                        "--save-project", path});
+    ASSERT_EQ(rendered.code, 0) << rendered.err.toStdString();
     const session::SessionState drawn = session::loadProject(path);
 
     app::MainWindow window;

@@ -8,6 +8,7 @@
 
 #include "app/command_line.h"
 #include "gl/palette.h"
+#include "tests/app/ensil_run.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 
@@ -16,22 +17,12 @@ using namespace ensil;
 TEST(RenderCommand, WritesThePictureWithoutAWindowAndReportsFrameTime) {
     test::TempDir dir;
     const QString png = QString::fromStdString(dir.file("era5.png"));
-    QString outText, errText;
-    QTextStream out(&outText), err(&errText);
-    const int code = app::runCommandLine(
-                         {"ensil",      "render",      ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                          "--var",      "t",           "--iso",
-                          "260",        "--out",       png,
-                          "--size",     "400x300",     "--frames",
-                          "3",          "--clusters",  "2",
-                          "--no-mean",  "--thickness", "0.05",
-                          "--no-cache", "--json"},
-                         out, err)
-                         .exitCode;
-    out.flush();
-    err.flush();
-    ASSERT_EQ(code, 0) << errText.toStdString();
-    const QJsonObject o = QJsonDocument::fromJson(outText.toUtf8()).object();
+    const test::EnsilRun r = test::runEnsil(
+        {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "260",
+         "--out", png, "--size", "400x300", "--frames", "3", "--clusters", "2", "--no-mean",
+         "--thickness", "0.05", "--no-cache", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_EQ(o["width"].toInt(), 400);
     EXPECT_EQ(o["height"].toInt(), 300);
     EXPECT_GT(o["frame_ms"].toDouble(), 0.0);
@@ -148,14 +139,9 @@ TEST(RenderCommand, ASavedProjectDrawsTheIdenticalPicture) {
     ASSERT_TRUE(QFile::exists(project));
 
     const QString png = QString::fromStdString(dir.file("again.png"));
-    QString outText, errText;
-    QTextStream out(&outText), err(&errText);
-    const int code = app::runCommandLine({"ensil", "render", project, "--out", png, "--size",
-                                          "320x240", "--frames", "1", "--no-cache"},
-                                         out, err)
-                         .exitCode;
-    err.flush();
-    ASSERT_EQ(code, 0) << errText.toStdString();
+    const test::EnsilRun again = test::runEnsil(
+        {"render", project, "--out", png, "--size", "320x240", "--frames", "1", "--no-cache"});
+    ASSERT_EQ(again.code, 0) << again.err.toStdString();
     const QImage second(png);
     ASSERT_EQ(second.size(), first.size());
     EXPECT_EQ(test::differingFraction(first, second, 0), 0.0)
@@ -174,14 +160,9 @@ TEST(RenderCommand, AProjectDefinesThePictureSoSceneOptionsAreRefusedWithIt) {
     const QString project = QString::fromStdString(dir.file("drawn.ensil"));
     QString error;
     ASSERT_FALSE(renderEra5({"--save-project", project}, &error).isNull()) << error.toStdString();
-    QString outText, errText;
-    QTextStream out(&outText), err(&errText);
-    const int code =
-        app::runCommandLine({"ensil", "render", project, "--out",
-                             QString::fromStdString(dir.file("x.png")), "--thickness", "0.02"},
-                            out, err)
-            .exitCode;
-    err.flush();
-    EXPECT_EQ(code, 2);
-    EXPECT_TRUE(errText.contains("--thickness comes from the project")) << errText.toStdString();
+    const test::EnsilRun r =
+        test::runEnsil({"render", project, "--out", QString::fromStdString(dir.file("x.png")),
+                        "--thickness", "0.02"});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.contains("--thickness comes from the project")) << r.err.toStdString();
 }
