@@ -251,8 +251,8 @@ void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
             .arg(params.ny)
             .arg(params.nz),
         [params] { return demoSourceKey(params); },
-        [params](const std::stop_token&, const data::Progress&) {
-            return data::makeDemoEnsemble(params).ensemble;
+        [params](const std::stop_token& stop, const data::Progress& progress) {
+            return data::makeDemoEnsemble(params, stop, progress).ensemble;
         });
 }
 

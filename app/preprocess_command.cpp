@@ -181,7 +181,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         err << "ensil preprocess: " << problem << "\n";
         return 2;
     }
-    const int k = requested.clusters;
+    int k = requested.clusters;
+    const bool clustersGiven = clusterOptions().given(parser).contains("--clusters");
     QElapsedTimer total, stage;
     total.start();
     try {
@@ -192,9 +193,12 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         r.ensemble = parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
                                           : data::openEnsemble(*selection);
         r.seconds["load"] = seconds(stage);
-        if (k < 1 || static_cast<std::size_t>(k) > r.ensemble.memberCount()) {
-            err << "ensil preprocess: --clusters must be from 1 to the number of members ("
-                << r.ensemble.memberCount() << ")\n";
+        const int members = static_cast<int>(r.ensemble.memberCount());
+        if (k > members && !clustersGiven) {
+            k = members;  // the default asks for more clusters than a small ensemble has
+        } else if (k > members) {
+            err << "ensil preprocess: --clusters " << k << " is more than the " << members
+                << " members of this ensemble; give at most " << members << "\n";
             return 2;
         }
         const prep::FieldStatistics stats = prep::computeFieldStatistics(r.ensemble, 0);

@@ -1,11 +1,13 @@
 #include "data/demo_ensemble.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <thread>
 
+#include "data/ensemble_reader.h"
 #include "data/error.h"
 
 namespace ensil::data {
@@ -207,7 +209,8 @@ Axis pressureAxis(std::size_t nz) {
 
 }  // namespace
 
-DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params) {
+DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_token& stop,
+                              const Progress& progress) {
     if (params.members < 1) {
         throw Error(ErrorKind::InvalidArgument, "the demo ensemble needs at least 1 member");
     }
@@ -215,6 +218,10 @@ DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params) {
         throw Error(ErrorKind::InvalidArgument,
                     "the demo grid needs at least 2 points along every axis");
     }
+    checkMemoryFor(params.members * params.nx * params.ny * params.nz * sizeof(float),
+                   "the demo ensemble (" + std::to_string(params.members) + " members of " +
+                       std::to_string(params.nx) + " x " + std::to_string(params.ny) + " x " +
+                       std::to_string(params.nz) + " points)");
     Axis lon = makeUniformAxis("lon", "degrees_east", kLonMin, kLonMax, params.nx);
     lon.standardName = "longitude";
     Axis lat = makeUniformAxis("lat", "degrees_north", kLatMin, kLatMax, params.ny);
@@ -248,16 +255,25 @@ DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params) {
     }
     const std::size_t threads =
         std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, params.members);
+    std::atomic<std::size_t> done{0};
     {
         std::vector<std::jthread> workers;
         for (std::size_t t = 0; t < threads; ++t) {
             workers.emplace_back([&, t] {
-                for (std::size_t m = t; m < params.members; m += threads) {
+                for (std::size_t m = t; m < params.members && !stop.stop_requested();
+                     m += threads) {
                     fillMember(recipes[m], ens.grid, heightKm, ens.members[m].values);
+                    const std::size_t finished = ++done;
+                    // One thread reports, so the callback is never called concurrently.
+                    if (t == 0) {
+                        report(progress,
+                               static_cast<double>(finished) / static_cast<double>(params.members));
+                    }
                 }
             });
         }
     }
+    throwIfStopped(stop);
     return result;
 }
 

@@ -9,8 +9,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <stop_token>
 
 #include "data/ensemble.h"
+#include "data/job.h"
 
 namespace ensil::data {
 
@@ -30,7 +32,10 @@ struct DemoEnsemble {
     std::vector<DemoRegime> regimes;  // one per member
 };
 
-// Throws Error(InvalidArgument) for fewer than 1 member or fewer than 2 points along an axis.
-DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params);
+// Throws Error(InvalidArgument) for fewer than 1 member or fewer than 2 points along an axis,
+// Error(OutOfMemory) before allocating when the members would not fit (checkMemoryFor), and
+// Cancelled when stopped (checked per member).
+DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_token& stop = {},
+                              const Progress& progress = {});
 
 }  // namespace ensil::data

@@ -128,9 +128,11 @@ void checkMemoryFor(std::size_t bytes, const std::string& what) {
     // Keep a quarter of what is free for meshes, the cache and everything else.
     if (available > 0 && static_cast<double>(bytes) > 0.75 * static_cast<double>(available)) {
         throw Error(ErrorKind::OutOfMemory,
-                    what + " needs " + gib(static_cast<double>(bytes)) + " of memory, but only " +
+                    what + " needs " + gib(static_cast<double>(bytes)) +
+                        " of memory; ensil takes at most three quarters of the " +
                         gib(static_cast<double>(available)) +
-                        " is available. Choose fewer members or files, or close other programs");
+                        " available now, keeping the rest for meshes and other programs. "
+                        "Choose fewer members, files or points, or close other programs");
     }
 }
 

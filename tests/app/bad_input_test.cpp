@@ -89,3 +89,17 @@ TEST(BadInput, AnEmptyOrUnusableCacheFolderIsSaid) {
     EXPECT_TRUE(unusable.err.contains("warning: cannot write the preprocessing cache"))
         << unusable.err.toStdString();
 }
+
+TEST(BadInput, TheDefaultClusterCountFitsASmallEnsembleAndAnAskedOneIsExplained) {
+    const test::TempDir dir;
+    const QString file = QString::fromStdString(dir.file("four.nc"));
+    ASSERT_EQ(run({"generate", "--members", "4", "--grid", "24x12x4", "--out", file}).code, 0);
+    // The default of 5 clusters on 4 members once failed, blaming the user.
+    const Outcome fits = run({"preprocess", file, "--iso", "20", "--no-cache", "--json"});
+    ASSERT_EQ(fits.code, 0) << fits.err.toStdString();
+    EXPECT_TRUE(fits.out.contains("\"k\":4")) << fits.out.left(400).toStdString();
+    const Outcome asked = run({"preprocess", file, "--iso", "20", "--no-cache", "--clusters", "6"});
+    EXPECT_EQ(asked.code, 2);
+    EXPECT_TRUE(asked.err.contains("--clusters 6 is more than the 4 members"))
+        << asked.err.toStdString();
+}

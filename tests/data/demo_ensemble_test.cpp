@@ -146,3 +146,30 @@ TEST(DemoEnsemble, RejectsEmptyAndFlatRequests) {
     EXPECT_THROW(makeDemoEnsemble({.members = 0}), Error);
     EXPECT_THROW(makeDemoEnsemble({.members = 2, .nx = 8, .ny = 8, .nz = 1}), Error);
 }
+
+TEST(DemoEnsemble, AskingForMoreThanFitsIsRefusedBeforeAllocating) {
+    // 10000 members of 4096 x 4096 x 64 points: 43 TB; once std::bad_alloc after 15 GB.
+    const DemoEnsembleParams huge{.members = 10000, .nx = 4096, .ny = 4096, .nz = 64};
+    try {
+        (void)makeDemoEnsemble(huge);
+        FAIL() << "accepted";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), ErrorKind::OutOfMemory);
+        EXPECT_NE(std::string(e.what()).find("three quarters"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("10000 members of 4096 x 4096 x 64"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(DemoEnsemble, MakingItCanBeCancelledAndReportsProgress) {
+    const DemoEnsembleParams small{.members = 8, .nx = 16, .ny = 8, .nz = 4};
+    std::vector<double> reported;
+    (void)makeDemoEnsemble(small, {}, [&](double f) { reported.push_back(f); });
+    ASSERT_FALSE(reported.empty());
+    EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+    EXPECT_LE(reported.back(), 1.0);
+    std::stop_source stop;
+    stop.request_stop();
+    EXPECT_THROW((void)makeDemoEnsemble(small, stop.get_token()), Cancelled);
+}

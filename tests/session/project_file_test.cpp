@@ -219,3 +219,31 @@ TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {
     EXPECT_EQ(QDir(QString::fromStdString(dir.path().string())).entryList(QDir::Files).size(), 1)
         << "no temporary file is left behind";
 }
+
+TEST(Project, WhatCannotBeAProjectIsRefusedBeforeItIsRead) {
+    const test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("huge.ensil"));
+    {
+        QFile f(path);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(17 << 20, ' '));
+    }
+    try {
+        (void)session::loadProject(path);
+        FAIL() << "a 17 MiB file is not a project";
+    } catch (const session::ProjectError& e) {
+        EXPECT_TRUE(std::string(e.what()).find("far more than a project holds") !=
+                    std::string::npos)
+            << e.what();
+    }
+    // A name of two million characters is refused naming the field, not echoed back.
+    const QByteArray json =
+        R"({"format": "ensil project", "schema_version": 1, "data": {"files": [{"path": "a.nc"}], "variable": ")" +
+        QByteArray(2 << 20, 'x') + R"("}})";
+    try {
+        (void)session::projectFromJson(json, QDir::temp());
+        FAIL() << "accepted";
+    } catch (const session::ProjectError& e) {
+        EXPECT_EQ(std::string(e.what()), "data.variable is longer than 1048576 characters");
+    }
+}

@@ -56,6 +56,11 @@ public:
     [[nodiscard]] QString text(const QString& key, const QString& fallback) const {
         if (!has(key)) return fallback;
         if (!value(key).isString()) fail(key, "must be a string");
+        // Names and paths; the layout's base64 is the longest text a project holds.
+        constexpr qsizetype kMaxText = 1 << 20;
+        if (value(key).toString().size() > kMaxText) {
+            fail(key, "is longer than " + std::to_string(kMaxText) + " characters");
+        }
         return value(key).toString();
     }
     [[nodiscard]] glm::vec3 vec3(const QString& key, const glm::vec3& fallback) const {
@@ -378,6 +383,15 @@ SessionState loadProject(const QString& path) {
     if (!file.open(QIODevice::ReadOnly)) {
         throw ProjectError("cannot read '" + path.toStdString() +
                            "': " + file.errorString().toStdString());
+    }
+    // A project is a few kilobytes (its layout included); refuse what cannot be one before
+    // reading it, rather than spend memory on it and echo it back.
+    constexpr qint64 kMaxProjectBytes = qint64{16} << 20;
+    if (file.size() > kMaxProjectBytes) {
+        throw ProjectError(QFileInfo(path).fileName().toStdString() + ": it is " +
+                           std::to_string(file.size() >> 20) +
+                           " MiB, far more than a project holds (at most 16 MiB); it is not "
+                           "an ensil project");
     }
     try {
         return projectFromJson(file.readAll(), QFileInfo(path).absoluteDir());
