@@ -25,7 +25,9 @@ namespace ensil::app {
 namespace {
 
 struct Options {
-    QCommandLineOption iso{QStringLiteral("iso"), QStringLiteral("The isovalue (required)."),
+    QCommandLineOption iso{QStringLiteral("iso"),
+                           QStringLiteral("The isovalue (default: the workbench's, the 90th "
+                                          "percentile of the values; --json reports it)."),
                            QStringLiteral("X")};
     QCommandLineOption error{QStringLiteral("error"),
                              QStringLiteral("Decimation error bound in grid cells (default 0.25; a "
@@ -165,18 +167,20 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     session::SessionState requested;
     if (selection && selection->paths.empty() != parser.isSet(o.demo)) {
         problem = QStringLiteral("name the files to preprocess, or use --demo");
-    } else if (selection && !parser.isSet(o.iso)) {
-        problem = QStringLiteral("say which isovalue with --iso X (a number)");
     }
-    const auto iso = problem.isEmpty() && selection
-                         ? session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso),
-                                                       -1e30, 1e30, false, problem)
-                         : std::nullopt;
+    // No --iso: the workbench's default for the variable, chosen once the data is read.
+    std::optional<double> iso;
+    if (problem.isEmpty() && selection && parser.isSet(o.iso)) {
+        iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso), -1e30, 1e30,
+                                          false, problem);
+    }
+    const bool isoOk = !parser.isSet(o.iso) || iso.has_value();
     const auto errorCells =
-        iso ? session::parseBoundedNumber(QStringLiteral("--error"), parser.value(o.error), 0.001,
+        isoOk && problem.isEmpty()
+            ? session::parseBoundedNumber(QStringLiteral("--error"), parser.value(o.error), 0.001,
                                           10.0, false, problem)
             : std::nullopt;
-    if (!selection || !iso || !errorCells ||
+    if (!selection || !isoOk || !errorCells ||
         !clusterOptions().applyTo(parser, requested, problem)) {
         err << "ensil preprocess: " << problem << "\n";
         return 2;
@@ -201,7 +205,9 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                 << " members of this ensemble; give at most " << members << "\n";
             return 2;
         }
-        const prep::FieldStatistics stats = prep::computeFieldStatistics(r.ensemble, 0);
+        const prep::FieldStatistics stats =
+            prep::computeFieldStatistics(r.ensemble, prep::kIsovalueHistogramBins);
+        if (!iso) iso = prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
         if (*iso <= stats.minimum || *iso >= stats.maximum) {
             err << "ensil preprocess: isovalue " << *iso << " is outside the values of '"
                 << QString::fromStdString(r.ensemble.variable) << "' (" << stats.minimum << " .. "

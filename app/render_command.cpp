@@ -17,7 +17,10 @@ namespace ensil::app {
 namespace {
 
 struct Options {
-    QCommandLineOption iso{"iso", "The isovalue (required unless a project is given).", "X"};
+    QCommandLineOption iso{"iso",
+                           "The isovalue (default: the workbench's, the 90th percentile of the "
+                           "values; --json reports it).",
+                           "X"};
     QCommandLineOption output{"out", "The PNG file to write (required).", "FILE.png"};
     QCommandLineOption size{"size", "Image size in pixels (default 1600x1000).", "WxH",
                             "1600x1000"};
@@ -85,14 +88,12 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
     session::SessionState state;
     state.demo = parser.isSet(o.demo);
     if (!state.demo) state.data = selection;
-    if (!parser.isSet(o.iso)) {
-        problem = QStringLiteral("say which isovalue with --iso X");
-        return std::nullopt;
+    if (parser.isSet(o.iso)) {  // otherwise the workbench's default for the variable
+        const auto iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso),
+                                                     -1e30, 1e30, false, problem);
+        if (!iso) return std::nullopt;
+        state.isovalue = static_cast<float>(*iso);
     }
-    const auto iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso),
-                                                 -1e30, 1e30, false, problem);
-    if (!iso) return std::nullopt;
-    state.isovalue = static_cast<float>(*iso);
     if (!sceneOptions().applyTo(parser, state, problem)) return std::nullopt;
     if (parser.isSet(o.noLabels)) state.render.showAxes = state.render.showLegend = false;
     if (parser.isSet(o.removal)) {
@@ -211,6 +212,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
                 {"height", result.image.height()},
                 {"frames", request.frames},
                 {"isovalue", result.drawn.isovalue.value_or(0.0F)},
+                {"variable", QString::fromStdString(result.variable)},
                 {"triangles", static_cast<qint64>(result.triangles)},
                 {"members", static_cast<qint64>(result.members)},
                 {"gl_renderer", QString::fromStdString(result.glRenderer)},

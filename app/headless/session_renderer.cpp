@@ -125,6 +125,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     result.gpuBytes = renderer.gpuBytes();
     result.triangles = triangles;
     result.members = ensemble.memberCount();
+    result.variable = ensemble.variable;
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();
     renderer.releaseGpuResources();

@@ -83,9 +83,9 @@ TEST(CommandLine, UnknownOptionIsAnErrorWithAHint) {
 }
 
 TEST(CommandLine, RenderExplainsMissingArguments) {
-    const CliRun noIso = run({"render", "x.nc", "--out", "y.png"});
-    EXPECT_EQ(noIso.code, 2);
-    EXPECT_TRUE(noIso.err.contains("--iso")) << noIso.err.toStdString();
+    const CliRun noOut = run({"render", "--demo"});
+    EXPECT_EQ(noOut.code, 2);
+    EXPECT_TRUE(noOut.err.contains("--out")) << noOut.err.toStdString();
     const CliRun plane =
         run({"render", "--demo", "--iso", "30", "--out", "y.png", "--plane", "1,2"});
     EXPECT_EQ(plane.code, 2);

@@ -6,6 +6,8 @@
 #include <QTextStream>
 
 #include "app/command_line.h"
+#include "data/ensemble_reader.h"
+#include "preprocessing/field_statistics.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -104,7 +106,18 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
         {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "400", "--no-cache"});
     EXPECT_EQ(outside.code, 1);
     EXPECT_TRUE(outside.err.contains("225.8")) << outside.err.toStdString();
-    EXPECT_EQ(preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}).code, 2) << "no --iso";
+    // No --iso: the workbench's default, reported.
+    const CommandRun byDefault = preprocess(
+        {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--no-cache", "--json"});
+    ASSERT_EQ(byDefault.code, 0) << byDefault.err.toStdString();
+    const QJsonObject chosen = QJsonDocument::fromJson(byDefault.out.toUtf8()).object();
+    EXPECT_EQ(chosen["variable"].toString(), "t");
+    const data::Ensemble era5 =
+        data::openEnsemble({{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, "t", {}, 0});
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(era5, prep::kIsovalueHistogramBins);
+    EXPECT_FLOAT_EQ(static_cast<float>(chosen["isovalue"].toDouble()),
+                    prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
     const CommandRun linkage =
         preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "260",
                     "--linkage", "median", "--no-cache"});

@@ -7,7 +7,9 @@
 #include <QTextStream>
 
 #include "app/command_line.h"
+#include "data/ensemble_reader.h"
 #include "gl/palette.h"
+#include "preprocessing/field_statistics.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
@@ -165,4 +167,21 @@ TEST(RenderCommand, AProjectDefinesThePictureSoSceneOptionsAreRefusedWithIt) {
                         "--thickness", "0.02"});
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains("--thickness comes from the project")) << r.err.toStdString();
+}
+
+TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
+    test::TempDir dir;
+    const test::EnsilRun r =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", QString::fromStdString(dir.file("t.png")), "--size", "320x240",
+                        "--frames", "1", "--no-cache", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    EXPECT_EQ(o["variable"].toString(), "t");
+    const data::Ensemble era5 =
+        data::openEnsemble({{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, "t", {}, 0});
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(era5, prep::kIsovalueHistogramBins);
+    EXPECT_FLOAT_EQ(static_cast<float>(o["isovalue"].toDouble()),
+                    prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
 }
