@@ -90,6 +90,15 @@ public:
     // is drawn as silhouettes, so one solid member is seen at a time.
     void setAnimatedMember(int member) { m_animated = member; }
     [[nodiscard]] int animatedMember() const { return m_animated; }
+    // How the selection is drawn: up to kMaxSolidSelection selected members as solid surfaces,
+    // more as semi-transparent ones; the unselected dimmed while any is selected.
+    struct Selection {
+        bool any = false;
+        bool solid = true;
+    };
+    static constexpr int kMaxSolidSelection = 3;
+    static constexpr float kUnselectedDimming = 0.6F;
+    [[nodiscard]] Selection selectionShown() const;
 
     [[nodiscard]] bool hasGrid() const { return m_scene.hasGrid; }
     // The grid frames the scene; setting it refits the camera.

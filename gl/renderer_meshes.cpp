@@ -82,6 +82,17 @@ void Renderer::uploadMeshesIfChanged() {
     }
 }
 
+Renderer::Selection Renderer::selectionShown() const {
+    if (m_animated >= 0) return {true, true};  // the animated member alone, solid
+    int selected = 0;
+    for (const MemberAppearance& a : m_scene.appearance) {
+        if (a.selected && a.visible) ++selected;
+    }
+    // Opaque surfaces are solid, selected or not.
+    const bool opaqueMode = m_scene.settings.mode == RenderMode::OpaqueSurfaces;
+    return {selected > 0, opaqueMode || selected <= kMaxSolidSelection};
+}
+
 MemberAppearance Renderer::appearance(std::size_t member) const {
     return member < m_scene.appearance.size() ? m_scene.appearance[member] : MemberAppearance{};
 }
@@ -193,24 +204,41 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
     const int translucentShaderMode =
         m_scene.settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
     const int opaqueMode = m_scene.settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
+    const Selection selection = selectionShown();
     if (pass != MemberPass::Translucent && m_scene.settings.showMean) {
+        // Pushed back a little in depth: where a member coincides with the mean (the animated
+        // member, a solid selection), the member is seen, never a z-fighting mix of both.
+        f.glEnable(GL_POLYGON_OFFSET_FILL);
+        f.glPolygonOffset(1.0F, 2.0F);
         setMember(0, 0, kSolid, kMeanSurfaceColor);
         drawMesh(f, *program, m_gpu->meshes.mean());
+        f.glDisable(GL_POLYGON_OFFSET_FILL);
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
         MemberAppearance a = appearance(m);
         const bool animated = static_cast<int>(m) == m_animated;
         if (m_animated >= 0) a.selected = animated;
         if (!a.visible && !animated) continue;
-        const bool opaque = a.selected || !translucent;
+        // A few selected members are solid surfaces, as in the paper; many are semi-transparent
+        // surfaces, so a brushed crowd never becomes a wall.
+        const bool solid = a.selected && selection.solid;
+        const bool opaque = solid || (!translucent && !a.selected);
         if ((pass == MemberPass::Opaque && !opaque) ||
             (pass == MemberPass::Translucent && opaque)) {
             continue;
         }
-        const int mode = a.selected ? kSolid : (opaque ? opaqueMode : translucentShaderMode);
-        const bool highlighted = static_cast<int>(m) == m_highlighted;
-        setMember(static_cast<int>(m) + 1, m, mode,
-                  highlighted ? glm::mix(a.color, glm::vec3(1.0F), 0.55F) : a.color);
+        const int mode = solid        ? kSolid
+                         : a.selected ? kSurfaces
+                         : opaque     ? opaqueMode
+                                      : translucentShaderMode;
+        glm::vec3 colour = a.color;
+        // With a selection, the others step back: their colour goes most of the way to the
+        // background.
+        if (selection.any && !a.selected) {
+            colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
+        }
+        if (static_cast<int>(m) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
+        setMember(static_cast<int>(m) + 1, m, mode, colour);
         drawMesh(f, *program, members[m]);
     }
     setClipDistances(f, false);
@@ -227,7 +255,8 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     f.glDisable(GL_BLEND);
     drawMemberPass(programs, MemberPass::Opaque);
 
-    if (translucentMode()) {
+    const Selection selection = selectionShown();
+    if (translucentMode() || (selection.any && !selection.solid)) {
         // Every isosurface lies inside the data box: the transparency targets are cleared,
         // drawn and composited only over the box's rectangle on screen.
         const glm::ivec4 box = screenRectangle(viewProjection, width, height);

@@ -156,3 +156,32 @@ TEST_F(RendererTest, DemoSceneMatchesBaseline) {
     const test::ImageComparison result = test::compareWithBaseline(image, "renderer_demo_scene");
     EXPECT_TRUE(result.passed) << result.message.toStdString();
 }
+
+TEST(RendererSelection, AFewSelectedAreSolidAndACrowdIsNot) {
+    // Brushing once selected ~40 of 50 members and drew 40 solid, z-fighting surfaces.
+    gl::Renderer renderer;
+    std::vector<gl::MemberAppearance> look(6);
+    EXPECT_FALSE(renderer.selectionShown().any);
+    renderer.setAppearance(look);
+    EXPECT_FALSE(renderer.selectionShown().any) << "nothing selected: nothing dimmed";
+    for (int m = 0; m < gl::Renderer::kMaxSolidSelection; ++m)
+        look[static_cast<std::size_t>(m)].selected = true;
+    renderer.setAppearance(look);
+    EXPECT_TRUE(renderer.selectionShown().any);
+    EXPECT_TRUE(renderer.selectionShown().solid) << "a few: solid surfaces, as in the paper";
+    look[4].selected = true;
+    renderer.setAppearance(look);
+    EXPECT_FALSE(renderer.selectionShown().solid) << "more: semi-transparent surfaces";
+    look[5].selected = true;
+    look[5].visible = false;  // hidden members do not count
+    look[4].selected = false;
+    renderer.setAppearance(look);
+    EXPECT_TRUE(renderer.selectionShown().solid);
+    renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
+    for (auto& a : look) a.selected = true;
+    renderer.setAppearance(look);
+    EXPECT_TRUE(renderer.selectionShown().solid) << "opaque surfaces stay opaque";
+    renderer.settings().mode = gl::RenderMode::ShadedSilhouettes;
+    renderer.setAnimatedMember(2);
+    EXPECT_TRUE(renderer.selectionShown().solid) << "the animated member is one solid surface";
+}
