@@ -42,6 +42,9 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
                            .arg(overview.statistics.mean, 0, 'g', 5);
     facts.missing = overview.statistics.missingCount;
     facts.megabytes = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
+    if (const auto warning = data::fewLevelsWarning(e.grid)) {
+        facts.warning = QString::fromStdString(*warning);
+    }
     return facts;
 }
 

@@ -197,6 +197,9 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         r.ensemble = parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
                                           : data::openEnsemble(*selection);
         r.seconds["load"] = seconds(stage);
+        if (const auto note = data::fewLevelsWarning(r.ensemble.grid)) {
+            err << "ensil preprocess: note: " << QString::fromStdString(*note) << "\n";
+        }
         const int members = static_cast<int>(r.ensemble.memberCount());
         if (k > members && !clustersGiven) {
             k = members;  // the default asks for more clusters than a small ensemble has

@@ -202,6 +202,9 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
             err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";
             return 1;
         }
+        if (!result.note.empty()) {
+            err << "ensil render: note: " << QString::fromStdString(result.note) << "\n";
+        }
         if (parser.isSet(o.saveProject))
             session::saveProject(result.drawn, parser.value(o.saveProject));
         if (parser.isSet(o.json)) {

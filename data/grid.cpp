@@ -79,4 +79,14 @@ bool Grid::sameShapeAndCoordinates(const Grid& other) const {
     return true;
 }
 
+std::optional<std::string> fewLevelsWarning(const Grid& grid) {
+    const std::size_t levels = grid.nz();
+    if (levels >= kFewLevels) return std::nullopt;
+    return "only " + std::to_string(levels) + " levels along " + grid.z().name +
+           ": every isosurface is at most " + std::to_string(levels - 1) +
+           (levels == 2 ? " cell" : " cells") +
+           " thick, so its silhouettes show a thin sheet rather than a shape; data with "
+           "more levels shows more";
+}
+
 }  // namespace ensil::data

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,5 +57,12 @@ public:
 private:
     std::array<Axis, 3> m_axes;
 };
+
+// Below this many vertical levels an isosurface is at most a couple of cells thick: what a
+// user should be told when such data opens.
+inline constexpr std::size_t kFewLevels = 4;
+// "only 2 levels (plev): ..." for a grid with fewer than kFewLevels vertical levels; none
+// otherwise.
+std::optional<std::string> fewLevelsWarning(const Grid& grid);
 
 }  // namespace ensil::data

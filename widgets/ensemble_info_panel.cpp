@@ -42,6 +42,7 @@ void EnsembleInfoPanel::showFacts(const EnsembleFacts& facts) {
     row(tr("Values"), facts.valueRange);
     row(tr("Missing"), QString::number(facts.missing));
     row(tr("Memory"), tr("%1 MiB").arg(facts.megabytes, 0, 'f', 1));
+    if (!facts.warning.isEmpty()) row(tr("Note"), facts.warning);
 }
 
 QString EnsembleInfoPanel::text() const {

@@ -21,6 +21,7 @@ struct EnsembleFacts {
     QString valueRange;
     qulonglong missing = 0;
     double megabytes = 0.0;
+    QString warning;  // what the data cannot show well (few levels); empty when nothing
 };
 
 class EnsembleInfoPanel : public QWidget {

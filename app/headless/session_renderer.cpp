@@ -126,6 +126,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     result.triangles = triangles;
     result.members = ensemble.memberCount();
     result.variable = ensemble.variable;
+    result.note = data::fewLevelsWarning(ensemble.grid).value_or("");
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();
     renderer.releaseGpuResources();

@@ -35,8 +35,9 @@ struct RenderOutcome {
     std::size_t gpuBytes = 0;
     std::size_t triangles = 0;
     std::size_t members = 0;
-    std::string variable;         // the one drawn (the default when none was named)
-    std::string glRenderer;       // GL_RENDERER: the driver that drew it
+    std::string variable;    // the one drawn (the default when none was named)
+    std::string note;        // what the data cannot show well (data::fewLevelsWarning), or empty
+    std::string glRenderer;  // GL_RENDERER: the driver that drew it
     bool withoutDisplay = false;  // drawn through EGL's surfaceless platform
 };
 

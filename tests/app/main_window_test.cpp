@@ -97,6 +97,9 @@ TEST(MainWindow, OpensARealEnsembleFile) {
     EXPECT_EQ(window.overview()->ensemble->memberCount(), 10u);
     EXPECT_TRUE(window.infoPanel()->text().contains("Variable: t (Temperature)"))
         << window.infoPanel()->text().toStdString();
+    // Two pressure levels: the panel says what that means for its isosurfaces.
+    EXPECT_TRUE(window.infoPanel()->text().contains("Note: only 2 levels along plev"))
+        << window.infoPanel()->text().toStdString();
 }
 
 TEST(MainWindow, AFailedOpenExplainsAndKeepsWhatIsShown) {

@@ -110,6 +110,8 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
     const CommandRun byDefault = preprocess(
         {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--no-cache", "--json"});
     ASSERT_EQ(byDefault.code, 0) << byDefault.err.toStdString();
+    EXPECT_TRUE(byDefault.err.contains("note: only 2 levels along plev"))
+        << byDefault.err.toStdString();
     const QJsonObject chosen = QJsonDocument::fromJson(byDefault.out.toUtf8()).object();
     EXPECT_EQ(chosen["variable"].toString(), "t");
     const data::Ensemble era5 =

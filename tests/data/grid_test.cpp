@@ -75,3 +75,15 @@ TEST(Grid, SameShapeAndCoordinatesComparesValues) {
     EXPECT_FALSE(a.sameShapeAndCoordinates(shifted));
     EXPECT_FALSE(a.sameShapeAndCoordinates(larger));
 }
+
+TEST(Grid, FewLevelsAreSaidWithWhatTheyMean) {
+    const Grid two(makeUniformAxis("x", "", 0, 1, 4), makeUniformAxis("y", "", 0, 1, 3),
+                   makeUniformAxis("plev", "hPa", 500, 850, 2));
+    const auto warning = fewLevelsWarning(two);
+    ASSERT_TRUE(warning);
+    EXPECT_NE(warning->find("only 2 levels along plev"), std::string::npos) << *warning;
+    EXPECT_NE(warning->find("at most 1 cell thick"), std::string::npos) << *warning;
+    const Grid four(makeUniformAxis("x", "", 0, 1, 4), makeUniformAxis("y", "", 0, 1, 3),
+                    makeUniformAxis("z", "", 0, 1, kFewLevels));
+    EXPECT_FALSE(fewLevelsWarning(four));
+}
