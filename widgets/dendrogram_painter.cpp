@@ -72,7 +72,8 @@ void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSe
         const int member = layout.leafOrder()[static_cast<std::size_t>(p)];
         const double x = frame.pixelX(p + 0.5);
         if (x < frame.plot.left() - 1.0 || x > frame.plot.right() + 1.0) continue;
-        const QString name = metrics.elidedText(selection.name(member), Qt::ElideRight, 140.0);
+        // Elided in the middle: names that differ at their end (dates) stay told apart.
+        const QString name = metrics.elidedText(selection.name(member), Qt::ElideMiddle, 140.0);
         painter.save();
         painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(),
                           frame.plot.bottom() + 8.0);

@@ -99,6 +99,8 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
     if (role == Qt::TextAlignmentRole && column != Name) {
         return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
     }
+    // A long name (a forecast date and time) is elided in the middle; the tip shows it whole.
+    if (role == Qt::ToolTipRole && column == Name) return m_selection->name(m);
     if (role == Qt::ToolTipRole && column == DistanceToMean) {
         return tr("Distance of %1 to the mean member in the similarity measure")
             .arg(m_selection->name(m));

@@ -36,6 +36,8 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     connect(m_proxy, &QAbstractItemModel::rowsAboutToBeRemoved, this, pause);
     connect(m_proxy, &QAbstractItemModel::rowsAboutToBeInserted, this, pause);
     m_table->setModel(m_proxy);
+    // Names that differ at their end (dates, run numbers) stay told apart when cut short.
+    m_table->setTextElideMode(Qt::ElideMiddle);
     const auto resume = [this] {
         m_syncing = false;
         showSharedSelection();

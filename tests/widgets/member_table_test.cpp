@@ -88,6 +88,8 @@ TEST(MemberTableModel, ShowsEveryColumnAndFollowsTheCut) {
     };
     EXPECT_EQ(cell(3, MemberTableModel::Index).toInt(), 4);
     EXPECT_EQ(cell(3, MemberTableModel::Name).toString(), QStringLiteral("m3"));
+    EXPECT_EQ(cell(3, MemberTableModel::Name, Qt::ToolTipRole).toString(), QStringLiteral("m3"))
+        << "the whole name, which the table may elide";
     EXPECT_EQ(cell(3, MemberTableModel::Cluster).toInt(), s.clusterNumber(s.clusterOf(3)))
         << "the stable number the legend shows";
     EXPECT_EQ(cell(3, MemberTableModel::Cluster, Qt::DecorationRole).value<QColor>(),
@@ -202,4 +204,10 @@ TEST_F(ShownMemberTable, HoveringARowHoversItsMember) {
     // Below the last row there is no member.
     test::moveMouse(panel.table()->viewport(), QPoint(row3.center().x(), 290));
     EXPECT_EQ(s.hovered(), -1);
+}
+
+TEST_F(ShownMemberTable, LongNamesAreElidedInTheMiddleSoTheirEndsStayApart) {
+    auto* table = panel.findChild<QTableView*>();
+    ASSERT_NE(table, nullptr);
+    EXPECT_EQ(table->textElideMode(), Qt::ElideMiddle);
 }
