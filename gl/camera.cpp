@@ -6,7 +6,6 @@
 
 namespace ensil::gl {
 namespace {
-constexpr float kOrbitDegPerPixel = 0.4F;
 constexpr float kMaxElevation = 89.0F;
 }  // namespace
 
@@ -53,8 +52,8 @@ void Camera::setAngles(float azimuthDeg, float elevationDeg) {
     m_elevation = std::clamp(elevationDeg, -kMaxElevation, kMaxElevation);
 }
 
-void Camera::orbit(float dxPixels, float dyPixels) {
-    setAngles(m_azimuth - dxPixels * kOrbitDegPerPixel, m_elevation + dyPixels * kOrbitDegPerPixel);
+void Camera::orbit(float dxPixels, float dyPixels, float degreesPerPixel) {
+    setAngles(m_azimuth - dxPixels * degreesPerPixel, m_elevation + dyPixels * degreesPerPixel);
 }
 
 void Camera::pan(float dxPixels, float dyPixels, float viewportHeight) {

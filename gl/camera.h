@@ -23,7 +23,9 @@ public:
                   float fill = 0.8F);
 
     // Mouse gestures, in pixels of a viewport of the given height.
-    void orbit(float dxPixels, float dyPixels);
+    // Turns by `degreesPerPixel` for each pixel dragged (the view passes 180 over its width,
+    // so a drag across it turns half way round).
+    void orbit(float dxPixels, float dyPixels, float degreesPerPixel = 0.4F);
     void pan(float dxPixels, float dyPixels, float viewportHeight);
     void zoom(float factor);  // > 1 moves closer
 

@@ -9,6 +9,7 @@
 #include <QRubberBand>
 #include <QToolTip>
 #include <QWheelEvent>
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -214,7 +215,9 @@ void SilhouetteView::mouseMoveEvent(QMouseEvent* event) {
         m_renderer.camera().pan(static_cast<float>(delta.x()), static_cast<float>(delta.y()),
                                 static_cast<float>(height()));
     } else if (event->buttons() & Qt::LeftButton) {
-        m_renderer.camera().orbit(static_cast<float>(delta.x()), static_cast<float>(delta.y()));
+        // A drag across the view turns it half way round, whatever the view's size.
+        m_renderer.camera().orbit(static_cast<float>(delta.x()), static_cast<float>(delta.y()),
+                                  kDragAcrossDegrees / static_cast<float>(std::max(1, width())));
     } else {
         return;
     }

@@ -28,6 +28,8 @@ class SilhouetteView : public QOpenGLWidget {
 public:
     // A press and release closer than this (in widget pixels) is a click, not a drag.
     static constexpr int kClickSlop = 4;
+    // How far a left drag across the whole view turns the camera.
+    static constexpr float kDragAcrossDegrees = 180.0F;
 
     explicit SilhouetteView(QWidget* parent = nullptr);
     ~SilhouetteView() override;

@@ -65,12 +65,13 @@ TEST_F(ShownView, LeftDragOrbitsShiftDragPansWheelZooms) {
     gl::Camera& cam = m_view.renderer().camera();
     const float azimuth = cam.azimuth();
     drag(Qt::LeftButton, {200, 150}, {250, 150});
-    EXPECT_NEAR(cam.azimuth(), azimuth - 50 * 0.4F, 1e-3);
+    // 50 of the view's 400 pixels: an eighth of the 180 degrees a drag across it turns.
+    EXPECT_NEAR(cam.azimuth(), azimuth - 22.5F, 1e-3);
 
     const glm::vec3 target = cam.target();
     drag(Qt::LeftButton, {200, 150}, {220, 170}, Qt::ShiftModifier);
     EXPECT_NE(cam.target(), target);
-    EXPECT_NEAR(cam.azimuth(), azimuth - 50 * 0.4F, 1e-3) << "panning must not orbit";
+    EXPECT_NEAR(cam.azimuth(), azimuth - 22.5F, 1e-3) << "panning must not orbit";
 
     const float distance = cam.distance();
     QWheelEvent wheel(QPointF(200, 150), m_view.mapToGlobal(QPointF(200, 150)), QPoint(),
@@ -183,4 +184,12 @@ TEST_F(ShownView, MotionKeepsFullResolutionWhenFramesAreFastOrTheOptionIsOff) {
     (void)m_view.grabFramebuffer();  // a motion frame at full resolution, timed: too slow
     (void)m_view.grabFramebuffer();
     EXPECT_LT(m_view.renderer().resolutionScale(), 1.0F) << "each slow frame steps down";
+}
+
+TEST_F(ShownView, ADragAcrossTheWholeViewTurnsItHalfWayRound) {
+    // A 240 px drag once turned the view about 100 degrees and pushed the box off screen.
+    gl::Camera& cam = m_view.renderer().camera();
+    const float azimuth = cam.azimuth();
+    drag(Qt::LeftButton, {0, 150}, {m_view.width(), 150});
+    EXPECT_NEAR(std::remainder(azimuth - cam.azimuth() - 180.0F, 360.0F), 0.0F, 1e-3);
 }
