@@ -6,8 +6,7 @@
 #include <QTextStream>
 
 #include "app/command_line.h"
-#include "data/ensemble_reader.h"
-#include "preprocessing/field_statistics.h"
+#include "tests/app/default_isovalue.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -114,12 +113,9 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
         << byDefault.err.toStdString();
     const QJsonObject chosen = QJsonDocument::fromJson(byDefault.out.toUtf8()).object();
     EXPECT_EQ(chosen["variable"].toString(), "t");
-    const data::Ensemble era5 =
-        data::openEnsemble({{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, "t", {}, 0});
-    const prep::FieldStatistics stats =
-        prep::computeFieldStatistics(era5, prep::kIsovalueHistogramBins);
-    EXPECT_FLOAT_EQ(static_cast<float>(chosen["isovalue"].toDouble()),
-                    prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+    EXPECT_FLOAT_EQ(
+        static_cast<float>(chosen["isovalue"].toDouble()),
+        test::workbenchDefaultIsovalue(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "t"));
     const CommandRun linkage =
         preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso", "260",
                     "--linkage", "median", "--no-cache"});

@@ -7,9 +7,8 @@
 #include <QTextStream>
 
 #include "app/command_line.h"
-#include "data/ensemble_reader.h"
 #include "gl/palette.h"
-#include "preprocessing/field_statistics.h"
+#include "tests/app/default_isovalue.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
@@ -178,10 +177,7 @@ TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_EQ(o["variable"].toString(), "t");
-    const data::Ensemble era5 =
-        data::openEnsemble({{ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, "t", {}, 0});
-    const prep::FieldStatistics stats =
-        prep::computeFieldStatistics(era5, prep::kIsovalueHistogramBins);
-    EXPECT_FLOAT_EQ(static_cast<float>(o["isovalue"].toDouble()),
-                    prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+    EXPECT_FLOAT_EQ(
+        static_cast<float>(o["isovalue"].toDouble()),
+        test::workbenchDefaultIsovalue(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "t"));
 }

@@ -1,0 +1,20 @@
+// The isovalue the workbench starts a variable at (the 90th percentile of its values, from the
+// isovalue control's histogram), computed here the way the workbench does, for the commands'
+// tests to compare against.
+#pragma once
+
+#include <string>
+
+#include "data/ensemble_reader.h"
+#include "preprocessing/field_statistics.h"
+
+namespace ensil::test {
+
+inline float workbenchDefaultIsovalue(const std::string& path, const std::string& variable) {
+    const data::Ensemble ensemble = data::openEnsemble({{path}, variable, {}, 0});
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
+    return prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+}
+
+}  // namespace ensil::test
