@@ -174,6 +174,8 @@ private:
     void saveProjectReporting(const QString& path);
     QString locateMissingFileWithDialog(const QString& missing);
     void applyPendingProjectCamera();
+    // Width over height of the 3D view, for fitting the camera.
+    [[nodiscard]] float viewAspect() const;
     void applyPendingProjectMembers();
     void rememberRecentProject(const QString& path);
     void rebuildRecentProjectsMenu();

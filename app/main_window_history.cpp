@@ -11,6 +11,7 @@
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/session/session_camera.h"
 #include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
 
@@ -64,12 +65,7 @@ void MainWindow::createHistory(QMenu* edit) {
 void MainWindow::applySession(const session::SessionState& s) {
     if (!m_overview) return;
     m_model->replace(s);  // the bindings show it (main_window_session.cpp)
-    gl::Camera& camera = m_view->renderer().camera();
-    camera.setAngles(s.camera.azimuth, s.camera.elevation);
-    if (s.camera.placement) {
-        camera.setTarget(s.camera.placement->target);
-        camera.setDistance(s.camera.placement->distance);
-    }
+    session::placeCamera(s.camera, m_view->renderer(), viewAspect());
     m_view->update();
 }
 

@@ -19,6 +19,7 @@
 #include "widgets/render_toolbar.h"
 #include "widgets/session/member_appearance.h"
 #include "widgets/session/project_file.h"
+#include "widgets/session/session_camera.h"
 #include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
@@ -151,19 +152,12 @@ QString MainWindow::locateMissingFileWithDialog(const QString& missing) {
                                         QFileInfo(missing).absolutePath());
 }
 
+float MainWindow::viewAspect() const {
+    return static_cast<float>(m_view->width()) / static_cast<float>(std::max(1, m_view->height()));
+}
+
 void MainWindow::applyPendingProjectCamera() {
-    const session::SessionState& p = *m_pendingProject;
-    gl::Renderer& renderer = m_view->renderer();
-    gl::Camera& camera = renderer.camera();
-    camera.setAngles(p.camera.azimuth, p.camera.elevation);
-    if (p.camera.placement) {
-        camera.setTarget(p.camera.placement->target);
-        camera.setDistance(p.camera.placement->distance);
-    } else {
-        camera.frameBox(renderer.frame().boxMin(), renderer.frame().boxMax(),
-                        static_cast<float>(m_view->width()) /
-                            static_cast<float>(std::max(1, m_view->height())));
-    }
+    session::placeCamera(m_pendingProject->camera, m_view->renderer(), viewAspect());
 }
 
 void MainWindow::applyPendingProjectMembers() {

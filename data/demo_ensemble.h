@@ -22,6 +22,8 @@ struct DemoEnsembleParams {
     std::size_t ny = 128;  // latitude, 25 N .. 75 N
     std::size_t nz = 16;   // pressure levels, 1000 .. 100 hPa, evenly spaced in log-pressure
     std::uint64_t seed = 1;
+
+    bool operator==(const DemoEnsembleParams&) const = default;
 };
 
 // Which flow regime a demo member was generated from (exposed so tests can check clusters).

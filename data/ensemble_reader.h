@@ -27,6 +27,8 @@ struct DataSelection {
     std::string variable{};            // variable / dataset / point-data array name
     std::string memberDimension{};     // override of the detected member dimension (NetCDF)
     std::size_t timeIndex = 0;         // index for every other non-spatial dimension
+
+    bool operator==(const DataSelection&) const = default;
 };
 
 // A variable the file holds, and whether ensil can make an ensemble of it.

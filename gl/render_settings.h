@@ -46,6 +46,8 @@ struct CuttingPlane {
         const float centre = glm::dot(normal, 0.5F * (boxMin + boxMax));
         return reach > 0.0F ? (offset - centre) / reach : 0.0F;
     }
+
+    bool operator==(const CuttingPlane&) const = default;
 };
 
 struct RenderSettings {
@@ -63,6 +65,8 @@ struct RenderSettings {
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;
+
+    bool operator==(const RenderSettings&) const = default;
 };
 
 struct MemberAppearance {

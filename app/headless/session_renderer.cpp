@@ -17,6 +17,7 @@
 #include "preprocessing/field_statistics.h"
 #include "widgets/session/member_appearance.h"
 #include "widgets/session/project_file.h"
+#include "widgets/session/session_camera.h"
 
 namespace ensil::app {
 
@@ -71,17 +72,10 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.settings() = state.render;
     renderer.setBackground({state.background, 1.0F});
     gl::Camera& camera = renderer.camera();
-    camera.setAngles(state.camera.azimuth, state.camera.elevation);
     camera.setProjection(state.camera.orthographic ? gl::Camera::Projection::Orthographic
                                                    : gl::Camera::Projection::Perspective);
-    if (state.camera.placement) {
-        camera.setTarget(state.camera.placement->target);
-        camera.setDistance(state.camera.placement->distance);
-    } else {
-        // Fitted from the session's angles to this picture's shape, as Reset Camera does.
-        camera.frameBox(renderer.frame().boxMin(), renderer.frame().boxMax(),
-                        static_cast<float>(request.width) / static_cast<float>(request.height));
-    }
+    session::placeCamera(state.camera, renderer,
+                         static_cast<float>(request.width) / static_cast<float>(request.height));
     if (request.planeAcrossBox) {
         const glm::vec4 p = *request.planeAcrossBox;
         const gl::CuttingPlane given = renderer.settings().plane;

@@ -27,6 +27,7 @@ struct CameraState {
     struct Placement {
         float distance = 3.0F;
         glm::vec3 target{0.5F};
+        bool operator==(const Placement&) const = default;
     };
     std::optional<Placement> placement;
 };
