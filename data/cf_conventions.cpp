@@ -165,6 +165,28 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
     return std::string(text.data());
 }
 
+GridMapping readGridMapping(const NetcdfFile& file, const NcVariable& var) {
+    // The CF form "name" is the usual one; the extended form "name: coord1 coord2" names the
+    // mapping first, which is all that is needed here.
+    std::string mappingName = file.text(var.id, "grid_mapping");
+    mappingName = mappingName.substr(0, mappingName.find_first_of(": "));
+    const NcVariable* mapping = mappingName.empty() ? nullptr : file.findVariable(mappingName);
+    if (mapping == nullptr) return {};
+    GridMapping result;
+    result.name = file.text(mapping->id, "grid_mapping_name");
+    if (result.name.empty()) return {};
+    // A projection has a handful of parameters of one or two values each; anything longer is
+    // not one of them and is not read.
+    constexpr std::size_t kMostValues = 4;
+    for (const std::string& key : file.attributeNames(mapping->id)) {
+        std::vector<double> values = file.numericAttribute(mapping->id, key.c_str());
+        if (!values.empty() && values.size() <= kMostValues) {
+            result.parameters.emplace_back(key, std::move(values));
+        }
+    }
+    return result;
+}
+
 bool isLengthUnit(const std::string& units) {
     const std::string u = lower(units);
     return u == "m" || u == "km" || u == "meters" || u == "metres" || u == "meter" ||

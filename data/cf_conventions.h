@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "data/grid_mapping.h"
 #include "data/netcdf_file.h"
 
 namespace ensil::data {
@@ -30,6 +31,11 @@ MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariabl
 // gregorian and proleptic_gregorian calendars); nullopt when the units are not a CF time.
 std::optional<std::string> formatCfTime(double value, const std::string& units,
                                         const std::string& calendar = "standard");
+
+// The grid mapping `var` names in its `grid_mapping` attribute (the CF name and the mapping
+// variable's numeric attributes); empty when it names none, or names a variable that is not
+// in the file or has no grid_mapping_name.
+GridMapping readGridMapping(const NetcdfFile& file, const NcVariable& var);
 
 // True for units that name a length (m, km, metres...).
 bool isLengthUnit(const std::string& units);

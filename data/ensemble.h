@@ -10,6 +10,7 @@
 
 #include "data/bulk_allocator.h"
 #include "data/grid.h"
+#include "data/grid_mapping.h"
 
 namespace ensil::data {
 
@@ -25,6 +26,7 @@ struct Ensemble {
     std::string memberDimension;  // name of the dimension members came from, e.g. "number"
     std::string source;           // where it came from (file path or "demo"), for the UI
     Grid grid;
+    GridMapping gridMapping;  // the horizontal axes' map projection, when the file names one
     std::vector<Member> members;
 
     [[nodiscard]] std::size_t memberCount() const { return members.size(); }

@@ -173,6 +173,18 @@ std::vector<double> NetcdfFile::numericAttribute(int varId, const char* name) co
     return values;
 }
 
+std::vector<std::string> NetcdfFile::attributeNames(int varId) const {
+    int count = 0;
+    if (nc_inq_varnatts(m_id, varId, &count) != NC_NOERR || count < 0) return {};
+    std::vector<std::string> names;
+    std::array<char, NC_MAX_NAME + 1> name{};
+    for (int a = 0; a < count; ++a) {
+        if (nc_inq_attname(m_id, varId, a, name.data()) == NC_NOERR)
+            names.emplace_back(name.data());
+    }
+    return names;
+}
+
 int NetcdfFile::attributeType(int varId, const char* name) const {
     nc_type type = 0;
     return nc_inq_atttype(m_id, varId, name, &type) == NC_NOERR ? type : 0;

@@ -51,6 +51,8 @@ public:
     [[nodiscard]] std::optional<std::string> textAttribute(int varId, const char* name) const;
     [[nodiscard]] std::vector<double> numericAttribute(int varId, const char* name) const;
     [[nodiscard]] int attributeType(int varId, const char* name) const;  // 0 when absent
+    // The names of a variable's attributes (NC_GLOBAL for the file's), in file order.
+    [[nodiscard]] std::vector<std::string> attributeNames(int varId) const;
     [[nodiscard]] std::string text(int varId, const char* name) const {
         return textAttribute(varId, name).value_or("");
     }

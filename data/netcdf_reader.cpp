@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 
+#include "data/cf_conventions.h"
 #include "data/error.h"
 #include "data/netcdf_file.h"
 #include "data/netcdf_plan.h"
@@ -204,6 +205,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
             d.longName = plan.longName;
             d.units = plan.units;
             d.grid = plan.grid;
+            d.gridMapping = readGridMapping(file, *plan.components.front().variable);
             d.fixedDimensions = describeFixedDimensions(file, plan);
             if (plan.memberDim >= 0) {
                 d.memberDimension = file.dimension(plan.memberDim).name;
@@ -244,6 +246,7 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
     e.memberDimension = description.memberDimension;
     e.source = sourceOf(selection.paths);
     e.grid = description.grid;
+    e.gridMapping = description.gridMapping;
     e.members.resize(description.members);
     std::size_t next = 0;
     for (const std::string& path : selection.paths) {

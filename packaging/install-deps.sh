@@ -16,6 +16,8 @@ packages=(
     libnetcdf-dev netcdf-bin libhdf5-dev hdf5-tools libvtk9-dev
     # content hashes of input files (the mesh cache key)
     libxxhash-dev
+    # map projections (CF grid mappings: rotated pole, Lambert, stereographic, Mercator)
+    libproj-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check

@@ -1,0 +1,33 @@
+// The map lines on the floor of a grid: Natural Earth coastlines and borders, and for a
+// rotated or projected grid a graticule of true meridians and parallels, transformed into the
+// grid's own x, y (axis units) and clipped to its horizontal extent. Computed once per grid
+// (tens of milliseconds for the 1:50m lines); any thread.
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <vector>
+
+#include "data/grid.h"
+#include "geo/map_projection.h"
+
+namespace ensil::geo {
+
+enum class MapLineKind { Coastline, Border, Graticule };
+
+struct MapLine {
+    MapLineKind kind = MapLineKind::Coastline;
+    std::vector<glm::dvec2> points;  // grid axis coordinates, inside the grid's x-y rectangle
+};
+
+// Every coastline, border and (rotated or projected grids only: a longitude/latitude grid's
+// axes already read in degrees) graticule line over the grid; none without geography.
+std::vector<MapLine> mapLinesFor(const data::Grid& grid, const MapProjection& projection);
+
+// Clips a polyline (grid coordinates, NaN for points with none) to the rectangle [lo, hi],
+// appending the pieces inside to `out`. The line breaks at a NaN and across any step longer
+// than `longestStep`: a step that long is a wrap around the globe or a jump across a
+// projection's edge, not a piece of coast.
+void clipToRectangle(const std::vector<glm::dvec2>& line, glm::dvec2 lo, glm::dvec2 hi,
+                     double longestStep, std::vector<std::vector<glm::dvec2>>& out);
+
+}  // namespace ensil::geo
