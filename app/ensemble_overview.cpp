@@ -20,6 +20,8 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
     auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
         *ensemble, stop, [&](double f) { data::report(progress, 0.5 + 0.45 * f); }));
     overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, moments->mean);
+    overview.mapLines = std::make_shared<const std::vector<geo::MapLine>>(
+        geo::mapLinesFor(ensemble->grid, ensemble->gridMapping));
     overview.moments = std::move(moments);
     data::report(progress, 1.0);
     overview.ensemble = std::move(ensemble);

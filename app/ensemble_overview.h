@@ -10,6 +10,7 @@
 
 #include "data/ensemble.h"
 #include "data/job.h"
+#include "geo/map_lines.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
 
@@ -20,6 +21,8 @@ struct EnsembleOverview {
     prep::FieldStatistics statistics;
     std::shared_ptr<const prep::EnsembleMoments> moments;  // mean member and variance
     std::vector<float> meanColumnMaximum;                  // nx * ny
+    // Coastlines, borders and graticule in the grid's coordinates (none without geography).
+    std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
     std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache
 };
 

@@ -9,12 +9,25 @@
 #include "app/ensemble_facts.h"
 #include "app/subcommand.h"
 #include "data/error.h"
+#include "geo/domain_bounds.h"
 #include "preprocessing/field_statistics.h"
 
 namespace ensil::app {
 namespace {
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
+
+// Where the grid lies on the Earth: its CF grid mapping (none for plain longitude/latitude
+// axes) and its true longitude/latitude bounds, when it has geography.
+struct Geography {
+    std::optional<geo::LonLatBounds> bounds;
+    std::string why;  // when there are no bounds
+};
+
+Geography geographyOf(const data::EnsembleDescription& d) {
+    const geo::MapProjection projection = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    return {geo::lonLatBounds(d.grid, projection), projection.reason()};
+}
 
 QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatistics& s) {
     QJsonObject o;
@@ -45,6 +58,14 @@ QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatisti
     QJsonArray fixed;
     for (const auto& f : d.fixedDimensions) fixed.append(qs(f));
     o[QStringLiteral("fixed_dimensions")] = fixed;
+    o[QStringLiteral("grid_mapping")] =
+        d.gridMapping.empty() ? QJsonValue() : QJsonValue(qs(d.gridMapping.name));
+    const Geography geography = geographyOf(d);
+    o[QStringLiteral("lon_lat_bounds")] =
+        geography.bounds
+            ? QJsonValue(QJsonArray{geography.bounds->lonMin, geography.bounds->lonMax,
+                                    geography.bounds->latMin, geography.bounds->latMax})
+            : QJsonValue();
     o[QStringLiteral("range")] = QJsonArray{s.minimum, s.maximum};
     o[QStringLiteral("mean")] = s.mean;
     o[QStringLiteral("missing")] = static_cast<qint64>(s.missingCount);
@@ -107,6 +128,15 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
     for (int a = 0; a < 3; ++a) {
         out << "  "
             << "xyz"[a] << "  " << describeAxis(d.grid.axis(a)) << "\n";
+    }
+    if (!d.gridMapping.empty()) out << "Mapping:    " << qs(d.gridMapping.name) << "\n";
+    const Geography geography = geographyOf(d);
+    if (geography.bounds) {
+        const geo::LonLatBounds& b = *geography.bounds;
+        out << "Domain:     longitude " << b.lonMin << " .. " << b.lonMax << ", latitude "
+            << b.latMin << " .. " << b.latMax << " (true degrees)\n";
+    } else {
+        out << "Domain:     no geography (" << qs(geography.why) << ")\n";
     }
     out << "Values:     " << s.minimum << " .. " << s.maximum << " " << qs(d.units) << ", mean "
         << s.mean << "\n";

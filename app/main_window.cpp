@@ -402,6 +402,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     renderer.setGrid(e.grid);
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
+    renderer.setMapLines(m_overview->mapLines);
     m_info->showFacts(ensembleFacts(*m_overview));
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
     m_view->setMemberNames(memberNames());

@@ -54,7 +54,8 @@ const session::SettingOptions& sceneOptions() {
         "mode",        "clusters",        "linkage",        "show_mean",
         "thickness",   "surface_opacity", "group_size",     "vertical_exaggeration",
         "azimuth",     "elevation",       "projection",     "background",
-        "axis_labels", "legend",          "plane_thickness"};
+        "axis_labels", "legend",          "plane_thickness",
+        "coastlines",  "borders",         "graticule"};
     return options;
 }
 

@@ -130,4 +130,8 @@ std::vector<MapLine> mapLinesFor(const data::Grid& grid, const MapProjection& pr
     return lines;
 }
 
+std::vector<MapLine> mapLinesFor(const data::Grid& grid, const data::GridMapping& mapping) {
+    return mapLinesFor(grid, MapProjection::forGrid(grid, mapping));
+}
+
 }  // namespace ensil::geo

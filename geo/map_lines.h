@@ -22,6 +22,8 @@ struct MapLine {
 // Every coastline, border and (rotated or projected grids only: a longitude/latitude grid's
 // axes already read in degrees) graticule line over the grid; none without geography.
 std::vector<MapLine> mapLinesFor(const data::Grid& grid, const MapProjection& projection);
+// The same, through the grid's own mapping (MapProjection::forGrid).
+std::vector<MapLine> mapLinesFor(const data::Grid& grid, const data::GridMapping& mapping);
 
 // Clips a polyline (grid coordinates, NaN for points with none) to the rectangle [lo, hi],
 // appending the pieces inside to `out`. The line breaks at a NaN and across any step longer

@@ -62,6 +62,10 @@ struct RenderSettings {
     CuttingPlane plane;
     bool showAxes = true;    // tick labels in data units along the box (gl/view_overlay.h)
     bool showLegend = true;  // the cluster colours
+    // The map lines on the floor (Renderer::setMapLines), each switchable.
+    bool showCoastlines = true;
+    bool showBorders = true;
+    bool showGraticule = true;
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;

@@ -55,6 +55,7 @@ void Renderer::initialize() {
     // Compile now so a broken shader is reported at start-up, not at the first frame.
     gpu->shaders.program(QStringLiteral("lines"));
     gpu->shaders.program(QStringLiteral("floor_map"));
+    gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
     gpu->shaders.program(QStringLiteral("surface"));
     gpu->shaders.program(QStringLiteral("composite"));
     gpu->shaders.program(QStringLiteral("present"), {QStringLiteral("composite"), {}, {}});
@@ -79,11 +80,20 @@ void Renderer::initialize() {
     f.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
     f.glBindVertexArray(0);
 
+    f.glGenVertexArrays(1, &gpu->mapLinesVao);
+    f.glGenBuffers(1, &gpu->mapLinesVbo);
+    f.glBindVertexArray(gpu->mapLinesVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->mapLinesVbo);
+    f.glEnableVertexAttribArray(0);
+    f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    f.glBindVertexArray(0);
+
     f.glGenTextures(1, &gpu->floorTexture);
     f.glGenTextures(1, &gpu->axisTables);
     f.glGenVertexArrays(1, &gpu->emptyVao);
     m_gpu = std::move(gpu);
     m_floorDirty = true;
+    m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;
 }
@@ -95,6 +105,8 @@ void Renderer::releaseGpuResources() {
     f.glDeleteBuffers(1, &m_gpu->boxVbo);
     f.glDeleteVertexArrays(1, &m_gpu->quadVao);
     f.glDeleteBuffers(1, &m_gpu->quadVbo);
+    f.glDeleteVertexArrays(1, &m_gpu->mapLinesVao);
+    f.glDeleteBuffers(1, &m_gpu->mapLinesVbo);
     f.glDeleteTextures(1, &m_gpu->floorTexture);
     f.glDeleteTextures(1, &m_gpu->axisTables);
     f.glDeleteVertexArrays(1, &m_gpu->emptyVao);
@@ -127,6 +139,7 @@ void Renderer::setGrid(const data::Grid& grid) {
     m_scene.hasGrid = true;
     m_scene.frame = data::DisplayFrame(grid, m_scene.frame.verticalExaggeration());
     m_axisTablesDirty = true;
+    m_mapLinesDirty = true;
     resetCamera();
 }
 
@@ -220,6 +233,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (m_scene.hasGrid) {
         if (m_floorDirty) uploadFloorMap();
+        if (m_mapLinesDirty) uploadMapLines();
         if (m_axisTablesDirty) uploadAxisTables();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const glm::mat4 viewProjection = m_scene.camera.viewProjection(aspect);
@@ -275,6 +289,7 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
         f.glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
         f.glDisable(GL_POLYGON_OFFSET_FILL);
     }
+    drawMapLines(viewProjection);
 
     const std::array<glm::vec3, 8> c{
         glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},

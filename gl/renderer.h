@@ -19,6 +19,7 @@
 #include "data/display_frame.h"
 #include "data/grid.h"
 #include "data/packed_mesh.h"
+#include "geo/map_lines.h"
 #include "gl/camera.h"
 #include "gl/render_settings.h"
 #include "gl/view_overlay.h"
@@ -104,6 +105,15 @@ public:
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
+    // Coastlines, borders and graticule on the floor, in the grid's axis coordinates (from
+    // geo::mapLinesFor, for the grid set here); each kind drawn as RenderSettings says. Null
+    // or empty: none.
+    void setMapLines(std::shared_ptr<const std::vector<geo::MapLine>> lines);
+    [[nodiscard]] const std::shared_ptr<const std::vector<geo::MapLine>>& mapLines() const {
+        return m_scene.mapLines;
+    }
+    // How a coastline is drawn, for tests that look for it: a light core over a dark casing.
+    static constexpr glm::vec4 kCoastlineColor{0.97F, 0.97F, 0.97F, 1.0F};
     void setVerticalExaggeration(float exaggeration);
     // The meshes of the current isovalue (uploaded at the next frame); null clears them.
     void setMeshes(std::shared_ptr<const data::MeshSet> meshes);
@@ -165,6 +175,8 @@ private:
     // row by row: 0 for nothing, member + 1 otherwise.
     std::vector<std::uint32_t> drawIds(int x0, int y0, int w, int h);
     void uploadFloorMap();
+    void uploadMapLines();
+    void drawMapLines(const glm::mat4& viewProjection);
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
@@ -177,6 +189,7 @@ private:
         data::DisplayFrame frame;
         Camera camera;
         FloorMap floor;
+        std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
         std::shared_ptr<const data::MeshSet> meshes;
         std::vector<MemberAppearance> appearance;
         RenderSettings settings;
@@ -189,6 +202,7 @@ private:
     Scene m_scene;
     // What has changed in the scene since it was last uploaded.
     bool m_floorDirty = false;
+    bool m_mapLinesDirty = false;
     bool m_axisTablesDirty = false;
     bool m_meshesDirty = false;
     glm::vec4 m_background = kDefaultBackground;

@@ -2,6 +2,7 @@
 // and the floor; renderer_meshes.cpp draws the isosurfaces). Internal to gl/.
 #pragma once
 
+#include <array>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -18,6 +19,10 @@ namespace ensil::gl {
 inline const ShaderFiles kSilhouetteShaderFiles{
     QStringLiteral("surface"), QStringLiteral("silhouette_cull"), QStringLiteral("surface")};
 
+// The map lines' program: segments widened on screen by a geometry shader.
+inline const ShaderFiles kMapLineShaderFiles{
+    QStringLiteral("map_lines"), QStringLiteral("map_lines"), QStringLiteral("map_lines")};
+
 struct Renderer::Gpu {
     GlFunctions* f = nullptr;
     ShaderLibrary shaders;
@@ -25,6 +30,9 @@ struct Renderer::Gpu {
     GLuint quadVao = 0, quadVbo = 0;
     GLuint emptyVao = 0;  // for the full-screen passes, which need no vertex data
     GLuint floorTexture = 0;
+    GLuint mapLinesVao = 0, mapLinesVbo = 0;
+    // The segments of each geo::MapLineKind, in order: first vertex and vertex count.
+    std::array<glm::ivec2, 3> mapLineRanges{};
     glm::ivec2 floorSize{0};
     GLuint axisTables = 0;  // row a: the display coordinate of every grid index along axis a
     glm::ivec3 axisSize{0};

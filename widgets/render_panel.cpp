@@ -35,6 +35,10 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_mean(new QCheckBox(tr("Show the mean member"), this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
+      m_map(new QGroupBox(tr("Map"), this)),
+      m_coastlines(new QCheckBox(tr("Coastlines"), m_map)),
+      m_borders(new QCheckBox(tr("Country borders"), m_map)),
+      m_graticule(new QCheckBox(tr("Graticule"), m_map)),
       m_removal(new QGroupBox(tr("Density-based removal"), this)),
       m_removalMin(new QDoubleSpinBox(m_removal)),
       m_removalMax(new QDoubleSpinBox(m_removal)),
@@ -49,6 +53,10 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_mean, "mean"},
              {m_axes, "axes"},
              {m_legend, "legend"},
+             {m_map, "map"},
+             {m_coastlines, "coastlines"},
+             {m_borders, "borders"},
+             {m_graticule, "graticule"},
              {m_removal, "removal"},
              {m_removalMin, "removalMin"},
              {m_removalMax, "removalMax"},
@@ -93,10 +101,19 @@ RenderPanel::RenderPanel(QWidget* parent)
     m_legend->setToolTip(settingHelp("legend"));
     sceneForm->addRow(m_legend);
 
+    auto* mapLayout = new QVBoxLayout(m_map);
+    for (auto [box, setting] :
+         {std::pair{m_coastlines, "coastlines"}, std::pair{m_borders, "borders"},
+          std::pair{m_graticule, "graticule"}}) {
+        box->setToolTip(settingHelp(setting));
+        mapLayout->addWidget(box);
+    }
+
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(m_removal);
     layout->addLayout(sceneForm);
+    layout->addWidget(m_map);
     layout->addStretch(1);
 
     setSettings(gl::RenderSettings{});
@@ -112,6 +129,9 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_mean, &QCheckBox::toggled, this, edited);
     connect(m_axes, &QCheckBox::toggled, this, edited);
     connect(m_legend, &QCheckBox::toggled, this, edited);
+    for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
+        connect(box, &QCheckBox::toggled, this, edited);
+    }
     connect(m_removal, &QGroupBox::toggled, this, edited);
     connect(m_groupSize, &QSpinBox::valueChanged, this, edited);
     // The thresholds keep o*min below o*max by pushing the other one along.
@@ -139,7 +159,11 @@ RenderPanel::RenderPanel(QWidget* parent)
 
 void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
-        b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend);
+        b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
+        b11(m_coastlines), b12(m_borders), b13(m_graticule);
+    m_coastlines->setChecked(settings.showCoastlines);
+    m_borders->setChecked(settings.showBorders);
+    m_graticule->setChecked(settings.showGraticule);
     m_axes->setChecked(settings.showAxes);
     m_legend->setChecked(settings.showLegend);
     m_mode->setCurrentIndex(static_cast<int>(settings.mode));
@@ -165,6 +189,9 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.showMean = m_mean->isChecked();
     settings.showAxes = m_axes->isChecked();
     settings.showLegend = m_legend->isChecked();
+    settings.showCoastlines = m_coastlines->isChecked();
+    settings.showBorders = m_borders->isChecked();
+    settings.showGraticule = m_graticule->isChecked();
     settings.removal = m_removal->isChecked();
     settings.removalMin = static_cast<float>(m_removalMin->value());
     settings.removalMax = static_cast<float>(m_removalMax->value());

@@ -62,6 +62,10 @@ private:
     QCheckBox* m_mean;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
+    QGroupBox* m_map;
+    QCheckBox* m_coastlines;
+    QCheckBox* m_borders;
+    QCheckBox* m_graticule;
     QGroupBox* m_removal;
     QDoubleSpinBox* m_removalMin;
     QDoubleSpinBox* m_removalMax;

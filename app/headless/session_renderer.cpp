@@ -62,6 +62,8 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setVerticalExaggeration(state.verticalExaggeration);
     renderer.setFloorMap(
         gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
+    renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
+        geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;
     renderer.setMeshes(std::make_shared<data::MeshSet>(std::move(outcome.meshes)));
     // Coloured, hidden and selected as the workbench shows the session.

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 #include <netcdf.h>
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QString>
 #include <QTextStream>
 
@@ -142,4 +145,34 @@ TEST(GenerateCommand, GridSizeParsing) {
     EXPECT_FALSE(parseGridSize("1x256x16", nx, ny, nz));
     EXPECT_FALSE(parseGridSize("axbxc", nx, ny, nz));
     EXPECT_EQ(nx, 128u) << "a failed parse leaves the outputs alone";
+}
+
+// `ensil info --json` says where the grid lies: uk_hires's rotated pole and its true domain
+// (checked to 0.05 degrees against the rotation written out in tests/geo/domain_bounds_test),
+// ERA5's plain longitude/latitude axes, and null for a volume with no geography.
+TEST(InfoCommand, JsonReportsTheGridMappingAndTheTrueLongitudeLatitudeBounds) {
+    const QString real = QStringLiteral(ENSIL_SHARED_DATA_DIR "/");
+    const auto json = [](const CliRun& r) {
+        return QJsonDocument::fromJson(r.out.toUtf8()).object();
+    };
+
+    const CliRun uk = run({"info", real + "uk_hires.nc", "--member-dim", "time", "--json"});
+    ASSERT_EQ(uk.code, 0) << uk.err.toStdString();
+    EXPECT_EQ(json(uk)["grid_mapping"].toString(), "rotated_latitude_longitude");
+    const QJsonArray b = json(uk)["lon_lat_bounds"].toArray();
+    ASSERT_EQ(b.size(), 4);
+    EXPECT_NEAR(b[0].toDouble(), -6.90, 0.05);
+    EXPECT_NEAR(b[1].toDouble(), -2.49, 0.05);
+    EXPECT_NEAR(b[2].toDouble(), 52.57, 0.05);
+    EXPECT_NEAR(b[3].toDouble(), 55.38, 0.05);
+
+    const CliRun era5 = run({"info", real + "era5_eda_members.nc", "--json"});
+    ASSERT_EQ(era5.code, 0);
+    EXPECT_TRUE(json(era5)["grid_mapping"].isNull());
+    EXPECT_EQ(json(era5)["lon_lat_bounds"].toArray(), (QJsonArray{0.0, 357.0, -90.0, 90.0}));
+
+    const CliRun volume = run({"info", real + "ironProt.vtk", "--json"});
+    ASSERT_EQ(volume.code, 0);
+    EXPECT_TRUE(json(volume)["grid_mapping"].isNull());
+    EXPECT_TRUE(json(volume)["lon_lat_bounds"].isNull());
 }

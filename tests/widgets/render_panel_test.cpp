@@ -65,7 +65,7 @@ TEST(RenderPanel, UserEditsSignalOnceAndKeepTheRemovalBandOrdered) {
     panel.setMode(gl::RenderMode::OpaqueSurfaces);
     EXPECT_EQ(edited.count(), 2);
     EXPECT_EQ(panel.applyTo({}).mode, gl::RenderMode::OpaqueSurfaces);
-    EXPECT_FALSE(panel.findChild<QGroupBox*>()->isEnabled())
+    EXPECT_FALSE(panel.findChild<QGroupBox*>("removal")->isEnabled())
         << "opaque surfaces draw no silhouettes to remove";
 }
 

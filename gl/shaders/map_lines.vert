@@ -1,0 +1,9 @@
+#version 410 core
+// Map lines on the box floor (coastlines, borders, graticule) in display space; the geometry
+// shader widens each segment on screen.
+layout(location = 0) in vec3 a_position;
+uniform mat4 u_viewProjection;
+
+void main() {
+    gl_Position = u_viewProjection * vec4(a_position, 1.0);
+}
