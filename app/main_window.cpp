@@ -19,6 +19,7 @@
 #include <QUnhandledException>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "app/ensemble_facts.h"
 #include "app/headless/session_renderer.h"
@@ -32,6 +33,7 @@
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/session/session_model.h"
+#include "widgets/session/view_presets.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -142,21 +144,22 @@ void MainWindow::createMenus() {
     m_resetCameraAction = new QAction(tr("&Reset Camera"), this);
     m_resetCameraAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
     connect(m_resetCameraAction, &QAction::triggered, m_view, &ui::SilhouetteView::resetCamera);
-    // Views a meteorologist asks for: a map (north up, from straight above), and side views.
-    struct ViewPreset {
-        const char* name;
-        float azimuth, elevation;
-        QKeySequence shortcut;
-    };
-    for (const ViewPreset& preset :
-         {ViewPreset{QT_TR_NOOP("&Map View (North Up)"), -90.0F, 90.0F,
-                     QKeySequence(Qt::CTRL | Qt::Key_T)},
-          ViewPreset{QT_TR_NOOP("View From the &South"), -90.0F, 15.0F, {}},
-          ViewPreset{QT_TR_NOOP("View From the &West"), 180.0F, 15.0F, {}}}) {
-        auto* action = new QAction(tr(preset.name), this);
-        action->setShortcut(preset.shortcut);
-        connect(action, &QAction::triggered, m_view,
-                [this, preset] { m_view->lookFrom(preset.azimuth, preset.elevation); });
+    // Views a meteorologist asks for (session/view_presets.h): a map, north up, from straight
+    // above, and the views from the four sides; Ctrl+T for the map, Alt+Shift and the compass
+    // letter for the sides.
+    const std::map<std::string_view, QKeySequence> shortcuts{
+        {"top", QKeySequence(Qt::CTRL | Qt::Key_T)},
+        {"north", QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key_N)},
+        {"south", QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key_S)},
+        {"east", QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key_E)},
+        {"west", QKeySequence(Qt::ALT | Qt::SHIFT | Qt::Key_W)}};
+    for (const session::ViewPreset& preset : session::viewPresets()) {
+        auto* action = new QAction(tr(std::string(preset.label).c_str()), this);
+        action->setObjectName(QStringLiteral("view_%1").arg(QLatin1String(preset.id)));
+        if (const auto key = shortcuts.find(preset.id); key != shortcuts.end()) {
+            action->setShortcut(key->second);
+        }
+        connect(action, &QAction::triggered, this, [this, &preset] { lookFrom(preset); });
         m_viewPresetActions << action;
     }
     createEditMenu();
@@ -508,6 +511,12 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     settings.setValue(QStringLiteral("window/state"), saveState());
     rememberRenderSettings();
     QMainWindow::closeEvent(event);
+}
+
+void MainWindow::lookFrom(const session::ViewPreset& preset) {
+    // The projection first (the map view is orthographic), then the camera fitted to the box.
+    m_model->update([&preset](session::SessionState& s) { session::lookFrom(preset, s.camera); });
+    m_view->lookFrom(preset.azimuth, preset.elevation);
 }
 
 }  // namespace ensil::app

@@ -44,6 +44,7 @@ class DendrogramView;
 namespace ensil::session {
 class SessionHistory;
 class SessionModel;
+struct ViewPreset;
 }  // namespace ensil::session
 
 namespace ensil::app {
@@ -127,6 +128,8 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // Looks from a named view (the View menu), as a session change that undo can take back.
+    void lookFrom(const session::ViewPreset& preset);
     using EnsembleSource =
         std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
     // `identify` gives the data's identity for the mesh cache; it runs on the worker, since it

@@ -6,6 +6,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -47,7 +48,13 @@ void MainWindow::createRenderDocks() {
     m_renderPanel->setSettings(renderer.settings());
     auto* renderDock = new QDockWidget(tr("Rendering"), this);
     renderDock->setObjectName(QStringLiteral("renderingDock"));
-    renderDock->setWidget(m_renderPanel);
+    // Scrolled rather than squeezing the member table that shares the right side: the panel
+    // holds more controls than a short screen has room for.
+    auto* renderScroll = new QScrollArea;
+    renderScroll->setWidget(m_renderPanel);
+    renderScroll->setWidgetResizable(true);
+    renderScroll->setFrameShape(QFrame::NoFrame);
+    renderDock->setWidget(renderScroll);
 
     m_planePanel = new ui::CuttingPlanePanel;
     auto* planeDock = new QDockWidget(tr("Cutting Plane"), this);

@@ -12,6 +12,7 @@
 #include "app/subcommand.h"
 #include "widgets/session/project_file.h"
 #include "widgets/session/setting_options.h"
+#include "widgets/session/view_presets.h"
 
 namespace ensil::app {
 namespace {
@@ -37,6 +38,13 @@ struct Options {
     QCommandLineOption noLabels{"no-labels",
                                 "Leave out the axis labels and the cluster legend (as "
                                 "--no-axis-labels --no-legend)."};
+    QCommandLineOption view{
+        "view",
+        QString::fromStdString(
+            "Look from a named view: " + session::viewPresetNames() +
+            " (top: a map, north up, orthographic unless --projection says otherwise). "
+            "--azimuth and --elevation, when given too, override its angles."),
+        "NAME"};
     QCommandLineOption frames{"frames", "Frames to time for frame_ms (default 20).", "N", "20"};
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
@@ -51,11 +59,11 @@ struct Options {
 // The settings the command line sets, each with its range from the one setting table.
 const session::SettingOptions& sceneOptions() {
     static const session::SettingOptions options{
-        "mode",        "clusters",        "linkage",        "show_mean",
-        "thickness",   "surface_opacity", "group_size",     "vertical_exaggeration",
-        "azimuth",     "elevation",       "projection",     "background",
-        "axis_labels", "legend",          "plane_thickness",
-        "coastlines",  "borders",         "graticule"};
+        "mode",        "clusters",        "linkage",         "show_mean",
+        "thickness",   "surface_opacity", "group_size",      "vertical_exaggeration",
+        "azimuth",     "elevation",       "projection",      "background",
+        "axis_labels", "legend",          "plane_thickness", "coastlines",
+        "borders",     "graticule",       "mean_opacity"};
     return options;
 }
 
@@ -94,6 +102,18 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
                                                      -1e30, 1e30, false, problem);
         if (!iso) return std::nullopt;
         state.isovalue = static_cast<float>(*iso);
+    }
+    // The view first: the angles and projection given as options then override it.
+    if (parser.isSet(o.view)) {
+        const session::ViewPreset* preset =
+            session::findViewPreset(parser.value(o.view).toStdString());
+        if (preset == nullptr) {
+            problem =
+                QStringLiteral("--view '%1' is refused: it must be one of %2")
+                    .arg(parser.value(o.view), QString::fromStdString(session::viewPresetNames()));
+            return std::nullopt;
+        }
+        session::lookFrom(*preset, state.camera);
     }
     if (!sceneOptions().applyTo(parser, state, problem)) return std::nullopt;
     if (parser.isSet(o.noLabels)) state.render.showAxes = state.render.showLegend = false;
@@ -150,8 +170,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.frames, o.noCache,
-                       o.demo, o.json, o.saveProject});
+    parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.view, o.frames,
+                       o.noCache, o.demo, o.json, o.saveProject});
     sceneOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
 

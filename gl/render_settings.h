@@ -54,11 +54,15 @@ struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;
     float thickness = 0.006F;   // tau, in display units (the data box is about 1 wide)
     float surfaceAlpha = 0.2F;  // for RenderMode::Surfaces
-    bool showMean = true;       // the mean member as a solid gray surface
-    bool removal = false;       // density-based silhouette removal (METHODS.md section 10)
-    float removalMin = 0.0F;    // o*_min, in the variable's units squared
-    float removalMax = 1.0F;    // o*_max
-    int groupSize = 4;          // s_G
+    bool showMean = true;       // the mean member's surface, gray, for context
+    // The mean's opacity: below 1 it is a translucent context surface that never hides the
+    // members behind it (and is not picked); 1 draws it solid, as the paper does.
+    float meanOpacity = 0.3F;
+    [[nodiscard]] bool meanTranslucent() const { return meanOpacity < 1.0F; }
+    bool removal = false;     // density-based silhouette removal (METHODS.md section 10)
+    float removalMin = 0.0F;  // o*_min, in the variable's units squared
+    float removalMax = 1.0F;  // o*_max
+    int groupSize = 4;        // s_G
     CuttingPlane plane;
     bool showAxes = true;    // tick labels in data units along the box (gl/view_overlay.h)
     bool showLegend = true;  // the cluster colours

@@ -205,13 +205,22 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         m_scene.settings.mode == RenderMode::Surfaces ? kSurfaces : kShaded;
     const int opaqueMode = m_scene.settings.mode == RenderMode::Spaghetti ? kSpaghetti : kSolid;
     const Selection selection = selectionShown();
-    if (pass != MemberPass::Translucent && m_scene.settings.showMean) {
+    // A translucent mean is context: composited with the translucent members, and neither
+    // hiding members from picking nor picked itself; a solid one is drawn with the opaque.
+    const bool meanTranslucent = m_scene.settings.meanTranslucent();
+    const bool meanHere =
+        m_scene.settings.showMean &&
+        (pass == MemberPass::All ? !meanTranslucent
+                                 : (pass == MemberPass::Translucent) == meanTranslucent);
+    if (meanHere) {
         // Pushed back a little in depth: where a member coincides with the mean (the animated
         // member, a solid selection), the member is seen, never a z-fighting mix of both.
         f.glEnable(GL_POLYGON_OFFSET_FILL);
         f.glPolygonOffset(1.0F, 2.0F);
-        setMember(0, 0, kSolid, kMeanSurfaceColor);
+        setMember(0, 0, meanTranslucent ? kSurfaces : kSolid, kMeanSurfaceColor);
+        program->setUniformValue("u_surfaceAlpha", m_scene.settings.meanOpacity);
         drawMesh(f, *program, m_gpu->meshes.mean());
+        program->setUniformValue("u_surfaceAlpha", m_scene.settings.surfaceAlpha);
         f.glDisable(GL_POLYGON_OFFSET_FILL);
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
@@ -256,7 +265,9 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     drawMemberPass(programs, MemberPass::Opaque);
 
     const Selection selection = selectionShown();
-    if (translucentMode() || (selection.any && !selection.solid)) {
+    const bool translucentMean = m_scene.settings.showMean && m_scene.settings.meanTranslucent() &&
+                                 m_gpu->meshes.mean().vao != 0;
+    if (translucentMode() || (selection.any && !selection.solid) || translucentMean) {
         // Every isosurface lies inside the data box: the transparency targets are cleared,
         // drawn and composited only over the box's rectangle on screen.
         const glm::ivec4 box = screenRectangle(viewProjection, width, height);

@@ -28,17 +28,29 @@ struct Projector {
     }
 };
 
-QString axisTitle(const data::Axis& axis) {
+QString axisTitle(const data::Axis& axis, const std::string& units) {
     const QString name = QString::fromStdString(axis.name);
-    return axis.units.empty()
-               ? name
-               : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(axis.units));
+    return units.empty() ? name
+                         : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(units));
 }
+
+// An edge seen end-on (the vertical one from straight above) has no room for labels: they
+// would pile up on one point.
+constexpr float kShortestLabelledEdgePx = 40.0F;
 
 // Tick labels and the title of axis `a` along the box edge through `corner` parallel to it.
 void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector& project,
                const glm::vec2& centrePx, std::vector<OverlayLabel>& labels) {
     const data::Axis& axis = in.grid->axis(a);
+    glm::vec3 far = corner;
+    far[a] = in.frame->boxMax()[a];
+    glm::vec3 near = corner;
+    near[a] = in.frame->boxMin()[a];
+    const auto [nearPx, nearVisible] = project(near);
+    const auto [farPx, farVisible] = project(far);
+    if (nearVisible && farVisible && glm::distance(nearPx, farPx) < kShortestLabelledEdgePx) {
+        return;
+    }
     const auto place = [&](float displayCoordinate, QString text, float offset, bool title) {
         glm::vec3 p = corner;
         p[a] = displayCoordinate;
@@ -46,16 +58,19 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
         if (!visible) return;
         glm::vec2 away = pixel - centrePx;
         away = glm::length(away) > 1e-3F ? glm::normalize(away) : glm::vec2(0.0F, 1.0F);
-        labels.push_back({pixel + offset * away, away, std::move(text), title});
+        labels.push_back(
+            {pixel + offset * away, away, std::move(text), title, title ? 0 : (a == 2 ? 1 : 2)});
     };
     const glm::dvec3 origin{in.grid->x().front(), in.grid->y().front(), in.grid->z().front()};
-    for (const double tick : niceTicks(axis.minValue(), axis.maxValue())) {
+    const AxisLabelling labelling = labellingFor(axis);
+    for (const double tick : labelling.ticks) {
         glm::dvec3 point = origin;
         point[a] = tick;
-        place(in.frame->toDisplay(point)[a], formatTick(tick), kTickOffsetPx, false);
+        place(in.frame->toDisplay(point)[a], formatTick(tick * labelling.shownPerUnit),
+              kTickOffsetPx, false);
     }
-    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis), kTitleOffsetPx,
-          true);
+    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis, labelling.units),
+          kTitleOffsetPx, true);
 }
 }  // namespace
 
@@ -137,11 +152,13 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     titleFont.setBold(true);
     // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
     // placed keeps its place and later ones that would overlap it are left out.
-    // Titles first: where space is short, a title says more than one tick value.
+    // Titles first: where space is short, a title says more than one tick value; then the
+    // vertical levels (OverlayLabel::priority).
     std::vector<const OverlayLabel*> order;
     for (const OverlayLabel& label : overlay.labels) order.push_back(&label);
-    std::stable_partition(order.begin(), order.end(),
-                          [](const OverlayLabel* label) { return label->title; });
+    std::stable_sort(order.begin(), order.end(), [](const OverlayLabel* a, const OverlayLabel* b) {
+        return a->priority < b->priority;
+    });
     std::vector<QRectF> placed;
     for (const OverlayLabel* entry : order) {
         const OverlayLabel& label = *entry;

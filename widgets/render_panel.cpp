@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QHBoxLayout>
 #include <QPixmap>
 #include <QSignalBlocker>
 #include <QSpinBox>
@@ -33,11 +34,12 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_thickness(new QDoubleSpinBox(this)),
       m_opacity(new QDoubleSpinBox(this)),
       m_mean(new QCheckBox(tr("Show the mean member"), this)),
+      m_meanOpacity(new QDoubleSpinBox(this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
       m_map(new QGroupBox(tr("Map"), this)),
-      m_coastlines(new QCheckBox(tr("Coastlines"), m_map)),
-      m_borders(new QCheckBox(tr("Country borders"), m_map)),
+      m_coastlines(new QCheckBox(tr("Coasts"), m_map)),
+      m_borders(new QCheckBox(tr("Borders"), m_map)),
       m_graticule(new QCheckBox(tr("Graticule"), m_map)),
       m_removal(new QGroupBox(tr("Density-based removal"), this)),
       m_removalMin(new QDoubleSpinBox(m_removal)),
@@ -51,6 +53,7 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_thickness, "thickness"},
              {m_opacity, "opacity"},
              {m_mean, "mean"},
+             {m_meanOpacity, "meanOpacity"},
              {m_axes, "axes"},
              {m_legend, "legend"},
              {m_map, "map"},
@@ -76,7 +79,10 @@ RenderPanel::RenderPanel(QWidget* parent)
     shapeBySetting(*m_opacity, "surface_opacity");
     form->addRow(tr("Surface opacity"), m_opacity);
     m_mean->setToolTip(settingHelp("show_mean"));
-    form->addRow(m_mean);
+    shapeBySetting(*m_meanOpacity, "mean_opacity");
+    m_meanOpacity->setToolTip(settingHelp("mean_opacity"));
+    m_meanOpacity->setPrefix(tr("opacity "));
+    form->addRow(m_mean, m_meanOpacity);  // one row: the panel shares its dock's height
 
     m_removal->setCheckable(true);
     m_removal->setToolTip(settingHelp("removal"));
@@ -101,7 +107,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     m_legend->setToolTip(settingHelp("legend"));
     sceneForm->addRow(m_legend);
 
-    auto* mapLayout = new QVBoxLayout(m_map);
+    // One row: the three switches are short, and the panel shares its dock's height.
+    auto* mapLayout = new QHBoxLayout(m_map);
     for (auto [box, setting] :
          {std::pair{m_coastlines, "coastlines"}, std::pair{m_borders, "borders"},
           std::pair{m_graticule, "graticule"}}) {
@@ -126,7 +133,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_mode, &QComboBox::currentIndexChanged, this, edited);
     connect(m_thickness, &QDoubleSpinBox::valueChanged, this, edited);
     connect(m_opacity, &QDoubleSpinBox::valueChanged, this, edited);
-    connect(m_mean, &QCheckBox::toggled, this, edited);
+    connect(m_meanOpacity, &QDoubleSpinBox::valueChanged, this, edited);
+    connect(m_mean, &QCheckBox::toggled, this, edited);  // also enables the mean's opacity
     connect(m_axes, &QCheckBox::toggled, this, edited);
     connect(m_legend, &QCheckBox::toggled, this, edited);
     for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
@@ -160,7 +168,8 @@ RenderPanel::RenderPanel(QWidget* parent)
 void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
-        b11(m_coastlines), b12(m_borders), b13(m_graticule);
+        b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity);
+    m_meanOpacity->setValue(settings.meanOpacity);
     m_coastlines->setChecked(settings.showCoastlines);
     m_borders->setChecked(settings.showBorders);
     m_graticule->setChecked(settings.showGraticule);
@@ -187,6 +196,7 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.thickness = static_cast<float>(m_thickness->value());
     settings.surfaceAlpha = static_cast<float>(m_opacity->value());
     settings.showMean = m_mean->isChecked();
+    settings.meanOpacity = static_cast<float>(m_meanOpacity->value());
     settings.showAxes = m_axes->isChecked();
     settings.showLegend = m_legend->isChecked();
     settings.showCoastlines = m_coastlines->isChecked();
@@ -263,6 +273,7 @@ void RenderPanel::updateEnabled() {
         mode == gl::RenderMode::ShadedSilhouettes || mode == gl::RenderMode::Spaghetti;
     m_thickness->setEnabled(silhouettes);
     m_opacity->setEnabled(mode == gl::RenderMode::Surfaces);
+    m_meanOpacity->setEnabled(m_mean->isChecked());
     m_removal->setEnabled(mode != gl::RenderMode::OpaqueSurfaces);
 }
 

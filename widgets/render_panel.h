@@ -60,6 +60,7 @@ private:
     QDoubleSpinBox* m_thickness;
     QDoubleSpinBox* m_opacity;
     QCheckBox* m_mean;
+    QDoubleSpinBox* m_meanOpacity;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
     QGroupBox* m_map;

@@ -100,6 +100,9 @@ TEST_F(History, AViewPresetIsACameraStepThatUndoTakesBack) {
     EXPECT_EQ(action("undoAction")->text(), "&Undo Map View (North Up)");
     EXPECT_FLOAT_EQ(window.view()->renderer().camera().elevation(), 89.0F) << "straight down";
     EXPECT_FLOAT_EQ(window.view()->renderer().camera().azimuth(), -90.0F) << "north up";
+    EXPECT_EQ(window.view()->renderer().camera().projection(), gl::Camera::Projection::Orthographic)
+        << "a map has no perspective";
     action("undoAction")->trigger();
     EXPECT_FLOAT_EQ(window.view()->renderer().camera().elevation(), elevation);
+    EXPECT_EQ(window.view()->renderer().camera().projection(), gl::Camera::Projection::Perspective);
 }

@@ -181,3 +181,38 @@ TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
         static_cast<float>(o["isovalue"].toDouble()),
         test::workbenchDefaultIsovalue(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "t"));
 }
+
+// --view top is the map view: north up, from straight above, orthographic; the same picture as
+// the angles and projection given by hand. An explicit --projection overrides it, and a view
+// that does not exist is refused, naming those that do.
+TEST(RenderCommand, TheTopViewIsTheNorthUpOrthographicMapAndUnknownViewsAreRefused) {
+    test::TempDir dir;
+    const auto render = [&](const QString& name, const QStringList& extra) {
+        const QString png = QString::fromStdString(dir.file(name.toStdString()));
+        const test::EnsilRun r =
+            test::runEnsil(QStringList{"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                                       "--var", "t", "--iso", "260", "--out", png, "--size",
+                                       "320x240", "--frames", "1", "--no-cache"} +
+                           extra);
+        EXPECT_EQ(r.code, 0) << r.err.toStdString();
+        return QImage(png).convertToFormat(QImage::Format_RGB32);
+    };
+    const QImage top = render("top.png", {"--view", "top"});
+    const QImage byHand = render(
+        "hand.png", {"--azimuth", "-90", "--elevation", "90", "--projection", "orthographic"});
+    const QImage perspective =
+        render("persp.png", {"--view", "top", "--projection", "perspective"});
+    const QImage south = render("south.png", {"--view", "south"});
+    EXPECT_EQ(top, byHand);
+    EXPECT_NE(top, perspective);
+    EXPECT_NE(top, south);
+
+    const test::EnsilRun bad =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", QString::fromStdString(dir.file("x.png")), "--view", "sideways"});
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_TRUE(
+        bad.err.contains("--view 'sideways' is refused: it must be one of top, north, "
+                         "south, east, west, default"))
+        << bad.err.toStdString();
+}

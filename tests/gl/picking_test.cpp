@@ -75,6 +75,7 @@ TEST_F(PickingTest, TheMeanOccludesMembersBehindItButIsNotAMember) {
     // A small member sphere behind the big solid mean, and nothing in front of it.
     show(spheres({{15.5F, 15.5F, 15.5F}, {15.5F, 15.5F, 15.5F}}, {0, -4}), {kRed, kBlue});
     m_renderer.settings().showMean = true;
+    m_renderer.settings().meanOpacity = 1.0F;
     m_renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
     (void)draw();
     const QPoint middle = project(display({15.5F, 15.5F, 15.5F}));
@@ -83,7 +84,11 @@ TEST_F(PickingTest, TheMeanOccludesMembersBehindItButIsNotAMember) {
     m_renderer.setAppearance({{kRed, false, false}, {kBlue, true, false}});
     (void)draw();
     EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, -1)
-        << "member 1 (radius 4) lies inside the mean";
+        << "member 1 (radius 4) lies inside the solid mean";
+    // A translucent mean is context: the member inside it is picked through it.
+    m_renderer.settings().meanOpacity = 0.3F;
+    (void)draw();
+    EXPECT_EQ(m_renderer.pick(middle.x(), middle.y()).member, 1);
 }
 
 TEST_F(PickingTest, BrushingCollectsTheMembersDrawnInARectangle) {

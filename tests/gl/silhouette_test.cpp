@@ -26,14 +26,37 @@ TEST_F(SilhouetteTest, ShadedSilhouetteOutlinesTheRimAndLeavesTheFaceEmpty) {
     EXPECT_LE(best, 40) << "no silhouette at the rim";
 }
 
-TEST_F(SilhouetteTest, TheMeanIsASolidGraySurface) {
+TEST_F(SilhouetteTest, TheMeanAtFullOpacityIsASolidGraySurface) {
     show(spheres({{13, 15.5F, 15.5F}, {18, 15.5F, 15.5F}}), {{1, 0, 0}, {0, 0, 1}});
     m_renderer.settings().showMean = true;
+    m_renderer.settings().meanOpacity = 1.0F;
     const QImage image = draw();
     const QColor middle = image.pixelColor(project(display({15.5F, 15.5F, 15.5F})));
     EXPECT_EQ(middle.red(), middle.green()) << "gray";
     EXPECT_EQ(middle.green(), middle.blue()) << "gray";
     EXPECT_GT(middle.red(), 120) << "lit, facing the headlight";
+}
+
+TEST_F(SilhouetteTest, ByDefaultTheMeanIsTranslucentContextThatDoesNotHideTheMembers) {
+    // A member silhouette (the rim of a small sphere) behind a big mean: a solid mean hides
+    // it, the default translucent one lets it through, tinted but still the member's colour.
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre, centre}, {-5, 0}), {{1, 0, 0}, {0, 0, 1}});
+    m_renderer.setAppearance({{{1, 0, 0}, true, false, 0}, {{0, 0, 1}, false, false, 1}});
+    m_renderer.settings().thickness = 0.1F;
+    ASSERT_LT(m_renderer.settings().meanOpacity, 1.0F) << "the default";
+    // Where the small member's rim lies on screen, seen through the mean.
+    const QPoint rim = project(display({centre.x + 2.9F, centre.y, centre.z}));
+    m_renderer.settings().showMean = false;
+    const QColor alone = draw().pixelColor(rim);
+    ASSERT_GT(alone.red(), alone.blue() + 60) << "the member's rim, red";
+    m_renderer.settings().showMean = true;
+    const QColor throughTranslucent = draw().pixelColor(rim);
+    EXPECT_GT(throughTranslucent.red(), throughTranslucent.blue() + 30)
+        << "still red through the translucent mean";
+    m_renderer.settings().meanOpacity = 1.0F;
+    const QColor behindSolid = draw().pixelColor(rim);
+    EXPECT_EQ(behindSolid.red(), behindSolid.blue()) << "hidden: the solid mean's gray";
 }
 
 TEST_F(SilhouetteTest, TheImageDoesNotDependOnTheOrderMembersAreDrawnIn) {

@@ -32,6 +32,35 @@ TEST(AxisTicks, FormattingDropsTrailingZerosAndKeepsTinyAndHugeValuesShort) {
     EXPECT_EQ(gl::formatTick(1.5e7), QStringLiteral("1.5e+07"));
 }
 
+TEST(AxisLabelling, PressureIsInHectopascalsAtTheStandardLevelsMainOnesFirst) {
+    const gl::AxisLabelling pa =
+        gl::labellingFor(data::makeUniformAxis("plev", "Pa", 100000.0, 10000.0, 10));
+    EXPECT_EQ(pa.units, "hPa");
+    EXPECT_DOUBLE_EQ(pa.shownPerUnit, 0.01);
+    // 1000 and 100 hPa lie at the ends of the range and must be there.
+    EXPECT_EQ(pa.ticks, (std::vector<double>{100000, 85000, 70000, 50000, 30000, 20000, 10000,
+                                             92500, 60000, 40000, 25000, 15000}));
+    const gl::AxisLabelling mbar =
+        gl::labellingFor(data::makeUniformAxis("level", "millibars", 1000.0, 100.0, 10));
+    EXPECT_EQ(mbar.units, "hPa");
+    EXPECT_EQ(mbar.ticks.front(), 1000.0);
+    // A narrow range falls back to round numbers in hPa.
+    const gl::AxisLabelling narrow =
+        gl::labellingFor(data::makeUniformAxis("p", "Pa", 101000.0, 99000.0, 5));
+    EXPECT_EQ(narrow.ticks, (std::vector<double>{99000, 99500, 100000, 100500, 101000}));
+}
+
+TEST(AxisLabelling, HeightsBeyondTenKilometresAreInKilometresOthersInTheirOwnUnits) {
+    const gl::AxisLabelling high =
+        gl::labellingFor(data::makeUniformAxis("z", "m", 0.0, 20000.0, 10));
+    EXPECT_EQ(high.units, "km");
+    EXPECT_EQ(high.ticks, (std::vector<double>{0, 5000, 10000, 15000, 20000}));
+    const gl::AxisLabelling low =
+        gl::labellingFor(data::makeUniformAxis("z", "m", 0.0, 5000.0, 10));
+    EXPECT_EQ(low.units, "m");
+    EXPECT_EQ(low.ticks, gl::niceTicks(0.0, 5000.0));
+}
+
 namespace {
 struct Scene {
     data::Grid grid{data::makeUniformAxis("lon", "degrees_east", -80, 40, 121),
@@ -89,6 +118,17 @@ TEST(ViewOverlay, LabelsTheThreeAxesInDataUnitsOnScreenAndAwayFromTheBox) {
     off.showAxes = false;
     off.showLegend = false;
     EXPECT_TRUE(gl::computeOverlay(off).labels.empty());
+    // From straight above, the vertical edge is a point: it gets no labels.
+    scene.camera.setAngles(-90.0F, 90.0F);
+    const gl::ViewOverlay top = gl::computeOverlay([&] {
+        gl::OverlayInput in = scene.input();
+        scene.camera.setAngles(-90.0F, 90.0F);
+        in.viewProjection = scene.camera.viewProjection(800.0F / 600.0F);
+        in.eye = scene.camera.eye();
+        return in;
+    }());
+    EXPECT_FALSE(hasLabel(top, "height (m)"));
+    EXPECT_TRUE(hasLabel(top, "lon (degrees_east)"));
     EXPECT_TRUE(gl::computeOverlay(off).legend.empty());
 }
 

@@ -19,7 +19,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 22> kSettings{{
+const std::array<Setting, 23> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -63,7 +63,7 @@ const std::array<Setting, 22> kSettings{{
      "rendering/mean",
      "Show the mean member",
      "",
-     "The mean member's isosurface as a solid gray surface, for context",
+     "The mean member's isosurface as a gray surface, for context",
      0,
      1,
      0,
@@ -71,6 +71,22 @@ const std::array<Setting, 22> kSettings{{
      {},
      [](const SessionState& s) { return s.render.showMean ? 1.0 : 0.0; },
      [](SessionState& s, double v) { s.render.showMean = v != 0.0; }},
+    {"mean_opacity",
+     SettingKind::Number,
+     "rendering.mean_opacity",
+     "mean-opacity",
+     "rendering/meanOpacity",
+     "Mean opacity",
+     "",
+     "Opacity of the mean member's surface: below 1 it is translucent context that never hides "
+     "the members; 1 draws it solid",
+     0.05,
+     1.0,
+     2,
+     0.05,
+     {},
+     [](const SessionState& s) { return double(s.render.meanOpacity); },
+     [](SessionState& s, double v) { s.render.meanOpacity = asFloat(v); }},
     {"axis_labels",
      SettingKind::Flag,
      "rendering.axis_labels",
@@ -108,7 +124,8 @@ const std::array<Setting, 22> kSettings{{
      "map/coastlines",
      "Coastlines",
      "",
-     "Natural Earth coastlines on the floor, for grids with longitudes and latitudes (also rotated and projected grids)",
+     "Natural Earth coastlines on the floor, for grids with longitudes and latitudes (also rotated "
+     "and projected grids)",
      0,
      1,
      0,
