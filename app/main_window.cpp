@@ -3,6 +3,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -22,6 +23,7 @@
 #include <map>
 
 #include "app/ensemble_facts.h"
+#include "app/headless/picture_title.h"
 #include "app/headless/session_renderer.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
@@ -452,11 +454,23 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
 }
 
+QString MainWindow::defaultScreenshotPath(const QString& lastPath) const {
+    // In the folder of the last screenshot, named after what the picture shows.
+    const QString folder = lastPath.isEmpty() ? QString() : QFileInfo(lastPath).absolutePath();
+    QString name = QStringLiteral("ensil.png");
+    if (m_overview && m_model->state().isovalue) {
+        name = QString::fromStdString(
+                   pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
+               QStringLiteral(".png");
+    }
+    return folder.isEmpty() ? name : QDir(folder).filePath(name);
+}
+
 void MainWindow::chooseScreenshot() {
     QSettings settings;
     const QString path = QFileDialog::getSaveFileName(
         this, tr("Save Screenshot"),
-        settings.value(QStringLiteral("screenshot/path"), QStringLiteral("ensil.png")).toString(),
+        defaultScreenshotPath(settings.value(QStringLiteral("screenshot/path")).toString()),
         tr("PNG images (*.png)"));
     if (path.isEmpty()) return;
     // Any resolution: the view's own by default, or e.g. 3840x2400 for print.

@@ -128,6 +128,8 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The screenshot dialog's first suggestion: the picture's facts as a file name.
+    [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.
     void lookFrom(const session::ViewPreset& preset);
     using EnsembleSource =

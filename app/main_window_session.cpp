@@ -7,6 +7,7 @@
 #include <QScopedValueRollback>
 #include <QSignalBlocker>
 
+#include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "widgets/cluster_panel.h"
@@ -104,6 +105,9 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         const prep::FieldStatistics& stats = m_overview->statistics;
         m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, *s.isovalue,
                                     QString::fromStdString(m_overview->ensemble->units));
+    }
+    if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview) {
+        renderer.setTitle(QString::fromStdString(pictureTitle(*m_overview->ensemble, *s.isovalue)));
     }
     // Normals and curvatures live in display space: a new exaggeration rebuilds them (the
     // meshes come from the cache when this isovalue and exaggeration were seen before).

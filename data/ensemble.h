@@ -26,6 +26,9 @@ struct Ensemble {
     std::string memberDimension;  // name of the dimension members came from, e.g. "number"
     std::string source;           // where it came from (file path or "demo"), for the UI
     Grid grid;
+    // The other dimensions fixed to one index, as EnsembleDescription says them:
+    // "time = 0 of 4 (2017-01-01T00:00)".
+    std::vector<std::string> fixedDimensions;
     GridMapping gridMapping;  // the horizontal axes' map projection, when the file names one
     std::vector<Member> members;
 

@@ -247,6 +247,7 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
     e.source = sourceOf(selection.paths);
     e.grid = description.grid;
     e.gridMapping = description.gridMapping;
+    e.fixedDimensions = description.fixedDimensions;
     e.members.resize(description.members);
     std::size_t next = 0;
     for (const std::string& path : selection.paths) {

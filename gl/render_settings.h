@@ -66,6 +66,7 @@ struct RenderSettings {
     CuttingPlane plane;
     bool showAxes = true;    // tick labels in data units along the box (gl/view_overlay.h)
     bool showLegend = true;  // the cluster colours
+    bool showTitle = true;   // the title line (Renderer::setTitle) above the picture
     // The map lines on the floor (Renderer::setMapLines), each switchable.
     bool showCoastlines = true;
     bool showBorders = true;

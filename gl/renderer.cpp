@@ -130,6 +130,7 @@ ViewOverlay Renderer::overlay(int width, int height) const {
         m_scene.settings.showMean && m_scene.meshes && !m_scene.meshes->mean.vertices.empty();
     in.showAxes = m_scene.settings.showAxes;
     in.showLegend = m_scene.settings.showLegend;
+    if (m_scene.settings.showTitle) in.title = m_title;
     in.background = glm::vec3(m_background);
     return computeOverlay(in);
 }

@@ -10,6 +10,7 @@
 // objects and must release them before that context dies (QOpenGLContext::aboutToBeDestroyed).
 #pragma once
 
+#include <QString>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -84,6 +85,10 @@ public:
     void setHighlightedMember(int member) { m_highlighted = member; }
     [[nodiscard]] int highlightedMember() const { return m_highlighted; }
 
+    // The line above the picture saying what it shows (variable, isovalue, time, members);
+    // painted with the overlay when RenderSettings::showTitle.
+    void setTitle(QString title) { m_title = std::move(title); }
+    [[nodiscard]] const QString& title() const { return m_title; }
     // The labels and legend to paint over a frame of this size (see gl/view_overlay.h).
     [[nodiscard]] ViewOverlay overlay(int width, int height) const;
 
@@ -208,6 +213,7 @@ private:
     glm::vec4 m_background = kDefaultBackground;
     float m_resolutionScale = 1.0F;
     int m_highlighted = -1;
+    QString m_title;
     int m_animated = -1;
 };
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <map>
 
 #include "gl/axis_ticks.h"
@@ -72,6 +73,28 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
     place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis, labelling.units),
           kTitleOffsetPx, true);
 }
+// The legend's place: the first corner (top left, top right, bottom left, bottom right) where
+// it keeps clear of the data box on screen, else the corner where it covers least of it.
+QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF picture, double margin) {
+    const double right = picture.width() - margin - size.width();
+    const double bottom = picture.height() - margin - size.height();
+    const std::array<QPointF, 4> corners{QPointF(margin, top), QPointF(right, top),
+                                         QPointF(margin, bottom), QPointF(right, bottom)};
+    QRectF best(corners[0], size);
+    double leastCovered = std::numeric_limits<double>::max();
+    for (const QPointF& corner : corners) {
+        const QRectF place(corner, size);
+        const QRectF covered = place.intersected(dataBox);
+        const double area = covered.isEmpty() ? 0.0 : covered.width() * covered.height();
+        if (area < leastCovered) {
+            leastCovered = area;
+            best = place;
+        }
+        if (area == 0.0) break;
+    }
+    return best;
+}
+
 }  // namespace
 
 QString formatTick(double value) {
@@ -90,6 +113,7 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
     ViewOverlay overlay;
     const float luminance = glm::dot(in.background, glm::vec3(0.2126F, 0.7152F, 0.0722F));
     overlay.text = luminance > 0.5F ? QColor(30, 30, 30) : QColor(225, 225, 225);
+    overlay.title = in.title;
     if (in.width <= 0 || in.height <= 0) return overlay;
 
     if (in.showAxes && in.grid != nullptr && in.frame != nullptr) {
@@ -97,6 +121,19 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
                                 static_cast<float>(in.height)};
         const glm::vec3 lo = in.frame->boxMin(), hi = in.frame->boxMax();
         const glm::vec2 centrePx = project(0.5F * (lo + hi)).first;
+        glm::vec2 boxMin(std::numeric_limits<float>::max());
+        glm::vec2 boxMax(-std::numeric_limits<float>::max());
+        bool allVisible = true;
+        for (int c = 0; c < 8; ++c) {
+            const auto [px, visible] =
+                project({c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
+            allVisible = allVisible && visible;
+            boxMin = glm::min(boxMin, px);
+            boxMax = glm::max(boxMax, px);
+        }
+        if (allVisible) {
+            overlay.box = QRectF(QPointF(boxMin.x, boxMin.y), QPointF(boxMax.x, boxMax.y));
+        }
         // x along the bottom edge on the viewer's side in y, y along the bottom edge on the
         // viewer's side in x, z up the vertical edge furthest left on screen.
         const float nearY = std::abs(in.eye.y - lo.y) < std::abs(in.eye.y - hi.y) ? lo.y : hi.y;
@@ -141,7 +178,10 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
 }
 
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio) {
-    if (overlay.labels.empty() && overlay.legend.empty() && overlay.message.isEmpty()) return;
+    if (overlay.labels.empty() && overlay.legend.empty() && overlay.message.isEmpty() &&
+        overlay.title.isEmpty()) {
+        return;
+    }
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
@@ -160,6 +200,23 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         return a->priority < b->priority;
     });
     std::vector<QRectF> placed;
+    // The title line: centred at the top, elided when the picture is narrower than it; the
+    // labels keep clear of it and the legend starts below it.
+    double legendTop = 10.0;
+    if (!overlay.title.isEmpty()) {
+        QFont heading = font;
+        heading.setPointSizeF(10.5);
+        heading.setBold(true);
+        painter.setFont(heading);
+        const QFontMetricsF metrics(heading);
+        const double width = painter.device()->width();
+        const QString text = metrics.elidedText(overlay.title, Qt::ElideMiddle, width - 20.0);
+        const QRectF rect(10.0, 6.0, width - 20.0, metrics.height());
+        painter.setPen(overlay.text);
+        painter.drawText(rect, Qt::AlignHCenter | Qt::AlignTop, text);
+        placed.push_back(rect);
+        legendTop = rect.bottom() + 6.0;
+    }
     for (const OverlayLabel* entry : order) {
         const OverlayLabel& label = *entry;
         painter.setFont(label.title ? titleFont : font);
@@ -202,8 +259,14 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
             textWidth = std::max(textWidth, metrics.horizontalAdvance(e.text));
         }
         const double margin = 10.0, pad = 6.0;
-        const QRectF box(margin, margin, pad * 3 + swatch + textWidth,
-                         pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
+        const QSizeF size(pad * 3 + swatch + textWidth,
+                          pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
+        const QRectF box =
+            legendPlace(size, legendTop,
+                        overlay.box.isEmpty()
+                            ? QRectF()
+                            : QRectF(overlay.box.topLeft() * scale, overlay.box.size() * scale),
+                        QSizeF(painter.device()->width(), painter.device()->height()), margin);
         QColor panel =
             overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
         painter.setPen(Qt::NoPen);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QColor>
+#include <QRectF>
 #include <QString>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -38,7 +39,11 @@ struct ViewOverlay {
     std::vector<OverlayLabel> labels;
     std::vector<LegendEntry> legend;
     QString message;  // centred in the view, e.g. what to do when nothing is loaded
-    QColor text;      // readable on the background
+    QString title;    // the line at the top saying what the picture shows
+    // The data box's bounding rectangle on screen (pixels, top-left origin; empty when
+    // unknown): the legend goes into a corner that keeps clear of it.
+    QRectF box;
+    QColor text;  // readable on the background
 };
 
 struct OverlayInput {
@@ -52,6 +57,7 @@ struct OverlayInput {
     bool showMean = false;
     bool showAxes = true;
     bool showLegend = true;
+    QString title;  // empty: none
     glm::vec3 background{0.0F};
 };
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 
 #include "app/headless/isovalue_job.h"
+#include "app/headless/picture_title.h"
 #include "data/demo_ensemble.h"
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
@@ -72,6 +73,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
                                                      prep::identitiesFromTree(outcome.tree, k),
                                                      session::memberFlags(state, labels, members)));
     renderer.settings() = state.render;
+    renderer.setTitle(QString::fromStdString(pictureTitle(ensemble, iso)));
     renderer.setBackground({state.background, 1.0F});
     gl::Camera& camera = renderer.camera();
     camera.setProjection(state.camera.orthographic ? gl::Camera::Projection::Orthographic

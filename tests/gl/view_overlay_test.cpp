@@ -193,3 +193,40 @@ TEST(ViewOverlay, PaintsTheLegendSwatchesAndTextIntoTheImage) {
         for (int x = 0; x < 800; ++x) light += image.pixelColor(x, y).lightness() > 150 ? 1 : 0;
     EXPECT_GT(light, 200);
 }
+
+// The legend keeps clear of the data: with the box over the top-left quarter it moves to the
+// top right; the title line sits above it, centred.
+TEST(ViewOverlay, TheLegendTakesACornerClearOfTheDataBoxBelowTheTitle) {
+    gl::ViewOverlay o;
+    o.text = QColor(225, 225, 225);
+    o.legend = {{gl::clusterColor(0), QStringLiteral("Cluster 1 \u00b7 5 members")}};
+    o.box = QRectF(0.0, 0.0, 400.0, 300.0);
+    o.title = QStringLiteral("t [K] \u00b7 isovalue 260 K");
+    QImage image(800, 600, QImage::Format_RGB32);
+    image.fill(Qt::black);
+    {
+        QPainter painter(&image);
+        gl::paintOverlay(painter, o, 1.0);
+    }
+    const glm::vec3 c = gl::clusterColor(0);
+    const auto swatchIn = [&](QRect r) {
+        for (int y = r.top(); y <= r.bottom(); ++y) {
+            for (int x = r.left(); x <= r.right(); ++x) {
+                const QColor p = image.pixelColor(x, y);
+                if (std::abs(p.red() - int(c.r * 255)) < 3 &&
+                    std::abs(p.green() - int(c.g * 255)) < 3 &&
+                    std::abs(p.blue() - int(c.b * 255)) < 3) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    };
+    EXPECT_FALSE(swatchIn(QRect(0, 0, 400, 300))) << "not over the data box";
+    EXPECT_TRUE(swatchIn(QRect(400, 0, 400, 300))) << "in the top-right corner";
+    int titlePixels = 0;
+    for (int y = 0; y < 24; ++y) {
+        for (int x = 300; x < 500; ++x) titlePixels += image.pixelColor(x, y).lightness() > 150;
+    }
+    EXPECT_GT(titlePixels, 20) << "the title, centred at the top";
+}

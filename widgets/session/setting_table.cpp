@@ -19,7 +19,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 23> kSettings{{
+const std::array<Setting, 24> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -117,6 +117,22 @@ const std::array<Setting, 23> kSettings{{
      {},
      [](const SessionState& s) { return s.render.showLegend ? 1.0 : 0.0; },
      [](SessionState& s, double v) { s.render.showLegend = v != 0.0; }},
+    {"title",
+     SettingKind::Flag,
+     "rendering.title",
+     "title",
+     "rendering/title",
+     "Title line",
+     "",
+     "A line above the picture saying the variable, isovalue, time and members (in the view, "
+     "screenshots and ensil render)",
+     0,
+     1,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return s.render.showTitle ? 1.0 : 0.0; },
+     [](SessionState& s, double v) { s.render.showTitle = v != 0.0; }},
     {"coastlines",
      SettingKind::Flag,
      "rendering.map.coastlines",

@@ -1,0 +1,71 @@
+#include "app/headless/picture_title.h"
+
+#include <array>
+#include <cctype>
+#include <cstdio>
+#include <vector>
+
+namespace ensil::app {
+namespace {
+
+// An isovalue with as many digits as it needs and no more: 260, 0.0035, 5.5e+04.
+std::string formatValue(float value) {
+    std::array<char, 32> text{};
+    std::snprintf(text.data(), text.size(), "%.4g", static_cast<double>(value));
+    return text.data();
+}
+
+// "time = 0 of 4 (2017-01-01T00:00)" -> "time 2017-01-01T00:00"; without a coordinate value,
+// "time 1 of 4" (counted from one, as people count).
+std::string shortFixedDimension(const std::string& line) {
+    const auto equals = line.find(" = ");
+    if (equals == std::string::npos) return line;
+    const std::string name = line.substr(0, equals);
+    const auto open = line.find(" (", equals);
+    if (open != std::string::npos && line.back() == ')') {
+        return name + " " + line.substr(open + 2, line.size() - open - 3);
+    }
+    const std::string rest = line.substr(equals + 3);
+    const auto of = rest.find(" of ");
+    if (of == std::string::npos) return name + " " + rest;
+    try {
+        return name + " " + std::to_string(std::stoul(rest.substr(0, of)) + 1) + rest.substr(of);
+    } catch (const std::exception&) {
+        return name + " " + rest;
+    }
+}
+
+}  // namespace
+
+std::string pictureTitle(const data::Ensemble& e, float isovalue) {
+    std::string title = e.variable;
+    if (!e.longName.empty() && e.longName != e.variable) title += " (" + e.longName + ")";
+    if (!e.units.empty()) title += " [" + e.units + "]";
+    const std::string separator = " \u00b7 ";
+    title +=
+        separator + "isovalue " + formatValue(isovalue) + (e.units.empty() ? "" : " " + e.units);
+    for (const std::string& fixed : e.fixedDimensions) {
+        title += separator + shortFixedDimension(fixed);
+    }
+    title += separator + std::to_string(e.memberCount()) +
+             (e.memberCount() == 1 ? " member" : " members");
+    if (!e.memberDimension.empty()) title += " along " + e.memberDimension;
+    return title;
+}
+
+std::string pictureFileStem(const data::Ensemble& e, float isovalue) {
+    std::string stem = e.variable + "_" + formatValue(isovalue) + e.units;
+    for (const std::string& fixed : e.fixedDimensions) stem += "_" + shortFixedDimension(fixed);
+    std::string clean;
+    for (const char c : stem) {
+        const auto u = static_cast<unsigned char>(c);
+        if (std::isalnum(u) != 0 || c == '.' || c == '-' || c == '_') {
+            clean += c;
+        } else if (c == ' ' || c == ':' || c == '/') {
+            if (!clean.empty() && clean.back() != '-' && clean.back() != '_') clean += '-';
+        }
+    }
+    return clean.empty() ? "ensil" : clean;
+}
+
+}  // namespace ensil::app

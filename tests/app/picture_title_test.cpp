@@ -1,0 +1,30 @@
+// The title line and file name a picture gets: from the real files' own variable, units,
+// fixed time and member dimension.
+#include "app/headless/picture_title.h"
+
+#include <gtest/gtest.h>
+
+#include "data/ensemble_reader.h"
+
+using namespace ensil;
+
+namespace {
+data::Ensemble open(const char* file, const char* variable, const char* memberDim = "") {
+    return data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + file},
+                               .variable = variable,
+                               .memberDimension = memberDim});
+}
+}  // namespace
+
+TEST(PictureTitle, SaysVariableUnitsIsovalueTimeAndMembers) {
+    const data::Ensemble era5 = open("era5_eda_members.nc", "t");
+    EXPECT_EQ(app::pictureTitle(era5, 260.0F),
+              "t (Temperature) [K] \u00b7 isovalue 260 K \u00b7 time 2017-01-01T00:00 \u00b7 "
+              "10 members along number");
+    EXPECT_EQ(app::pictureFileStem(era5, 260.0F), "t_260K_time-2017-01-01T00-00");
+
+    const data::Ensemble uk = open("uk_hires.nc", "air_potential_temperature", "time");
+    EXPECT_EQ(app::pictureTitle(uk, 290.5F),
+              "air_potential_temperature [K] \u00b7 isovalue 290.5 K \u00b7 3 members along time");
+    EXPECT_EQ(app::pictureFileStem(uk, 290.5F), "air_potential_temperature_290.5K");
+}
