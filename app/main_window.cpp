@@ -27,9 +27,11 @@
 #include "app/headless/session_renderer.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
+#include "app/point_description.h"
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
+#include "geo/map_projection.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/open_data_dialog.h"
@@ -227,6 +229,9 @@ void MainWindow::createStatusBar() {
     m_cancel->setToolTip(tr("Stop the work in progress (Esc)"));
     connect(m_cancel, &QToolButton::clicked, this, &MainWindow::cancelLoading);
     statusBar()->addWidget(m_statusText, 1);
+    m_pointText = new QLabel(this);
+    m_pointText->setObjectName(QStringLiteral("pointText"));
+    statusBar()->addPermanentWidget(m_pointText);
     statusBar()->addPermanentWidget(m_progress);
     statusBar()->addPermanentWidget(m_cancel);
     setIdle(tr("Ready"));
@@ -408,6 +413,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     // The map spans its own range: the mean's column maxima cover only part of the values.
     renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
     renderer.setMapLines(m_overview->mapLines);
+    m_mapProjection =
+        std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(ensembleFacts(*m_overview));
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
     m_view->setMemberNames(memberNames());

@@ -47,6 +47,10 @@ class SessionModel;
 struct ViewPreset;
 }  // namespace ensil::session
 
+namespace ensil::geo {
+class MapProjection;
+}  // namespace ensil::geo
+
 namespace ensil::app {
 
 class IsovalueSession;
@@ -191,6 +195,7 @@ private:
     QProgressBar* m_progress = nullptr;
     QToolButton* m_cancel = nullptr;
     QLabel* m_statusText = nullptr;
+    QLabel* m_pointText = nullptr;  // what lies under the cursor: place, level, values
     QMenu* m_recentMenu = nullptr;
     ui::RenderToolbar* m_toolbar = nullptr;
     ui::RenderPanel* m_renderPanel = nullptr;
@@ -215,6 +220,8 @@ private:
     bool m_hasSavedLayout = false;
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
+    // The open grid's map projection, for the places under the cursor (none before data).
+    std::unique_ptr<geo::MapProjection> m_mapProjection;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
     std::optional<data::DemoEnsembleParams> m_requestedDemo;
     // A project being opened: applied when its data has loaded and its surfaces are built.

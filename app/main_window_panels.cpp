@@ -5,6 +5,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -13,6 +14,8 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "app/point_description.h"
+#include "geo/map_projection.h"
 #include "gl/renderer.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/csv_export.h"
@@ -94,6 +97,14 @@ void MainWindow::linkPanels() {
     connect(m_view, &ui::SilhouetteView::memberClicked, this, &MainWindow::onMemberClicked);
     connect(m_view, &ui::SilhouetteView::memberHovered, this, &MainWindow::onMemberHovered);
     connect(m_view, &ui::SilhouetteView::membersBrushed, this, &MainWindow::onMembersBrushed);
+    // The place, level and values under the cursor, in the tooltip and the status bar.
+    m_view->setHoverDescriber([this](const gl::PickResult& hit) {
+        if (!m_overview) return QString();
+        const PointContext context{m_overview->ensemble.get(), &m_overview->moments->mean,
+                                   m_mapProjection.get(), &m_view->renderer().frame()};
+        return describePoint(context, hit);
+    });
+    connect(m_view, &ui::SilhouetteView::hoverDescribed, m_pointText, &QLabel::setText);
 }
 
 void MainWindow::showSelectionInView() {

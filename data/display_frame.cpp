@@ -72,4 +72,29 @@ glm::vec3 DisplayFrame::indexToDisplay(const glm::vec3& index) const {
                       coordinateAt(m_grid.z(), index.z)});
 }
 
+glm::dvec3 DisplayFrame::displayToIndex(const glm::vec3& display) const {
+    glm::dvec3 index{0.0};
+    for (int a = 0; a < 3; ++a) {
+        const Axis& axis = m_grid.axis(a);
+        const double t = std::clamp(double(display[a]) / double(m_size[a]), 0.0, 1.0);
+        // The coordinate that toDisplay puts there: the inverse of its per-axis mapping.
+        double coordinate = axis.minValue() + t * (axis.maxValue() - axis.minValue());
+        if (a == 2 && m_logPressure) {
+            const double bottom = std::log(axis.maxValue());
+            coordinate = std::exp(bottom - t * (bottom - std::log(axis.minValue())));
+        } else if (a == 2 && !axis.positiveUp) {
+            coordinate = axis.maxValue() - t * (axis.maxValue() - axis.minValue());
+        }
+        // Then the fractional index of that coordinate along the (monotonic) axis.
+        const std::vector<double>& v = axis.values;
+        const bool rising = v.back() >= v.front();
+        std::size_t i = 0;
+        while (i + 2 < v.size() && (rising ? v[i + 1] < coordinate : v[i + 1] > coordinate)) ++i;
+        const double span = v[i + 1] - v[i];
+        const double f = span != 0.0 ? (coordinate - v[i]) / span : 0.0;
+        index[a] = std::clamp(static_cast<double>(i) + f, 0.0, static_cast<double>(v.size() - 1));
+    }
+    return index;
+}
+
 }  // namespace ensil::data

@@ -30,6 +30,9 @@ public:
     [[nodiscard]] glm::vec3 toDisplay(const glm::dvec3& dataPoint) const;
     // A point given in (fractional) grid indices, in display space.
     [[nodiscard]] glm::vec3 indexToDisplay(const glm::vec3& index) const;
+    // The (fractional) grid index of a display-space point, clamped to the grid: the inverse
+    // of indexToDisplay, for what lies under the cursor.
+    [[nodiscard]] glm::dvec3 displayToIndex(const glm::vec3& display) const;
     // The display coordinate of every grid index along one axis (0 = x, 1 = y, 2 = z): the
     // mapping is separable, so three such tables describe it completely.
     [[nodiscard]] std::vector<double> axisTable(int axis) const;

@@ -15,6 +15,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "data/display_frame.h"
@@ -33,6 +34,11 @@ namespace ensil::gl {
 struct PickResult {
     int member = -1;
     int cluster = -1;
+    // Where the picked member's surface lies under the pixel, in display space.
+    std::optional<glm::vec3> surface;
+    // Where the view ray through the pixel meets the box's floor, in display space (none when
+    // it misses the floor): what the floor map shows there.
+    std::optional<glm::vec3> floor;
 };
 
 // A 2D field drawn on the box floor: nx * ny values (x fastest), NaN where missing.

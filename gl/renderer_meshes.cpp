@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 #include <limits>
 
 #include "gl/palette.h"
@@ -372,6 +373,7 @@ PickResult Renderer::pick(int x, int y, int radius) {
 
     // The id nearest to the pixel wins; thin silhouettes need not be hit exactly.
     int bestDistance = std::numeric_limits<int>::max();
+    glm::ivec2 bestPixel{x, glY};
     for (int row = 0; row < h; ++row) {
         for (int col = 0; col < w; ++col) {
             const std::uint32_t id =
@@ -383,11 +385,39 @@ PickResult Renderer::pick(int x, int y, int radius) {
             if (distance < bestDistance) {
                 bestDistance = distance;
                 result.member = static_cast<int>(id) - 1;
+                bestPixel = {x0 + col, y0 + row};
             }
         }
     }
+    const glm::mat4 inverse =
+        glm::inverse(m_scene.camera.viewProjection(static_cast<float>(width) / height));
+    const auto unproject = [&](glm::ivec2 pixel, float depth) {
+        const glm::vec4 ndc{(pixel.x + 0.5F) / width * 2.0F - 1.0F,
+                            (pixel.y + 0.5F) / height * 2.0F - 1.0F, depth * 2.0F - 1.0F, 1.0F};
+        const glm::vec4 p = inverse * ndc;
+        return glm::vec3(p) / p.w;
+    };
+    GlFunctions& f = *m_gpu->f;
     if (result.member >= 0) {
         result.cluster = appearance(static_cast<std::size_t>(result.member)).cluster;
+        // The id pass wrote the surface's depth there: back through the camera to display space.
+        float depth = 1.0F;
+        f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.pickFramebuffer());
+        f.glReadPixels(bestPixel.x, bestPixel.y, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+        f.glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (depth < 1.0F) result.surface = unproject(bestPixel, depth);
+    }
+    // The floor: the ray through the pixel, from the near to the far plane, at z = 0.
+    const glm::vec3 nearPoint = unproject({x, glY}, 0.0F);
+    const glm::vec3 farPoint = unproject({x, glY}, 1.0F);
+    if (std::abs(farPoint.z - nearPoint.z) > 1e-9F) {
+        const float t = (m_scene.frame.boxMin().z - nearPoint.z) / (farPoint.z - nearPoint.z);
+        const glm::vec3 onFloor = nearPoint + t * (farPoint - nearPoint);
+        const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
+        if (t >= 0.0F && t <= 1.0F && onFloor.x >= lo.x && onFloor.x <= hi.x && onFloor.y >= lo.y &&
+            onFloor.y <= hi.y) {
+            result.floor = onFloor;
+        }
     }
     return result;
 }

@@ -244,16 +244,23 @@ void SilhouetteView::mouseReleaseEvent(QMouseEvent* event) {
 void SilhouetteView::pickHovered() {
     // No need to ask whether the pointer is still here: leaving the view stops the timer.
     const gl::PickResult hit = pickAt(m_hoverPosition);
-    setHovered(hit.member, m_hoverPosition, hit.cluster);
+    const QString description = m_describeHover ? m_describeHover(hit) : QString();
+    setHovered(hit.member, m_hoverPosition, hit.cluster, description);
+    emit hoverDescribed(description);
 }
 
-void SilhouetteView::setHovered(int member, QPoint position, int cluster) {
+void SilhouetteView::setHovered(int member, QPoint position, int cluster,
+                                const QString& description) {
+    QStringList lines;
     if (member >= 0) {
         const QString name = member < m_memberNames.size() && !m_memberNames[member].isEmpty()
                                  ? m_memberNames[member]
                                  : tr("member %1").arg(member);
-        const QString text = cluster >= 0 ? tr("%1\ncluster %2").arg(name).arg(cluster + 1) : name;
-        QToolTip::showText(mapToGlobal(position), text, this);
+        lines << (cluster >= 0 ? tr("%1\ncluster %2").arg(name).arg(cluster + 1) : name);
+    }
+    if (!description.isEmpty()) lines << description;
+    if (!lines.isEmpty()) {
+        QToolTip::showText(mapToGlobal(position), lines.join(QLatin1Char('\n')), this);
     } else {
         QToolTip::hideText();
     }

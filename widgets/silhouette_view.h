@@ -16,6 +16,7 @@
 #include <QPoint>
 #include <QStringList>
 #include <QTimer>
+#include <functional>
 
 #include "gl/renderer.h"
 
@@ -62,6 +63,10 @@ public:
 
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
     void setMemberNames(QStringList names) { m_memberNames = std::move(names); }
+    // Says what lies under the cursor (place, level, values) for the hover tooltip and the
+    // hoverDescribed signal; the view knows no data, so the window supplies it.
+    using HoverDescriber = std::function<QString(const gl::PickResult&)>;
+    void setHoverDescriber(HoverDescriber describer) { m_describeHover = std::move(describer); }
 
     // The picture of the view at any size, without the UI, labels and legend included; null
     // when OpenGL is not available.
@@ -88,6 +93,8 @@ signals:
     void memberClicked(int member, Qt::KeyboardModifiers modifiers);
     // The member under the resting cursor changed (-1: none).
     void memberHovered(int member);
+    // What the describer said of the point under a resting cursor (empty off the data).
+    void hoverDescribed(const QString& description);
     // A rubber band was drawn over these members (sorted, possibly empty).
     void membersBrushed(const QList<int>& members, Qt::KeyboardModifiers modifiers);
 
@@ -108,7 +115,7 @@ private slots:
 
 private:
     void releaseGpu();
-    void setHovered(int member, QPoint position, int cluster);
+    void setHovered(int member, QPoint position, int cluster, const QString& description = {});
     [[nodiscard]] QPoint toFramebuffer(QPoint position) const;
     // The resolution scale for the next frame: 1 when still, or when frames are fast enough.
     [[nodiscard]] float frameResolutionScale() const;
@@ -125,6 +132,7 @@ private:
     QTimer m_hoverTimer;
     QPoint m_hoverPosition;
     int m_hovered = -1;
+    HoverDescriber m_describeHover;
     QStringList m_memberNames;
     QString m_placeholder = defaultPlaceholder();
     QString m_glError;

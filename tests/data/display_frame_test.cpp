@@ -61,3 +61,20 @@ TEST(DisplayFrame, VolumeInOneUnitKeepsTrueProportions) {
     EXPECT_TRUE(data::isPressureUnit("Pa"));
     EXPECT_FALSE(data::isPressureUnit("m"));
 }
+
+TEST(DisplayFrame, DisplayToIndexUndoesIndexToDisplayOnLogPressure) {
+    const data::Grid grid(
+        data::makeUniformAxis("lon", "degrees_east", 0, 357, 120),
+        data::makeUniformAxis("lat", "degrees_north", 90, -90, 61),
+        data::Axis{"plev", "Pa", "air_pressure", {100000, 85000, 50000, 20000}, false});
+    const data::DisplayFrame frame(grid, 2.0F);
+    for (const glm::vec3 index : {glm::vec3{0, 0, 0}, glm::vec3{17.25F, 40.5F, 1.5F},
+                                  glm::vec3{119, 60, 3}, glm::vec3{3, 59.9F, 2.75F}}) {
+        const glm::dvec3 back = frame.displayToIndex(frame.indexToDisplay(index));
+        EXPECT_NEAR(back.x, index.x, 1e-3);
+        EXPECT_NEAR(back.y, index.y, 1e-3);
+        EXPECT_NEAR(back.z, index.z, 1e-3);
+    }
+    // Outside the box clamps to the grid.
+    EXPECT_DOUBLE_EQ(frame.displayToIndex({-1.0F, 0.0F, 0.0F}).x, 0.0);
+}

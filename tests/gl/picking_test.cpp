@@ -126,3 +126,33 @@ TEST_F(PickingTest, TheAnimatedMemberIsTheOnlySolidOneEvenWhenHidden) {
     EXPECT_EQ(m_renderer.pick(left.x(), left.y(), 0).member, -1) << "hidden again";
     EXPECT_EQ(m_renderer.pick(right.x(), right.y(), 0).member, 1) << "selected: solid again";
 }
+
+// A pick says where the surface lies: the selected sphere's face, picked at its centre, is
+// on the sphere (8 cells from its centre, in display space), nearest the camera; the ray
+// through a pixel meets the floor inside the box; the background's far corner misses it.
+TEST_F(PickingTest, APickGivesThePointOnTheSurfaceAndWhereItsRayMeetsTheFloor) {
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    show(spheres({centre}), {kRed});
+    m_renderer.setAppearance({{kRed, true, true, 0}});  // selected: solid, picked over its face
+    m_renderer.settings().showMean = false;
+    m_renderer.camera().setAngles(-90.0F, 30.0F);
+    (void)draw();
+    const QPoint middle = project(display(centre));
+    const gl::PickResult hit = m_renderer.pick(middle.x(), middle.y());
+    ASSERT_EQ(hit.member, 0);
+    ASSERT_TRUE(hit.surface.has_value());
+    const glm::dvec3 index = m_renderer.frame().displayToIndex(*hit.surface);
+    EXPECT_NEAR(glm::length(glm::vec3(index) - centre), 8.0F, 0.3F) << "on the sphere";
+    EXPECT_LT(glm::distance(*hit.surface, m_renderer.camera().eye()),
+              glm::distance(display(centre), m_renderer.camera().eye()))
+        << "its near side";
+    // The ray through the pixel of the floor's middle meets the floor there (the sphere in
+    // front does not matter to the floor point); it lies on z = 0.
+    const QPoint low = project(display({15.5F, 15.5F, 0.0F}));
+    const gl::PickResult floor = m_renderer.pick(low.x(), low.y());
+    ASSERT_TRUE(floor.floor.has_value());
+    EXPECT_NEAR(floor.floor->z, 0.0F, 1e-4F);
+    const glm::dvec3 floorIndex = m_renderer.frame().displayToIndex(*floor.floor);
+    EXPECT_NEAR(floorIndex.x, 15.5, 0.6);
+    EXPECT_NEAR(floorIndex.y, 15.5, 0.6);
+}

@@ -1,0 +1,28 @@
+// What lies under the cursor, in words a meteorologist reads: the place in true longitude and
+// latitude (through the grid's map projection), the level in the vertical axis's readable
+// units (hPa, km), and the values there: the hovered member's and the mean's on a surface, the
+// mean's column maximum (what the floor map shows) on the floor. Pure; GUI thread.
+#pragma once
+
+#include <QString>
+
+#include "data/ensemble.h"
+#include "geo/map_projection.h"
+#include "gl/renderer.h"
+
+namespace ensil::app {
+
+struct PointContext {
+    const data::Ensemble* ensemble = nullptr;
+    const data::Member* mean = nullptr;
+    const geo::MapProjection* projection = nullptr;  // null: the grid's own coordinates
+    const data::DisplayFrame* frame = nullptr;
+};
+
+// Empty when the pick hit neither a surface nor the floor.
+QString describePoint(const PointContext& context, const gl::PickResult& hit);
+
+// "52.10° N, 3.40° W" (longitudes past 180 east read west).
+QString formatLonLat(double lon, double lat);
+
+}  // namespace ensil::app
