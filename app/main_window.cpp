@@ -411,7 +411,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
     // The map spans its own range: the mean's column maxima cover only part of the values.
-    renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum));
+    renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum,
+                                                QString::fromStdString(floorCaption(e))));
     renderer.setMapLines(m_overview->mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));

@@ -28,6 +28,27 @@ inline constexpr std::array<glm::vec3, 12> kClusterPalette{{
     {0.667F, 0.267F, 0.600F},  // purple (Tol muted)
 }};
 
+// The floor map's colour scale: a polynomial fit of matplotlib's 'viridis' (perceptually
+// uniform, colour-blind safe), c0 + t (c1 + t (c2 + ...)). The floor shader takes these as
+// uniforms and the colour bar uses viridis() below, so both show the same colours.
+inline constexpr std::array<glm::vec3, 7> kViridisCoefficients{{
+    {0.2777F, 0.0054F, 0.3341F},
+    {0.1051F, 1.4046F, 1.3846F},
+    {-0.3309F, 0.2148F, 0.0951F},
+    {-4.6342F, -5.7991F, -19.3324F},
+    {6.2283F, 14.1799F, 56.6906F},
+    {4.7764F, -13.7451F, -65.3530F},
+    {-5.4355F, 4.6459F, 26.3124F},
+}};
+
+inline glm::vec3 viridis(float t) {
+    glm::vec3 c = kViridisCoefficients.back();
+    for (std::size_t i = kViridisCoefficients.size() - 1; i-- > 0;) {
+        c = kViridisCoefficients[i] + t * c;
+    }
+    return c;
+}
+
 // Members that are not clustered (before the first clustering).
 inline constexpr glm::vec3 kUnclusteredColor{0.733F, 0.733F, 0.733F};
 

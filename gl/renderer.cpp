@@ -11,13 +11,15 @@
 #include <stdexcept>
 
 #include "gl/gl_functions.h"
+#include "gl/palette.h"
 #include "gl/renderer_gpu.h"
 #include "gl/shader_library.h"
 
 namespace ensil::gl {
 
-FloorMap FloorMap::spanning(std::vector<float> values) {
+FloorMap FloorMap::spanning(std::vector<float> values, QString caption) {
     FloorMap map;
+    map.caption = std::move(caption);
     float lo = std::numeric_limits<float>::infinity(), hi = -lo;
     for (const float v : values) {
         if (!std::isnan(v)) {
@@ -131,6 +133,12 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     in.showAxes = m_scene.settings.showAxes;
     in.showLegend = m_scene.settings.showLegend;
     if (m_scene.settings.showTitle) in.title = m_title;
+    if (m_scene.settings.showLegend && m_scene.hasGrid &&
+        m_scene.floor.values.size() == m_scene.grid.nx() * m_scene.grid.ny() &&
+        !m_scene.floor.caption.isEmpty()) {
+        in.floorScale =
+            ColourScale{m_scene.floor.caption, m_scene.floor.minimum, m_scene.floor.maximum};
+    }
     in.background = glm::vec3(m_background);
     return computeOverlay(in);
 }
@@ -281,6 +289,9 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
                               0.5F / static_cast<float>(m_gpu->floorSize.y));
         floor.setUniformValue("u_opacity", 1.0F);
         floor.setUniformValue("u_map", 0);
+        f.glUniform3fv(floor.uniformLocation("u_viridis"),
+                       static_cast<GLsizei>(kViridisCoefficients.size()),
+                       glm::value_ptr(kViridisCoefficients.front()));
         f.glActiveTexture(GL_TEXTURE0);
         f.glBindTexture(GL_TEXTURE_2D, m_gpu->floorTexture);
         f.glBindVertexArray(m_gpu->quadVao);

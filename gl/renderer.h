@@ -46,9 +46,11 @@ struct FloorMap {
     std::vector<float> values;
     float minimum = 0.0F;
     float maximum = 1.0F;
+    // What the map shows, for the colour bar: "column maximum of the mean t [K]".
+    QString caption;
 
     // A map whose colour range spans its own valid values.
-    static FloorMap spanning(std::vector<float> values);
+    static FloorMap spanning(std::vector<float> values, QString caption = {});
 };
 
 class Renderer {

@@ -2,6 +2,7 @@
 
 #include <QFont>
 #include <QFontMetricsF>
+#include <QLinearGradient>
 #include <QPainter>
 #include <algorithm>
 #include <array>
@@ -95,6 +96,48 @@ QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF pictur
     return best;
 }
 
+// The floor's colour bar: caption, a viridis gradient and the values at its ends, in a corner
+// clear of the data box and of the cluster legend.
+void paintColourScale(QPainter& painter, const ViewOverlay& overlay, const QFont& font, double top,
+                      const QRectF& dataBox, const QRectF& legend) {
+    const ColourScale& scale = *overlay.floorScale;
+    const QFontMetricsF metrics(font);
+    const double barWidth = 160.0, barHeight = 10.0, pad = 6.0;
+    const double width = std::max(barWidth, metrics.horizontalAdvance(scale.caption)) + 2 * pad;
+    const QSizeF size(width, 2 * metrics.height() + barHeight + 3.5 * pad);
+    const QSizeF picture(painter.device()->width(), painter.device()->height());
+    // The data box and the legend both count as taken.
+    const QRectF taken =
+        legend.isEmpty() ? dataBox : (dataBox.isEmpty() ? legend : dataBox.united(legend));
+    QRectF place = legendPlace(size, top, dataBox, picture, 10.0);
+    if (!legend.isEmpty() && place.intersects(legend)) {
+        place = legendPlace(size, top, taken, picture, 10.0);
+        if (place.intersects(legend)) return;  // no corner left: the legend matters more
+    }
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110)
+                                                    : QColor(255, 255, 255, 150));
+    painter.drawRoundedRect(place, 4.0, 4.0);
+    painter.setFont(font);
+    painter.setPen(overlay.text);
+    const QRectF caption(place.left() + pad, place.top() + pad, width - 2 * pad, metrics.height());
+    painter.drawText(caption, Qt::AlignLeft | Qt::AlignVCenter, scale.caption);
+    const QRectF bar(place.left() + pad, caption.bottom() + pad / 2, width - 2 * pad, barHeight);
+    QLinearGradient gradient(bar.topLeft(), bar.topRight());
+    for (int i = 0; i <= 16; ++i) {
+        const float t = static_cast<float>(i) / 16.0F;
+        const glm::vec3 c = glm::clamp(viridis(t), glm::vec3(0.0F), glm::vec3(1.0F));
+        gradient.setColorAt(t, QColor::fromRgbF(c.r, c.g, c.b));
+    }
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(gradient);
+    painter.drawRect(bar);
+    painter.setPen(overlay.text);
+    const QRectF ends(bar.left(), bar.bottom() + pad / 2, bar.width(), metrics.height());
+    painter.drawText(ends, Qt::AlignLeft | Qt::AlignTop, QString::number(scale.minimum, 'g', 4));
+    painter.drawText(ends, Qt::AlignRight | Qt::AlignTop, QString::number(scale.maximum, 'g', 4));
+}
+
 }  // namespace
 
 QString formatTick(double value) {
@@ -114,6 +157,7 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
     const float luminance = glm::dot(in.background, glm::vec3(0.2126F, 0.7152F, 0.0722F));
     overlay.text = luminance > 0.5F ? QColor(30, 30, 30) : QColor(225, 225, 225);
     overlay.title = in.title;
+    overlay.floorScale = in.floorScale;
     if (in.width <= 0 || in.height <= 0) return overlay;
 
     if (in.showAxes && in.grid != nullptr && in.frame != nullptr) {
@@ -250,6 +294,7 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
                                 QSizeF(painter.device()->width(), painter.device()->height())),
                          Qt::AlignCenter | Qt::TextWordWrap, overlay.message);
     }
+    QRectF legendRect;
     if (!overlay.legend.empty()) {
         painter.setFont(font);
         const QFontMetricsF metrics(font);
@@ -261,12 +306,13 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         const double margin = 10.0, pad = 6.0;
         const QSizeF size(pad * 3 + swatch + textWidth,
                           pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
-        const QRectF box =
+        legendRect =
             legendPlace(size, legendTop,
                         overlay.box.isEmpty()
                             ? QRectF()
                             : QRectF(overlay.box.topLeft() * scale, overlay.box.size() * scale),
                         QSizeF(painter.device()->width(), painter.device()->height()), margin);
+        const QRectF box = legendRect;
         QColor panel =
             overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
         painter.setPen(Qt::NoPen);
@@ -282,6 +328,12 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
                              Qt::AlignLeft | Qt::AlignTop, e.text);
             y += row;
         }
+    }
+    if (overlay.floorScale) {
+        const QRectF dataBox = overlay.box.isEmpty() ? QRectF()
+                                                     : QRectF(overlay.box.topLeft() * scale,
+                                                              overlay.box.size() * scale);
+        paintColourScale(painter, overlay, font, legendTop, dataBox, legendRect);
     }
     painter.restore();
 }

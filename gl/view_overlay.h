@@ -10,6 +10,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "data/display_frame.h"
@@ -35,6 +36,13 @@ struct LegendEntry {
     QString text;
 };
 
+// The floor map's colour bar: what it shows and the values at its two ends.
+struct ColourScale {
+    QString caption;
+    float minimum = 0.0F;
+    float maximum = 1.0F;
+};
+
 struct ViewOverlay {
     std::vector<OverlayLabel> labels;
     std::vector<LegendEntry> legend;
@@ -43,6 +51,7 @@ struct ViewOverlay {
     // The data box's bounding rectangle on screen (pixels, top-left origin; empty when
     // unknown): the legend goes into a corner that keeps clear of it.
     QRectF box;
+    std::optional<ColourScale> floorScale;
     QColor text;  // readable on the background
 };
 
@@ -58,6 +67,7 @@ struct OverlayInput {
     bool showAxes = true;
     bool showLegend = true;
     QString title;  // empty: none
+    std::optional<ColourScale> floorScale;
     glm::vec3 background{0.0F};
 };
 

@@ -53,6 +53,11 @@ std::string pictureTitle(const data::Ensemble& e, float isovalue) {
     return title;
 }
 
+std::string floorCaption(const data::Ensemble& e) {
+    return "floor: column maximum of the mean " + e.variable +
+           (e.units.empty() ? "" : " [" + e.units + "]");
+}
+
 std::string pictureFileStem(const data::Ensemble& e, float isovalue) {
     std::string stem = e.variable + "_" + formatValue(isovalue) + e.units;
     for (const std::string& fixed : e.fixedDimensions) stem += "_" + shortFixedDimension(fixed);

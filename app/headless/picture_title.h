@@ -11,6 +11,8 @@
 namespace ensil::app {
 
 std::string pictureTitle(const data::Ensemble& ensemble, float isovalue);
+// What the floor map shows, for its colour bar: "floor: column maximum of the mean t [K]".
+std::string floorCaption(const data::Ensemble& ensemble);
 // Letters, digits, '.', '-' and '_' only; no extension.
 std::string pictureFileStem(const data::Ensemble& ensemble, float isovalue);
 

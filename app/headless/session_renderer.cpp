@@ -62,7 +62,8 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setGrid(ensemble.grid);
     renderer.setVerticalExaggeration(state.verticalExaggeration);
     renderer.setFloorMap(
-        gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean)));
+        gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean),
+                               QString::fromStdString(floorCaption(ensemble))));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;

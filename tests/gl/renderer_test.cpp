@@ -100,7 +100,7 @@ TEST_F(RendererTest, FloorShowsTheMapAndMissingValuesInGray) {
         for (std::size_t i = 0; i < grid.nx(); ++i)
             values[i + grid.nx() * j] =
                 i < grid.nx() / 2 ? 0.0F : std::numeric_limits<float>::quiet_NaN();
-    m_renderer.setFloorMap({values, 0.0F, 1.0F});
+    m_renderer.setFloorMap({values, 0.0F, 1.0F, {}});
     const QImage image = draw();
     const glm::vec3 hi = m_renderer.frame().boxMax();
     const QPoint left = project({0.2F * hi.x, 0.5F * hi.y, 0.0F});
@@ -121,7 +121,7 @@ TEST_F(RendererTest, FloorMapFollowsAxisDirectionNorthStaysNorth) {
     for (std::size_t j = 0; j < 16; ++j)
         for (std::size_t i = 0; i < 16; ++i)
             values[i + 16 * j] = grid.y().values[j] > 45.0 ? 1.0F : 0.0F;
-    m_renderer.setFloorMap({values, 0.0F, 1.0F});
+    m_renderer.setFloorMap({values, 0.0F, 1.0F, {}});
     const QImage image = draw();
     const glm::vec3 hi = m_renderer.frame().boxMax();
     const QPoint north = project({0.5F * hi.x, 0.85F * hi.y, 0.0F});
@@ -151,7 +151,7 @@ TEST_F(RendererTest, DemoSceneMatchesBaseline) {
     for (std::size_t k = 0; k < grid.nz(); ++k)
         for (std::size_t p = 0; p < map.size(); ++p)
             map[p] = std::max(map[p], d.ensemble.members[0].values[k * map.size() + p]);
-    m_renderer.setFloorMap({map, 0.0F, 80.0F});
+    m_renderer.setFloorMap({map, 0.0F, 80.0F, {}});
     const QImage image = draw();
     const test::ImageComparison result = test::compareWithBaseline(image, "renderer_demo_scene");
     EXPECT_TRUE(result.passed) << result.message.toStdString();

@@ -230,3 +230,38 @@ TEST(ViewOverlay, TheLegendTakesACornerClearOfTheDataBoxBelowTheTitle) {
     }
     EXPECT_GT(titlePixels, 20) << "the title, centred at the top";
 }
+
+// The floor's colour bar runs from the scale's first colour to its last (the floor shader's
+// own, from gl/palette.h), with its caption, in a corner clear of the legend.
+TEST(ViewOverlay, TheFloorsColourBarShowsTheFloorsColours) {
+    gl::ViewOverlay o;
+    o.text = QColor(225, 225, 225);
+    o.legend = {{gl::clusterColor(0), QStringLiteral("Cluster 1")}};
+    o.floorScale =
+        gl::ColourScale{QStringLiteral("floor: column maximum of the mean t [K]"), 237.8F, 303.7F};
+    QImage image(800, 600, QImage::Format_RGB32);
+    image.fill(Qt::black);
+    {
+        QPainter painter(&image);
+        gl::paintOverlay(painter, o, 1.0);
+    }
+    const auto found = [&](const glm::vec3& c) {
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor p = image.pixelColor(x, y);
+                if (std::abs(p.red() - int(c.r * 255)) < 8 &&
+                    std::abs(p.green() - int(c.g * 255)) < 8 &&
+                    std::abs(p.blue() - int(c.b * 255)) < 8) {
+                    return QPoint(x, y);
+                }
+            }
+        }
+        return QPoint(-1, -1);
+    };
+    const QPoint low = found(glm::clamp(gl::viridis(0.0F), 0.0F, 1.0F));
+    const QPoint high = found(glm::clamp(gl::viridis(1.0F), 0.0F, 1.0F));
+    ASSERT_GE(low.x(), 0) << "the dark purple end";
+    ASSERT_GE(high.x(), 0) << "the yellow end";
+    EXPECT_LT(low.x(), high.x()) << "low values on the left";
+    EXPECT_GT(low.x(), 400) << "the legend took the top-left corner: the bar the top right";
+}
