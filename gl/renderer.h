@@ -80,6 +80,9 @@ public:
     // The size the last frame's scene was drawn at, in pixels.
     [[nodiscard]] glm::ivec2 sceneSize() const { return m_scene.sceneSize; }
     static constexpr float kMinimumResolutionScale = 0.25F;
+    // Map lines' widths are multiplied by this: an exported picture larger than the view draws
+    // them as the view would at that zoom (gl::exportTextScale for the overlay's text).
+    void setLineScale(float scale) { m_lineScale = std::max(scale, 0.1F); }
 
     // The member drawn at pixel (x, y) of the last frame (origin top left, framebuffer pixels):
     // the member whose fragment is nearest to the pixel within `radius` pixels, the front-most
@@ -220,6 +223,7 @@ private:
     bool m_meshesDirty = false;
     glm::vec4 m_background = kDefaultBackground;
     float m_resolutionScale = 1.0F;
+    float m_lineScale = 1.0F;
     int m_highlighted = -1;
     QString m_title;
     int m_animated = -1;

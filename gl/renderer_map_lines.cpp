@@ -81,7 +81,7 @@ void Renderer::drawMapLines(const glm::mat4& viewProjection) {
     // drawn over its casing at the same depth always shows.
     f.glDepthMask(GL_FALSE);
     const auto pass = [&](const glm::ivec2& range, float halfWidth, const glm::vec4& colour) {
-        program.setUniformValue("u_halfWidth", halfWidth * m_resolutionScale);
+        program.setUniformValue("u_halfWidth", halfWidth * m_resolutionScale * m_lineScale);
         program.setUniformValue("u_color", colour.r, colour.g, colour.b, colour.a);
         f.glDrawArrays(GL_LINES, range.x, range.y);
     };

@@ -96,33 +96,33 @@ QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF pictur
     return best;
 }
 
-// The floor's colour bar: caption, a viridis gradient and the values at its ends, in a corner
-// clear of the data box and of the cluster legend.
-void paintColourScale(QPainter& painter, const ViewOverlay& overlay, const QFont& font, double top,
-                      const QRectF& dataBox, const QRectF& legend) {
+constexpr double kMargin = 10.0;  // from the picture's edge to a panel
+constexpr double kPad = 6.0;      // inside a panel
+constexpr double kBarHeight = 10.0;
+
+QColor panelColour(const ViewOverlay& overlay) {
+    return overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
+}
+
+QSizeF colourScaleSize(const ColourScale& scale, const QFontMetricsF& metrics) {
+    const double width = std::max(160.0, metrics.horizontalAdvance(scale.caption)) + 2 * kPad;
+    return {width, 2 * metrics.height() + kBarHeight + 3.5 * kPad};
+}
+
+// The floor's colour bar: caption, a viridis gradient and the values at its ends.
+void drawColourScale(QPainter& painter, const ViewOverlay& overlay, const QFont& font,
+                     const QRectF& place) {
     const ColourScale& scale = *overlay.floorScale;
     const QFontMetricsF metrics(font);
-    const double barWidth = 160.0, barHeight = 10.0, pad = 6.0;
-    const double width = std::max(barWidth, metrics.horizontalAdvance(scale.caption)) + 2 * pad;
-    const QSizeF size(width, 2 * metrics.height() + barHeight + 3.5 * pad);
-    const QSizeF picture(painter.device()->width(), painter.device()->height());
-    // The data box and the legend both count as taken.
-    const QRectF taken =
-        legend.isEmpty() ? dataBox : (dataBox.isEmpty() ? legend : dataBox.united(legend));
-    QRectF place = legendPlace(size, top, dataBox, picture, 10.0);
-    if (!legend.isEmpty() && place.intersects(legend)) {
-        place = legendPlace(size, top, taken, picture, 10.0);
-        if (place.intersects(legend)) return;  // no corner left: the legend matters more
-    }
     painter.setPen(Qt::NoPen);
-    painter.setBrush(overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110)
-                                                    : QColor(255, 255, 255, 150));
+    painter.setBrush(panelColour(overlay));
     painter.drawRoundedRect(place, 4.0, 4.0);
     painter.setFont(font);
     painter.setPen(overlay.text);
-    const QRectF caption(place.left() + pad, place.top() + pad, width - 2 * pad, metrics.height());
+    const double inner = place.width() - 2 * kPad;
+    const QRectF caption(place.left() + kPad, place.top() + kPad, inner, metrics.height());
     painter.drawText(caption, Qt::AlignLeft | Qt::AlignVCenter, scale.caption);
-    const QRectF bar(place.left() + pad, caption.bottom() + pad / 2, width - 2 * pad, barHeight);
+    const QRectF bar(place.left() + kPad, caption.bottom() + kPad / 2, inner, kBarHeight);
     QLinearGradient gradient(bar.topLeft(), bar.topRight());
     for (int i = 0; i <= 16; ++i) {
         const float t = static_cast<float>(i) / 16.0F;
@@ -133,9 +133,40 @@ void paintColourScale(QPainter& painter, const ViewOverlay& overlay, const QFont
     painter.setBrush(gradient);
     painter.drawRect(bar);
     painter.setPen(overlay.text);
-    const QRectF ends(bar.left(), bar.bottom() + pad / 2, bar.width(), metrics.height());
+    const QRectF ends(bar.left(), bar.bottom() + kPad / 2, bar.width(), metrics.height());
     painter.drawText(ends, Qt::AlignLeft | Qt::AlignTop, QString::number(scale.minimum, 'g', 4));
     painter.drawText(ends, Qt::AlignRight | Qt::AlignTop, QString::number(scale.maximum, 'g', 4));
+}
+
+QSizeF legendSize(const std::vector<LegendEntry>& legend, const QFontMetricsF& metrics) {
+    const double row = metrics.height() + 4.0, swatch = metrics.height() - 2.0;
+    double textWidth = 0.0;
+    for (const LegendEntry& e : legend) {
+        textWidth = std::max(textWidth, metrics.horizontalAdvance(e.text));
+    }
+    return {kPad * 3 + swatch + textWidth + 2.0,
+            kPad * 2 + row * static_cast<double>(legend.size()) - 4.0};
+}
+
+void drawLegend(QPainter& painter, const ViewOverlay& overlay, const QFont& font,
+                const QRectF& box) {
+    const QFontMetricsF metrics(font);
+    const double row = metrics.height() + 4.0, swatch = metrics.height() - 2.0;
+    painter.setFont(font);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(panelColour(overlay));
+    painter.drawRoundedRect(box, 4.0, 4.0);
+    double y = box.top() + kPad;
+    for (const LegendEntry& e : overlay.legend) {
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(QColor::fromRgbF(e.color.r, e.color.g, e.color.b));
+        painter.drawRect(QRectF(box.left() + kPad, y + 1.0, swatch, swatch));
+        painter.setPen(overlay.text);
+        painter.drawText(
+            QRectF(box.left() + 2 * kPad + swatch, y, box.width() - 3 * kPad - swatch, row),
+            Qt::AlignLeft | Qt::AlignTop, e.text);
+        y += row;
+    }
 }
 
 }  // namespace
@@ -221,7 +252,15 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
     return overlay;
 }
 
+double exportTextScale(int height) { return std::max(1.0, height / kReferenceHeight); }
+
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio) {
+    paintOverlay(painter, overlay, pixelRatio,
+                 QSizeF(painter.device()->width(), painter.device()->height()));
+}
+
+void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
+                  QSizeF logicalSize) {
     if (overlay.labels.empty() && overlay.legend.empty() && overlay.message.isEmpty() &&
         overlay.title.isEmpty()) {
         return;
@@ -234,46 +273,69 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     font.setPointSizeF(9.0);
     QFont titleFont = font;
     titleFont.setBold(true);
-    // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
-    // placed keeps its place and later ones that would overlap it are left out.
-    // Titles first: where space is short, a title says more than one tick value; then the
-    // vertical levels (OverlayLabel::priority).
-    std::vector<const OverlayLabel*> order;
-    for (const OverlayLabel& label : overlay.labels) order.push_back(&label);
-    std::stable_sort(order.begin(), order.end(), [](const OverlayLabel* a, const OverlayLabel* b) {
-        return a->priority < b->priority;
-    });
+    const QFontMetricsF metrics(font);
+    const QRectF dataBox = overlay.box.isEmpty()
+                               ? QRectF()
+                               : QRectF(overlay.box.topLeft() * scale, overlay.box.size() * scale);
+    // Panels are placed first, then the labels around them: the title line (centred at the
+    // top, elided when the picture is narrower), the legend in a corner clear of the data box,
+    // the floor's colour bar in another corner clear of both (left out when none is).
     std::vector<QRectF> placed;
-    // The title line: centred at the top, elided when the picture is narrower than it; the
-    // labels keep clear of it and the legend starts below it.
-    double legendTop = 10.0;
+    double panelTop = kMargin;
     if (!overlay.title.isEmpty()) {
         QFont heading = font;
         heading.setPointSizeF(10.5);
         heading.setBold(true);
         painter.setFont(heading);
-        const QFontMetricsF metrics(heading);
-        const double width = painter.device()->width();
-        const QString text = metrics.elidedText(overlay.title, Qt::ElideMiddle, width - 20.0);
-        const QRectF rect(10.0, 6.0, width - 20.0, metrics.height());
+        const QFontMetricsF headingMetrics(heading);
+        const double width = logicalSize.width() - 2 * kMargin;
+        const QString text = headingMetrics.elidedText(overlay.title, Qt::ElideMiddle, width);
+        const QRectF rect(kMargin, 6.0, width, headingMetrics.height());
         painter.setPen(overlay.text);
         painter.drawText(rect, Qt::AlignHCenter | Qt::AlignTop, text);
         placed.push_back(rect);
-        legendTop = rect.bottom() + 6.0;
+        panelTop = rect.bottom() + 6.0;
     }
+    QRectF legendRect;
+    if (!overlay.legend.empty()) {
+        legendRect = legendPlace(legendSize(overlay.legend, metrics), panelTop, dataBox,
+                                 logicalSize, kMargin);
+        placed.push_back(legendRect);
+    }
+    QRectF barRect;
+    if (overlay.floorScale) {
+        const QSizeF size = colourScaleSize(*overlay.floorScale, metrics);
+        const QRectF taken = legendRect.isEmpty() ? dataBox
+                             : dataBox.isEmpty()  ? legendRect
+                                                  : dataBox.united(legendRect);
+        barRect = legendPlace(size, panelTop, dataBox, logicalSize, kMargin);
+        if (!legendRect.isEmpty() && barRect.intersects(legendRect)) {
+            barRect = legendPlace(size, panelTop, taken, logicalSize, kMargin);
+        }
+        if (!legendRect.isEmpty() && barRect.intersects(legendRect)) barRect = QRectF();
+        if (!barRect.isEmpty()) placed.push_back(barRect);
+    }
+    // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
+    // placed keeps its place and later ones that would overlap it are left out. Titles
+    // first: where space is short, a title says more than one tick value; then the vertical
+    // levels (OverlayLabel::priority).
+    std::vector<const OverlayLabel*> order;
+    for (const OverlayLabel& label : overlay.labels) order.push_back(&label);
+    std::stable_sort(order.begin(), order.end(), [](const OverlayLabel* a, const OverlayLabel* b) {
+        return a->priority < b->priority;
+    });
     for (const OverlayLabel* entry : order) {
         const OverlayLabel& label = *entry;
         painter.setFont(label.title ? titleFont : font);
-        const QFontMetricsF metrics(painter.font());
-        const QSizeF size = metrics.size(Qt::TextSingleLine, label.text);
+        const QSizeF size = QFontMetricsF(painter.font()).size(Qt::TextSingleLine, label.text);
         // The anchor sits on the label's side facing the box: a label pushed right starts at
         // the anchor, one pushed left ends there, and likewise vertically.
         const glm::vec2 p = label.pixel * scale;
         const double x = p.x - 0.5 * size.width() * (1.0 - label.direction.x);
         const double y = p.y - 0.5 * size.height() * (1.0 - label.direction.y);
         // Kept inside the picture: a title beside a box edge near the border would be cut.
-        const double maxX = painter.device()->width() - size.width() - 2.0;
-        const double maxY = painter.device()->height() - size.height() - 2.0;
+        const double maxX = logicalSize.width() - size.width() - 2.0;
+        const double maxY = logicalSize.height() - size.height() - 2.0;
         const QRectF rect(QPointF(std::clamp(x, 2.0, std::max(2.0, maxX)),
                                   std::clamp(y, 2.0, std::max(2.0, maxY))),
                           size);
@@ -290,51 +352,11 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         large.setPointSizeF(12.0);
         painter.setFont(large);
         painter.setPen(overlay.text);
-        painter.drawText(QRectF(QPointF(0.0, 0.0),
-                                QSizeF(painter.device()->width(), painter.device()->height())),
-                         Qt::AlignCenter | Qt::TextWordWrap, overlay.message);
+        painter.drawText(QRectF(QPointF(0.0, 0.0), logicalSize), Qt::AlignCenter | Qt::TextWordWrap,
+                         overlay.message);
     }
-    QRectF legendRect;
-    if (!overlay.legend.empty()) {
-        painter.setFont(font);
-        const QFontMetricsF metrics(font);
-        const double row = metrics.height() + 4.0, swatch = metrics.height() - 2.0;
-        double textWidth = 0.0;
-        for (const LegendEntry& e : overlay.legend) {
-            textWidth = std::max(textWidth, metrics.horizontalAdvance(e.text));
-        }
-        const double margin = 10.0, pad = 6.0;
-        const QSizeF size(pad * 3 + swatch + textWidth,
-                          pad * 2 + row * static_cast<double>(overlay.legend.size()) - 4.0);
-        legendRect =
-            legendPlace(size, legendTop,
-                        overlay.box.isEmpty()
-                            ? QRectF()
-                            : QRectF(overlay.box.topLeft() * scale, overlay.box.size() * scale),
-                        QSizeF(painter.device()->width(), painter.device()->height()), margin);
-        const QRectF box = legendRect;
-        QColor panel =
-            overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(panel);
-        painter.drawRoundedRect(box, 4.0, 4.0);
-        double y = box.top() + pad;
-        for (const LegendEntry& e : overlay.legend) {
-            painter.setPen(Qt::NoPen);
-            painter.setBrush(QColor::fromRgbF(e.color.r, e.color.g, e.color.b));
-            painter.drawRect(QRectF(box.left() + pad, y + 1.0, swatch, swatch));
-            painter.setPen(overlay.text);
-            painter.drawText(QRectF(box.left() + 2 * pad + swatch, y, textWidth + 2.0, row),
-                             Qt::AlignLeft | Qt::AlignTop, e.text);
-            y += row;
-        }
-    }
-    if (overlay.floorScale) {
-        const QRectF dataBox = overlay.box.isEmpty() ? QRectF()
-                                                     : QRectF(overlay.box.topLeft() * scale,
-                                                              overlay.box.size() * scale);
-        paintColourScale(painter, overlay, font, legendTop, dataBox, legendRect);
-    }
+    if (!legendRect.isEmpty()) drawLegend(painter, overlay, font, legendRect);
+    if (!barRect.isEmpty()) drawColourScale(painter, overlay, font, barRect);
     painter.restore();
 }
 

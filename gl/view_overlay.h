@@ -6,6 +6,7 @@
 
 #include <QColor>
 #include <QRectF>
+#include <QSizeF>
 #include <QString>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -76,6 +77,16 @@ ViewOverlay computeOverlay(const OverlayInput& input);
 // Paints the overlay on a device `logicalSize` big whose pixels are `pixelRatio` device pixels
 // (labels were computed in device pixels).
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio);
+// The same onto a picture `logicalSize` big in the painter's coordinates: an export drawn with
+// painter.scale(s, s) and pixelRatio s has text and spacing s times larger, as the view's at
+// that zoom (a picture twice the view's size looks like the view at 2x).
+void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
+                  QSizeF logicalSize);
+
+// The text scale for a picture of this height drawn with no window to compare it with: 1 up
+// to kReferenceHeight pixels, then in proportion.
+inline constexpr double kReferenceHeight = 800.0;
+double exportTextScale(int height);
 
 // Formats a tick value compactly: no trailing zeros, no exponent for everyday magnitudes.
 QString formatTick(double value);

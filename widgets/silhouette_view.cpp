@@ -129,19 +129,26 @@ void SilhouetteView::paintGL() {
 
 QImage SilhouetteView::renderImage(const QSize& size) {
     if (!m_renderer.isInitialized() || size.isEmpty()) return {};
+    // Text and lines grow with the picture's size by the rule `ensil render` uses, so a
+    // screenshot and the same project rendered headless are the same picture.
+    const double scale = gl::exportTextScale(size.height());
     makeCurrent();
     QImage image;
     {
         QOpenGLFramebufferObject target(size, QOpenGLFramebufferObject::CombinedDepthStencil);
         m_renderer.setResolutionScale(1.0F);  // pictures are always full resolution
+        m_renderer.setLineScale(static_cast<float>(scale));
         m_renderer.render(target.handle(), size.width(), size.height());
+        m_renderer.setLineScale(1.0F);
         image = target.toImage();
     }
     // The picks answer for the window's frame, not this one: draw the window's again.
     doneCurrent();
     update();
     QPainter painter(&image);
-    gl::paintOverlay(painter, m_renderer.overlay(size.width(), size.height()), 1.0);
+    painter.scale(scale, scale);
+    gl::paintOverlay(painter, m_renderer.overlay(size.width(), size.height()), scale,
+                     QSizeF(size.width() / scale, size.height() / scale));
     return image;
 }
 

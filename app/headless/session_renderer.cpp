@@ -92,6 +92,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
 
     auto* f = QOpenGLContext::currentContext()->functions();
     std::vector<double> times;
+    renderer.setLineScale(static_cast<float>(gl::exportTextScale(request.height)));
     for (int i = 0; i < std::max(1, request.frames); ++i) {
         QElapsedTimer timer;
         timer.start();
@@ -107,9 +108,13 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     constexpr int kDotsPerMeter = 3780;  // 96 dpi
     result.image.setDotsPerMeterX(kDotsPerMeter);
     result.image.setDotsPerMeterY(kDotsPerMeter);
-    if (state.render.showAxes || state.render.showLegend) {
+    if (state.render.showAxes || state.render.showLegend || state.render.showTitle) {
+        // Larger pictures get larger text, as the view would show them zoomed.
+        const double scale = gl::exportTextScale(request.height);
         QPainter painter(&result.image);
-        gl::paintOverlay(painter, renderer.overlay(request.width, request.height), 1.0);
+        painter.scale(scale, scale);
+        gl::paintOverlay(painter, renderer.overlay(request.width, request.height), scale,
+                         QSizeF(request.width / scale, request.height / scale));
     }
     result.drawn = state;
     result.drawn.isovalue = iso;

@@ -216,3 +216,34 @@ TEST(RenderCommand, TheTopViewIsTheNorthUpOrthographicMapAndUnknownViewsAreRefus
                          "south, east, west, default"))
         << bad.err.toStdString();
 }
+
+// A picture twice as large looks like the view at 2x: the title line's text is about twice as
+// tall at 2560 x 1600 as at 1280 x 800 (gl::exportTextScale), not the same 11 pixels.
+TEST(RenderCommand, TextGrowsWithThePicturesSize) {
+    test::TempDir dir;
+    const auto titleHeight = [&](const QString& size) {
+        const QString png = QString::fromStdString(dir.file(size.toStdString() + ".png"));
+        const test::EnsilRun r = test::runEnsil(
+            {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
+             "260", "--out", png, "--size", size, "--frames", "1", "--no-cache", "--no-legend",
+             "--no-axis-labels"});
+        EXPECT_EQ(r.code, 0) << r.err.toStdString();
+        const QImage image(png);
+        // Rows of the top band holding the title's light text.
+        int first = -1, last = -1;
+        for (int y = 0; y < image.height() / 8; ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                if (image.pixelColor(x, y).lightness() > 170) {
+                    if (first < 0) first = y;
+                    last = y;
+                    break;
+                }
+            }
+        }
+        return first < 0 ? 0 : last - first + 1;
+    };
+    const int small = titleHeight("1280x800");
+    const int large = titleHeight("2560x1600");
+    ASSERT_GT(small, 5) << "a title is drawn";
+    EXPECT_NEAR(static_cast<double>(large) / small, 2.0, 0.35);
+}
