@@ -2,6 +2,7 @@
 
 #include "data/error.h"
 #include "preprocessing/column_maximum.h"
+#include "preprocessing/default_isovalue.h"
 
 namespace ensil::app {
 
@@ -19,6 +20,7 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
     }
     auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
         *ensemble, stop, [&](double f) { data::report(progress, 0.5 + 0.45 * f); }));
+    overview.defaultIsovalue = prep::defaultIsovalue(*ensemble, overview.statistics);
     overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, moments->mean);
     overview.mapLines = std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble->grid, ensemble->gridMapping));

@@ -19,6 +19,7 @@ namespace ensil::app {
 struct EnsembleOverview {
     std::shared_ptr<const data::Ensemble> ensemble;
     prep::FieldStatistics statistics;
+    float defaultIsovalue = 0.0F;  // where the isovalue starts (preprocessing/default_isovalue.h)
     std::shared_ptr<const prep::EnsembleMoments> moments;  // mean member and variance
     std::vector<float> meanColumnMaximum;                  // nx * ny
     // Coastlines, borders and graticule in the grid's coordinates (none without geography).

@@ -422,10 +422,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const prep::FieldStatistics& stats = m_overview->statistics;
     const int members = static_cast<int>(e.memberCount());
     m_toolbar->setMemberCount(members, std::min(5, members));
-    m_toolbar->setIsovalueRange(
-        stats.minimum, stats.maximum,
-        prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum),
-        QString::fromStdString(e.units));
+    m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, m_overview->defaultIsovalue,
+                                QString::fromStdString(e.units));
     m_toolbar->setIsovalueHistogram(stats.histogram);
     updatePlaneBox();
     {

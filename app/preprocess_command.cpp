@@ -18,6 +18,7 @@
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/clustering.h"
+#include "preprocessing/default_isovalue.h"
 #include "preprocessing/field_statistics.h"
 #include "widgets/session/setting_options.h"
 
@@ -210,7 +211,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
         const prep::FieldStatistics stats =
             prep::computeFieldStatistics(r.ensemble, prep::kIsovalueHistogramBins);
-        if (!iso) iso = prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+        if (!iso) iso = prep::defaultIsovalue(r.ensemble, stats);
         if (*iso <= stats.minimum || *iso >= stats.maximum) {
             err << "ensil preprocess: isovalue " << *iso << " is outside the values of '"
                 << QString::fromStdString(r.ensemble.variable) << "' (" << stats.minimum << " .. "

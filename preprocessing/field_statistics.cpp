@@ -55,19 +55,4 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
     return stats;
 }
 
-float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum) {
-    const std::uint64_t total =
-        std::accumulate(histogram.begin(), histogram.end(), std::uint64_t{0});
-    if (total == 0 || histogram.empty()) return 0.5F * (minimum + maximum);
-    std::uint64_t running = 0;
-    for (std::size_t b = 0; b < histogram.size(); ++b) {
-        running += histogram[b];
-        if (static_cast<double>(running) >= 0.9 * static_cast<double>(total)) {
-            const double t = (static_cast<double>(b) + 0.5) / static_cast<double>(histogram.size());
-            return static_cast<float>(minimum + t * (maximum - minimum));
-        }
-    }
-    return maximum;
-}
-
 }  // namespace ensil::prep

@@ -30,9 +30,5 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
                                        const std::stop_token& stop = {},
                                        const data::Progress& progress = {});
 
-// An isovalue worth looking at first: the 90th percentile of the values (for the demo's wind
-// speed about the paper's 30 m/s), from a histogram over [minimum, maximum]; the middle of the
-// range when the histogram is empty.
-float defaultIsovalue(const std::vector<std::uint64_t>& histogram, float minimum, float maximum);
 
 }  // namespace ensil::prep

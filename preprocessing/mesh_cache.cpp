@@ -42,6 +42,9 @@ public:
         return value;
     }
     void getBytes(void* out, std::size_t size) {
+        // An empty mesh (a member without a surface at the isovalue) reads 0 bytes into an
+        // empty vector, whose data() may be null: memcpy from or to null is undefined even then.
+        if (size == 0) return;
         if (size > m_bytes.size() - m_offset) throw std::runtime_error("truncated entry");
         std::memcpy(out, m_bytes.data() + m_offset, size);
         m_offset += size;
@@ -111,6 +114,10 @@ IsovalueMeshes deserialise(const std::vector<char>& payload) {
     s.vertices = r.get<std::uint64_t>();
     s.worstErrorCells = r.get<float>();
     s.mean = getMesh(r);
+    // Every mesh takes at least its bounds, scale and two counts: a member count beyond what
+    // the entry can hold is not believed (nor reserved for).
+    constexpr std::size_t kMeshHeadBytes = 7 * sizeof(float) + 2 * sizeof(std::uint64_t);
+    if (members > r.left() / kMeshHeadBytes) throw std::runtime_error("members beyond the entry");
     s.members.reserve(members);
     for (std::uint32_t m = 0; m < members; ++m) s.members.push_back(getMesh(r));
     if (!r.atEnd()) throw std::runtime_error("trailing bytes");

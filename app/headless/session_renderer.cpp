@@ -15,6 +15,7 @@
 #include "gl/surface_format.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/column_maximum.h"
+#include "preprocessing/default_isovalue.h"
 #include "preprocessing/field_statistics.h"
 #include "widgets/session/member_appearance.h"
 #include "widgets/session/project_file.h"
@@ -33,8 +34,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
                                                : data::openEnsemble(state.data);
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
-    const float iso = state.isovalue.value_or(
-        prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum));
+    const float iso = state.isovalue.value_or(prep::defaultIsovalue(ensemble, stats));
     if (iso <= stats.minimum || iso >= stats.maximum) {
         throw session::ProjectError("isovalue " + std::to_string(iso) + " is outside the values (" +
                                     std::to_string(stats.minimum) + " .. " +

@@ -1,12 +1,11 @@
-// The isovalue the workbench starts a variable at (the 90th percentile of its values, from the
-// isovalue control's histogram), computed here the way the workbench does, for the commands'
-// tests to compare against.
+// The isovalue the workbench starts a variable at (preprocessing/default_isovalue.h), computed
+// here the way the workbench does, for the commands' tests to compare against.
 #pragma once
 
 #include <string>
 
 #include "data/ensemble_reader.h"
-#include "preprocessing/field_statistics.h"
+#include "preprocessing/default_isovalue.h"
 
 namespace ensil::test {
 
@@ -14,7 +13,7 @@ inline float workbenchDefaultIsovalue(const std::string& path, const std::string
     const data::Ensemble ensemble = data::openEnsemble({{path}, variable, {}, 0});
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
-    return prep::defaultIsovalue(stats.histogram, stats.minimum, stats.maximum);
+    return prep::defaultIsovalue(ensemble, stats);
 }
 
 }  // namespace ensil::test

@@ -1,0 +1,91 @@
+// The default isovalue (METHODS.md section 14): on every real file and variable a user opens,
+// most members have a surface there, checked by meshing them; and the rule picks what it says.
+#include "preprocessing/default_isovalue.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "data/display_frame.h"
+#include "data/ensemble_reader.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/isosurface_pipeline.h"
+
+using namespace ensil;
+
+namespace {
+
+struct RealCase {
+    const char* file;
+    const char* variable;
+    const char* memberDim;
+};
+
+// Every file in tests/data/real that holds a 3D ensemble, with each of its variables.
+constexpr RealCase kCases[] = {
+    {"era5_eda_members.nc", "t", ""},         {"era5_eda_members.nc", "z", ""},
+    {"eraint_uvz.nc", "z", "month"},          {"eraint_uvz.nc", "u", "month"},
+    {"eraint_uvz.nc", "wind_speed", "month"}, {"uk_hires.nc", "air_potential_temperature", "time"},
+    {"contour.cdf", "T", "frtime"},           {"contour.cdf", "Z", "frtime"},
+};
+
+}  // namespace
+
+TEST(DefaultIsovalue, OnEveryRealFileMostMembersHaveASurfaceThere) {
+    for (const RealCase& c : kCases) {
+        const data::Ensemble e =
+            data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + c.file},
+                                .variable = c.variable,
+                                .memberDimension = c.memberDim});
+        const prep::FieldStatistics stats =
+            prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins);
+        const float iso = prep::defaultIsovalue(e, stats);
+        prep::PipelineOptions options;
+        options.isovalue = iso;
+        const prep::IsovalueMeshes meshes = prep::buildIsovalueMeshes(
+            e, prep::computeEnsembleMoments(e), data::DisplayFrame(e.grid, 1.0F), options);
+        // Independently of the rule's sample: every point of every member, and the meshes.
+        std::size_t withSurface = 0;
+        for (std::size_t m = 0; m < e.memberCount(); ++m) {
+            std::size_t above = 0, valid = 0;
+            for (const float v : e.members[m].values) {
+                if (std::isnan(v)) continue;
+                ++valid;
+                above += v >= iso ? 1 : 0;
+            }
+            const double share = static_cast<double>(above) / static_cast<double>(valid);
+            const bool surface = !meshes.members[m].indices.empty() && share >= prep::kLeastShare &&
+                                 share <= 1.0 - prep::kLeastShare;
+            withSurface += surface ? 1 : 0;
+        }
+        EXPECT_GE(static_cast<double>(withSurface), prep::kMostMembers * e.memberCount())
+            << c.file << " " << c.variable << " at " << iso << ": " << withSurface << " of "
+            << e.memberCount();
+    }
+}
+
+TEST(DefaultIsovalue, PicksTheHighestPercentileNearTheLargestDisagreementAmongEligibleOnes) {
+    const data::Ensemble e = data::openEnsemble(
+        {.paths = {std::string(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc")}, .variable = "t"});
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins);
+    const auto candidates = prep::isovalueCandidates(e, stats);
+    ASSERT_EQ(candidates.size(), 10U);
+    double best = 0.0;
+    for (const auto& c : candidates) {
+        if (c.membersWithSurface >= prep::kMostMembers) best = std::max(best, c.disagreement);
+    }
+    ASSERT_GT(best, 0.0);
+    const float chosen = prep::defaultIsovalue(e, stats);
+    const auto it = std::find_if(candidates.begin(), candidates.end(),
+                                 [&](const auto& c) { return c.isovalue == chosen; });
+    ASSERT_NE(it, candidates.end());
+    EXPECT_GE(it->membersWithSurface, prep::kMostMembers);
+    EXPECT_GE(it->disagreement, 0.9 * best);
+    for (auto later = it + 1; later != candidates.end(); ++later) {
+        EXPECT_FALSE(later->membersWithSurface >= prep::kMostMembers &&
+                     later->disagreement >= 0.9 * best)
+            << "a higher percentile qualified: " << later->percentile;
+    }
+}
