@@ -10,7 +10,8 @@ namespace {
 // Enough points for the shares to be stable (a few per cent), few enough to take
 // milliseconds on the largest grids.
 constexpr std::size_t kSampledPoints = 20000;
-constexpr double kNearBest = 0.9;
+constexpr double kNearBest = 0.5;
+constexpr int kPaperPercentile = 90;
 
 // The value below which `fraction` of the histogram's count lies (its bin's centre).
 float percentile(const std::vector<std::uint64_t>& histogram, float minimum, float maximum,
@@ -85,11 +86,15 @@ float defaultIsovalue(const data::Ensemble& e, const FieldStatistics& s) {
     for (const IsovalueCandidate& c : candidates) {
         if (c.membersWithSurface >= kMostMembers) best = std::max(best, c.disagreement);
     }
+    // Nearest the paper's percentile first, the higher of two equally near.
     const IsovalueCandidate* chosen = nullptr;
     for (const IsovalueCandidate& c : candidates) {
-        if (c.membersWithSurface >= kMostMembers && c.disagreement >= kNearBest * best) {
-            chosen = &c;  // the highest such percentile: later ones overwrite
-        }
+        if (c.membersWithSurface < kMostMembers || c.disagreement < kNearBest * best) continue;
+        const auto distance = [](const IsovalueCandidate& x) {
+            return 2 * std::abs(x.percentile - kPaperPercentile) -
+                   (x.percentile > kPaperPercentile ? 1 : 0);
+        };
+        if (chosen == nullptr || distance(c) < distance(*chosen)) chosen = &c;
     }
     if (chosen == nullptr || best <= 0.0) return percentile(s.histogram, s.minimum, s.maximum, 0.9);
     return chosen->isovalue;

@@ -2,10 +2,10 @@
 // differ (METHODS.md section 14). Candidates are the 50th to 95th percentiles of the values in
 // steps of 5; for each, on an even sample of the grid's points, it counts the members with at
 // least 1 % of their points on each side of it (they have a surface) and measures how much the
-// members disagree about which side each point is on. Of the candidates where at least 80 % of the
-// members have a surface, the highest percentile whose disagreement is within 90 % of the
-// largest wins: it stays near the paper's choice (the 90th percentile, about 30 m/s for the
-// demo's wind speed) wherever that shows as much. Pure; any thread.
+// members disagree about which side each point is on. Of the candidates where at least 80 % of
+// the members have a surface and the disagreement is at least half the largest, the one nearest
+// the paper's choice wins (the 90th percentile, about 30 m/s for the demo's wind speed; of two
+// equally near, the higher). Pure; any thread.
 #pragma once
 
 #include "data/ensemble.h"
