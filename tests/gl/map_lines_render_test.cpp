@@ -9,7 +9,7 @@
 #include "data/ensemble_reader.h"
 #include "geo/map_lines.h"
 #include "gl/renderer.h"
-#include "tests/support/offscreen_gl.h"
+#include "tests/gl/renderer_fixture.h"
 
 using namespace ensil;
 
@@ -36,17 +36,16 @@ bool isLinePixel(const QColor& c) {
 
 }  // namespace
 
-class MapLinesRenderTest : public test::OffscreenGlTest {
+class MapLinesRenderTest : public test::RendererFixture {
 protected:
     static constexpr int kRadius = 2;
 
     void SetUp() override {
-        test::OffscreenGlTest::SetUp();
+        test::RendererFixture::SetUp();
         if (IsSkipped() || HasFatalFailure()) return;
         m_description = data::describeEnsemble(
             {.paths = {std::string(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc")},
              .variable = "t"});
-        m_renderer.initialize();
         m_renderer.setViewSize(kWidth, kHeight);
         m_renderer.setGrid(m_description.grid);
         m_renderer.setBackground({0.0F, 0.0F, 0.0F, 1.0F});
@@ -56,23 +55,13 @@ protected:
         m_renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
             geo::mapLinesFor(m_description.grid, m_description.gridMapping)));
     }
-    void TearDown() override {
-        if (m_renderer.isInitialized()) m_renderer.releaseGpuResources();
-        test::OffscreenGlTest::TearDown();
-    }
-    QImage draw() {
-        m_renderer.render(framebuffer(), kWidth, kHeight);
-        return grab();
-    }
     // The pixel (top-left origin) of a place on the floor; the grid's longitudes run 0..357.
     QPoint pixelOf(const Place& place) const {
         const double lon = place.lon < 0.0 ? place.lon + 360.0 : place.lon;
-        const glm::vec3 p =
+        glm::vec3 p =
             m_renderer.frame().toDisplay({lon, place.lat, m_description.grid.z().front()});
-        const glm::vec4 c = m_renderer.camera().viewProjection(float(kWidth) / kHeight) *
-                            glm::vec4(p.x, p.y, 0.0F, 1.0F);
-        return {static_cast<int>(std::floor((c.x / c.w * 0.5F + 0.5F) * kWidth)),
-                static_cast<int>(std::floor((0.5F - c.y / c.w * 0.5F) * kHeight))};
+        p.z = 0.0F;  // on the floor
+        return project(p);
     }
     static bool lineNear(const QImage& image, QPoint p) {
         for (int dy = -kRadius; dy <= kRadius; ++dy) {
@@ -85,7 +74,6 @@ protected:
     }
 
     data::EnsembleDescription m_description;
-    gl::Renderer m_renderer;
 };
 
 TEST_F(MapLinesRenderTest, KnownCoastalPlacesLieOnTheDrawnCoastlineAndInlandPlacesDoNot) {

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "data/demo_ensemble.h"
+#include "tests/gl/renderer_fixture.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/offscreen_gl.h"
 
@@ -33,33 +34,11 @@ bool colourNear(const QImage& image, QPoint p, const glm::vec4& colour, int r = 
 }
 }  // namespace
 
-class RendererTest : public test::OffscreenGlTest {
+class RendererTest : public test::RendererFixture {
 protected:
-    void SetUp() override {
-        test::OffscreenGlTest::SetUp();
-        if (IsSkipped() || HasFatalFailure()) return;
-        m_renderer.initialize();
-    }
-    void TearDown() override {
-        if (m_renderer.isInitialized()) m_renderer.releaseGpuResources();
-        test::OffscreenGlTest::TearDown();
-    }
-    QImage draw() {
-        m_renderer.render(framebuffer(), kWidth, kHeight);
-        return grab();
-    }
-    // Pixel position (top-left origin) of a display-space point.
-    QPoint project(const glm::vec3& p) const {
-        const glm::vec4 c =
-            m_renderer.camera().viewProjection(float(kWidth) / kHeight) * glm::vec4(p, 1.0F);
-        const float x = (c.x / c.w * 0.5F + 0.5F) * kWidth;
-        const float y = (1.0F - (c.y / c.w * 0.5F + 0.5F)) * kHeight;
-        return {static_cast<int>(std::floor(x)), static_cast<int>(std::floor(y))};
-    }
     data::DemoEnsemble demo() const {
         return data::makeDemoEnsemble({.members = 3, .nx = 48, .ny = 24, .nz = 8, .seed = 5});
     }
-    gl::Renderer m_renderer;
 };
 
 TEST_F(RendererTest, WithoutDataEveryPixelIsBackground) {

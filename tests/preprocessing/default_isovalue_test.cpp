@@ -30,16 +30,27 @@ constexpr RealCase kCases[] = {
     {"contour.cdf", "T", "frtime"},           {"contour.cdf", "Z", "frtime"},
 };
 
+struct Opened {
+    data::Ensemble ensemble;
+    prep::FieldStatistics statistics;
+};
+
+Opened open(const RealCase& c) {
+    Opened o{data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + c.file},
+                                 .variable = c.variable,
+                                 .memberDimension = c.memberDim}),
+             {}};
+    o.statistics = prep::computeFieldStatistics(o.ensemble, prep::kIsovalueHistogramBins);
+    return o;
+}
+
 }  // namespace
 
 TEST(DefaultIsovalue, OnEveryRealFileMostMembersHaveASurfaceThere) {
     for (const RealCase& c : kCases) {
-        const data::Ensemble e =
-            data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + c.file},
-                                .variable = c.variable,
-                                .memberDimension = c.memberDim});
-        const prep::FieldStatistics stats =
-            prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins);
+        const Opened opened = open(c);
+        const data::Ensemble& e = opened.ensemble;
+        const prep::FieldStatistics& stats = opened.statistics;
         const float iso = prep::defaultIsovalue(e, stats);
         prep::PipelineOptions options;
         options.isovalue = iso;
@@ -67,12 +78,9 @@ TEST(DefaultIsovalue, OnEveryRealFileMostMembersHaveASurfaceThere) {
 
 TEST(DefaultIsovalue, PicksTheEligibleCandidateNearestTheNinetiethPercentile) {
     for (const RealCase& c : kCases) {
-        const data::Ensemble e =
-            data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + c.file},
-                                .variable = c.variable,
-                                .memberDimension = c.memberDim});
-        const prep::FieldStatistics stats =
-            prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins);
+        const Opened opened = open(c);
+        const data::Ensemble& e = opened.ensemble;
+        const prep::FieldStatistics& stats = opened.statistics;
         const auto candidates = prep::isovalueCandidates(e, stats);
         ASSERT_EQ(candidates.size(), 10U);
         double best = 0.0;
