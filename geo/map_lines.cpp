@@ -44,20 +44,33 @@ double graticuleStep(double extent) {
     return 30.0;
 }
 
-std::vector<LonLatLine> graticule(const LonLatBounds& b) {
+std::string degrees(double value, char positive, char negative) {
+    const long rounded = std::lround(std::abs(value));
+    return std::to_string(rounded) + "\u00b0" +
+           (rounded == 0 ? "" : std::string(1, value >= 0.0 ? positive : negative));
+}
+
+struct GraticuleLine {
+    LonLatLine points;
+    std::string label;
+};
+
+std::vector<GraticuleLine> graticule(const LonLatBounds& b) {
     const double step = graticuleStep(b.extent());
     // Sampled finely enough that a meridian bending across a rotated grid stays smooth.
     const double sample = step / 32.0;
-    std::vector<LonLatLine> lines;
+    std::vector<GraticuleLine> lines;
     for (double lon = std::ceil(b.lonMin / step) * step; lon <= b.lonMax; lon += step) {
-        LonLatLine& line = lines.emplace_back();
+        lines.push_back({{}, degrees(std::remainder(lon, 360.0), 'E', 'W')});
+        LonLatLine& line = lines.back().points;
         for (double lat = std::max(-89.9, b.latMin); lat <= std::min(89.9, b.latMax) + sample;
              lat += sample) {
             line.emplace_back(lon, std::min(lat, b.latMax));
         }
     }
     for (double lat = std::ceil(b.latMin / step) * step; lat <= b.latMax; lat += step) {
-        LonLatLine& line = lines.emplace_back();
+        lines.push_back({{}, degrees(lat, 'N', 'S')});
+        LonLatLine& line = lines.back().points;
         for (double lon = b.lonMin; lon <= b.lonMax + sample; lon += sample) {
             line.emplace_back(std::min(lon, b.lonMax), lat);
         }
@@ -65,20 +78,17 @@ std::vector<LonLatLine> graticule(const LonLatBounds& b) {
     return lines;
 }
 
-void addLines(const std::vector<LonLatLine>& lines, MapLineKind kind, const data::Grid& grid,
-              const MapProjection& projection, std::vector<MapLine>& out) {
+void addLine(const LonLatLine& line, MapLineKind kind, const std::string& label,
+             const data::Grid& grid, const MapProjection& projection, std::vector<MapLine>& out) {
     const glm::dvec2 lo{grid.x().minValue(), grid.y().minValue()};
     const glm::dvec2 hi{grid.x().maxValue(), grid.y().maxValue()};
     double longestStep = std::max(hi.x - lo.x, hi.y - lo.y);
     if (projection.xWraps()) longestStep = std::min(longestStep, 180.0);
+    std::vector<glm::dvec2> points = line;
+    projection.toGrid(points);
     std::vector<std::vector<glm::dvec2>> pieces;
-    for (const LonLatLine& line : lines) {
-        std::vector<glm::dvec2> points = line;
-        projection.toGrid(points);
-        pieces.clear();
-        clipToRectangle(points, lo, hi, longestStep, pieces);
-        for (auto& piece : pieces) out.push_back(MapLine{kind, std::move(piece)});
-    }
+    clipToRectangle(points, lo, hi, longestStep, pieces);
+    for (auto& piece : pieces) out.push_back(MapLine{kind, std::move(piece), label});
 }
 
 }  // namespace
@@ -120,12 +130,16 @@ std::vector<MapLine> mapLinesFor(const data::Grid& grid, const MapProjection& pr
     const std::optional<LonLatBounds> bounds = lonLatBounds(grid, projection);
     if (!bounds) return lines;
     const MapScale scale = scaleForExtent(bounds->extent());
-    addLines(naturalEarthLines(MapFeature::Coastlines, scale), MapLineKind::Coastline, grid,
-             projection, lines);
-    addLines(naturalEarthLines(MapFeature::Borders, scale), MapLineKind::Border, grid, projection,
-             lines);
+    for (const LonLatLine& line : naturalEarthLines(MapFeature::Coastlines, scale)) {
+        addLine(line, MapLineKind::Coastline, {}, grid, projection, lines);
+    }
+    for (const LonLatLine& line : naturalEarthLines(MapFeature::Borders, scale)) {
+        addLine(line, MapLineKind::Border, {}, grid, projection, lines);
+    }
     if (projection.kind() != MapProjection::Kind::LonLat) {
-        addLines(graticule(*bounds), MapLineKind::Graticule, grid, projection, lines);
+        for (const GraticuleLine& line : graticule(*bounds)) {
+            addLine(line.points, MapLineKind::Graticule, line.label, grid, projection, lines);
+        }
     }
     return lines;
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glm/vec2.hpp>
+#include <string>
 #include <vector>
 
 #include "data/grid.h"
@@ -17,6 +18,9 @@ enum class MapLineKind { Coastline, Border, Graticule };
 struct MapLine {
     MapLineKind kind = MapLineKind::Coastline;
     std::vector<glm::dvec2> points;  // grid axis coordinates, inside the grid's x-y rectangle
+    // A graticule line's true longitude or latitude ("10°W", "54°N"), written where it
+    // enters the grid; empty for coastlines and borders.
+    std::string label;
 };
 
 // Every coastline, border and (rotated or projected grids only: a longitude/latitude grid's

@@ -133,6 +133,15 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     in.showAxes = m_scene.settings.showAxes;
     in.showLegend = m_scene.settings.showLegend;
     if (m_scene.settings.showTitle) in.title = m_title;
+    if (m_scene.settings.showGraticule && m_scene.mapLines && m_scene.hasGrid) {
+        for (const geo::MapLine& line : *m_scene.mapLines) {
+            if (line.label.empty() || line.points.empty()) continue;
+            glm::vec3 p = m_scene.frame.toDisplay(
+                {line.points.front().x, line.points.front().y, m_scene.grid.z().front()});
+            p.z = m_scene.frame.boxMin().z;
+            in.floorLabels.emplace_back(p, QString::fromStdString(line.label));
+        }
+    }
     if (m_scene.settings.showLegend && m_scene.hasGrid &&
         m_scene.floor.values.size() == m_scene.grid.nx() * m_scene.grid.ny() &&
         !m_scene.floor.caption.isEmpty()) {

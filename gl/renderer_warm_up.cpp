@@ -41,7 +41,7 @@ void Renderer::warmUp() {
                        data::makeUniformAxis("z", "", 0, 1, 2)));
     setFloorMap(FloorMap::spanning({0.0F, 1.0F, 2.0F, 3.0F}));
     setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
-        std::vector<geo::MapLine>{{geo::MapLineKind::Coastline, {{0.1, 0.1}, {0.9, 0.9}}}}));
+        std::vector<geo::MapLine>{{geo::MapLineKind::Coastline, {{0.1, 0.1}, {0.9, 0.9}}, {}}}));
     auto set = std::make_shared<data::MeshSet>();
     set->members = {triangle(), triangle()};
     set->mean = triangle();

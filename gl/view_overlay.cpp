@@ -227,6 +227,13 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
             }
         }
         labelAxis(2, left, in, project, centrePx, overlay.labels);
+        for (const auto& [point, text] : in.floorLabels) {
+            const auto [pixel, visible] = project(point);
+            if (!visible) continue;
+            glm::vec2 away = pixel - centrePx;
+            away = glm::length(away) > 1e-3F ? glm::normalize(away) : glm::vec2(0.0F, 1.0F);
+            overlay.labels.push_back({pixel + 0.5F * kTickOffsetPx * away, away, text, false, 3});
+        }
     }
 
     if (in.showLegend && in.appearance != nullptr) {

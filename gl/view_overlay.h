@@ -28,7 +28,7 @@ struct OverlayLabel {
     QString text;
     bool title = false;  // an axis title rather than a tick value
     // Where labels collide the lower number is kept: titles 0, the vertical axis's ticks 1
-    // (levels are few and each one matters), the horizontal axes' ticks 2.
+    // (levels are few and each one matters), the horizontal axes' ticks 2, floor labels 3.
     int priority = 2;
 };
 
@@ -69,6 +69,9 @@ struct OverlayInput {
     bool showLegend = true;
     QString title;  // empty: none
     std::optional<ColourScale> floorScale;
+    // Labels at points on the floor (display space): the graticule's true degrees where each
+    // line enters the grid. Placed after the axes' labels, where room is left.
+    std::vector<std::pair<glm::vec3, QString>> floorLabels;
     glm::vec3 background{0.0F};
 };
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <set>
+#include <string>
 
 #include "data/ensemble_reader.h"
 
@@ -87,6 +89,17 @@ TEST(MapLines, UkHiresRotatedGridGetsTheDetailedCoastAndATrueGraticule) {
     const Opened uk = linesOf("uk_hires.nc", "time");
     ASSERT_GT(count(uk.lines, MapLineKind::Coastline), 0U);
     EXPECT_GT(count(uk.lines, MapLineKind::Graticule), 2U);
+    // Graticule lines say their true degrees; coastlines say nothing.
+    std::set<std::string> labels;
+    for (const auto& line : uk.lines) {
+        if (line.kind == MapLineKind::Graticule) {
+            labels.insert(line.label);
+        } else {
+            EXPECT_TRUE(line.label.empty());
+        }
+    }
+    EXPECT_TRUE(labels.count("54\u00b0N")) << "the 54th parallel crosses the domain";
+    EXPECT_TRUE(labels.count("4\u00b0W")) << "and the 4th meridian west";
     std::size_t coastPoints = 0;
     for (const auto& line : uk.lines) {
         if (line.kind == MapLineKind::Coastline) coastPoints += line.points.size();
