@@ -71,6 +71,15 @@ void Camera::zoom(float factor) {
         std::clamp(m_distance / std::max(factor, 1e-3F), 1e-3F * m_radius, 100.0F * m_radius);
 }
 
+void Camera::zoomToward(float factor, glm::vec2 offset, float viewportHeight) {
+    const float before = m_distance;
+    zoom(factor);
+    // At the new scale the point under the cursor sits offset * actual pixels from the
+    // centre; the scene moves back by the difference.
+    const float actual = before / m_distance;
+    pan(offset.x * (1.0F - actual), offset.y * (1.0F - actual), viewportHeight);
+}
+
 glm::vec3 Camera::eye() const {
     const float az = glm::radians(m_azimuth);
     const float el = glm::radians(m_elevation);

@@ -28,6 +28,9 @@ public:
     void orbit(float dxPixels, float dyPixels, float degreesPerPixel = 0.4F);
     void pan(float dxPixels, float dyPixels, float viewportHeight);
     void zoom(float factor);  // > 1 moves closer
+    // Zooms so the point under the cursor stays under it (a map tool's wheel): `offset` is
+    // the cursor's position from the view's centre in pixels, y down.
+    void zoomToward(float factor, glm::vec2 offset, float viewportHeight);
 
     void setAngles(float azimuthDeg, float elevationDeg);
     void setProjection(Projection p) { m_projection = p; }

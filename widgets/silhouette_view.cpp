@@ -287,7 +287,11 @@ void SilhouetteView::leaveEvent(QEvent* event) {
 void SilhouetteView::wheelEvent(QWheelEvent* event) {
     // One notch (120 units) zooms by 12 %.
     const double notches = event->angleDelta().y() / 120.0;
-    m_renderer.camera().zoom(static_cast<float>(std::pow(1.12, notches)));
+    // Toward the cursor, so what a user points at stays where it is.
+    const QPointF offset = event->position() - QPointF(width() / 2.0, height() / 2.0);
+    m_renderer.camera().zoomToward(static_cast<float>(std::pow(1.12, notches)),
+                                   {static_cast<float>(offset.x()), static_cast<float>(offset.y())},
+                                   static_cast<float>(height()));
     m_moving = true;
     m_settleTimer.start();
     update();

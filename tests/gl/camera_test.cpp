@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec4.hpp>
 
 using ensil::gl::Camera;
@@ -93,4 +94,40 @@ TEST(Camera, FrameBoxFillsTheViewWithAFlatBoxAndKeepsEveryCornerIn) {
             EXPECT_LT(cam.distance(), 0.8F * sphereDistance) << "nearer than the sphere";
         }
     }
+}
+
+// The wheel zooms toward the cursor: a point on the target's plane under a pixel off the
+// centre stays under that pixel, in perspective and orthographic views; zooming at the centre
+// keeps the target.
+TEST(Camera, ZoomTowardKeepsThePointUnderTheCursorInPlace) {
+    for (const Camera::Projection projection :
+         {Camera::Projection::Perspective, Camera::Projection::Orthographic}) {
+        Camera cam;
+        cam.setProjection(projection);
+        cam.fit({0.5F, 0.5F, 0.1F}, 0.6F);
+        const float width = 800.0F, height = 600.0F, aspect = width / height;
+        // The world point under pixel (600, 150): on the plane through the target facing the
+        // camera, found from the pixel's ray.
+        const glm::vec2 pixel{600.0F, 150.0F};
+        const glm::vec2 offset = pixel - glm::vec2(width / 2.0F, height / 2.0F);
+        const glm::mat4 inverse = glm::inverse(cam.viewProjection(aspect));
+        const glm::vec4 ndcPoint{pixel.x / width * 2.0F - 1.0F, 1.0F - pixel.y / height * 2.0F,
+                                 0.0F, 1.0F};
+        const glm::vec4 nearH = inverse * glm::vec4(glm::vec2(ndcPoint), -1.0F, 1.0F);
+        const glm::vec4 farH = inverse * glm::vec4(glm::vec2(ndcPoint), 1.0F, 1.0F);
+        const glm::vec3 a = glm::vec3(nearH) / nearH.w, b = glm::vec3(farH) / farH.w;
+        const glm::vec3 normal = glm::normalize(cam.eye() - cam.target());
+        const float t = glm::dot(cam.target() - a, normal) / glm::dot(b - a, normal);
+        const glm::vec3 world = a + t * (b - a);
+
+        cam.zoomToward(1.5F, offset, height);
+        const glm::vec3 after = ndc(cam.viewProjection(aspect), world);
+        EXPECT_NEAR((after.x * 0.5F + 0.5F) * width, pixel.x, 1.0F);
+        EXPECT_NEAR((0.5F - after.y * 0.5F) * height, pixel.y, 1.0F);
+    }
+    Camera centred;
+    centred.fit({1, 2, 3}, 0.5F);
+    const glm::vec3 target = centred.target();
+    centred.zoomToward(2.0F, {0.0F, 0.0F}, 600.0F);
+    EXPECT_NEAR(glm::distance(centred.target(), target), 0.0F, 1e-6F);
 }
