@@ -257,6 +257,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
         const glm::mat4 viewProjection = m_scene.camera.viewProjection(aspect);
         drawFloorAndBox(viewProjection);
         drawMeshes(viewProjection, sceneWidth, sceneHeight);
+        if (m_scene.settings.plane.enabled) drawPlaneOutline(viewProjection);
     }
     present(framebuffer, width, height);
 }
@@ -327,6 +328,75 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
     f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->boxVbo);
     f.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(edges), edges.data());
     f.glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(edges.size()));
+    f.glBindVertexArray(0);
+    lines.release();
+}
+
+std::vector<glm::vec3> planeBoxPolygon(const CuttingPlane& plane, const glm::vec3& lo,
+                                       const glm::vec3& hi) {
+    std::vector<glm::vec3> points;
+    const std::array<glm::vec3, 8> c{
+        glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+        glm::vec3{lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    constexpr std::array<std::array<int, 2>, 12> edges{{{0, 1},
+                                                        {1, 2},
+                                                        {2, 3},
+                                                        {3, 0},
+                                                        {4, 5},
+                                                        {5, 6},
+                                                        {6, 7},
+                                                        {7, 4},
+                                                        {0, 4},
+                                                        {1, 5},
+                                                        {2, 6},
+                                                        {3, 7}}};
+    for (const auto& [a, b] : edges) {
+        const float da = glm::dot(plane.normal, c[a]) - plane.offset;
+        const float db = glm::dot(plane.normal, c[b]) - plane.offset;
+        if ((da < 0.0F) == (db < 0.0F) || da == db) continue;
+        points.push_back(c[a] + (da / (da - db)) * (c[b] - c[a]));
+    }
+    if (points.size() < 3) return {};
+    // In order around their centre, in the plane's own two axes.
+    glm::vec3 centre(0.0F);
+    for (const glm::vec3& p : points) centre += p;
+    centre /= static_cast<float>(points.size());
+    const glm::vec3 u = glm::normalize(points.front() - centre);
+    const glm::vec3 v = glm::cross(plane.normal, u);
+    std::sort(points.begin(), points.end(), [&](const glm::vec3& p, const glm::vec3& q) {
+        return std::atan2(glm::dot(p - centre, v), glm::dot(p - centre, u)) <
+               std::atan2(glm::dot(q - centre, v), glm::dot(q - centre, u));
+    });
+    return points;
+}
+
+void Renderer::drawPlaneOutline(const glm::mat4& viewProjection) {
+    const std::vector<glm::vec3> polygon =
+        planeBoxPolygon(m_scene.settings.plane, m_scene.frame.boxMin(), m_scene.frame.boxMax());
+    if (polygon.empty()) return;
+    // Seen edge-on the plane is a line through its own curves: leave it out then.
+    const glm::vec3 sight = glm::normalize(m_scene.camera.target() - m_scene.camera.eye());
+    if (std::abs(glm::dot(sight, m_scene.settings.plane.normal)) < 0.15F) return;
+    GlFunctions& f = *m_gpu->f;
+    QOpenGLShaderProgram& lines = m_gpu->shaders.program(QStringLiteral("lines"));
+    lines.bind();
+    f.glUniformMatrix4fv(lines.uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                         glm::value_ptr(viewProjection));
+    f.glBindVertexArray(m_gpu->boxVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->boxVbo);
+    f.glBufferSubData(GL_ARRAY_BUFFER, 0,
+                      static_cast<GLsizeiptr>(polygon.size() * sizeof(glm::vec3)), polygon.data());
+    f.glEnable(GL_BLEND);
+    f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    f.glDepthMask(GL_FALSE);
+    // Where the plane lies, faintly: the surfaces behind it stay readable; its outline says
+    // where it meets the box.
+    lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.08F);
+    f.glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(polygon.size()));
+    lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.7F);
+    f.glDrawArrays(GL_LINE_LOOP, 0, static_cast<GLsizei>(polygon.size()));
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_BLEND);
     f.glBindVertexArray(0);
     lines.release();
 }

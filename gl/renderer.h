@@ -31,6 +31,11 @@ class QOpenGLShaderProgram;
 namespace ensil::gl {
 
 // What lies under a pixel: the member (-1 for none) and its cluster (-1 when unknown).
+// Where a plane cuts a box: the polygon's corners in order around it (3 to 6 of them), or none
+// when the plane misses the box. Display space.
+std::vector<glm::vec3> planeBoxPolygon(const CuttingPlane& plane, const glm::vec3& boxMin,
+                                       const glm::vec3& boxMax);
+
 struct PickResult {
     int member = -1;
     int cluster = -1;
@@ -160,6 +165,8 @@ public:
 
     static constexpr glm::vec4 kDefaultBackground{0.11F, 0.12F, 0.14F, 1.0F};
     static constexpr glm::vec4 kBoxColor{0.85F, 0.85F, 0.85F, 1.0F};
+    // The cutting plane's outline and faint fill (a warm tone apart from the cluster palette).
+    static constexpr glm::vec4 kPlaneColor{1.0F, 0.85F, 0.55F, 1.0F};
 
 private:
     struct Gpu;
@@ -195,6 +202,8 @@ private:
     void drawMapLines(const glm::mat4& viewProjection);
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
+    // The cutting plane itself: its cut through the box as a faint fill with an outline.
+    void drawPlaneOutline(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
     void present(unsigned framebuffer, int width, int height);
 

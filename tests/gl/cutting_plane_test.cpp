@@ -121,3 +121,28 @@ TEST_F(RemovalTest, ChangingTheThresholdsChangesOnlyMembersInTheBand) {
     EXPECT_GT(changedNear[2], 20) << "radius 6 has outlyingness 1.5";
     EXPECT_EQ(changedNear[3], 0) << "radius 5 has outlyingness 3.5";
 }
+
+// The plane's cut through the box: a square for a horizontal plane, a hexagon for the plane
+// through the centre across the main diagonal, nothing for one outside; corners in order.
+TEST(PlaneBoxPolygon, IsTheCutThroughTheBoxInOrder) {
+    const glm::vec3 lo{0.0F}, hi{1.0F, 1.0F, 0.2F};
+    const auto square =
+        gl::planeBoxPolygon(gl::CuttingPlane::through({0, 0, 1}, {0, 0, 0.1F}), lo, hi);
+    ASSERT_EQ(square.size(), 4U);
+    for (const glm::vec3& p : square) EXPECT_NEAR(p.z, 0.1F, 1e-6F);
+    const auto hexagon =
+        gl::planeBoxPolygon(gl::CuttingPlane::through({1, 1, 5}, 0.5F * (lo + hi)), lo, hi);
+    EXPECT_EQ(hexagon.size(), 6U);
+    // In order: consecutive corners share a face of the box (one coordinate at a bound).
+    for (std::size_t i = 0; i < hexagon.size(); ++i) {
+        const glm::vec3 a = hexagon[i], b = hexagon[(i + 1) % hexagon.size()];
+        bool shared = false;
+        for (int k = 0; k < 3; ++k) {
+            shared = shared || (std::abs(a[k] - lo[k]) < 1e-5F && std::abs(b[k] - lo[k]) < 1e-5F) ||
+                     (std::abs(a[k] - hi[k]) < 1e-5F && std::abs(b[k] - hi[k]) < 1e-5F);
+        }
+        EXPECT_TRUE(shared) << i;
+    }
+    EXPECT_TRUE(
+        gl::planeBoxPolygon(gl::CuttingPlane::through({0, 0, 1}, {0, 0, 2}), lo, hi).empty());
+}
