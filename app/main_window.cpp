@@ -23,6 +23,7 @@
 #include <map>
 
 #include "app/ensemble_facts.h"
+#include "app/headless/floor_map.h"
 #include "app/headless/picture_title.h"
 #include "app/headless/session_renderer.h"
 #include "app/isovalue_session.h"
@@ -411,8 +412,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
     // The map spans its own range: the mean's column maxima cover only part of the values.
-    renderer.setFloorMap(gl::FloorMap::spanning(m_overview->meanColumnMaximum,
-                                                QString::fromStdString(floorCaption(e))));
+    showFloor(m_model->state().render);
     renderer.setMapLines(m_overview->mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
@@ -537,6 +537,12 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
     // The projection first (the map view is orthographic), then the camera fitted to the box.
     m_model->update([&preset](session::SessionState& s) { session::lookFrom(preset, s.camera); });
     m_view->lookFrom(preset.azimuth, preset.elevation);
+}
+
+void MainWindow::showFloor(const gl::RenderSettings& settings) {
+    if (!m_overview) return;
+    m_view->renderer().setFloorMap(floorMapFor(*m_overview->ensemble, m_overview->moments->mean,
+                                               m_overview->meanColumnMaximum, settings));
 }
 
 }  // namespace ensil::app

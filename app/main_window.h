@@ -132,6 +132,8 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
+    // The floor map the rendering settings ask for (none, column maximum, mean at a level).
+    void showFloor(const gl::RenderSettings& settings);
     // The screenshot dialog's first suggestion: the picture's facts as a file name.
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.

@@ -76,6 +76,10 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     }
     const session::SessionState& s = m_model->state();
     if (parts & (SessionPart::Rendering | SessionPart::Plane)) {
+        if (s.render.floor != renderer.settings().floor ||
+            s.render.floorLevel != renderer.settings().floorLevel) {
+            showFloor(s.render);
+        }
         renderer.settings() = s.render;
         m_renderPanel->setSettings(s.render);
     }

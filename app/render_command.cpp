@@ -63,7 +63,8 @@ const session::SettingOptions& sceneOptions() {
         "thickness",   "surface_opacity", "group_size",      "vertical_exaggeration",
         "azimuth",     "elevation",       "projection",      "background",
         "axis_labels", "legend",          "plane_thickness", "coastlines",
-        "borders",     "graticule",       "mean_opacity",    "title"};
+        "borders",     "graticule",       "mean_opacity",    "title",
+        "floor",       "floor_level"};
     return options;
 }
 

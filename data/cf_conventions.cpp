@@ -153,7 +153,11 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
     const auto epoch = sys_days{epochDate} + hours{m[5].matched ? std::stoi(m[5].str()) : 0} +
                        minutes{m[6].matched ? std::stoi(m[6].str()) : 0} +
                        seconds{m[7].matched ? std::stoi(m[7].str()) : 0};
-    const auto t = epoch + seconds{static_cast<long long>(std::llround(value * secondsPerUnit))};
+    // A file can give any double: beyond some 19,000 years of the epoch there is no date to
+    // print (std::chrono::year ends at 32767) and the sum below would overflow.
+    const double offset = value * secondsPerUnit;
+    if (std::abs(offset) > 6e11) return std::nullopt;
+    const auto t = epoch + seconds{static_cast<long long>(std::llround(offset))};
     const auto dayPoint = floor<days>(t);
     const year_month_day ymd{dayPoint};
     const hh_mm_ss hms{t - dayPoint};

@@ -4,7 +4,10 @@
 #include <netcdf.h>
 
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include "data/error.h"
 
@@ -26,6 +29,208 @@ void quietHdf5OnThisThread() {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     quiet = true;
 }
+
+// netCDF-C believes the counts in a classic header (CDF-1, CDF-2, CDF-5): a 150-byte file
+// declaring two billion variables made nc_open ask for 15 GB, and names longer than
+// NC_MAX_NAME or more than NC_MAX_VAR_DIMS dimensions of a variable were copied past the ends
+// of the NC_MAX_* buffers the library's API asks callers for. So the header is walked here
+// before nc_open, as the format specification lays it out: every count must fit in the bytes
+// left in the file, every name in NC_MAX_NAME bytes and every variable's dimensions in
+// NC_MAX_VAR_DIMS, and every list tag and type must be one the format has (netCDF-C only
+// asserts the types, so a damaged one made it read on out of step, taking later bytes for
+// counts). A header that ends early is left to nc_open, which refuses it.
+class ClassicHeader {
+public:
+    ClassicHeader(const std::string& path, std::uintmax_t size)
+        : m_path(path), m_in(path, std::ios::binary), m_size(size) {}
+
+    void walk() {
+        try {
+            const std::string magic = bytes(4);
+            m_cdf5 = magic[3] == 5;
+            m_offsets = magic[3] == 1 ? 4 : 8;
+            count();  // the record count
+            list(kDimensions, "dimensions", [this] {
+                name("a dimension name");
+                count();  // the length
+            });
+            list(kAttributes, "global attributes", [this] { attribute("global"); });
+            list(kVariables, "variables", [this] { variable(); });
+        } catch (const EndOfFile&) {
+            // nc_open says what is wrong.
+        }
+    }
+
+private:
+    struct EndOfFile {};
+    // The list tags (netCDF-C keeps them in its private headers).
+    static constexpr std::uint64_t kDimensions = 0x0A, kVariables = 0x0B, kAttributes = 0x0C;
+
+    // Bytes per value of a type; CDF-1 and CDF-2 have the six classic types only.
+    std::uint64_t typeSize(std::uint64_t type, const std::string& what) const {
+        if (type == NC_BYTE || type == NC_CHAR) return 1;
+        if (type == NC_SHORT) return 2;
+        if (type == NC_INT || type == NC_FLOAT) return 4;
+        if (type == NC_DOUBLE) return 8;
+        if (m_cdf5 && type == NC_UBYTE) return 1;
+        if (m_cdf5 && type == NC_USHORT) return 2;
+        if (m_cdf5 && type == NC_UINT) return 4;
+        if (m_cdf5 && (type == NC_INT64 || type == NC_UINT64)) return 8;
+        fail("gives " + what + " the type " + std::to_string(type) +
+             ", which is none of its format's");
+    }
+
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(ErrorKind::CorruptFile,
+                    "'" + m_path + "' is damaged: its NetCDF header " + what);
+    }
+    [[nodiscard]] std::uintmax_t left() {
+        const auto at = static_cast<std::uintmax_t>(m_in.tellg());
+        return at < m_size ? m_size - at : 0;
+    }
+    std::string bytes(std::uint64_t n) {
+        std::string text(static_cast<std::size_t>(n), '\0');
+        if (!m_in.read(text.data(), static_cast<std::streamsize>(n))) throw EndOfFile{};
+        return text;
+    }
+    std::uint64_t bigEndian(int n) {
+        std::uint64_t value = 0;
+        for (const char c : bytes(static_cast<std::uint64_t>(n))) {
+            value = value << 8 | static_cast<unsigned char>(c);
+        }
+        return value;
+    }
+    std::uint64_t count() { return bigEndian(m_cdf5 ? 8 : 4); }
+    // Names and values take a multiple of 4 bytes.
+    static std::uint64_t padded(std::uint64_t n) { return (n + 3) / 4 * 4; }
+    void skip(std::uint64_t n) {
+        if (n > left()) throw EndOfFile{};
+        m_in.seekg(static_cast<std::streamoff>(n), std::ios::cur);
+    }
+    // `n` items of at least `each` bytes must fit in what is left of the file.
+    void require(std::uint64_t n, std::uint64_t each, const std::string& what) {
+        if (n > left() / each) {
+            fail("declares " + std::to_string(n) + " " + what + ", more than the file's " +
+                 std::to_string(m_size) + " bytes can hold");
+        }
+    }
+    std::string name(const std::string& what) {
+        const std::uint64_t n = count();
+        if (n > NC_MAX_NAME) {
+            fail("gives " + what + " of " + std::to_string(n) + " bytes (NetCDF allows at most " +
+                 std::to_string(NC_MAX_NAME) + ")");
+        }
+        std::string text = bytes(n);
+        skip(padded(n) - n);
+        return text;
+    }
+    // A list is ABSENT (two zeros) or its tag, its count and the items; each takes 8 bytes or
+    // more, so the count bounds what netCDF-C allocates for it.
+    template <typename Item>
+    void list(std::uint64_t tag, const std::string& what, Item item) {
+        const std::uint64_t found = bigEndian(4);
+        const std::uint64_t n = count();
+        if (found == 0 && n == 0) return;
+        if (found != tag) {
+            fail("has the tag " + std::to_string(found) + " where its list of " + what +
+                 " should be");
+        }
+        require(n, 8, what);
+        for (std::uint64_t i = 0; i < n; ++i) item();
+    }
+    void attribute(const std::string& owner) {
+        const std::string attribute = name("an attribute name");
+        const std::string what = owner + " attribute '" + attribute + "'";
+        const std::uint64_t size = typeSize(bigEndian(4), what);
+        const std::uint64_t n = count();
+        require(n, size, "values for " + what);
+        skip(padded(n * size));
+    }
+    void variable() {
+        const std::string variable = name("a variable name");
+        const std::uint64_t dims = count();
+        if (dims > NC_MAX_VAR_DIMS) {
+            fail("gives variable '" + variable + "' " + std::to_string(dims) +
+                 " dimensions (NetCDF allows at most " + std::to_string(NC_MAX_VAR_DIMS) + ")");
+        }
+        skip(dims * (m_cdf5 ? 8 : 4));
+        list(kAttributes, "attributes of variable '" + variable + "'",
+             [&] { attribute("variable '" + variable + "'"); });
+        typeSize(bigEndian(4), "variable '" + variable + "'");
+        count();               // size
+        bigEndian(m_offsets);  // where its values begin
+    }
+
+    std::string m_path;
+    std::ifstream m_in;
+    std::uintmax_t m_size;
+    bool m_cdf5 = false;
+    int m_offsets = 4;
+};
+
+// For classic files (first bytes "CDF\1", "CDF\2", "CDF\5"); others go to nc_open unchecked.
+void checkClassicHeader(const std::string& path) {
+    std::array<char, 4> magic{};
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(magic.data(), magic.size()) || magic[0] != 'C' || magic[1] != 'D' ||
+        magic[2] != 'F' || (magic[3] != 1 && magic[3] != 2 && magic[3] != 5)) {
+        return;
+    }
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (!error) ClassicHeader(path, size).walk();
+}
+
+// netCDF-C copies the names of a NetCDF-4 file's variables and attributes into the caller's
+// NC_MAX_NAME + 1 bytes whatever their length, and HDF5 sets no limit: a plain HDF5 file with a
+// 400-character dataset name overran that buffer while the reader only asked whether the file
+// was NetCDF. Such names are refused here, before netCDF-C sees the file.
+struct LongName {
+    std::string name;
+};
+
+herr_t checkAttributeName(hid_t /*object*/, const char* name, const H5A_info_t* /*info*/,
+                          void* found) {
+    if (std::strlen(name) <= NC_MAX_NAME) return 0;
+    static_cast<LongName*>(found)->name = name;
+    return 1;  // stops the iteration
+}
+
+herr_t checkLinkName(hid_t group, const char* path, const H5L_info_t* info, void* found) {
+    const char* slash = std::strrchr(path, '/');
+    const char* name = slash != nullptr ? slash + 1 : path;
+    if (std::strlen(name) > NC_MAX_NAME) {
+        static_cast<LongName*>(found)->name = name;
+        return 1;
+    }
+    // Soft and external links name objects elsewhere (or nowhere): only a hard link's own.
+    if (info->type != H5L_TYPE_HARD) return 0;
+    hsize_t at = 0;
+    return H5Aiterate_by_name(group, path, H5_INDEX_NAME, H5_ITER_NATIVE, &at, checkAttributeName,
+                              found, H5P_DEFAULT) > 0
+               ? 1
+               : 0;
+}
+
+void checkHdf5Names(const std::string& path) {
+    std::array<char, 4> magic{};
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(magic.data(), magic.size()) || std::string(magic.data(), 4) != "\x89HDF") return;
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) return;  // nc_open says why
+    LongName found;
+    hsize_t at = 0;
+    if (H5Aiterate2(file, H5_INDEX_NAME, H5_ITER_NATIVE, &at, checkAttributeName, &found) <= 0) {
+        H5Lvisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, checkLinkName, &found);
+    }
+    H5Fclose(file);
+    if (!found.name.empty()) {
+        throw Error(ErrorKind::UnsupportedFormat,
+                    "'" + path + "' holds a name of " + std::to_string(found.name.size()) +
+                        " characters ('" + found.name.substr(0, 40) +
+                        "...'); NetCDF names have at most " + std::to_string(NC_MAX_NAME));
+    }
+}
 }  // namespace
 
 NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
@@ -33,6 +238,8 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
         throw Error(ErrorKind::FileNotFound, "no such file: '" + m_path + "'");
     }
     quietHdf5OnThisThread();
+    checkClassicHeader(m_path);
+    checkHdf5Names(m_path);
     const int status = nc_open(m_path.c_str(), NC_NOWRITE, &m_id);
     if (status == NC_ENOTNC) {
         throw Error(ErrorKind::UnsupportedFormat,
@@ -44,6 +251,15 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
                                                 "' as NetCDF: " + nc_strerror(status) +
                                                 "; the file may be truncated or damaged");
     }
+    // The destructor does not run when the constructor throws (a truncated file, a failed
+    // query): without this the file stayed open, one descriptor lost on every attempt.
+    struct CloseOnThrow {
+        int id;
+        bool armed = true;
+        ~CloseOnThrow() {
+            if (armed) nc_close(id);
+        }
+    } closeOnThrow{m_id};
     int ndims = 0, nvars = 0;
     check(nc_inq(m_id, &ndims, &nvars, nullptr, nullptr), "read the header");
     std::array<char, NC_MAX_NAME + 1> name{};
@@ -67,6 +283,7 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
         m_vars.push_back(std::move(var));
     }
     checkNotTruncated();
+    closeOnThrow.armed = false;
 }
 
 void NetcdfFile::checkNotTruncated() const {

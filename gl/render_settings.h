@@ -50,6 +50,10 @@ struct CuttingPlane {
     bool operator==(const CuttingPlane&) const = default;
 };
 
+// What the box's floor shows (METHODS.md section 15): nothing, the mean's column maximum, or
+// the mean at one level (RenderSettings::floorLevel, a grid index).
+enum class FloorContent { None, ColumnMaximum, MeanAtLevel };
+
 struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;
     float thickness = 0.006F;   // tau, in display units (the data box is about 1 wide)
@@ -67,6 +71,8 @@ struct RenderSettings {
     bool showAxes = true;    // tick labels in data units along the box (gl/view_overlay.h)
     bool showLegend = true;  // the cluster colours
     bool showTitle = true;   // the title line (Renderer::setTitle) above the picture
+    FloorContent floor = FloorContent::ColumnMaximum;
+    int floorLevel = 0;  // for FloorContent::MeanAtLevel: the vertical grid index
     // The map lines on the floor (Renderer::setMapLines), each switchable.
     bool showCoastlines = true;
     bool showBorders = true;

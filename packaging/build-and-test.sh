@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 2 (and CI): install dependencies, build with warnings as errors, run every
 # test (OpenGL and GUI tests on a virtual X display, Mesa llvmpipe), then rebuild the GPU-free
-# layers with Address and UndefinedBehavior sanitizers and run their tests again; last, package
+# layers with Address and UndefinedBehavior sanitizers and run their tests again, and run each
+# fuzzer briefly (tests/fuzz/run-fuzzers.sh; ENSIL_SKIP_FUZZ=1 skips it); last, package
 # the ci build (.deb and .tar.gz), check the tarball, install the .deb into this system, run the
 # installed ensil and remove it.
 set -euo pipefail
@@ -19,6 +20,12 @@ xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" ctest --preset ci
 cmake --preset asan
 cmake --build --preset asan --target ensil_data_tests ensil_preprocessing_tests
 ctest --preset asan
+
+# Each libFuzzer target (the readers, the mesh cache, projects, command-line values) for 20 s
+# from its seed corpus; a crash, leak or hang fails the run. ENSIL_SKIP_FUZZ=1 skips it.
+if [ "${ENSIL_SKIP_FUZZ:-0}" != 1 ]; then
+    tests/fuzz/run-fuzzers.sh 20
+fi
 
 # Packaging the ci build (stripped) rather than building a release saves CI a full rebuild.
 deb=$(packaging/build-package.sh build/ci)

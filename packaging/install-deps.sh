@@ -20,6 +20,8 @@ packages=(
     libproj-dev
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
+    # the libFuzzer targets (tests/fuzz/, the fuzz preset): clang 14 and its libFuzzer runtime
+    clang-14 libfuzzer-14-dev
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
     # that an X display answers before Qt is started on it
     xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev libxcb1-dev

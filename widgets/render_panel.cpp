@@ -37,6 +37,8 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_meanOpacity(new QDoubleSpinBox(this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
+      m_floor(new QComboBox(this)),
+      m_floorLevel(new QSpinBox(this)),
       m_map(new QGroupBox(tr("Map"), this)),
       m_coastlines(new QCheckBox(tr("Coasts"), m_map)),
       m_borders(new QCheckBox(tr("Borders"), m_map)),
@@ -56,6 +58,8 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_meanOpacity, "meanOpacity"},
              {m_axes, "axes"},
              {m_legend, "legend"},
+             {m_floor, "floor"},
+             {m_floorLevel, "floorLevel"},
              {m_map, "map"},
              {m_coastlines, "coastlines"},
              {m_borders, "borders"},
@@ -106,6 +110,15 @@ RenderPanel::RenderPanel(QWidget* parent)
     sceneForm->addRow(m_axes);
     m_legend->setToolTip(settingHelp("legend"));
     sceneForm->addRow(m_legend);
+    m_floor->addItems({tr("Nothing"), tr("Mean's column maximum"), tr("Mean at a level")});
+    m_floor->setToolTip(settingHelp("floor"));
+    shapeBySetting(*m_floorLevel, "floor_level");
+    m_floorLevel->setToolTip(settingHelp("floor_level"));
+    m_floorLevel->setPrefix(tr("level "));
+    auto* floorRow = new QHBoxLayout;
+    floorRow->addWidget(m_floor, 1);
+    floorRow->addWidget(m_floorLevel);
+    sceneForm->addRow(tr("Floor"), floorRow);
 
     // One row: the three switches are short, and the panel shares its dock's height.
     auto* mapLayout = new QHBoxLayout(m_map);
@@ -140,6 +153,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
         connect(box, &QCheckBox::toggled, this, edited);
     }
+    connect(m_floor, &QComboBox::currentIndexChanged, this, edited);
+    connect(m_floorLevel, &QSpinBox::valueChanged, this, edited);
     connect(m_removal, &QGroupBox::toggled, this, edited);
     connect(m_groupSize, &QSpinBox::valueChanged, this, edited);
     // The thresholds keep o*min below o*max by pushing the other one along.
@@ -168,7 +183,10 @@ RenderPanel::RenderPanel(QWidget* parent)
 void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
-        b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity);
+        b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity), b15(m_floor),
+        b16(m_floorLevel);
+    m_floor->setCurrentIndex(static_cast<int>(settings.floor));
+    m_floorLevel->setValue(settings.floorLevel);
     m_meanOpacity->setValue(settings.meanOpacity);
     m_coastlines->setChecked(settings.showCoastlines);
     m_borders->setChecked(settings.showBorders);
@@ -202,6 +220,8 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.showCoastlines = m_coastlines->isChecked();
     settings.showBorders = m_borders->isChecked();
     settings.showGraticule = m_graticule->isChecked();
+    settings.floor = static_cast<gl::FloorContent>(m_floor->currentIndex());
+    settings.floorLevel = m_floorLevel->value();
     settings.removal = m_removal->isChecked();
     settings.removalMin = static_cast<float>(m_removalMin->value());
     settings.removalMax = static_cast<float>(m_removalMax->value());
@@ -274,6 +294,8 @@ void RenderPanel::updateEnabled() {
     m_thickness->setEnabled(silhouettes);
     m_opacity->setEnabled(mode == gl::RenderMode::Surfaces);
     m_meanOpacity->setEnabled(m_mean->isChecked());
+    m_floorLevel->setEnabled(m_floor->currentIndex() ==
+                             static_cast<int>(gl::FloorContent::MeanAtLevel));
     m_removal->setEnabled(mode != gl::RenderMode::OpaqueSurfaces);
 }
 

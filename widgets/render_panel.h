@@ -63,6 +63,8 @@ private:
     QDoubleSpinBox* m_meanOpacity;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
+    QComboBox* m_floor;
+    QSpinBox* m_floorLevel;
     QGroupBox* m_map;
     QCheckBox* m_coastlines;
     QCheckBox* m_borders;

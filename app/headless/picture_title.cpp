@@ -1,9 +1,12 @@
 #include "app/headless/picture_title.h"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdio>
 #include <vector>
+
+#include "gl/axis_ticks.h"
 
 namespace ensil::app {
 namespace {
@@ -55,6 +58,17 @@ std::string pictureTitle(const data::Ensemble& e, float isovalue) {
 
 std::string floorCaption(const data::Ensemble& e) {
     return "floor: column maximum of the mean " + e.variable +
+           (e.units.empty() ? "" : " [" + e.units + "]");
+}
+
+std::string floorCaption(const data::Ensemble& e, int level) {
+    const data::Axis& z = e.grid.z();
+    const auto k = static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(z.size()) - 1));
+    const gl::AxisLabelling labelling = gl::labellingFor(z);
+    std::array<char, 32> value{};
+    std::snprintf(value.data(), value.size(), "%.4g", z.values[k] * labelling.shownPerUnit);
+    return "floor: mean " + e.variable + " at " + value.data() + " " +
+           (labelling.units.empty() ? z.name : labelling.units) +
            (e.units.empty() ? "" : " [" + e.units + "]");
 }
 

@@ -11,8 +11,10 @@
 namespace ensil::app {
 
 std::string pictureTitle(const data::Ensemble& ensemble, float isovalue);
-// What the floor map shows, for its colour bar: "floor: column maximum of the mean t [K]".
+// What the floor map shows, for its colour bar: "floor: column maximum of the mean t [K]",
+// "floor: mean t at 850 hPa [K]" (level: a vertical grid index, clamped to the grid).
 std::string floorCaption(const data::Ensemble& ensemble);
+std::string floorCaption(const data::Ensemble& ensemble, int level);
 // Letters, digits, '.', '-' and '_' only; no extension.
 std::string pictureFileStem(const data::Ensemble& ensemble, float isovalue);
 

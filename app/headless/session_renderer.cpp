@@ -7,6 +7,7 @@
 #include <QPainter>
 #include <algorithm>
 
+#include "app/headless/floor_map.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/picture_title.h"
 #include "data/demo_ensemble.h"
@@ -61,9 +62,9 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setViewSize(request.width, request.height);
     renderer.setGrid(ensemble.grid);
     renderer.setVerticalExaggeration(state.verticalExaggeration);
-    renderer.setFloorMap(
-        gl::FloorMap::spanning(prep::computeColumnMaximum(ensemble.grid, moments.mean),
-                               QString::fromStdString(floorCaption(ensemble))));
+    renderer.setFloorMap(floorMapFor(ensemble, moments.mean,
+                                     prep::computeColumnMaximum(ensemble.grid, moments.mean),
+                                     state.render));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;

@@ -223,10 +223,10 @@ TEST(RenderCommand, TextGrowsWithThePicturesSize) {
     test::TempDir dir;
     const auto titleHeight = [&](const QString& size) {
         const QString png = QString::fromStdString(dir.file(size.toStdString() + ".png"));
-        const test::EnsilRun r = test::runEnsil(
-            {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--iso",
-             "260", "--out", png, "--size", size, "--frames", "1", "--no-cache", "--no-legend",
-             "--no-axis-labels"});
+        const test::EnsilRun r =
+            test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                            "--iso", "260", "--out", png, "--size", size, "--frames", "1",
+                            "--no-cache", "--no-legend", "--no-axis-labels"});
         EXPECT_EQ(r.code, 0) << r.err.toStdString();
         const QImage image(png);
         // Rows of the top band holding the title's light text.
@@ -246,4 +246,52 @@ TEST(RenderCommand, TextGrowsWithThePicturesSize) {
     const int large = titleHeight("2560x1600");
     ASSERT_GT(small, 5) << "a title is drawn";
     EXPECT_NEAR(static_cast<double>(large) / small, 2.0, 0.35);
+}
+
+// The floor shows what --floor asks: nothing (the background shows through the box's floor),
+// the mean's column maximum (the default), or the mean at a level, each a different picture.
+TEST(RenderCommand, TheFloorShowsNothingTheColumnMaximumOrTheMeanAtALevel) {
+    test::TempDir dir;
+    const auto render = [&](const QString& name, const QStringList& extra) {
+        const QString png = QString::fromStdString(dir.file(name.toStdString()));
+        const test::EnsilRun r =
+            test::runEnsil(QStringList{"render",
+                                       ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                                       "--var",
+                                       "t",
+                                       "--iso",
+                                       "250",
+                                       "--out",
+                                       png,
+                                       "--size",
+                                       "320x240",
+                                       "--frames",
+                                       "1",
+                                       "--no-cache",
+                                       "--view",
+                                       "top",
+                                       "--no-mean",
+                                       "--no-coastlines",
+                                       "--no-borders",
+                                       "--no-labels",
+                                       "--no-title"} +
+                           extra);
+        EXPECT_EQ(r.code, 0) << r.err.toStdString();
+        return QImage(png).convertToFormat(QImage::Format_RGB32);
+    };
+    const QImage none = render("none.png", {"--floor", "none"});
+    const QImage maximum = render("max.png", {});
+    const QImage level0 = render("level0.png", {"--floor", "mean-at-level", "--floor-level", "0"});
+    const QImage level1 = render("level1.png", {"--floor", "mean-at-level", "--floor-level", "1"});
+    // Near the box's middle (the equator, no isosurface at 250 K there).
+    const QPoint middle(160, 125);
+    const QColor background = none.pixelColor(5, 5);
+    EXPECT_EQ(none.pixelColor(middle), background) << "no floor: the background";
+    EXPECT_NE(maximum.pixelColor(middle), background);
+    EXPECT_NE(level0, maximum);
+    EXPECT_NE(level0, level1) << "each level its own map";
+    const test::EnsilRun bad =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", QString::fromStdString(dir.file("x.png")), "--floor", "spread"});
+    EXPECT_EQ(bad.code, 2);
 }

@@ -21,6 +21,7 @@ namespace {
 constexpr std::size_t kMaxReadBytes = std::size_t{64} << 20;
 }
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace ensil::data;
     static const ensil::fuzz::TemporaryFile file;

@@ -53,6 +53,7 @@ std::string wrapped(const std::uint8_t* payload, std::size_t size) {
 
 }  // namespace
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const CacheFolder folder;
     static const ensil::prep::MeshCache cache(folder.path);

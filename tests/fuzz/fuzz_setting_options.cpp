@@ -20,6 +20,7 @@ void require(bool promise, const char* what) {
 }
 }  // namespace
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace ensil::session;
     if (size == 0) return 0;

@@ -11,6 +11,7 @@
 #include "data/vtk_legacy_header.h"
 #include "tests/fuzz/fuzz_support.h"
 
+// NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const ensil::fuzz::TemporaryFile file(".vtk");
     file.write(data, size);

@@ -2,9 +2,9 @@
 """Writes the fuzzers' seed corpus in corpus/<fuzzer>/: small valid inputs of every format and
 layout each fuzzer reads (so libFuzzer starts from the parsers' deep paths, not from random
 bytes), and copies of the small bad files of tests/data/bad/. Every file stays well under
-64 KiB. Run it again after adding a case; the files are committed beside it. Reproducers of
-fixed findings are committed in the same folders by hand (named crash-*, oom-*, timeout-*)
-and are left alone here.
+64 KiB. Run it again after adding a case; the files are committed beside it. The reproducers
+of findings (fixed bugs, and the library leaks lsan.supp ignores) are committed in the same
+folders by hand, named finding_*, and are left alone here.
 
 Needs ncgen (Debian netcdf-bin) and h5import (Debian hdf5-tools)."""
 import pathlib

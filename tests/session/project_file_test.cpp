@@ -11,6 +11,7 @@
 #include <csignal>
 
 #include "tests/support/temp_dir.h"
+#include "widgets/session/setting_table.h"
 
 using namespace ensil;
 
@@ -245,5 +246,23 @@ TEST(Project, WhatCannotBeAProjectIsRefusedBeforeItIsRead) {
         FAIL() << "accepted";
     } catch (const session::ProjectError& e) {
         EXPECT_EQ(std::string(e.what()), "data.variable is longer than 1048576 characters");
+    }
+}
+
+// A project saved with every number setting at its bounds reopens: the bounds' floats (0.0001
+// is 0.000099999997 as a float) are inside the range (found by the project fuzzer).
+TEST(ProjectFile, SettingsAtTheirBoundsSurviveSavingAndReopening) {
+    for (const bool atMaximum : {false, true}) {
+        session::SessionState state;
+        state.demo = true;
+        for (const session::Setting& s : session::settingTable()) {
+            // The removal band's two ends must stay apart, so they keep their defaults.
+            if (s.kind == session::SettingKind::Number && !s.id.starts_with("removal_")) {
+                s.set(state, atMaximum ? s.maximum : s.minimum);
+            }
+        }
+        const QByteArray saved = session::projectToJson(state, QDir::temp());
+        EXPECT_NO_THROW((void)session::projectFromJson(saved, QDir::temp()))
+            << (atMaximum ? "maxima" : "minima");
     }
 }

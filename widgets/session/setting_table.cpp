@@ -12,6 +12,8 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kModes{"shaded", "spaghetti", "surfaces", "opaque"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
+// In gl::FloorContent's order.
+constexpr std::array<std::string_view, 3> kFloorContents{"none", "column-maximum", "mean-at-level"};
 // In prep::Linkage's order.
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
@@ -19,7 +21,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 24> kSettings{{
+const std::array<Setting, 26> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -133,6 +135,26 @@ const std::array<Setting, 24> kSettings{{
      {},
      [](const SessionState& s) { return s.render.showTitle ? 1.0 : 0.0; },
      [](SessionState& s, double v) { s.render.showTitle = v != 0.0; }},
+    {"floor", SettingKind::Choice, "rendering.floor.content", "floor", "rendering/floor", "Floor",
+     "", "What the box's floor shows: nothing, the mean's column maximum, or the mean at a level",
+     0, 2, 0, 1, kFloorContents,
+     [](const SessionState& s) { return static_cast<double>(s.render.floor); },
+     [](SessionState& s, double v) { s.render.floor = static_cast<gl::FloorContent>(v); }},
+    {"floor_level",
+     SettingKind::Integer,
+     "rendering.floor.level",
+     "floor-level",
+     "rendering/floorLevel",
+     "Floor level",
+     "",
+     "The vertical grid index (0 = the first level in the file) whose mean the floor shows",
+     0,
+     10000,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return double(s.render.floorLevel); },
+     [](SessionState& s, double v) { s.render.floorLevel = static_cast<int>(v); }},
     {"coastlines",
      SettingKind::Flag,
      "rendering.map.coastlines",
@@ -402,7 +424,11 @@ std::string Setting::allowed() const {
 
 std::string Setting::problemWith(double value) const {
     const bool whole = std::isfinite(value) && value == std::floor(value);
-    const bool inRange = std::isfinite(value) && value >= minimum && value <= maximum;
+    // Numbers are kept as floats: a bound's float (0.0001 is 0.000099999997) must read back
+    // as inside the range, or a project saved at a slider's end would not reopen.
+    const double low = std::min(minimum, static_cast<double>(static_cast<float>(minimum)));
+    const double high = std::max(maximum, static_cast<double>(static_cast<float>(maximum)));
+    const bool inRange = std::isfinite(value) && value >= low && value <= high;
     if (kind == SettingKind::Number ? inRange : inRange && whole) return {};
     return "must be " + allowed();
 }
