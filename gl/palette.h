@@ -2,7 +2,7 @@
 // safe for colour-blind viewers, then five light ones of Paul Tol's schemes that stay apart
 // from them as thin lines on a dark background. None is near the mean's gray or the gray of
 // members that are not clustered. Colour i belongs to the cluster whose stable identity is i
-// (preprocessing/cluster_identity.h); beyond 12 clusters colours repeat.
+// (preprocessing/cluster_identity.h); beyond 12 clusters, one "other" colour.
 #pragma once
 
 #include <array>
@@ -52,10 +52,18 @@ inline glm::vec3 viridis(float t) {
 // Members that are not clustered (before the first clustering).
 inline constexpr glm::vec3 kUnclusteredColor{0.733F, 0.733F, 0.733F};
 
-// The colour of a cluster identity; kUnclusteredColor for -1.
+// Clusters beyond the palette's 12 colours (the later, smaller splits, since a split leaves
+// its colour on the larger part) share this one, and the legend lists them as one entry
+// ("Other clusters"), rather than repeating colours that would then mean two clusters. A
+// muted violet-gray, apart from the palette, the mean's gray and the unclustered gray.
+inline constexpr glm::vec3 kOtherClustersColor{0.42F, 0.40F, 0.52F};
+
+// The colour of a cluster identity; kUnclusteredColor for -1, kOtherClustersColor beyond the
+// palette.
 inline glm::vec3 clusterColor(int identity) {
     if (identity < 0) return kUnclusteredColor;
-    return kClusterPalette[static_cast<std::size_t>(identity) % kClusterPalette.size()];
+    if (static_cast<std::size_t>(identity) >= kClusterPalette.size()) return kOtherClustersColor;
+    return kClusterPalette[static_cast<std::size_t>(identity)];
 }
 
 // Every member visible, coloured by its cluster label.

@@ -244,6 +244,17 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
             auto [it, added] = clusters.try_emplace(a.cluster, a.color, 0);
             if (a.visible) ++it->second.second;
         }
+        // Beyond the palette: one entry for every cluster drawn in the "other" colour.
+        int otherClusters = 0, otherMembers = 0;
+        for (auto it = clusters.begin(); it != clusters.end();) {
+            if (static_cast<std::size_t>(it->first) < kClusterPalette.size()) {
+                ++it;
+                continue;
+            }
+            ++otherClusters;
+            otherMembers += it->second.second;
+            it = clusters.erase(it);
+        }
         for (const auto& [cluster, entry] : clusters) {
             const int n = entry.second;
             overlay.legend.push_back(
@@ -252,6 +263,12 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
                  : n == 1
                      ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)
                      : QStringLiteral("Cluster %1 \u00b7 %2 members").arg(cluster + 1).arg(n)});
+        }
+        if (otherClusters > 0) {
+            overlay.legend.push_back(
+                {kOtherClustersColor, QStringLiteral("%1 other clusters \u00b7 %2 members")
+                                          .arg(otherClusters)
+                                          .arg(otherMembers)});
         }
         if (in.showMean)
             overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});

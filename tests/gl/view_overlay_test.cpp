@@ -265,3 +265,28 @@ TEST(ViewOverlay, TheFloorsColourBarShowsTheFloorsColours) {
     EXPECT_LT(low.x(), high.x()) << "low values on the left";
     EXPECT_GT(low.x(), 400) << "the legend took the top-left corner: the bar the top right";
 }
+
+// Twenty clusters: the first 12 keep their own colours, no two alike; the 8 beyond the palette
+// share the "other" colour and one legend entry that counts them, instead of repeating colours.
+TEST(ViewOverlay, BeyondTwelveClustersTheRestAreOneOtherEntryAndNoColourRepeats) {
+    std::vector<int> labels;
+    for (int c = 0; c < 20; ++c) labels.insert(labels.end(), {c, c});
+    std::vector<gl::MemberAppearance> look = gl::clusterAppearance(labels);
+    gl::OverlayInput in;
+    in.width = 800;
+    in.height = 600;
+    in.appearance = &look;
+    const gl::ViewOverlay o = gl::computeOverlay(in);
+    ASSERT_EQ(o.legend.size(), 13U);
+    EXPECT_EQ(o.legend.back().text, QStringLiteral("8 other clusters \u00b7 16 members"));
+    EXPECT_EQ(o.legend.back().color, gl::kOtherClustersColor);
+    for (std::size_t i = 0; i < o.legend.size(); ++i) {
+        for (std::size_t j = i + 1; j < o.legend.size(); ++j) {
+            EXPECT_NE(o.legend[i].color, o.legend[j].color) << i << " and " << j;
+        }
+        EXPECT_NE(o.legend[i].color, gl::kMeanSurfaceColor);
+        EXPECT_NE(o.legend[i].color, gl::kUnclusteredColor);
+    }
+    EXPECT_EQ(gl::clusterColor(12), gl::clusterColor(19)) << "one other colour";
+    EXPECT_NE(gl::clusterColor(12), gl::clusterColor(0)) << "not a repeat of the first";
+}
