@@ -266,3 +266,35 @@ TEST(ProjectFile, SettingsAtTheirBoundsSurviveSavingAndReopening) {
             << (atMaximum ? "maxima" : "minima");
     }
 }
+
+// A camera target a float cannot hold (7.8e75) would be saved as infinity and the project
+// would not reopen: it is refused when read, naming the field and the range (found by the
+// project fuzzer's save-and-reopen check).
+TEST(ProjectFile, ACameraTargetBeyondWhatAFloatHoldsIsRefused) {
+    const QByteArray json = R"({"format": "ensil project", "schema_version": 2,
+        "data": {"demo": {}},
+        "camera": {"distance": 2.5, "target": [7.8e75, 0.5, 0.25]}})";
+    try {
+        (void)session::projectFromJson(json, QDir::temp());
+        ADD_FAILURE() << "accepted";
+    } catch (const session::ProjectError& e) {
+        EXPECT_NE(std::string(e.what()).find("camera.target must be a list of 3 numbers from -1e6 "
+                                             "to 1e6"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// The isovalue and the camera's distance at their bounds survive saving and reopening: the
+// bounds' floats lie just outside the doubles (1e30 as a float is 1.0000000150e30).
+TEST(ProjectFile, AnIsovalueAndDistanceAtTheirBoundsReopen) {
+    for (const char* json :
+         {R"({"format": "ensil project", "schema_version": 2, "data": {"demo": {}},
+              "isovalue": 1e30, "camera": {"distance": 1e-6, "target": [0.5, 0.5, 0.1]}})",
+          R"({"format": "ensil project", "schema_version": 2, "data": {"demo": {}},
+              "isovalue": -1e30, "camera": {"distance": 1e6, "target": [0.5, 0.5, 0.1]}})"}) {
+        const session::SessionState first = session::projectFromJson(json, QDir::temp());
+        const QByteArray saved = session::projectToJson(first, QDir::temp());
+        EXPECT_NO_THROW((void)session::projectFromJson(saved, QDir::temp())) << saved.constData();
+    }
+}

@@ -43,7 +43,11 @@ public:
         const QJsonValue v = value(key);
         if (!v.isDouble() || !std::isfinite(v.toDouble())) fail(key, "must be a number");
         const double d = v.toDouble();
-        if (d < lo || d > hi) {
+        // Most numbers are kept as floats: a bound's float (1e30 is 1.0000000150e30) read back
+        // from a saved project must still be inside, or the project would not reopen.
+        const double low = std::min(lo, static_cast<double>(static_cast<float>(lo)));
+        const double high = std::max(hi, static_cast<double>(static_cast<float>(hi)));
+        if (d < low || d > high) {
             fail(key, QStringLiteral("must lie between %1 and %2").arg(lo).arg(hi).toStdString());
         }
         return d;
@@ -66,11 +70,16 @@ public:
     [[nodiscard]] glm::vec3 vec3(const QString& key, const glm::vec3& fallback) const {
         if (!has(key)) return fallback;
         const QJsonArray a = value(key).toArray();
-        if (!value(key).isArray() || a.size() != 3) fail(key, "must be a list of 3 numbers");
+        // Kept as floats and written back: a number a float cannot hold (1e40) would come back
+        // as infinity, and the saved project would not reopen. The data box is about 1 wide.
+        constexpr double kLargest = 1e6;
+        const char* const what = "must be a list of 3 numbers from -1e6 to 1e6";
+        if (!value(key).isArray() || a.size() != 3) fail(key, what);
         glm::vec3 v;
         for (int i = 0; i < 3; ++i) {
-            if (!a[i].isDouble() || !std::isfinite(a[i].toDouble())) {
-                fail(key, "must be a list of 3 numbers");
+            if (!a[i].isDouble() || !std::isfinite(a[i].toDouble()) ||
+                std::abs(a[i].toDouble()) > kLargest) {
+                fail(key, what);
             }
             v[i] = static_cast<float>(a[i].toDouble());
         }
