@@ -51,8 +51,13 @@ for name in "${fuzzers[@]}"; do
     echo "run-fuzzers: $name for $seconds s"
     status=0
     # TMPDIR: the targets' temporary files land in the work folder, removed afterwards.
-    TMPDIR=$work/$name/tmp "$binary" -max_total_time="$seconds" -rss_limit_mb=2048 -timeout=10 \
-        -print_final_stats=1 -artifact_prefix="$findings/$name/" "$work/$name/corpus" \
+    # ENSIL_FUZZ_RUNS=N: a fixed budget of N inputs from a fixed seed, the same inputs on
+    # every machine, so a CI run cannot fail or pass by luck of the clock (SECONDS still caps
+    # it); unset, the time decides and each run explores anew.
+    budget=()
+    if [ -n "${ENSIL_FUZZ_RUNS:-}" ]; then budget=(-seed=1 -runs="$ENSIL_FUZZ_RUNS"); fi
+    TMPDIR=$work/$name/tmp "$binary" "${budget[@]}" -max_total_time="$seconds" \
+        -rss_limit_mb=2048 -timeout=10 -print_final_stats=1 -artifact_prefix="$findings/$name/" "$work/$name/corpus" \
         >"$log" 2>&1 || status=$?
     runs=$(stat number_of_executed_units "$log")
     speed=$(stat average_exec_per_sec "$log")
