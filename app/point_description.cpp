@@ -10,12 +10,6 @@
 namespace ensil::app {
 namespace {
 
-double coordinateAt(const data::Axis& axis, double index) {
-    const auto i = std::min(static_cast<std::size_t>(std::max(index, 0.0)), axis.size() - 2);
-    const double f = index - static_cast<double>(i);
-    return axis.values[i] + f * (axis.values[i + 1] - axis.values[i]);
-}
-
 QString value(float v, const std::string& units) {
     if (std::isnan(v)) return QStringLiteral("missing");
     return QString::number(v, 'g', 5) +
@@ -25,8 +19,8 @@ QString value(float v, const std::string& units) {
 // The place: true longitude and latitude where the grid has geography, else its own axes.
 QString place(const PointContext& c, const glm::dvec3& index) {
     const data::Grid& g = c.ensemble->grid;
-    const double x = coordinateAt(g.x(), index.x);
-    const double y = coordinateAt(g.y(), index.y);
+    const double x = g.x().valueAt(index.x);
+    const double y = g.y().valueAt(index.y);
     if (c.projection != nullptr && c.projection->hasGeography()) {
         std::vector<glm::dvec2> p{{x, y}};
         c.projection->toLonLat(p);
@@ -41,7 +35,7 @@ QString place(const PointContext& c, const glm::dvec3& index) {
 
 QString level(const data::Axis& axis, double index) {
     const gl::AxisLabelling labelling = gl::labellingFor(axis);
-    const double shown = coordinateAt(axis, index) * labelling.shownPerUnit;
+    const double shown = axis.valueAt(index) * labelling.shownPerUnit;
     return QString::number(shown, 'g', 4) + QStringLiteral(" ") +
            QString::fromStdString(labelling.units.empty() ? axis.name : labelling.units);
 }

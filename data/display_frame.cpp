@@ -8,14 +8,6 @@ namespace ensil::data {
 namespace {
 constexpr float kAtmosphereThickness = 0.2F;
 
-// Linear interpolation of the axis coordinate at a fractional index, clamped to the axis.
-double coordinateAt(const Axis& axis, float index) {
-    const auto last = static_cast<float>(axis.size() - 1);
-    const float t = std::clamp(index, 0.0F, last);
-    const auto i = std::min(static_cast<std::size_t>(t), axis.size() - 2);
-    const double f = t - static_cast<float>(i);
-    return axis.values[i] + f * (axis.values[i + 1] - axis.values[i]);
-}
 }  // namespace
 
 DisplayFrame::DisplayFrame(const Grid& grid, float verticalExaggeration)
@@ -68,8 +60,8 @@ std::vector<double> DisplayFrame::axisTable(int axis) const {
 }
 
 glm::vec3 DisplayFrame::indexToDisplay(const glm::vec3& index) const {
-    return toDisplay({coordinateAt(m_grid.x(), index.x), coordinateAt(m_grid.y(), index.y),
-                      coordinateAt(m_grid.z(), index.z)});
+    return toDisplay(
+        {m_grid.x().valueAt(index.x), m_grid.y().valueAt(index.y), m_grid.z().valueAt(index.z)});
 }
 
 glm::dvec3 DisplayFrame::displayToIndex(const glm::vec3& display) const {

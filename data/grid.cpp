@@ -23,6 +23,13 @@ bool Axis::isUniform() const {
     return true;
 }
 
+double Axis::valueAt(double index) const {
+    const double t = std::clamp(index, 0.0, static_cast<double>(values.size() - 1));
+    const auto i = std::min(static_cast<std::size_t>(t), values.size() - 2);
+    const double f = t - static_cast<double>(i);
+    return values[i] + f * (values[i + 1] - values[i]);
+}
+
 bool isPressureUnit(const std::string& units) {
     std::string u;
     for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -24,6 +24,8 @@ struct Axis {
     [[nodiscard]] double back() const { return values.back(); }
     [[nodiscard]] double minValue() const;
     [[nodiscard]] double maxValue() const;
+    // The coordinate at a fractional index, linear between grid points, clamped to the axis.
+    [[nodiscard]] double valueAt(double index) const;
     // True when all steps are equal within 1 % of a step (float-stored coordinates jitter).
     [[nodiscard]] bool isUniform() const;
 };
