@@ -50,6 +50,8 @@ public:
         return projectionMatrix(aspect) * view();
     }
 
+    [[nodiscard]] bool operator==(const Camera&) const = default;
+
     static constexpr float kFieldOfViewDeg = 30.0F;
     static constexpr float kDefaultAzimuth = -75.0F;  // from the south, east to the right
     static constexpr float kDefaultElevation = 30.0F;

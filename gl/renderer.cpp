@@ -130,6 +130,12 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     in.appearance = m_scene.meshes ? &m_scene.appearance : nullptr;
     in.showMean =
         m_scene.settings.showMean && m_scene.meshes && !m_scene.meshes->mean.vertices.empty();
+    in.planeCurves =
+        m_scene.settings.plane.enabled && m_scene.meshes &&
+        m_scene.settings.mode != RenderMode::OpaqueSurfaces &&
+        !planeBoxPolygon(m_scene.settings.plane, m_scene.frame.boxMin(), m_scene.frame.boxMax())
+             .empty();
+    in.planeColor = glm::vec3(kPlaneColor);
     in.showAxes = m_scene.settings.showAxes;
     in.showLegend = m_scene.settings.showLegend;
     if (m_scene.settings.showTitle) in.title = m_title;
@@ -165,24 +171,34 @@ void Renderer::setVerticalExaggeration(float exaggeration) {
     if (m_scene.hasGrid) {
         m_scene.frame = data::DisplayFrame(m_scene.grid, exaggeration);
         m_axisTablesDirty = true;
-        m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+        frameTheBox();
     }
+}
+
+void Renderer::frameTheBox() {
+    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+    m_framedCamera = m_scene.camera;
 }
 
 void Renderer::resetCamera() {
     m_scene.camera.reset(m_scene.frame.center(), 0.5F * glm::length(m_scene.frame.boxMax()));
-    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+    frameTheBox();
 }
 
 void Renderer::lookFrom(float azimuth, float elevation) {
     resetCamera();
     m_scene.camera.setAngles(azimuth, elevation);
-    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+    frameTheBox();
 }
 
 void Renderer::setViewSize(int width, int height) {
-    if (width > 0 && height > 0)
-        m_scene.viewAspect = static_cast<float>(width) / static_cast<float>(height);
+    if (width <= 0 || height <= 0) return;
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    if (aspect == m_scene.viewAspect) return;
+    m_scene.viewAspect = aspect;
+    // A camera still where the last reset or preset put it was framed for another shape: the
+    // box would stick out of a narrower view. Framed again; a camera the user moved stays.
+    if (m_scene.hasGrid && m_framedCamera == m_scene.camera) frameTheBox();
 }
 
 void Renderer::setFloorMap(FloorMap map) {
@@ -233,7 +249,10 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     if (!m_gpu) throw std::runtime_error("Renderer::render before initialize");
     if (width <= 0 || height <= 0) return;
     m_scene.lastSize = {width, height};
-    setViewSize(width, height);
+    // The frame's shape, without framing the camera again: a picture exported at another
+    // shape shows the view's camera, as the project saved with it does (setViewSize, called on
+    // the view's resize, is what frames again).
+    m_scene.viewAspect = static_cast<float>(width) / static_cast<float>(height);
     // The scene is drawn at its own size, the same shape as the frame.
     const auto scaled = [&](int size) {
         return std::max(
@@ -242,7 +261,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     m_scene.sceneSize = {scaled(width), scaled(height)};
     const int sceneWidth = m_scene.sceneSize.x, sceneHeight = m_scene.sceneSize.y;
     GlFunctions& f = *m_gpu->f;
-    m_gpu->targets.ensure(f, sceneWidth, sceneHeight);
+    m_gpu->targets.ensure(f, sceneWidth, sceneHeight, kSceneSamples);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());
     f.glViewport(0, 0, sceneWidth, sceneHeight);
     f.glClearColor(m_background.r, m_background.g, m_background.b, m_background.a);
@@ -259,6 +278,8 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
         drawMeshes(viewProjection, sceneWidth, sceneHeight);
         if (m_scene.settings.plane.enabled) drawPlaneOutline(viewProjection);
     }
+    f.glDisable(GL_SCISSOR_TEST);
+    m_gpu->targets.resolve(f);
     present(framebuffer, width, height);
 }
 
@@ -319,17 +340,10 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
     const std::array<glm::vec3, 24> edges{c[0], c[1], c[1], c[2], c[2], c[3], c[3], c[0],
                                           c[4], c[5], c[5], c[6], c[6], c[7], c[7], c[4],
                                           c[0], c[4], c[1], c[5], c[2], c[6], c[3], c[7]};
-    QOpenGLShaderProgram& lines = m_gpu->shaders.program(QStringLiteral("lines"));
-    lines.bind();
-    f.glUniformMatrix4fv(lines.uniformLocation("u_viewProjection"), 1, GL_FALSE,
-                         glm::value_ptr(viewProjection));
-    lines.setUniformValue("u_color", kBoxColor.r, kBoxColor.g, kBoxColor.b, kBoxColor.a);
-    f.glBindVertexArray(m_gpu->boxVao);
     f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->boxVbo);
     f.glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(edges), edges.data());
-    f.glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(edges.size()));
-    f.glBindVertexArray(0);
-    lines.release();
+    drawBoxBufferLines(GL_LINES, static_cast<int>(edges.size()), viewProjection, kBoxHalfWidth,
+                       kBoxColor);
 }
 
 std::vector<glm::vec3> planeBoxPolygon(const CuttingPlane& plane, const glm::vec3& lo,
@@ -393,12 +407,12 @@ void Renderer::drawPlaneOutline(const glm::mat4& viewProjection) {
     // where it meets the box.
     lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.08F);
     f.glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(polygon.size()));
-    lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.7F);
-    f.glDrawArrays(GL_LINE_LOOP, 0, static_cast<GLsizei>(polygon.size()));
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
     f.glBindVertexArray(0);
     lines.release();
+    drawBoxBufferLines(GL_LINE_LOOP, static_cast<int>(polygon.size()), viewProjection,
+                       kBoxHalfWidth, {kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.7F});
 }
 
 }  // namespace ensil::gl

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <QString>
+#include <algorithm>
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -85,6 +86,8 @@ public:
     // The size the last frame's scene was drawn at, in pixels.
     [[nodiscard]] glm::ivec2 sceneSize() const { return m_scene.sceneSize; }
     static constexpr float kMinimumResolutionScale = 0.25F;
+    // Samples per pixel of the scene (multisample antialiasing; the driver may offer fewer).
+    static constexpr int kSceneSamples = 4;
     // Map lines' widths are multiplied by this: an exported picture larger than the view draws
     // them as the view would at that zoom (gl::exportTextScale for the overlay's text).
     void setLineScale(float scale) { m_lineScale = std::max(scale, 0.1F); }
@@ -160,11 +163,13 @@ public:
     void resetCamera();
     // Looks from these angles (degrees; see Camera), fitted to the data box like resetCamera.
     void lookFrom(float azimuth, float elevation);
-    // The shape of the frames to come (a window's resize), which the camera is fitted to.
+    // The shape of the frames to come (a window's resize), which the camera is fitted to; a
+    // camera still as the last reset or preset framed it is framed again for the new shape.
     void setViewSize(int width, int height);
 
     static constexpr glm::vec4 kDefaultBackground{0.11F, 0.12F, 0.14F, 1.0F};
     static constexpr glm::vec4 kBoxColor{0.85F, 0.85F, 0.85F, 1.0F};
+    static constexpr float kBoxHalfWidth = 0.75F;  // pixels either side of the box's edges
     // The cutting plane's outline and faint fill (a warm tone apart from the cluster palette).
     static constexpr glm::vec4 kPlaneColor{1.0F, 0.85F, 0.55F, 1.0F};
 
@@ -200,8 +205,14 @@ private:
     void uploadFloorMap();
     void uploadMapLines();
     void drawMapLines(const glm::mat4& viewProjection);
+    // The box's vertex buffer's first `count` points as antialiased lines `halfWidth` pixels
+    // to either side (mode GL_LINES or GL_LINE_LOOP), blended, depth-tested but not written.
+    void drawBoxBufferLines(unsigned mode, int count, const glm::mat4& viewProjection,
+                            float halfWidth, const glm::vec4& colour);
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
+    // Fits the camera to the box at the view's aspect, from its angles, and remembers it.
+    void frameTheBox();
     // The cutting plane itself: its cut through the box as a faint fill with an outline.
     void drawPlaneOutline(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
@@ -232,6 +243,9 @@ private:
     bool m_meshesDirty = false;
     glm::vec4 m_background = kDefaultBackground;
     float m_resolutionScale = 1.0F;
+    // The camera as the last framing left it: still so, it is framed again when the view's
+    // shape changes.
+    std::optional<Camera> m_framedCamera;
     float m_lineScale = 1.0F;
     int m_highlighted = -1;
     QString m_title;

@@ -101,4 +101,28 @@ void Renderer::drawMapLines(const glm::mat4& viewProjection) {
     program.release();
 }
 
+void Renderer::drawBoxBufferLines(unsigned mode, int count, const glm::mat4& viewProjection,
+                                  float halfWidth, const glm::vec4& colour) {
+    // Through the map lines' program: core profiles draw GL lines one aliased pixel wide.
+    GlFunctions& f = *m_gpu->f;
+    QOpenGLShaderProgram& program =
+        m_gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
+    program.bind();
+    f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                         glm::value_ptr(viewProjection));
+    program.setUniformValue("u_viewport", static_cast<float>(m_scene.sceneSize.x),
+                            static_cast<float>(m_scene.sceneSize.y));
+    program.setUniformValue("u_halfWidth", halfWidth * m_resolutionScale * m_lineScale);
+    program.setUniformValue("u_color", colour.r, colour.g, colour.b, colour.a);
+    f.glBindVertexArray(m_gpu->boxVao);
+    f.glEnable(GL_BLEND);
+    f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    f.glDepthMask(GL_FALSE);
+    f.glDrawArrays(mode, 0, count);
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_BLEND);
+    f.glBindVertexArray(0);
+    program.release();
+}
+
 }  // namespace ensil::gl

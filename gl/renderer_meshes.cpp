@@ -132,6 +132,12 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     program.setUniformValue("u_removalMax", m_scene.settings.removalMax);
     program.setUniformValue("u_groupSize", m_scene.settings.groupSize);
     program.setUniformValue("u_pick", pick);
+    // The pass's viewport, set by the caller: the culling shader's antialiasing fringe is in
+    // its pixels.
+    std::array<GLint, 4> viewport{};
+    f.glGetIntegerv(GL_VIEWPORT, viewport.data());
+    program.setUniformValue("u_viewportSize", static_cast<float>(viewport[2]),
+                            static_cast<float>(viewport[3]));
 
     // The plane's normal is turned towards the viewer, so the shader discards n.p > offset.
     const CuttingPlane& plane = m_scene.settings.plane;
@@ -187,7 +193,8 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
     QOpenGLShaderProgram* program = programs.bound;
     // The silhouette modes draw through the culling geometry shader; solid and semi-transparent
     // surfaces need every triangle.
-    const auto setMember = [&](int pickId, std::size_t m, int mode, const glm::vec3& colour) {
+    const auto setMember = [&](int pickId, std::size_t m, int mode, const glm::vec3& colour,
+                               bool emphasis = false) {
         QOpenGLShaderProgram* wanted =
             mode == kShaded || mode == kSpaghetti ? programs.culled : programs.full;
         if (wanted != program) {
@@ -200,6 +207,7 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         program->setUniformValue("u_memberIndex", static_cast<int>(m));
         program->setUniformValue("u_pickId", pickId);
         program->setUniformValue("u_color", colour.x, colour.y, colour.z);
+        program->setUniformValue("u_emphasis", emphasis);
     };
     const bool translucent = translucentMode();
     const int translucentShaderMode =
@@ -248,7 +256,8 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
             colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
         }
         if (static_cast<int>(m) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
-        setMember(static_cast<int>(m) + 1, m, mode, colour);
+        // Selected members drawn as surfaces keep a thicker, opaque silhouette rim.
+        setMember(static_cast<int>(m) + 1, m, mode, colour, mode == kSurfaces && a.selected);
         drawMesh(f, *program, members[m]);
     }
     setClipDistances(f, false);
@@ -263,24 +272,30 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
+    // Opaque silhouettes (spaghetti) are antialiased by writing their pixel coverage to that
+    // share of the samples.
+    f.glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     drawMemberPass(programs, MemberPass::Opaque);
+    f.glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 
     const Selection selection = selectionShown();
     const bool translucentMean = m_scene.settings.showMean && m_scene.settings.meanTranslucent() &&
                                  m_gpu->meshes.mean().vao != 0;
     if (translucentMode() || (selection.any && !selection.solid) || translucentMean) {
-        // Every isosurface lies inside the data box: the transparency targets are cleared,
-        // drawn and composited only over the box's rectangle on screen.
+        // Every isosurface lies inside the data box: the transparency targets are drawn and
+        // composited only over the box's rectangle on screen.
         const glm::ivec4 box = screenRectangle(viewProjection, width, height);
-        f.glEnable(GL_SCISSOR_TEST);
-        f.glScissor(box.x, box.y, box.z, box.w);
         // Accumulate every unselected visible member, testing but not writing depth.
         f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.transparencyFramebuffer());
         f.glViewport(0, 0, width, height);
         const std::array<float, 4> zero{0, 0, 0, 0};
         const std::array<float, 4> one{1, 1, 1, 1};
+        // Cleared whole: with a scissor, llvmpipe left the multisampled targets' samples on
+        // the rectangle's border uncleared, which the composite drew as a dark outline.
         f.glClearBufferfv(GL_COLOR, 0, zero.data());
         f.glClearBufferfv(GL_COLOR, 1, one.data());
+        f.glEnable(GL_SCISSOR_TEST);
+        f.glScissor(box.x, box.y, box.z, box.w);
         f.glDepthMask(GL_FALSE);
         f.glEnable(GL_BLEND);
         f.glBlendFunci(0, GL_ONE, GL_ONE);
@@ -298,9 +313,9 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
         composite.setUniformValue("u_accumulation", 0);
         composite.setUniformValue("u_revealage", 1);
         f.glActiveTexture(GL_TEXTURE0);
-        f.glBindTexture(GL_TEXTURE_2D, m_gpu->targets.accumulation());
+        f.glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, m_gpu->targets.accumulation());
         f.glActiveTexture(GL_TEXTURE1);
-        f.glBindTexture(GL_TEXTURE_2D, m_gpu->targets.revealage());
+        f.glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, m_gpu->targets.revealage());
         f.glBindVertexArray(m_gpu->emptyVao);
         f.glDrawArrays(GL_TRIANGLES, 0, 3);
         f.glDisable(GL_BLEND);

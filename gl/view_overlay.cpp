@@ -272,6 +272,9 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
         }
         if (in.showMean)
             overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});
+        if (in.planeCurves) {
+            overlay.legend.push_back({in.planeColor, QStringLiteral("Plane curves (dashed)")});
+        }
     }
     return overlay;
 }

@@ -65,6 +65,10 @@ struct OverlayInput {
     int height = 0;
     const std::vector<MemberAppearance>* appearance = nullptr;
     bool showMean = false;
+    // The cutting plane is on and cuts surfaces: its dashed curves get a legend entry, in the
+    // plane's own colour.
+    bool planeCurves = false;
+    glm::vec3 planeColor{1.0F};
     bool showAxes = true;
     bool showLegend = true;
     QString title;  // empty: none

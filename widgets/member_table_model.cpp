@@ -1,5 +1,6 @@
 #include "widgets/member_table_model.h"
 
+#include <QRegularExpression>
 #include <cmath>
 
 #include "widgets/member_selection.h"
@@ -7,6 +8,17 @@
 namespace ensil::ui {
 namespace {
 QVariant number(double value) { return std::isnan(value) ? QVariant() : QVariant(value); }
+
+// The member's number as the file names it: "member 0" (ERA5's `number` coordinate runs 0-9)
+// is number 0, so the # column and the name never disagree; names that carry no number (dates,
+// file names) are counted from 1 in file order.
+int memberNumber(const QString& name, int row) {
+    static const QRegularExpression numbered(QStringLiteral("^member (-?\\d+)$"));
+    const QRegularExpressionMatch match = numbered.match(name);
+    bool ok = false;
+    const int number = match.hasMatch() ? match.captured(1).toInt(&ok) : 0;
+    return ok ? number : row + 1;
+}
 
 QString numberText(double value) {
     if (std::isnan(value)) return QStringLiteral("-");
@@ -61,7 +73,7 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
         const bool sort = role == SortRole;
         switch (column) {
             case Index:
-                return m + 1;  // as in the names "member 1", "member 2", ...
+                return memberNumber(m_selection->name(m), m);
             case Name:
                 return m_selection->name(m);
             case Cluster: {

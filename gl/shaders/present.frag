@@ -6,6 +6,9 @@ uniform bool u_scaled;
 uniform vec2 u_frameSize;
 out vec4 o_color;
 void main() {
-    o_color = u_scaled ? texture(u_scene, gl_FragCoord.xy / u_frameSize)
-                       : texelFetch(u_scene, ivec2(gl_FragCoord.xy), 0);
+    // Opaque: blending and alpha-to-coverage leave the scene's alpha below 1 in places, which a
+    // window or a saved image must not take for transparency.
+    vec3 colour = u_scaled ? texture(u_scene, gl_FragCoord.xy / u_frameSize).rgb
+                           : texelFetch(u_scene, ivec2(gl_FragCoord.xy), 0).rgb;
+    o_color = vec4(colour, 1.0);
 }

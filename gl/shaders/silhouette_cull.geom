@@ -22,6 +22,13 @@
 // those distances become the larger of theirs and the strip's at each vertex, which, the maximum
 // being convex, keeps every point where either holds.
 //
+// Antialiasing: surface.frag also draws a fringe beyond each band's edge, where a pixel-wide box
+// filter still reaches into the band: at most half its fwidth, 0.71 pixels. A pixel whose centre
+// lies in the fringe writes the samples of the triangle that cover it, up to 0.71 pixels
+// farther, so the silhouette and curve distances are widened by twice their gradient's length
+// per pixel (the triangle's, from its corners on screen): no sample such a pixel writes is
+// clipped away.
+//
 // Density-based removal: outlyingness is interpolated linearly, and fragments at or below the
 // member's group threshold o_min are discarded: distance 3.
 layout(triangles) in;
@@ -60,6 +67,7 @@ uniform float u_removalMin;    // o*_min
 uniform float u_removalMax;    // o*_max
 uniform int u_groupSize;       // s_G
 uniform int u_memberIndex;     // i_M
+uniform vec2 u_viewportSize;   // pixels
 
 // Slack for rounding between this stage and the fragment shader.
 const float kSlack = 1e-3;
@@ -80,6 +88,23 @@ float interpolationError() {
 float removalThreshold() {
     int group = u_memberIndex % u_groupSize;
     return u_removalMin + float(group) * (u_removalMax - u_removalMin) / float(u_groupSize);
+}
+
+// How much a quantity linear over the triangle, with these values at its corners, changes per
+// pixel on screen; very large when the triangle is seen edge-on or reaches behind the eye, so
+// that nothing is dropped there.
+float perPixel(float c0, float c1, float c2) {
+    vec2 s[3];
+    for (int i = 0; i < 3; ++i) {
+        vec4 p = gl_in[i].gl_Position;
+        if (p.w <= 1e-6) return 1e30;
+        s[i] = (p.xy / p.w * 0.5 + 0.5) * u_viewportSize;
+    }
+    vec2 e1 = s[1] - s[0], e2 = s[2] - s[0];
+    float det = e1.x * e2.y - e1.y * e2.x;
+    if (abs(det) < 1e-6) return 1e30;
+    float d1 = c1 - c0, d2 = c2 - c0;
+    return length(vec2(d1 * e2.y - d2 * e1.y, e1.x * d2 - e2.x * d1)) / abs(det);
 }
 
 void main() {
@@ -116,9 +141,27 @@ void main() {
     float kept[3];
     for (int i = 0; i < 3; ++i) {
         float band = eyeDistance[i] * (widest + kSlack) + error;
-        upper[i] = max(band - eyeDistance[i] * vn[i], curve[i]);
-        lower[i] = max(band + eyeDistance[i] * vn[i], curve[i]);
-        kept[i] = removal ? max(v_in[i].outlyingness - threshold, curve[i]) : 1.0;
+        upper[i] = band - eyeDistance[i] * vn[i];
+        lower[i] = band + eyeDistance[i] * vn[i];
+    }
+    float upperFringe = 2.0 * perPixel(upper[0], upper[1], upper[2]);
+    float lowerFringe = 2.0 * perPixel(lower[0], lower[1], lower[2]);
+    float curveFringe = u_planeEnabled ? 2.0 * perPixel(curve[0], curve[1], curve[2]) : 0.0;
+    // The fragment shader's own hard edges (the plane's cut, removal's threshold) are decided at
+    // pixel centres; their clip distances get the same margin, so that the samples of a pixel it
+    // keeps are not clipped either.
+    float behindFringe = u_planeEnabled ? 2.0 * perPixel(behind[0], behind[1], behind[2]) : 0.0;
+    float keptFringe = 0.0;
+    if (removal) {
+        keptFringe = 2.0 * perPixel(v_in[0].outlyingness, v_in[1].outlyingness,
+                                    v_in[2].outlyingness);
+    }
+    for (int i = 0; i < 3; ++i) {
+        float onCurve = curve[i] + curveFringe;
+        upper[i] = max(upper[i] + upperFringe, onCurve);
+        lower[i] = max(lower[i] + lowerFringe, onCurve);
+        kept[i] = removal ? max(v_in[i].outlyingness - threshold + keptFringe, onCurve) : 1.0;
+        behind[i] += behindFringe;
     }
     if (max(upper[0], max(upper[1], upper[2])) < 0.0 ||
         max(lower[0], max(lower[1], lower[2])) < 0.0 ||

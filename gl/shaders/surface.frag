@@ -31,13 +31,16 @@ uniform vec4 u_plane;          // unit normal and offset; the viewer's side is n
 uniform float u_planeEpsilon;  // eps: the thickness of the intersection curves
 uniform bool u_pick;
 uniform int u_pickId;          // 0 = nothing pickable (the mean), else member + 1
+uniform bool u_emphasis;       // a selected member drawn as a surface: a thicker, opaque rim
 
 layout(location = 0) out vec4 o_color;   // opaque colour, OIT accumulation, or the pick id
 layout(location = 1) out float o_reveal; // OIT revealage
 
 const float kEpsilon = 1e-4;
+const float kEmphasisThickening = 2.5;  // the rim of a selected surface, in tau
+const float kWidestFilter = 2.0;        // the box filter's largest width, in coefficient units
 
-float silhouetteCoefficient(vec3 v, vec3 n) {
+float silhouetteCoefficient(vec3 v, vec3 n, float tau) {
     // Curvature along the view direction (Euler's formula).
     vec3 w = v - dot(n, v) * n;
     float kappaV = v_in.kappa.x;
@@ -47,8 +50,29 @@ float silhouetteCoefficient(vec3 v, vec3 n) {
         kappaV = v_in.kappa.x * c * c + v_in.kappa.y * (1.0 - c * c);
     }
     // Convex and concave parts are outlined alike: the thickness uses |kappa_v|.
-    float t = clamp(u_tau * abs(kappaV), kEpsilon, 1.0);
+    float t = clamp(tau * abs(kappaV), kEpsilon, 1.0);
     return abs(dot(v, n)) / sqrt(t * (2.0 - t));
+}
+
+// Antialiasing (METHODS.md section 11): every band is drawn with what a pixel-wide box filter
+// over its coefficient gives, the coefficient's change across the pixel being `width`
+// (fwidth). A band thinner than a pixel then fades instead of breaking into dots, and its
+// edges are smooth; the picking pass keeps the exact thresholds.
+
+// The fraction of the pixel where the coefficient is at most 1.
+float coverage(float coefficient, float width) {
+    if (u_pick) return coefficient <= 1.0 ? 1.0 : 0.0;
+    return clamp((1.0 - coefficient) / width + 0.5, 0.0, 1.0);
+}
+
+// The shaded silhouette's opacity profile a(s) (1 up to s = 0.5, then falling linearly to 0 at
+// 1) and the profile weighted by its colour's brightness c(s) (1 inside, 0.5 on the outer
+// half), each integrated from 0 to s: the box filter is their difference over the pixel.
+float opacityIntegral(float s) {
+    return s < 0.5 ? s : (s < 1.0 ? -s * s + 2.0 * s - 0.25 : 0.75);
+}
+float brightnessIntegral(float s) {
+    return s < 0.5 ? s : 0.25 + 0.5 * opacityIntegral(s);
 }
 
 float removalFactor() {
@@ -72,16 +96,18 @@ vec3 lit(vec3 colour, vec3 v, vec3 n) {
     return colour * (0.3 + 0.7 * abs(dot(n, v)));
 }
 
-void writeOpaque(vec3 colour) {
+// `alpha` is the share of the pixel covered: with alpha-to-coverage on (the opaque pass over the
+// multisampled scene), that share of its samples is written.
+void writeOpaque(vec3 colour, float alpha) {
     o_color = u_pick ? vec4(vec3((u_pickId >> 16) & 255, (u_pickId >> 8) & 255, u_pickId & 255)
                             / 255.0, 1.0)
-                     : vec4(colour, 1.0);
+                     : vec4(colour, alpha);
     o_reveal = 0.0;
 }
 
 void writeTranslucent(vec3 colour, float alpha) {
     if (u_pick) {
-        writeOpaque(colour);
+        writeOpaque(colour, 1.0);
         return;
     }
     float z = gl_FragCoord.z;
@@ -90,37 +116,74 @@ void writeTranslucent(vec3 colour, float alpha) {
     o_reveal = alpha;
 }
 
+// The cutting plane's curves are dashed, so they are never mistaken for silhouettes: along the
+// curve (across the gradient of the distance behind the plane, on screen), dashes of the
+// member's colour alternate with darker gaps every kDashPixels.
+const float kDashPixels = 6.0;
+vec3 curveColour(vec3 colour, vec2 gradient) {
+    if (u_pick || dot(gradient, gradient) < 1e-20) return colour;
+    vec2 along = normalize(vec2(-gradient.y, gradient.x));
+    return fract(dot(gl_FragCoord.xy, along) / (2.0 * kDashPixels)) < 0.5 ? colour
+                                                                          : 0.35 * colour;
+}
+
 void main() {
-    float behindPlane = u_planeEpsilon * 2.0;
-    if (u_planeEnabled) {
-        float side = dot(u_plane.xyz, v_in.position) - u_plane.w;
-        if (side > 0.0) discard;
-        behindPlane = -side;
-    }
+    float side = dot(u_plane.xyz, v_in.position) - u_plane.w;
+    float behindPlane = u_planeEnabled ? -side : u_planeEpsilon * 2.0;
     vec3 n = normalize(v_in.normal);
     vec3 v = u_orthographic ? -u_viewDirection : normalize(u_eye - v_in.position);
-    if (u_mode == 3) {
-        writeOpaque(lit(u_color, v, n));
-        return;
-    }
     float plane = planeCoefficient(behindPlane);
-    if (u_mode == 2) {
-        if (plane <= 1.0) {
-            writeTranslucent(u_color, 1.0);  // the intersection curve, over the surfaces
-        } else {
-            writeTranslucent(lit(u_color, v, n), u_surfaceAlpha * removalFactor());
-        }
+    float silhouette = silhouetteCoefficient(v, n, u_tau);
+    float rim = u_emphasis ? silhouetteCoefficient(v, n, u_tau * kEmphasisThickening) : 2.0;
+    // Screen-space rates of change, taken before any fragment is discarded (derivatives are
+    // undefined in control flow that differs between neighbouring fragments). At most
+    // kWidestFilter: on tiny triangles the derivatives come from values extrapolated far
+    // beyond the triangle and can be wild, which would sprinkle dust where no band is.
+    float silhouetteWidth = clamp(fwidth(silhouette), 1e-4, kWidestFilter);
+    float planeWidth = clamp(fwidth(plane), 1e-4, kWidestFilter);
+    float rimWidth = clamp(fwidth(rim), 1e-4, kWidestFilter);
+    vec2 planeGradient = vec2(dFdx(behindPlane), dFdy(behindPlane));
+    if (u_planeEnabled && side > 0.0) discard;
+    if (u_mode == 3) {
+        writeOpaque(lit(u_color, v, n), 1.0);
         return;
     }
-    float sigma = min(silhouetteCoefficient(v, n), plane);
-    if (sigma > 1.0) discard;
-    float removal = plane <= 1.0 ? 1.0 : removalFactor();
+    float curve = coverage(plane, planeWidth);
+    if (u_mode == 2) {
+        // A surface; an emphasised (selected) one has a full-opacity silhouette rim, thicker
+        // than the others'; the intersection curve lies over both.
+        vec3 colour = lit(u_color, v, n);
+        float alpha = u_surfaceAlpha * removalFactor();
+        float edge = u_emphasis ? coverage(rim, rimWidth) : 0.0;
+        colour = mix(colour, u_color, edge);
+        alpha = mix(alpha, 1.0, edge);
+        colour = mix(colour, curveColour(u_color, planeGradient), curve);
+        alpha = mix(alpha, 1.0, curve);
+        if (alpha <= 0.0 && !u_pick) discard;
+        writeTranslucent(colour, alpha);
+        return;
+    }
+    float band = coverage(silhouette, silhouetteWidth);
+    if (max(band, curve) <= 0.0) discard;
+    bool onCurve = curve >= band;
+    float removal = onCurve ? 1.0 : removalFactor();
     if (removal <= 0.0) discard;
     if (u_mode == 1) {
-        writeOpaque(u_color);
+        // Opaque: the coverage becomes the share of the pixel's samples written.
+        writeOpaque(onCurve ? curveColour(u_color, planeGradient) : u_color, max(band, curve));
         return;
     }
-    vec3 colour = sigma < 0.5 ? u_color : 0.5 * u_color;
-    float alpha = sigma < 0.5 ? 1.0 : 1.0 - (sigma - 0.5) / 0.5;
-    writeTranslucent(colour, alpha * removal);
+    if (onCurve) {
+        writeTranslucent(curveColour(u_color, planeGradient), curve);
+        return;
+    }
+    if (u_pick) {
+        writeOpaque(u_color, 1.0);
+        return;
+    }
+    float lo = silhouette - 0.5 * silhouetteWidth, hi = silhouette + 0.5 * silhouetteWidth;
+    float opacity = (opacityIntegral(hi) - opacityIntegral(lo)) / silhouetteWidth;
+    float brightness = (brightnessIntegral(hi) - brightnessIntegral(lo)) / silhouetteWidth;
+    if (opacity <= 0.0) discard;
+    writeTranslucent(u_color * (brightness / opacity), opacity * removal);
 }

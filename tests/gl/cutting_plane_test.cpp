@@ -1,6 +1,8 @@
 // The cutting plane (METHODS.md section 11) and density-based removal (section 10) on spheres,
 // whose geometry says exactly which pixels must change.
 #include <QImage>
+#include <algorithm>
+#include <cstdlib>
 
 #include "tests/gl/sphere_scene.h"
 
@@ -108,7 +110,13 @@ TEST_F(RemovalTest, ChangingTheThresholdsChangesOnlyMembersInTheBand) {
     std::array<int, 4> changedNear{0, 0, 0, 0};
     for (int y = 0; y < base.height(); ++y) {
         for (int x = 0; x < base.width(); ++x) {
-            if (base.pixel(x, y) == changed.pixel(x, y)) continue;
+            // A pixel counts as changed when a channel moved by more than a tenth: the
+            // antialiased fringe of a fading ring may tint its neighbour ring's pixels faintly.
+            const QRgb a = base.pixel(x, y), b = changed.pixel(x, y);
+            if (std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                          std::abs(qBlue(a) - qBlue(b))}) <= 25) {
+                continue;
+            }
             const double r = std::hypot(x - middle.x(), y - middle.y());
             std::size_t nearest = 0;
             for (std::size_t i = 1; i < rings.size(); ++i)

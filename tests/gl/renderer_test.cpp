@@ -164,3 +164,35 @@ TEST(RendererSelection, AFewSelectedAreSolidAndACrowdIsNot) {
     renderer.setAnimatedMember(2);
     EXPECT_TRUE(renderer.selectionShown().solid) << "the animated member is one solid surface";
 }
+
+namespace {
+// The largest |x| or |y| in normalised device coordinates of the box's corners.
+float boxReach(const gl::Renderer& renderer, float aspect) {
+    const glm::vec3 lo = renderer.frame().boxMin(), hi = renderer.frame().boxMax();
+    float reach = 0.0F;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 c = renderer.camera().viewProjection(aspect) *
+                            glm::vec4(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                                      corner & 4 ? hi.z : lo.z, 1.0F);
+        reach = std::max({reach, std::abs(c.x / c.w), std::abs(c.y / c.w)});
+    }
+    return reach;
+}
+}  // namespace
+
+TEST(RendererCamera, AResetViewIsFramedAgainWhenTheViewChangesShapeAndAMovedOneIsNot) {
+    gl::Renderer renderer;  // no GL needed: the camera and the frame only
+    const auto d = data::makeDemoEnsemble({.members = 2, .nx = 48, .ny = 24, .nz = 8, .seed = 5});
+    renderer.setViewSize(1600, 1000);
+    renderer.setGrid(d.ensemble.grid);  // framed for 1.6:1
+    ASSERT_LE(boxReach(renderer, 1.6F), 0.81F);
+    // The window becomes tall and narrow: the reset view is framed again, whole.
+    renderer.setViewSize(500, 1000);
+    EXPECT_LE(boxReach(renderer, 0.5F), 0.81F) << "the box sticks out of the narrow view";
+    EXPECT_GE(boxReach(renderer, 0.5F), 0.7F) << "and still fills it";
+    // A camera the user turned stays where it is.
+    renderer.camera().orbit(40.0F, 0.0F);
+    const float distance = renderer.camera().distance();
+    renderer.setViewSize(1600, 1000);
+    EXPECT_EQ(renderer.camera().distance(), distance);
+}

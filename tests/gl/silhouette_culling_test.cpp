@@ -15,6 +15,12 @@
 using namespace ensil;
 
 namespace {
+// The share of pixels allowed to differ. Since the picture is multisampled, a pixel on a band's
+// edge is drawn from its centre's values into the samples the (clipped or whole) triangle
+// covers, and a few such pixels differ by a sample; without the antialiasing margins in the
+// culling shader 0.5 to 5 % of the pixels differ.
+constexpr double kTolerance = 1.5e-3;
+
 class SilhouetteCullingTest : public test::OffscreenGlTest {
 protected:
     void SetUp() override {
@@ -62,7 +68,7 @@ TEST_F(SilhouetteCullingTest, ShadedAndSpaghettiLookTheSameWithAndWithoutCulling
         for (const float tau : {0.003F, 0.02F, 0.1F}) {
             m_renderer.settings().mode = mode;
             m_renderer.settings().thickness = tau;
-            EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode) << " tau " << tau;
+            EXPECT_LE(cullingDifference(), kTolerance) << "mode " << int(mode) << " tau " << tau;
         }
     }
 }
@@ -73,9 +79,9 @@ TEST_F(SilhouetteCullingTest, PlaneCurvesSurviveCulling) {
         gl::CuttingPlane::acrossBox({0.3F, 1.0F, 0.2F}, 0.1F, frame.boxMin(), frame.boxMax());
     m_renderer.settings().plane.thickness = 0.01F;
     m_renderer.camera().setAngles(-60.0F, 40.0F);
-    EXPECT_LE(cullingDifference(), 2e-4);
+    EXPECT_LE(cullingDifference(), kTolerance);
     m_renderer.camera().setProjection(gl::Camera::Projection::Orthographic);
-    EXPECT_LE(cullingDifference(), 2e-4);
+    EXPECT_LE(cullingDifference(), kTolerance);
 }
 
 TEST_F(SilhouetteCullingTest, CloseUpPerspectiveLooksTheSame) {
@@ -86,7 +92,7 @@ TEST_F(SilhouetteCullingTest, CloseUpPerspectiveLooksTheSame) {
         for (const float tau : {0.003F, 0.05F}) {
             m_renderer.settings().mode = mode;
             m_renderer.settings().thickness = tau;
-            EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode) << " tau " << tau;
+            EXPECT_LE(cullingDifference(), kTolerance) << "mode " << int(mode) << " tau " << tau;
         }
     }
 }
@@ -103,11 +109,11 @@ TEST_F(SilhouetteCullingTest, DensityBasedRemovalLooksTheSame) {
     for (const gl::RenderMode mode :
          {gl::RenderMode::ShadedSilhouettes, gl::RenderMode::Spaghetti}) {
         m_renderer.settings().mode = mode;
-        EXPECT_LE(cullingDifference(), 2e-4) << "mode " << int(mode);
+        EXPECT_LE(cullingDifference(), kTolerance) << "mode " << int(mode);
     }
     // With a plane, the curves are kept whatever the removal says.
     const data::DisplayFrame& frame = m_renderer.frame();
     m_renderer.settings().plane =
         gl::CuttingPlane::acrossBox({0.0F, 1.0F, 0.0F}, 0.0F, frame.boxMin(), frame.boxMax());
-    EXPECT_LE(cullingDifference(), 2e-4);
+    EXPECT_LE(cullingDifference(), kTolerance);
 }

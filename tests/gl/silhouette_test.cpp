@@ -180,3 +180,26 @@ TEST_F(SilhouetteTest, TheRingLiesAtTheProjectedRadiusAndThickerTauWidensIt) {
     const QColor inside = thick.pixelColor(middle);
     EXPECT_LE(inside.red() - inside.blue(), 10) << "no silhouette in the middle";
 }
+
+TEST_F(SilhouetteTest, ManySelectedMembersAreSurfacesWithAThickerOpaqueRim) {
+    // More selected members than are drawn solid: translucent surfaces, each with a rim at full
+    // colour, wider than the silhouette the same member has unselected.
+    const glm::vec3 centre{15.5F, 15.5F, 15.5F};
+    const glm::vec3 colour{1.0F, 0.8F, 0.2F};
+    const std::size_t count = gl::Renderer::kMaxSolidSelection + 1;
+    show(spheres(std::vector<glm::vec3>(count, centre)), std::vector<glm::vec3>(count, colour));
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().showAxes = false;
+    m_renderer.settings().thickness = 0.02F;
+    const QPoint middle = project(display(centre));
+    const auto [plainOuter, plainWidth] = ringOnTheRight(draw(), middle);
+    std::vector<gl::MemberAppearance> look(count, {colour, true, true});
+    m_renderer.setAppearance(look);
+    ASSERT_FALSE(m_renderer.selectionShown().solid);
+    const QImage selected = draw();
+    const auto [outer, width] = ringOnTheRight(selected, middle);
+    EXPECT_NEAR(outer, plainOuter, 2);
+    EXPECT_GE(width, plainWidth + 2) << "the selected rim is thicker";
+    EXPECT_LE(channelDistance(selected.pixelColor(outer - 1, middle.y()), colour), 30)
+        << "and opaque: " << selected.pixelColor(outer - 1, middle.y()).name().toStdString();
+}

@@ -143,6 +143,18 @@ TEST(ViewOverlay, TheLegendCountsVisibleMembersPerClusterAndNamesTheMean) {
     EXPECT_EQ(o.legend[2].text, QStringLiteral("Mean member"));
 }
 
+TEST(ViewOverlay, PlaneCurvesHaveALegendEntryInThePlanesColourWhenThePlaneIsOn) {
+    Scene scene;
+    gl::OverlayInput in = scene.input();
+    EXPECT_EQ(gl::computeOverlay(in).legend.size(), 3u) << "no entry while the plane is off";
+    in.planeCurves = true;
+    in.planeColor = {1.0F, 0.85F, 0.55F};
+    const gl::ViewOverlay o = gl::computeOverlay(in);
+    ASSERT_EQ(o.legend.size(), 4u);
+    EXPECT_EQ(o.legend.back().text, QStringLiteral("Plane curves (dashed)"));
+    EXPECT_EQ(o.legend.back().color, in.planeColor);
+}
+
 TEST(ViewOverlay, AHiddenClusterReadsHiddenAndEntriesTakeTheMembersColours) {
     Scene scene;
     // Cluster 2 (stable identity 1) drawn in another colour, all its members hidden.

@@ -211,3 +211,17 @@ TEST_F(ShownMemberTable, LongNamesAreElidedInTheMiddleSoTheirEndsStayApart) {
     ASSERT_NE(table, nullptr);
     EXPECT_EQ(table->textElideMode(), Qt::ElideMiddle);
 }
+
+TEST(MemberTableModel, TheNumberColumnAgreesWithTheNamesFromTheFile) {
+    // ERA5 numbers its members 0-9 ("member 0" ...); names without a number (forecast dates)
+    // are counted from 1.
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    s.setMembers({{QStringLiteral("member 0"), QStringLiteral("member 9")}, {}, {}});
+    EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 0);
+    EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 9);
+    s.setMembers(
+        {{QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-02T00:00")}, {}, {}});
+    EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);
+    EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 2);
+}
