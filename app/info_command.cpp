@@ -29,7 +29,19 @@ Geography geographyOf(const data::EnsembleDescription& d) {
     return {geo::lonLatBounds(d.grid, projection), projection.reason()};
 }
 
-QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatistics& s) {
+// The names of the members with no valid value, each said on `err`.
+QStringList membersWithoutData(const data::Ensemble& e, QTextStream& err) {
+    QStringList names;
+    for (const std::size_t m : data::membersWithoutData(e)) {
+        names << qs(e.members[m].name);
+        err << "ensil info: warning: '" << names.back() << "' of '" << qs(e.variable)
+            << "' has no valid value (every value is missing)\n";
+    }
+    return names;
+}
+
+QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatistics& s,
+                   const data::Ensemble& e, const QStringList& withoutData) {
     QJsonObject o;
     o[QStringLiteral("format")] = qs(d.format);
     o[QStringLiteral("variable")] = qs(d.variable);
@@ -69,6 +81,8 @@ QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatisti
     o[QStringLiteral("range")] = QJsonArray{s.minimum, s.maximum};
     o[QStringLiteral("mean")] = s.mean;
     o[QStringLiteral("missing")] = static_cast<qint64>(s.missingCount);
+    o[QStringLiteral("infinite")] = static_cast<qint64>(e.infiniteValues);  // among the missing
+    o[QStringLiteral("members_without_data")] = QJsonArray::fromStringList(withoutData);
     o[QStringLiteral("bytes")] = static_cast<qint64>(d.bytes());
     QJsonArray variables;
     for (const data::VariableInfo& v : d.variables) {
@@ -85,7 +99,7 @@ QJsonObject toJson(const data::EnsembleDescription& d, const prep::FieldStatisti
 }
 
 void printText(QTextStream& out, const data::DataSelection& sel, const data::EnsembleDescription& d,
-               const prep::FieldStatistics& s) {
+               const prep::FieldStatistics& s, const data::Ensemble& e) {
     out << "File:       "
         << qs(sel.paths.size() == 1 ? sel.paths.front()
                                     : std::to_string(sel.paths.size()) + " files")
@@ -141,7 +155,9 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
     out << "Values:     " << s.minimum << " .. " << s.maximum << " " << qs(d.units) << ", mean "
         << s.mean << "\n";
     out << "Missing:    " << s.missingCount << " of " << (s.missingCount + s.validCount)
-        << " values\n";
+        << " values";
+    if (e.infiniteValues > 0) out << " (" << e.infiniteValues << " of them infinite)";
+    out << "\n";
     out << "Memory:     "
         << QString::number(static_cast<double>(d.bytes()) / (1024.0 * 1024.0), 'f', 1) << " MiB\n";
 }
@@ -175,10 +191,15 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
         data::EnsembleDescription description;
         const data::Ensemble ensemble = data::openEnsemble(*selection, {}, {}, &description);
         const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
+        if (const auto note = data::infiniteValuesWarning(ensemble)) {
+            err << "ensil info: warning: " << qs(*note) << "\n";
+        }
+        const QStringList withoutData = membersWithoutData(ensemble, err);
         if (parser.isSet(json)) {
-            out << QJsonDocument(toJson(description, stats)).toJson(QJsonDocument::Indented);
+            out << QJsonDocument(toJson(description, stats, ensemble, withoutData))
+                       .toJson(QJsonDocument::Indented);
         } else {
-            printText(out, *selection, description, stats);
+            printText(out, *selection, description, stats, ensemble);
         }
         return 0;
     } catch (const data::Error& e) {

@@ -65,12 +65,45 @@ struct Result {
     std::vector<double> meanOutlyingness;
     std::map<std::string, double> seconds;
     QString cache;
+    QStringList membersWithoutData;  // left out of everything below
 };
+
+QString memberName(const data::Member& member, std::size_t index) {
+    return member.name.empty() ? QStringLiteral("member %1").arg(index + 1)
+                               : QString::fromStdString(member.name);
+}
+
+// Members with no valid value have no isosurface and no distance to any other member (their
+// distances, the linkage heights and their figures would all be infinite, null in JSON): they
+// are named on `err` and taken out of the ensemble, so every number the results give is one.
+QStringList leaveOutMembersWithoutData(data::Ensemble& ensemble, QTextStream& err) {
+    const std::vector<std::size_t> empty = data::membersWithoutData(ensemble);
+    if (empty.empty()) return {};
+    QStringList names;
+    std::vector<data::Member> kept;
+    for (std::size_t m = 0, next = 0; m < ensemble.members.size(); ++m) {
+        if (next < empty.size() && empty[next] == m) {
+            names << memberName(ensemble.members[m], m);
+            ++next;
+        } else {
+            kept.push_back(std::move(ensemble.members[m]));
+        }
+    }
+    ensemble.members = std::move(kept);
+    for (const QString& name : names) {
+        err << "ensil preprocess: warning: '" << name << "' of '"
+            << QString::fromStdString(ensemble.variable)
+            << "' has no valid value (every value is missing); it is left out of the "
+               "clustering and of every per-member result\n";
+    }
+    return names;
+}
 
 QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonObject o;
     const data::Grid& g = r.ensemble.grid;
     o[QStringLiteral("member_count")] = static_cast<qint64>(r.ensemble.memberCount());
+    o[QStringLiteral("members_without_data")] = QJsonArray::fromStringList(r.membersWithoutData);
     o[QStringLiteral("grid")] = QJsonArray{static_cast<qint64>(g.nx()), static_cast<qint64>(g.ny()),
                                            static_cast<qint64>(g.nz())};
     o[QStringLiteral("variable")] = QString::fromStdString(r.ensemble.variable);
@@ -114,9 +147,7 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     const auto figure = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
     QJsonArray members;
     for (std::size_t m = 0; m < r.ensemble.memberCount(); ++m) {
-        const std::string& name = r.ensemble.members[m].name;
-        members.append(QJsonObject{{"name", name.empty() ? QStringLiteral("member %1").arg(m + 1)
-                                                         : QString::fromStdString(name)},
+        members.append(QJsonObject{{"name", memberName(r.ensemble.members[m], m)},
                                    {"cluster", m < r.labels.size() ? r.labels[m] : -1},
                                    {"distance_to_mean", figure(r.distancesToMean[m])},
                                    {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
@@ -129,8 +160,11 @@ void printText(QTextStream& out, const Result& r, int k) {
     const auto& m = r.meshes;
     out << "Ensemble:   " << r.ensemble.memberCount() << " members of "
         << QString::fromStdString(r.ensemble.variable) << " on " << r.ensemble.grid.nx() << " x "
-        << r.ensemble.grid.ny() << " x " << r.ensemble.grid.nz() << ", isovalue " << m.isovalue
-        << "\n";
+        << r.ensemble.grid.ny() << " x " << r.ensemble.grid.nz() << ", isovalue " << m.isovalue;
+    if (!r.membersWithoutData.isEmpty()) {
+        out << " (" << r.membersWithoutData.size() << " without data left out)";
+    }
+    out << "\n";
     out << "Triangles:  " << m.trianglesExtracted << " extracted, " << m.triangles
         << " after decimation (error <= " << m.worstErrorCells << " cells); " << m.vertices
         << " vertices, " << sizeof(data::PackedVertex) << " bytes each\n";
@@ -201,12 +235,18 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         if (const auto note = data::fewLevelsWarning(r.ensemble.grid)) {
             err << "ensil preprocess: note: " << QString::fromStdString(*note) << "\n";
         }
+        if (const auto note = data::infiniteValuesWarning(r.ensemble)) {
+            err << "ensil preprocess: warning: " << QString::fromStdString(*note) << "\n";
+        }
+        r.membersWithoutData = leaveOutMembersWithoutData(r.ensemble, err);
         const int members = static_cast<int>(r.ensemble.memberCount());
         if (k > members && !clustersGiven) {
             k = members;  // the default asks for more clusters than a small ensemble has
         } else if (k > members) {
             err << "ensil preprocess: --clusters " << k << " is more than the " << members
-                << " members of this ensemble; give at most " << members << "\n";
+                << " members of this ensemble"
+                << (r.membersWithoutData.isEmpty() ? "" : " with data") << "; give at most "
+                << members << "\n";
             return 2;
         }
         const prep::FieldStatistics stats =
@@ -237,6 +277,11 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         job.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
                                                    " seed=" + std::to_string(demo.seed)
                                              : data::sourceIdentity(*selection);
+        // Meshes of fewer members than the file holds must not be taken for the file's.
+        if (!r.membersWithoutData.isEmpty()) {
+            job.sourceKey +=
+                " without=" + r.membersWithoutData.join(QLatin1Char(',')).toStdString();
+        }
         stage.restart();
         const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
         r.seconds["moments"] = seconds(stage);

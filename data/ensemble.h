@@ -31,6 +31,9 @@ struct Ensemble {
     std::vector<std::string> fixedDimensions;
     GridMapping gridMapping;  // the horizontal axes' map projection, when the file names one
     std::vector<Member> members;
+    // Values that were +inf or -inf in the file: openEnsemble() makes them NaN (missing), since
+    // no isosurface, range or distance can use them; the count is kept so it can be said.
+    std::size_t infiniteValues = 0;
 
     [[nodiscard]] std::size_t memberCount() const { return members.size(); }
     [[nodiscard]] std::size_t bytes() const {

@@ -2,10 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -147,23 +150,46 @@ Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& sto
                                             std::to_string(description.grid.nz()) + " points)");
     Ensemble ensemble = reader.read(selection, stop, progress);
     if (describedAs != nullptr) *describedAs = std::move(description);
-    bool anyValid = false;
-    for (const Member& m : ensemble.members) {
-        for (float v : m.values) {
-            if (v == v) {
-                anyValid = true;
-                break;
-            }
+    // An infinity is no value an isosurface can pass through; left in, it made the range
+    // [min, inf] (null in JSON) and the histogram's bins undefined. Branch-free, so it
+    // vectorises.
+    constexpr float kInfinity = std::numeric_limits<float>::infinity();
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    for (Member& m : ensemble.members) {
+        std::size_t infinite = 0;
+        for (float& v : m.values) {
+            const bool isInfinite = std::abs(v) == kInfinity;
+            infinite += isInfinite ? 1 : 0;
+            v = isInfinite ? kNaN : v;
         }
-        if (anyValid) break;
+        ensemble.infiniteValues += infinite;
     }
-    if (!anyValid) {
+    if (membersWithoutData(ensemble).size() == ensemble.members.size()) {
         throw Error(
             ErrorKind::AllValuesMissing,
             "every value of '" + ensemble.variable + "' in " + ensemble.source +
                 " is missing (fill value or outside valid_range): there is nothing to draw");
     }
     return ensemble;
+}
+
+std::optional<std::string> infiniteValuesWarning(const Ensemble& ensemble) {
+    const std::size_t n = ensemble.infiniteValues;
+    if (n == 0) return std::nullopt;
+    return std::to_string(n) + (n == 1 ? " value of '" : " values of '") + ensemble.variable +
+           (n == 1 ? "' is" : "' are") +
+           " infinite (+inf or -inf); ensil treats them as missing values";
+}
+
+std::vector<std::size_t> membersWithoutData(const Ensemble& ensemble) {
+    std::vector<std::size_t> empty;
+    for (std::size_t m = 0; m < ensemble.members.size(); ++m) {
+        const FieldValues& values = ensemble.members[m].values;
+        if (std::none_of(values.begin(), values.end(), [](float v) { return v == v; })) {
+            empty.push_back(m);
+        }
+    }
+    return empty;
 }
 
 }  // namespace ensil::data

@@ -83,10 +83,19 @@ const EnsembleReader& readerFor(const DataSelection& selection);
 EnsembleDescription describeEnsemble(const DataSelection& selection);
 
 // Checks the memory the ensemble needs against what the machine has (Error(OutOfMemory) with
-// both figures), then reads it.
+// both figures), then reads it. Infinite values become NaN (missing), counted in
+// Ensemble::infiniteValues; Error(AllValuesMissing) when no value is left.
 // `description`, when given, receives what the headers said (read once, not twice).
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop = {},
                       const Progress& progress = {}, EnsembleDescription* description = nullptr);
+
+// "2 values of 't' are infinite (+inf or -inf); ensil treats them as missing values", when
+// openEnsemble() found any.
+std::optional<std::string> infiniteValuesWarning(const Ensemble& ensemble);
+
+// The members with no valid (non-NaN) value, by index in member order. Such a member has no
+// isosurface and no distance to any other member.
+std::vector<std::size_t> membersWithoutData(const Ensemble& ensemble);
 
 // What identifies the data a selection reads, for cache keys: every file's absolute path,
 // size and modification time, and the variable, member dimension and time index. A file

@@ -7,6 +7,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -78,6 +79,34 @@ std::string whyNotUsable(const DatasetInfo& d) {
     return {};
 }
 
+// Name order with runs of digits compared by value, so member m2 comes before m10 (h5py files
+// often number members without leading zeros). Equal by that rule, plain order decides.
+bool naturalLess(const std::string& a, const std::string& b) {
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    std::size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (digit(a[i]) && digit(b[j])) {
+            std::size_t ie = i, je = j;
+            while (ie < a.size() && digit(a[ie])) ++ie;
+            while (je < b.size() && digit(b[je])) ++je;
+            std::size_t is = i, js = j;  // past leading zeros
+            while (is + 1 < ie && a[is] == '0') ++is;
+            while (js + 1 < je && b[js] == '0') ++js;
+            const std::string_view x(a.data() + is, ie - is), y(b.data() + js, je - js);
+            if (x.size() != y.size()) return x.size() < y.size();
+            if (x != y) return x < y;
+            i = ie;
+            j = je;
+        } else {
+            if (a[i] != b[j]) return a[i] < b[j];
+            ++i;
+            ++j;
+        }
+    }
+    if ((i < a.size()) != (j < b.size())) return j < b.size();
+    return a < b;
+}
+
 bool isMemberCandidate(const DatasetInfo& d) {
     return d.shape.size() == 3 && d.typeProblem.empty();
 }
@@ -91,7 +120,9 @@ std::vector<MemberGroup> memberGroups(const File::Contents& contents, std::size_
             if (parentOf(d.path) == group && isMemberCandidate(d)) g.datasets.push_back(d);
         }
         if (g.datasets.size() < minimum || g.datasets.empty()) continue;
-        std::ranges::sort(g.datasets, {}, [](const DatasetInfo& d) { return d.path; });
+        std::ranges::sort(g.datasets, [](const DatasetInfo& x, const DatasetInfo& y) {
+            return naturalLess(x.path, y.path);
+        });
         for (const DatasetInfo& d : g.datasets) {
             if (d.shape != g.datasets.front().shape) {
                 g.problem = "datasets in group '" + group + "' differ in shape: '" +
@@ -216,12 +247,29 @@ std::vector<std::string> usableNames(const File::Contents& contents) {
                 "no dataset in '" + file.path() + "' can make an ensemble" + reasons);
 }
 
+// The first usable 4D dataset, else the first group of two or more (z, y, x) datasets, in the
+// depth-first name order of the file; when the file holds more than one such ensemble, the
+// reason names them all and how to choose another.
 Plan automaticPlan(const File& file, const File::Contents& contents) {
+    std::vector<std::string> ensembles;
+    std::optional<Plan> plan;
     for (const DatasetInfo& d : contents.datasets) {
-        if (d.shape.size() == 4 && whyNotUsable(d).empty()) return datasetPlan(file, d);
+        if (d.shape.size() != 4 || !whyNotUsable(d).empty()) continue;
+        ensembles.push_back(d.path);
+        if (!plan) plan = datasetPlan(file, d);
     }
     for (const MemberGroup& g : memberGroups(contents, 2)) {
-        if (g.problem.empty()) return groupPlan(file, g);
+        if (!g.problem.empty()) continue;
+        ensembles.push_back(g.path);
+        if (!plan) plan = groupPlan(file, g);
+    }
+    if (plan) {
+        if (ensembles.size() > 1) {
+            plan->reason += "; the first of the " + std::to_string(ensembles.size()) +
+                            " ensembles in the file (" + quotedList(ensembles) +
+                            "): name another with --var (the Variable box of the Open dialog)";
+        }
+        return *plan;
     }
     for (const DatasetInfo& d : contents.datasets) {
         if (d.shape.size() == 3 && whyNotUsable(d).empty()) return datasetPlan(file, d);

@@ -8,6 +8,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <vector>
 
 #include "data/error.h"
 
@@ -39,6 +41,13 @@ void quietHdf5OnThisThread() {
 // NC_MAX_VAR_DIMS, and every list tag and type must be one the format has (netCDF-C only
 // asserts the types, so a damaged one made it read on out of step, taking later bytes for
 // counts). A header that ends early is left to nc_open, which refuses it.
+// A file cut inside its data has a whole header, and netCDF-C reads the values past its end as
+// zeros (or the fill value): so once the header is read, the size it implies (where each
+// variable's values begin, plus their size; for record variables, the records before the last
+// times the record size, plus the last one's values) is checked against the file's size before
+// any value is read. The values' sizes come from the dimensions and types, not from the header's
+// vsize (which CDF-2 caps at 4 GiB), and without the padding after the last value, which a
+// writer need not write.
 class ClassicHeader {
 public:
     ClassicHeader(const std::string& path, std::uintmax_t size)
@@ -49,20 +58,36 @@ public:
             const std::string magic = bytes(4);
             m_cdf5 = magic[3] == 5;
             m_offsets = magic[3] == 1 ? 4 : 8;
-            count();  // the record count
+            m_records = count();
             list(kDimensions, "dimensions", [this] {
                 name("a dimension name");
-                count();  // the length
+                m_dimensions.push_back(count());  // the length; 0 for the record dimension
             });
             list(kAttributes, "global attributes", [this] { attribute("global"); });
             list(kVariables, "variables", [this] { variable(); });
         } catch (const EndOfFile&) {
-            // nc_open says what is wrong.
+            return;  // nc_open says what is wrong.
         }
+        checkSize();
     }
 
 private:
     struct EndOfFile {};
+    struct Variable {
+        std::string name;
+        std::uint64_t begin = 0;  // where its values (its first record's) begin
+        std::uint64_t bytes = 0;  // its values (one record's), unpadded
+        bool record = false;
+        bool known = true;  // false when a dimension id is not the file's: nc_open refuses it
+    };
+    static constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+    // Sizes a damaged header gives can overflow: they stop at the largest number instead.
+    static std::uint64_t times(std::uint64_t a, std::uint64_t b) {
+        return b != 0 && a > kMax / b ? kMax : a * b;
+    }
+    static std::uint64_t plus(std::uint64_t a, std::uint64_t b) {
+        return a > kMax - b ? kMax : a + b;
+    }
     // The list tags (netCDF-C keeps them in its private headers).
     static constexpr std::uint64_t kDimensions = 0x0A, kVariables = 0x0B, kAttributes = 0x0C;
 
@@ -153,12 +178,66 @@ private:
             fail("gives variable '" + variable + "' " + std::to_string(dims) +
                  " dimensions (NetCDF allows at most " + std::to_string(NC_MAX_VAR_DIMS) + ")");
         }
-        skip(dims * (m_cdf5 ? 8 : 4));
+        Variable v;
+        v.name = variable;
+        std::uint64_t values = 1;
+        for (std::uint64_t d = 0; d < dims; ++d) {
+            const std::uint64_t id = count();
+            if (id >= m_dimensions.size()) {
+                v.known = false;
+            } else if (m_dimensions[id] == 0) {
+                v.record = v.record || d == 0;  // elsewhere nc_open refuses it
+            } else {
+                values = times(values, m_dimensions[id]);
+            }
+        }
         list(kAttributes, "attributes of variable '" + variable + "'",
              [&] { attribute("variable '" + variable + "'"); });
-        typeSize(bigEndian(4), "variable '" + variable + "'");
-        count();               // size
-        bigEndian(m_offsets);  // where its values begin
+        v.bytes = times(values, typeSize(bigEndian(4), "variable '" + variable + "'"));
+        count();                         // vsize
+        v.begin = bigEndian(m_offsets);  // where its values begin
+        m_variables.push_back(std::move(v));
+    }
+
+    // The size the header implies, against the file's; throws Error(CorruptFile) when the file
+    // is shorter.
+    void checkSize() const {
+        // A streaming file's record count is unknown (all bits set); netCDF-C counts its
+        // records from the file's size.
+        const bool streaming = m_records == (m_cdf5 ? kMax : 0xFFFFFFFFU);
+        std::uint64_t recordSize = 0;
+        std::size_t recordVariables = 0;
+        for (const Variable& v : m_variables) {
+            if (!v.known) return;  // nc_open refuses the file
+            if (v.record) {
+                recordSize = plus(recordSize, padded(v.bytes));
+                ++recordVariables;
+            }
+        }
+        // One record variable alone is not padded (the format's special case).
+        if (recordVariables == 1) {
+            for (const Variable& v : m_variables) {
+                if (v.record) recordSize = v.bytes;
+            }
+        }
+        std::uint64_t implied = 0;
+        const Variable* last = nullptr;
+        for (const Variable& v : m_variables) {
+            if (v.bytes == 0 || (v.record && (streaming || m_records == 0))) continue;
+            const std::uint64_t end =
+                v.record ? plus(plus(v.begin, times(m_records - 1, recordSize)), v.bytes)
+                         : plus(v.begin, v.bytes);
+            if (end > implied) {
+                implied = end;
+                last = &v;
+            }
+        }
+        if (last == nullptr || implied <= m_size) return;
+        throw Error(ErrorKind::CorruptFile,
+                    "'" + m_path + "' is truncated: it holds " + std::to_string(m_size) +
+                        " bytes, but its header implies " + std::to_string(implied) +
+                        " (the values of variable '" + last->name +
+                        "' end there). Copy or download it again");
     }
 
     std::string m_path;
@@ -166,6 +245,9 @@ private:
     std::uintmax_t m_size;
     bool m_cdf5 = false;
     int m_offsets = 4;
+    std::uint64_t m_records = 0;
+    std::vector<std::uint64_t> m_dimensions;
+    std::vector<Variable> m_variables;
 };
 
 // For classic files (first bytes "CDF\1", "CDF\2", "CDF\5"); others go to nc_open unchecked.
@@ -231,7 +313,29 @@ void checkHdf5Names(const std::string& path) {
                         "...'); NetCDF names have at most " + std::to_string(NC_MAX_NAME));
     }
 }
+// Attributes only netCDF-4 (or another writer of dimension scales) puts on datasets.
+herr_t findNetcdfMark(hid_t group, const char* path, const H5L_info_t* info, void* found) {
+    if (info->type != H5L_TYPE_HARD) return 0;
+    for (const char* name :
+         {"DIMENSION_LIST", "REFERENCE_LIST", "_Netcdf4Dimid", "_Netcdf4Coordinates"}) {
+        if (H5Aexists_by_name(group, path, name, H5P_DEFAULT) > 0) {
+            *static_cast<bool*>(found) = true;
+            return 1;  // stops the visit
+        }
+    }
+    return 0;
+}
 }  // namespace
+
+bool hasNetcdf4Marks(const std::string& path) {
+    quietHdf5OnThisThread();
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) return false;
+    bool found = H5Aexists(file, "_NCProperties") > 0 || H5Aexists(file, "_nc3_strict") > 0;
+    if (!found) H5Lvisit(file, H5_INDEX_NAME, H5_ITER_NATIVE, findNetcdfMark, &found);
+    H5Fclose(file);
+    return found;
+}
 
 NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
     if (!std::filesystem::exists(m_path)) {
@@ -282,33 +386,7 @@ NetcdfFile::NetcdfFile(std::string path) : m_path(std::move(path)) {
         var.dimIds.assign(ids.begin(), ids.begin() + nd);
         m_vars.push_back(std::move(var));
     }
-    checkNotTruncated();
     closeOnThrow.armed = false;
-}
-
-void NetcdfFile::checkNotTruncated() const {
-    // netCDF-C reads past the end of a truncated classic file as zeros (such files may
-    // legitimately be short when written without fill), so a cut download would load silently.
-    // The data alone needs at least this many bytes; the header comes on top.
-    int format = 0;
-    nc_inq_format(m_id, &format);
-    if (format == NC_FORMAT_NETCDF4 || format == NC_FORMAT_NETCDF4_CLASSIC) return;  // HDF5 checks
-    std::uintmax_t needed = 0;
-    for (const NcVariable& var : m_vars) {
-        std::size_t typeSize = 0;
-        nc_inq_type(m_id, var.type, nullptr, &typeSize);
-        std::uintmax_t bytes = typeSize;
-        for (int d : var.dimIds) bytes *= dimension(d).size;
-        needed += bytes;
-    }
-    std::error_code error;
-    const std::uintmax_t size = std::filesystem::file_size(m_path, error);
-    if (!error && size < needed) {
-        throw Error(ErrorKind::CorruptFile,
-                    "'" + m_path + "' is truncated: it holds " + std::to_string(size) +
-                        " bytes, but its header describes at least " + std::to_string(needed) +
-                        " bytes of data. Copy or download it again");
-    }
 }
 
 NetcdfFile::~NetcdfFile() {

@@ -64,13 +64,17 @@ public:
     void check(int status, const std::string& what) const;
 
 private:
-    void checkNotTruncated() const;
-
     std::string m_path;
     int m_id = -1;
     std::vector<NcDimension> m_dims;
     std::vector<NcVariable> m_vars;
 };
+
+// Whether an HDF5 file was written as netCDF-4: the root group has _NCProperties (netCDF-C 4.4.1
+// and later) or _nc3_strict (the classic model), or a dataset has dimension scales (how netCDF-4
+// keeps its dimensions; older files have only those). Plain HDF5 files, as h5py writes them,
+// have none. False when HDF5 cannot open the file. Hold netcdfLibraryMutex() around the call.
+bool hasNetcdf4Marks(const std::string& path);
 
 // "(number, time, plev, lat, lon)"
 std::string describeDimensions(const NetcdfFile& file, const NcVariable& var);

@@ -178,9 +178,12 @@ bool NetcdfReader::recognizes(const std::string& path) const {
         return true;
     }
     if (std::string(magic.data(), 4) != "\x89HDF") return false;
-    // NetCDF-4 is HDF5 inside. netCDF-C also opens plain HDF5 files, inventing "phony_dim_N"
-    // dimensions: those are left to the HDF5 reader.
+    // NetCDF-4 is HDF5 inside. netCDF-C also opens plain HDF5 files: those without netCDF-4's
+    // marks (h5py's, with the members in a group at any depth, where netCDF-C sees only the
+    // root group and says it holds no variable) are left to the HDF5 reader, and so are files
+    // where netCDF-C has to invent "phony_dim_N" dimensions.
     const std::lock_guard lock(netcdfLibraryMutex());
+    if (!hasNetcdf4Marks(path)) return false;
     try {
         const NetcdfFile file(path);
         return std::none_of(file.dimensions().begin(), file.dimensions().end(),

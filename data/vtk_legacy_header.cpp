@@ -138,6 +138,7 @@ private:
     std::vector<double> readValues(const std::string& type, std::size_t count,
                                    const std::string& what);
     void skipMetadata();
+    bool metadataFollows();
     void geometry(LegacyStructure& s, const std::string& keyword);
     void attribute(LegacyStructure& s, const std::string& keyword);
     void fieldArrays(LegacyStructure* s, std::size_t arrays);
@@ -150,6 +151,7 @@ private:
     bool m_binary = false;
     bool m_pointSection = false;
     std::size_t m_tuples = 0;
+    std::size_t m_components = 1;  // of the array read last, for its COMPONENT_NAMES
 };
 
 void Scanner::skipValues(const std::string& type, std::size_t count, const std::string& what) {
@@ -200,19 +202,43 @@ std::vector<double> Scanner::readValues(const std::string& type, std::size_t cou
     return values;
 }
 
-// An array's optional METADATA block ends at the first empty line.
+// The METADATA block VTK 5.1+ writers may put after any array (the METADATA keyword has just
+// been read): lines up to the first empty one, as vtkDataReader reads it, except that the
+// COMPONENT_NAMES line is followed by one line per component of the array before it, empty
+// for a component without a name. INFORMATION keys (NAME ... LOCATION ... and DATA lines)
+// are skipped with the rest.
 void Scanner::skipMetadata() {
     std::string text;
-    std::getline(m_in, text);
+    std::getline(m_in, text);  // the end of the METADATA line
     while (std::getline(m_in, text)) {
         if (!text.empty() && text.back() == '\r') text.pop_back();
         if (text.empty()) return;
+        if (lower(text).starts_with("component_names")) {
+            for (std::size_t c = 0; c < m_components; ++c) {
+                if (!std::getline(m_in, text)) return;
+            }
+        }
     }
+}
+
+// Whether the next word is METADATA; if so, skips its block. Otherwise the stream is left as
+// it was.
+bool Scanner::metadataFollows() {
+    const std::streampos at = m_in.tellg();
+    std::string word;
+    if (token(word) && lower(word) == "metadata") {
+        skipMetadata();
+        return true;
+    }
+    m_in.clear();
+    m_in.seekg(at);
+    return false;
 }
 
 void Scanner::recordAndSkip(LegacyStructure* s, const std::string& name, const std::string& type,
                             std::size_t components, std::size_t tuples) {
     if (s) s->pointArrays.push_back({name, type, components});
+    m_components = components;
     if (tuples > 0 && components > m_size / tuples) {
         fail("declares " + std::to_string(components) + " x " + std::to_string(tuples) +
              " values in array '" + name + "', more than its " + std::to_string(m_size) +
@@ -230,6 +256,7 @@ void Scanner::fieldArrays(LegacyStructure* s, std::size_t arrays) {
         const auto tuples = count("the tuple count of '" + name + "'");
         const std::string type = lower(need("the type of '" + name + "'"));
         recordAndSkip(s, name, type, components, tuples);
+        metadataFollows();  // as vtkDataReader looks for it: after every array
     }
 }
 
@@ -257,6 +284,7 @@ void Scanner::geometry(LegacyStructure& s, const std::string& keyword) {
         const auto values = count(keyword + " count");
         const std::string type = lower(need(keyword + " type"));
         s.coordinates[axis] = readValues(type, values, keyword);
+        m_components = 1;
     } else if (keyword == "field") {
         need("a field name");
         fieldArrays(nullptr, count("field array count"));

@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTextStream>
+#include <cmath>
 #include <fstream>
 
 #include "tests/app/ensil_run.h"
@@ -24,9 +28,10 @@ struct Case {
     const char* phrase;  // part of the message that says what is wrong
 };
 
-// VTK legacy files whose counts once wrapped around (abort: std::length_error) or asked for
-// gigabytes before the error.
-const Case kVtkCases[] = {
+// Files refused with exit status 1 and a message naming the file and what is wrong.
+const Case kCorruptCases[] = {
+    // VTK legacy files whose counts once wrapped around (abort: std::length_error) or asked for
+    // gigabytes before the error.
     {"vtk_negative_dimensions.vtk", "gives '-5' as a DIMENSIONS size"},
     {"vtk_negative_last_dimension.vtk", "gives '-1' as a DIMENSIONS size"},
     {"vtk_all_negative_dimensions.vtk", "gives '-1' as a DIMENSIONS size"},
@@ -34,11 +39,33 @@ const Case kVtkCases[] = {
     {"vtk_huge_dimensions.vtk", "more values than its 191 bytes can hold"},
     {"vtk_negative_coordinate_count.vtk", "gives '-4' as x_coordinates count"},
     {"vtk_billion_coordinates.vtk", "more values than its 235 bytes can hold"},
+    // A classic NetCDF file cut inside its data, once read with zeros for the missing end.
+    {"netcdf_truncated_data.nc",
+     "is truncated: it holds 1444 bytes, but its header implies 1544 (the values of variable "
+     "'t' end there)"},
 };
+
+// Every number the JSON promises, checked for null (NaN and infinity print as null).
+bool holdsNull(const QJsonValue& value) {
+    if (value.isNull()) return true;
+    if (value.isArray()) {
+        for (const QJsonValue& v : value.toArray()) {
+            if (holdsNull(v)) return true;
+        }
+    }
+    if (value.isObject()) {
+        for (const QJsonValue& v : value.toObject()) {
+            if (holdsNull(v)) return true;
+        }
+    }
+    return false;
+}
+
+QJsonObject jsonOf(const Outcome& o) { return QJsonDocument::fromJson(o.out.toUtf8()).object(); }
 }  // namespace
 
-TEST(BadInput, EveryCorruptVtkFileIsRefusedClearlyByInfoAndPreprocess) {
-    for (const Case& c : kVtkCases) {
+TEST(BadInput, EveryCorruptFileIsRefusedClearlyByInfoAndPreprocess) {
+    for (const Case& c : kCorruptCases) {
         const QString path = kBad + QLatin1String(c.file);
         for (const QStringList& command :
              {QStringList{"info", path}, QStringList{"preprocess", path, "--iso", "1"}}) {
@@ -102,4 +129,56 @@ TEST(BadInput, TheDefaultClusterCountFitsASmallEnsembleAndAnAskedOneIsExplained)
     EXPECT_EQ(asked.code, 2);
     EXPECT_TRUE(asked.err.contains("--clusters 6 is more than the 4 members"))
         << asked.err.toStdString();
+}
+
+TEST(BadInput, AMemberWithoutDataIsNamedAndLeftOutOfTheClustering) {
+    // Member 2 is all _FillValue: its distances and the linkage heights were once null.
+    const QString file = kBad + "member_without_data.nc";
+    const Outcome o = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    ASSERT_EQ(o.code, 0) << o.err.toStdString();
+    EXPECT_TRUE(o.err.contains("warning: 'member 2' of 't' has no valid value"))
+        << o.err.toStdString();
+    EXPECT_TRUE(o.err.contains("left out of the clustering")) << o.err.toStdString();
+    const QJsonObject json = jsonOf(o);
+    EXPECT_FALSE(holdsNull(json)) << o.out.toStdString();
+    EXPECT_EQ(json["members_without_data"].toArray(), QJsonArray{"member 2"});
+    EXPECT_EQ(json["member_count"].toInt(), 3);
+    ASSERT_EQ(json["distance_matrix"].toArray().size(), 3);
+    ASSERT_EQ(json["linkage"].toArray().size(), 2);
+    QStringList names;
+    for (const QJsonValue& m : json["members"].toArray()) names << m["name"].toString();
+    EXPECT_EQ(names, (QStringList{"member 0", "member 1", "member 3"}));
+    EXPECT_EQ(json["clusters"].toArray().size(), 3);
+    EXPECT_EQ(json["colors"].toArray().size(), 3);
+    // `ensil info` says so too.
+    const Outcome info = run({"info", file, "--json"});
+    ASSERT_EQ(info.code, 0) << info.err.toStdString();
+    EXPECT_EQ(jsonOf(info)["members_without_data"].toArray(), QJsonArray{"member 2"});
+    EXPECT_TRUE(info.err.contains("warning: 'member 2' of 't' has no valid value"))
+        << info.err.toStdString();
+}
+
+TEST(BadInput, InfinitiesInTheDataAreMissingValuesAndSaid) {
+    // One +inf and one -inf: the range was once [0, null] and the histogram cast infinity.
+    const QString file = kBad + "infinite_values.nc";
+    const Outcome info = run({"info", file, "--json"});
+    ASSERT_EQ(info.code, 0) << info.err.toStdString();
+    const QJsonObject json = jsonOf(info);
+    EXPECT_FALSE(holdsNull(json["range"])) << info.out.toStdString();
+    EXPECT_FALSE(holdsNull(json["mean"])) << info.out.toStdString();
+    const QJsonArray range = json["range"].toArray();
+    ASSERT_EQ(range.size(), 2);
+    EXPECT_EQ(range[0].toDouble(), 0.0);
+    EXPECT_EQ(range[1].toDouble(), 10.0) << "the largest finite value";
+    EXPECT_EQ(json["infinite"].toInt(), 2);
+    EXPECT_EQ(json["missing"].toInt(), 2) << "counted with the missing values";
+    EXPECT_TRUE(info.err.contains("2 values of 't' are infinite")) << info.err.toStdString();
+    const Outcome text = run({"info", file});
+    ASSERT_EQ(text.code, 0);
+    EXPECT_TRUE(text.out.contains("Values:     0 .. 10 K")) << text.out.toStdString();
+
+    const Outcome prep = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    ASSERT_EQ(prep.code, 0) << prep.err.toStdString();
+    EXPECT_FALSE(holdsNull(jsonOf(prep))) << prep.out.toStdString();
+    EXPECT_TRUE(prep.err.contains("2 values of 't' are infinite")) << prep.err.toStdString();
 }

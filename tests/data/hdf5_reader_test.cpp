@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,6 +76,15 @@ public:
     void numbers(const std::string& object, const char* name, const std::vector<T>& values,
                  hid_t type) {
         write(object, name, type, values.size(), values.data());
+    }
+    // A string attribute as h5py writes it: variable-length UTF-8.
+    void utf8(const std::string& object, const char* name, const std::string& value) {
+        const hid_t type = H5Tcopy(H5T_C_S1);
+        H5Tset_size(type, H5T_VARIABLE);
+        H5Tset_cset(type, H5T_CSET_UTF8);
+        const char* text = value.c_str();
+        write(object, name, type, 1, &text);
+        H5Tclose(type);
     }
 
 private:
@@ -231,6 +241,114 @@ TEST(Hdf5Reader, EmptyVariablePrefersFourDimensionalThenGroupThenSingleDataset) 
     const Ensemble e = reader.read(selection({dir.file("single.h5")}), {}, {});
     ASSERT_EQ(e.memberCount(), 1u);
     expectMemberValues(e, 0, 0);
+}
+
+// Files written by h5py: plain datasets, no dimension scales, no _NCProperties, the members in
+// a group one or more levels down. netCDF-C opens such files too (it opens any HDF5 file), so
+// the NetCDF reader once claimed them and refused them for holding no variables.
+TEST(Hdf5Reader, H5pyMemberGroupsInSubgroupsOpenThroughTheHdf5Reader) {
+    ensil::test::TempDir dir;
+    const std::string ensemble = dir.file("h5py_ensemble.h5");
+    {
+        H5Writer file(ensemble);
+        file.group("/ensemble");
+        for (std::size_t m = 0; m < 3; ++m) {
+            file.dataset("/ensemble/member_0" + std::to_string(m), kMemberDims,
+                         memberValues<double>(m), H5T_NATIVE_DOUBLE);
+        }
+        file.utf8("/ensemble", "units", "K");
+        file.utf8("/", "title", "written the way h5py writes");
+    }
+    const std::string deep = dir.file("h5py_deep.h5");
+    {
+        H5Writer file(deep);
+        file.group("/data");
+        file.group("/data/t");
+        file.dataset("/data/lat", {kNy}, std::vector<double>{50, 51, 52, 53, 54},
+                     H5T_NATIVE_DOUBLE);
+        // Eleven members: m10 comes after m9, not after m1.
+        for (std::size_t m = 0; m < 11; ++m) {
+            file.dataset("/data/t/m" + std::to_string(m), kMemberDims, memberValues<float>(m),
+                         H5T_NATIVE_FLOAT);
+        }
+    }
+    const DataSelection first = selection({ensemble});
+    EXPECT_EQ(readerFor(first).name(), "HDF5");
+    EnsembleDescription d;
+    const Ensemble e = openEnsemble(first, {}, {}, &d);
+    EXPECT_EQ(d.format, "HDF5");
+    EXPECT_EQ(d.variable, "/ensemble");
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member_00", "member_01", "member_02"}));
+    EXPECT_EQ(e.units, "K");
+    ASSERT_EQ(e.memberCount(), 3u);
+    for (std::size_t m = 0; m < 3; ++m) expectMemberValues(e, m, m);
+
+    const DataSelection second = selection({deep});
+    EXPECT_EQ(readerFor(second).name(), "HDF5");
+    const Ensemble t = openEnsemble(second, {}, {}, &d);
+    EXPECT_EQ(d.variable, "/data/t");
+    ASSERT_EQ(t.memberCount(), 11u);
+    for (std::size_t m = 0; m < 11; ++m) {
+        EXPECT_EQ(t.members[m].name, "m" + std::to_string(m));
+        expectMemberValues(t, m, m);
+    }
+    // Named with --var, with or without the leading slash.
+    EXPECT_EQ(describeEnsemble(selection({deep}, "data/t")).members, 11u);
+}
+
+TEST(Hdf5Reader, SeveralMemberGroupsAreSaidAndVarChoosesAmongThem) {
+    ensil::test::TempDir dir;
+    const std::string path = dir.file("two_variables.h5");
+    {
+        H5Writer file(path);
+        file.group("/ensemble");
+        file.group("/ensemble/u");
+        file.group("/ensemble/t");
+        for (std::size_t m = 0; m < 2; ++m) {
+            file.dataset("/ensemble/u/m" + std::to_string(m), kMemberDims,
+                         memberValues<float>(m + 5), H5T_NATIVE_FLOAT);
+            file.dataset("/ensemble/t/m" + std::to_string(m), kMemberDims, memberValues<float>(m),
+                         H5T_NATIVE_FLOAT);
+        }
+    }
+    // The first in name order, and the reason says which others there are and how to choose.
+    const EnsembleDescription d = describeEnsemble(selection({path}));
+    EXPECT_EQ(d.variable, "/ensemble/t");
+    EXPECT_TRUE(d.memberDimensionReason.find("'/ensemble/t', '/ensemble/u'") != std::string::npos)
+        << d.memberDimensionReason;
+    EXPECT_TRUE(d.memberDimensionReason.find("--var") != std::string::npos)
+        << d.memberDimensionReason;
+    const Ensemble u = openEnsemble(selection({path}, "/ensemble/u"));
+    ASSERT_EQ(u.memberCount(), 2u);
+    for (std::size_t m = 0; m < 2; ++m) expectMemberValues(u, m, m + 5);
+}
+
+TEST(Hdf5Reader, RealNetcdf4FilesStillGoToTheNetcdfReader) {
+    for (const char* name :
+         {"era5_eda_members.nc", "glosea4_surface_temperature_ensemble.nc", "uk_hires.nc"}) {
+        const std::string path = std::string(ENSIL_SHARED_DATA_DIR "/") + name;
+        EXPECT_EQ(readerFor(selection({path})).name(), "NetCDF") << name;
+    }
+    // And a netCDF-4 file without _NCProperties (written before netCDF 4.4.1): its variables
+    // have dimension scales.
+    ensil::test::TempDir dir;
+    const std::string old = dir.file("old_netcdf4.nc");
+    {
+        int nc = -1;
+        ASSERT_EQ(nc_create(old.c_str(), NC_NETCDF4, &nc), NC_NOERR);
+        int dims[3] = {};
+        nc_def_dim(nc, "z", kNz, &dims[0]);
+        nc_def_dim(nc, "y", kNy, &dims[1]);
+        nc_def_dim(nc, "x", kNx, &dims[2]);
+        int var = -1;
+        nc_def_var(nc, "t", NC_FLOAT, 3, dims, &var);
+        ASSERT_EQ(nc_close(nc), NC_NOERR);
+        const hid_t file = H5Fopen(old.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        ASSERT_GE(file, 0);
+        EXPECT_GE(H5Adelete(file, "_NCProperties"), 0);
+        H5Fclose(file);
+    }
+    EXPECT_EQ(readerFor(selection({old})).name(), "NetCDF");
 }
 
 TEST(Hdf5Reader, OriginAndSpacingAttributesGiveUniformAxes) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -251,6 +252,82 @@ TEST(NetcdfReader, BadInputGetsTypedErrorsThatSayWhatWouldWork) {
     const auto kind = errorKindOf({.paths = {cut}}, &message);
     EXPECT_TRUE(kind == ErrorKind::CorruptFile || kind == ErrorKind::UnsupportedFormat) << message;
     EXPECT_NE(message.find("cut.nc"), std::string::npos) << message;
+}
+
+// A classic file (CDF-1, CDF-2, CDF-5) cut inside its data: netCDF-C once read the missing end
+// as zeros, with exit 0, as long as the file held more bytes than all its values together.
+// The size the header implies (where each variable's values begin, plus their size; records
+// times the record size) is checked before a value is read.
+TEST(NetcdfReader, ClassicFilesCutInsideTheirDataAreRefusedNamingBothSizes) {
+    test::TempDir dir;
+    struct Flavour {
+        const char* name;
+        int mode;
+    };
+    enum class Layout { Fixed, OneRecordVariable, TwoRecordVariables };
+    for (const Flavour flavour :
+         {Flavour{"cdf1", NC_CLOBBER}, Flavour{"cdf2", NC_CLOBBER | NC_64BIT_OFFSET},
+          Flavour{"cdf5", NC_CLOBBER | NC_64BIT_DATA}}) {
+        for (const Layout layout :
+             {Layout::Fixed, Layout::OneRecordVariable, Layout::TwoRecordVariables}) {
+            const std::string path = dir.file(std::string(flavour.name) + "_" +
+                                              std::to_string(static_cast<int>(layout)) + ".nc");
+            {
+                // Shorts, 27 a member (54 bytes, not a multiple of 4): padding counts.
+                int nc = -1, member = -1, s = -1, t = -1;
+                std::array<int, 4> dims{};
+                ASSERT_EQ(nc_create(path.c_str(), flavour.mode, &nc), NC_NOERR);
+                nc_def_dim(nc, "member", layout == Layout::Fixed ? 2 : NC_UNLIMITED, &member);
+                dims[0] = member;
+                nc_def_dim(nc, "z", 3, &dims[1]);
+                nc_def_dim(nc, "y", 3, &dims[2]);
+                nc_def_dim(nc, "x", 3, &dims[3]);
+                nc_def_var(nc, "s", NC_SHORT, 4, dims.data(), &s);
+                if (layout != Layout::OneRecordVariable) {
+                    nc_def_var(nc, "t", NC_FLOAT, 4, dims.data(), &t);
+                }
+                ASSERT_EQ(nc_enddef(nc), NC_NOERR);
+                const std::array<std::size_t, 4> start{0, 0, 0, 0}, count{2, 3, 3, 3};
+                std::vector<double> values(54);
+                for (std::size_t i = 0; i < values.size(); ++i) values[i] = static_cast<double>(i);
+                EXPECT_EQ(nc_put_vara_double(nc, s, start.data(), count.data(), values.data()),
+                          NC_NOERR);
+                if (t >= 0) {
+                    EXPECT_EQ(nc_put_vara_double(nc, t, start.data(), count.data(), values.data()),
+                              NC_NOERR);
+                }
+                ASSERT_EQ(nc_close(nc), NC_NOERR);
+            }
+            const auto size = std::filesystem::file_size(path);
+            const data::DataSelection intact{
+                .paths = {path}, .variable = "s", .memberDimension = "member"};
+            const data::Ensemble e = data::openEnsemble(intact);
+            ASSERT_EQ(e.memberCount(), 2u) << path;
+            EXPECT_EQ(e.members[1].values[26], 53.0F) << path;
+
+            // One byte short, and a few hundred: both less than the header, so more bytes are
+            // left than all the values need together.
+            for (const std::uintmax_t cut : {std::uintmax_t{1}, std::uintmax_t{size / 4}}) {
+                const std::string copy = path + ".cut";
+                std::filesystem::copy_file(path, copy,
+                                           std::filesystem::copy_options::overwrite_existing);
+                std::filesystem::resize_file(copy, size - cut);
+                std::string message;
+                data::DataSelection cutSelection = intact;
+                cutSelection.paths = {copy};
+                EXPECT_EQ(errorKindOf(cutSelection, &message), ErrorKind::CorruptFile) << copy;
+                EXPECT_NE(message.find("'" + copy + "' is truncated"), std::string::npos)
+                    << message;
+                EXPECT_NE(message.find(std::to_string(size - cut) + " bytes"), std::string::npos)
+                    << message;
+                EXPECT_NE(message.find(std::to_string(size)), std::string::npos) << message;
+                // The variable whose values it cuts is named.
+                EXPECT_NE(message.find(layout == Layout::OneRecordVariable ? "'s'" : "'t'"),
+                          std::string::npos)
+                    << message;
+            }
+        }
+    }
 }
 
 TEST(NetcdfReader, NoMemberDimensionListsTheDimensionsAndSuggestsOne) {

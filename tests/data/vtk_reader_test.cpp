@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -20,6 +21,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -283,6 +285,115 @@ INSTANTIATE_TEST_SUITE_P(BinaryAndAscii, VtkLegacyArrays, testing::Bool(),
                          [](const testing::TestParamInfo<bool>& p) {
                              return p.param ? "Binary" : "Ascii";
                          });
+
+// VTK 5.1+ writers may follow any array with a METADATA block (component names, INFORMATION keys
+// with NAME/LOCATION and DATA lines), ended by an empty line: after SCALARS and VECTORS, after
+// each array of a FIELD, and after the dataset's own field data. The scan once took METADATA in
+// a FIELD for the next array's name and refused the file.
+TEST(VtkReader, MetadataBlocksAfterArraysAreSkipped) {
+    ensil::test::TempDir dir;
+    const std::string path = dir.file("metadata.vtk");
+    std::ofstream(path) << "# vtk DataFile Version 5.1\n"
+                           "arrays with metadata\n"
+                           "ASCII\n"
+                           "DATASET STRUCTURED_POINTS\n"
+                           "FIELD FieldData 1\n"
+                           "TIME 1 1 double\n"
+                           "0.5\n"
+                           "METADATA\n"
+                           "INFORMATION 0\n"
+                           "\n"
+                           "DIMENSIONS 2 2 2\n"
+                           "ORIGIN 0 0 0\n"
+                           "SPACING 1 1 1\n"
+                           "POINT_DATA 8\n"
+                           "SCALARS s float 1\n"
+                           "LOOKUP_TABLE default\n"
+                           "0 1 2 3 4 5 6 7\n"
+                           "METADATA\n"
+                           "INFORMATION 0\n"
+                           "\n"
+                           "VECTORS vel float\n"
+                           "0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1 0 0 1\n"
+                           "METADATA\n"
+                           "COMPONENT_NAMES\n"
+                           "east\n"
+                           "\n"
+                           "up\n"
+                           "INFORMATION 1\n"
+                           "NAME L2_NORM_RANGE LOCATION vtkDataArray\n"
+                           "DATA 2 1 1\n"
+                           "\n"
+                           "FIELD FieldData 2\n"
+                           "f 1 8 float\n"
+                           "10 11 12 13 14 15 16 17\n"
+                           "METADATA\n"
+                           "INFORMATION 2\n"
+                           "NAME L2_NORM_RANGE LOCATION vtkDataArray\n"
+                           "DATA 2 10 17\n"
+                           "NAME COMPONENT_RANGE LOCATION vtkDataArray\n"
+                           "DATA 2 10 17\n"
+                           "\n"
+                           "g 1 8 double\n"
+                           "20 21 22 23 24 25 26 27\n"
+                           "METADATA\n"
+                           "INFORMATION 0\n"
+                           "\n";
+    const EnsembleDescription d = VtkReader().describe(selection({path}));
+    std::vector<std::string> names;
+    for (const VariableInfo& v : d.variables) names.push_back(v.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"s", "vel", "f", "g"}));
+    EXPECT_EQ(d.variable, "s");
+    for (const auto& [name, first] :
+         {std::pair<std::string, float>{"s", 0.0F}, {"f", 10.0F}, {"g", 20.0F}}) {
+        const Ensemble e = VtkReader().read(selection({path}, name), {}, {});
+        ASSERT_EQ(e.members.at(0).values.size(), 8u) << name;
+        for (std::size_t i = 0; i < 8; ++i) {
+            EXPECT_EQ(e.members[0].values[i], first + static_cast<float>(i)) << name << " " << i;
+        }
+    }
+}
+
+// What VTK 9's own writer emits: arrays VTK has cached ranges for carry INFORMATION keys, named
+// components COMPONENT_NAMES (an unnamed one an empty line), in both encodings.
+TEST_P(VtkLegacyArrays, TheVtkWritersMetadataBlocksAreSkipped) {
+    ensil::test::TempDir dir;
+    const std::string path = dir.file("metadata.vtk");
+    auto img = image();
+    vtkNew<vtkDoubleArray> time;
+    time->SetName("TIME");
+    time->InsertNextValue(0.5);
+    img->GetFieldData()->AddArray(time);
+    addScalars<vtkFloatArray>(*img, "s", 0, {kNx, kNy, kNz});
+    img->GetPointData()->SetActiveScalars("s");
+    addVectors(*img, "vel");
+    img->GetPointData()->SetActiveVectors("vel");
+    addScalars<vtkDoubleArray>(*img, "f", 1, {kNx, kNy, kNz});
+    addVectors(*img, "wind");
+    img->GetPointData()->GetArray("wind")->SetComponentName(0, "east");
+    addScalars<vtkShortArray>(*img, "h", 2, {kNx, kNy, kNz});
+    img->GetPointData()->GetArray("h")->SetComponentName(0, "height");
+    // Asking for a range caches it in the array's information, which the writer then writes.
+    time->GetRange();
+    for (int a = 0; a < img->GetPointData()->GetNumberOfArrays(); ++a) {
+        img->GetPointData()->GetArray(a)->GetRange(-1);
+        img->GetPointData()->GetArray(a)->GetRange(0);
+    }
+    writeLegacy(img, path, GetParam());
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_NE(text.find("METADATA"), std::string::npos) << "the writer wrote no metadata";
+    ASSERT_NE(text.find("INFORMATION"), std::string::npos);
+    ASSERT_NE(text.find("COMPONENT_NAMES"), std::string::npos);
+
+    const EnsembleDescription d = VtkReader().describe(selection({path}));
+    std::vector<std::string> names;
+    for (const VariableInfo& v : d.variables) names.push_back(v.name);
+    EXPECT_EQ(names, (std::vector<std::string>{"s", "vel", "f", "wind", "h"}));
+    expectMemberValues(VtkReader().read(selection({path}), {}, {}), 0, 0);
+    expectMemberValues(VtkReader().read(selection({path}, "f"), {}, {}), 0, 1);
+    expectMemberValues(VtkReader().read(selection({path}, "h"), {}, {}), 0, 2);
+}
 
 TEST(VtkReader, FilesOnDifferentGridsAreRefusedNamingBoth) {
     ensil::test::TempDir dir;

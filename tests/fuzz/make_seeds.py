@@ -57,6 +57,16 @@ VTK_SEEDS = {
         "STRUCTURED_POINTS", "FIELD FieldData 1\ntime 1 1 double\n3.5\n" + POINTS,
         "POINT_DATA 8\nFIELD f 1\nonly 1 8 short\n" + EIGHT),
     "polydata.vtk": vtk_text("POLYDATA", "POINTS 1 float\n0 0 0\n", ""),
+    # What VTK 5.1+ writers put after arrays: METADATA blocks, with component names (an empty
+    # line for an unnamed component) and INFORMATION keys.
+    "metadata.vtk": vtk_text(
+        "STRUCTURED_POINTS",
+        "FIELD FieldData 1\ntime 1 1 double\n3.5\nMETADATA\nINFORMATION 0\n\n" + POINTS,
+        "POINT_DATA 8\nSCALARS v float\nLOOKUP_TABLE default\n" + EIGHT +
+        "METADATA\nINFORMATION 0\n\nFIELD FieldData 2\nw 3 8 float\n" + "1 0 0\n" * 8 +
+        "METADATA\nCOMPONENT_NAMES\neast\n\n\nINFORMATION 1\n"
+        "NAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA 2 1 1\n\n"
+        "s 1 8 short\n" + EIGHT + "METADATA\nINFORMATION 0\n\n"),
 }
 
 

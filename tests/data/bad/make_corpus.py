@@ -26,6 +26,42 @@ def vtk_rectilinear(name, x_count):
         "POINT_DATA 8\nSCALARS v float 1\nLOOKUP_TABLE default\n" + "0 " * 8 + "\n")
 
 
+def ensemble_cdl(name, values):
+    """A CF ensemble t(number=4, level=3, lat=4, lon=5) in K; values(m, z, y, x) gives each value
+    as CDL text."""
+    data = ", ".join(values(m, z, y, x) for m in range(4) for z in range(3) for y in range(4)
+                     for x in range(5))
+    return (f"netcdf {name} {{\ndimensions:\n  number = 4 ;\n  level = 3 ;\n  lat = 4 ;\n"
+            "  lon = 5 ;\nvariables:\n  int number(number) ;\n"
+            "    number:standard_name = \"realization\" ;\n"
+            "  double level(level) ;\n    level:units = \"hPa\" ;\n"
+            "  double lat(lat) ;\n    lat:units = \"degrees_north\" ;\n"
+            "  double lon(lon) ;\n    lon:units = \"degrees_east\" ;\n"
+            "  float t(number, level, lat, lon) ;\n    t:units = \"K\" ;\n"
+            "    t:_FillValue = -999.f ;\n"
+            "data:\n  number = 0, 1, 2, 3 ;\n  level = 850, 700, 500 ;\n"
+            "  lat = 50, 51, 52, 53 ;\n  lon = 0, 1, 2, 3, 4 ;\n"
+            f"  t = {data} ;\n}}\n")
+
+
+def smooth(m, z, y, x):
+    return f"{x + y + z + 0.5 * m:g}"
+
+
+def ensemble(name, values):
+    cdl = ensemble_cdl(name.split('.')[0], values)
+    subprocess.run(["ncgen", "-o", str(HERE / name)], input=cdl.encode(), check=True)
+
+
+def truncated(name, cut):
+    """A classic ensemble file with its last `cut` bytes cut off: fewer than its header holds, so
+    the file still has more bytes than all its values need together."""
+    ensemble(name, smooth)
+    path = HERE / name
+    data = path.read_bytes()
+    path.write_bytes(data[:len(data) - cut])
+
+
 def netcdf(name, variable):
     cdl = (f"netcdf {name.split('.')[0]} {{\ndimensions:\n  z = 2 ;\n  y = 2 ;\n  x = 2 ;\n"
            f"variables:\n  float {variable}(z, y, x) ;\ndata:\n"
@@ -42,3 +78,11 @@ vtk_rectilinear("vtk_negative_coordinate_count.vtk", "-4")
 vtk_rectilinear("vtk_billion_coordinates.vtk", "1000000000")
 netcdf("member_u.nc", "u")
 netcdf("member_t.nc", "t")
+# A classic file cut inside its data: once read with zeros for the missing end, exit 0.
+truncated("netcdf_truncated_data.nc", 100)
+# Member 2 has no valid value (all _FillValue): its distances and the linkage heights were null.
+ensemble("member_without_data.nc", lambda m, z, y, x: "-999" if m == 2 else smooth(m, z, y, x))
+# Infinities among the values: the range in `ensil info --json` was null.
+ensemble("infinite_values.nc",
+         lambda m, z, y, x: {(1, 0, 0, 0): "Infinityf", (3, 2, 3, 4): "-Infinityf"}.get(
+             (m, z, y, x), smooth(m, z, y, x)))
