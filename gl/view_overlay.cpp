@@ -76,6 +76,8 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
 }
 // The legend's place: the first corner (top left, top right, bottom left, bottom right) where
 // it keeps clear of the data box on screen, else the corner where it covers least of it.
+constexpr double kLabelGap = 4.0;  // logical pixels between two labels side by side
+
 QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF picture, double margin) {
     const double right = picture.width() - margin - size.width();
     const double bottom = picture.height() - margin - size.height();
@@ -287,7 +289,10 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
 }
 
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
-                  QSizeF logicalSize) {
+                  QSizeF logicalSize, std::vector<PaintedItem>* painted) {
+    const auto record = [&](const QRectF& rect, const QString& text) {
+        if (painted != nullptr) painted->push_back({rect, text});
+    };
     if (overlay.labels.empty() && overlay.legend.empty() && overlay.message.isEmpty() &&
         overlay.title.isEmpty()) {
         return;
@@ -320,6 +325,9 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         const QRectF rect(kMargin, 6.0, width, headingMetrics.height());
         painter.setPen(overlay.text);
         painter.drawText(rect, Qt::AlignHCenter | Qt::AlignTop, text);
+        record(QRectF(rect.center().x() - 0.5 * headingMetrics.horizontalAdvance(text), rect.top(),
+                      headingMetrics.horizontalAdvance(text), rect.height()),
+               QStringLiteral("title"));
         placed.push_back(rect);
         panelTop = rect.bottom() + 6.0;
     }
@@ -366,11 +374,15 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         const QRectF rect(QPointF(std::clamp(x, 2.0, std::max(2.0, maxX)),
                                   std::clamp(y, 2.0, std::max(2.0, maxY))),
                           size);
+        // Labels that merely touch read as one ("359" beside "4°W" read "3594°W"): each
+        // keeps a gap of a few pixels to the others.
+        const QRectF spaced = rect.adjusted(-kLabelGap, -1.0, kLabelGap, 1.0);
         if (std::any_of(placed.begin(), placed.end(),
-                        [&](const QRectF& other) { return other.intersects(rect); })) {
+                        [&](const QRectF& other) { return other.intersects(spaced); })) {
             continue;
         }
         placed.push_back(rect);
+        record(rect, label.text);
         painter.setPen(overlay.text);
         painter.drawText(rect, Qt::AlignCenter, label.text);
     }
@@ -382,8 +394,14 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         painter.drawText(QRectF(QPointF(0.0, 0.0), logicalSize), Qt::AlignCenter | Qt::TextWordWrap,
                          overlay.message);
     }
-    if (!legendRect.isEmpty()) drawLegend(painter, overlay, font, legendRect);
-    if (!barRect.isEmpty()) drawColourScale(painter, overlay, font, barRect);
+    if (!legendRect.isEmpty()) {
+        drawLegend(painter, overlay, font, legendRect);
+        record(legendRect, QStringLiteral("legend"));
+    }
+    if (!barRect.isEmpty()) {
+        drawColourScale(painter, overlay, font, barRect);
+        record(barRect, QStringLiteral("colour bar"));
+    }
     painter.restore();
 }
 

@@ -87,8 +87,14 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
 // The same onto a picture `logicalSize` big in the painter's coordinates: an export drawn with
 // painter.scale(s, s) and pixelRatio s has text and spacing s times larger, as the view's at
 // that zoom (a picture twice the view's size looks like the view at 2x).
+// `painted`, when given, receives the rectangle of every text and panel drawn (logical
+// pixels), so tests can check that nothing overlaps or is cut off.
+struct PaintedItem {
+    QRectF rect;
+    QString text;  // the label's text; the panel's kind for the title, legend and colour bar
+};
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
-                  QSizeF logicalSize);
+                  QSizeF logicalSize, std::vector<PaintedItem>* painted = nullptr);
 
 // The text scale for a picture of this height drawn with no window to compare it with: 1 up
 // to kReferenceHeight pixels, then in proportion.
