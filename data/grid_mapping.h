@@ -17,7 +17,10 @@ struct GridMapping {
     // empty when the file names none (plain longitude/latitude axes, or no geography at all).
     std::string name;
     // The mapping variable's numeric attributes, in file order; a list-valued attribute (two
-    // standard parallels) keeps all its values.
+    // standard parallels) keeps all its values. A mapping made from WRF's global attributes
+    // (data/wrf_conventions.h) has CF names plus centre_longitude and centre_latitude, the
+    // point where the grid's x and y are 0 (the geo layer sets the false easting and northing
+    // so), and wrf_map_proj, WRF's MAP_PROJ.
     std::vector<std::pair<std::string, std::vector<double>>> parameters;
 
     [[nodiscard]] bool empty() const { return name.empty(); }

@@ -8,6 +8,7 @@
 
 #include "data/cf_conventions.h"
 #include "data/error.h"
+#include "data/wrf_conventions.h"
 
 namespace ensil::data {
 namespace {
@@ -143,7 +144,7 @@ Axis makeAxis(const NetcdfFile& file, const NcDimension& dim, std::size_t size, 
     return axis;
 }
 
-Grid makeGrid(const NetcdfFile& file, const NcPlan& plan) {
+Grid makeGrid(const NetcdfFile& file, NcPlan& plan) {
     // The mass grid: along each axis the smallest size among the components (WRF's staggered
     // U and V have one more point along x or y), coordinates from a component that has it.
     std::array<Axis, 3> axes;
@@ -154,6 +155,20 @@ Grid makeGrid(const NetcdfFile& file, const NcPlan& plan) {
         }
         axes[s] = makeAxis(file, file.dimension(best->spatialDims[s]), best->sizes[s],
                            static_cast<int>(s));
+    }
+    // WRF output: x and y are bare indices along west_east and south_north; the global map
+    // attributes say where they lie, unless the variable names a CF grid mapping.
+    if (plan.gridMapping.empty()) {
+        const auto isWrfIndexAxis = [&](std::size_t s) {
+            const NcDimension& dim = file.dimension(plan.components.front().spatialDims[s]);
+            return isWrfHorizontalDimension(dim.name) && file.coordinateVariable(dim) == nullptr;
+        };
+        if (isWrfIndexAxis(0) && isWrfIndexAxis(1)) {
+            if (const auto wrf = readWrfProjection(file)) {
+                if (wrf->usable) applyWrfAxes(*wrf, axes[0], axes[1]);
+                plan.gridMapping = wrf->mapping;
+            }
+        }
     }
     try {
         return Grid(std::move(axes[0]), std::move(axes[1]), std::move(axes[2]));
@@ -327,6 +342,7 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool
         throw Error(ErrorKind::MemberDimensionNotFound, suggestMemberDimension(file, plan),
                     memberDimensionCandidates(file, plan));
     }
+    plan.gridMapping = readGridMapping(file, *plan.components.front().variable);
     plan.grid = makeGrid(file, plan);
     return plan;
 }

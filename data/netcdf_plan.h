@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "data/ensemble_reader.h"
+#include "data/grid_mapping.h"
 #include "data/netcdf_file.h"
 
 namespace ensil::data {
@@ -30,6 +31,9 @@ struct NcPlan {
     std::string memberReason;
     std::size_t timeIndex = 0;  // index taken along every other dimension
     Grid grid;                  // the mass grid (after destaggering)
+    // The horizontal axes' map projection: the CF grid_mapping, else WRF's global attributes
+    // (which also turn WRF's index axes into metres, data/wrf_conventions.h).
+    GridMapping gridMapping;
 };
 
 // Everything usable or not in the file, in file order, derived variables last.

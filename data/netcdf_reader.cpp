@@ -208,7 +208,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
             d.longName = plan.longName;
             d.units = plan.units;
             d.grid = plan.grid;
-            d.gridMapping = readGridMapping(file, *plan.components.front().variable);
+            d.gridMapping = plan.gridMapping;
             d.fixedDimensions = describeFixedDimensions(file, plan);
             if (plan.memberDim >= 0) {
                 d.memberDimension = file.dimension(plan.memberDim).name;

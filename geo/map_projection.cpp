@@ -85,9 +85,52 @@ std::string earthShape(const data::GridMapping& m) {
     return " +ellps=WGS84";
 }
 
+// The string for m with false easting and northing x0, y0 (metres).
+std::string projStringWith(const data::GridMapping& m, double x0, double y0);
+
+// The projected x, y (metres) of a longitude/latitude through a PROJ string; NaN where PROJ
+// has none.
+glm::dvec2 projectedPoint(const std::string& projString, double lon, double lat) {
+    const std::string pipeline =
+        "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad +step " + projString;
+    PJ_CONTEXT* context = proj_context_create();
+    PJ* transformation = proj_create(context, pipeline.c_str());
+    glm::dvec2 result(kNaN);
+    if (transformation != nullptr) {
+        const PJ_COORD out = proj_trans(transformation, PJ_FWD, proj_coord(lon, lat, 0.0, 0.0));
+        if (std::isfinite(out.xy.x) && std::isfinite(out.xy.y) && std::abs(out.xy.x) < HUGE_VAL) {
+            result = {out.xy.x, out.xy.y};
+        }
+        proj_destroy(transformation);
+    }
+    proj_context_destroy(context);
+    return result;
+}
+
 }  // namespace
 
 std::string projStringFor(const data::GridMapping& m) {
+    // A grid whose x, y origin is a point on the Earth (WRF's domain centre, not a CF
+    // attribute): the false easting and northing put that point's image at (0, 0).
+    const auto centreLon = m.parameter("centre_longitude");
+    const auto centreLat = m.parameter("centre_latitude");
+    if (centreLon && centreLat) {
+        const glm::dvec2 centre =
+            projectedPoint(projStringWith(m, 0.0, 0.0), *centreLon, *centreLat);
+        if (!std::isfinite(centre.x)) {
+            throw data::Error(data::ErrorKind::UnsupportedFormat,
+                              "grid mapping '" + m.name + "' has no image of its centre (" +
+                                  number(*centreLon) + ", " + number(*centreLat) + ")");
+        }
+        return projStringWith(m, -centre.x, -centre.y);
+    }
+    return projStringWith(m, m.parameter("false_easting").value_or(0.0),
+                          m.parameter("false_northing").value_or(0.0));
+}
+
+namespace {
+
+std::string projStringWith(const data::GridMapping& m, double x0, double y0) {
     const auto need = [&m](const char* key) {
         const auto value = m.parameter(key);
         if (!value || !std::isfinite(*value)) {
@@ -100,8 +143,7 @@ std::string projStringFor(const data::GridMapping& m) {
     const auto optional = [&m](const char* key, double fallback) {
         return m.parameter(key).value_or(fallback);
     };
-    const std::string offsets = " +x_0=" + number(optional("false_easting", 0.0)) +
-                                " +y_0=" + number(optional("false_northing", 0.0));
+    const std::string offsets = " +x_0=" + number(x0) + " +y_0=" + number(y0);
     // The CF attribute names and their PROJ parameters follow CF appendix F and PROJ's
     // operation pages; GDAL maps them the same way.
     if (m.name == "rotated_latitude_longitude") {
@@ -140,12 +182,22 @@ std::string projStringFor(const data::GridMapping& m) {
                " +k_0=" + number(optional("scale_factor_at_central_meridian", 1.0)) + offsets +
                earthShape(m);
     }
+    if (m.parameter("wrf_map_proj")) {
+        throw data::Error(data::ErrorKind::UnsupportedFormat,
+                          "'" + m.name +
+                              "' is not a map projection ensil reads: of WRF's it reads "
+                              "MAP_PROJ 1 (Lambert conformal), 2 (polar stereographic), "
+                              "3 (Mercator) and 6 (latitude-longitude, unrotated), with "
+                              "CEN_LAT, CEN_LON, DX and DY");
+    }
     throw data::Error(data::ErrorKind::UnsupportedFormat,
                       "grid mapping '" + m.name +
                           "' is not one ensil reads (it reads latitude_longitude, "
                           "rotated_latitude_longitude, lambert_conformal_conic, "
                           "polar_stereographic, mercator and transverse_mercator)");
 }
+
+}  // namespace
 
 struct MapProjection::Proj {
     PJ_CONTEXT* context = nullptr;

@@ -65,7 +65,9 @@ private:
 
 // The PROJ string for a CF grid mapping (the longitude/latitude side in radians, as a PROJ
 // pipeline step takes it), or an Error(UnsupportedFormat) naming the mapping and its missing
-// attribute. Exposed for tests and `ensil info`.
+// attribute. With centre_longitude and centre_latitude (WRF's domain centre) the false easting
+// and northing are minus that point's projected x and y, found through PROJ. Exposed for tests
+// and `ensil info`.
 std::string projStringFor(const data::GridMapping& mapping);
 
 }  // namespace ensil::geo
