@@ -205,6 +205,9 @@ private:
     void uploadFloorMap();
     void uploadMapLines();
     void drawMapLines(const glm::mat4& viewProjection);
+    // Binds the program that widens lines on screen (the map lines' and the box's), with the
+    // view and the scene's size set.
+    QOpenGLShaderProgram& bindScreenLines(const glm::mat4& viewProjection);
     // The box's vertex buffer's first `count` points as antialiased lines `halfWidth` pixels
     // to either side (mode GL_LINES or GL_LINE_LOOP), blended, depth-tested but not written.
     void drawBoxBufferLines(unsigned mode, int count, const glm::mat4& viewProjection,

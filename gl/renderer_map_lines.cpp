@@ -63,9 +63,7 @@ void Renderer::uploadMapLines() {
                    vertices.data(), GL_STATIC_DRAW);
 }
 
-void Renderer::drawMapLines(const glm::mat4& viewProjection) {
-    const RenderSettings& s = m_scene.settings;
-    const std::array<bool, 3> shown{s.showCoastlines, s.showBorders, s.showGraticule};
+QOpenGLShaderProgram& Renderer::bindScreenLines(const glm::mat4& viewProjection) {
     GlFunctions& f = *m_gpu->f;
     QOpenGLShaderProgram& program =
         m_gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
@@ -74,6 +72,14 @@ void Renderer::drawMapLines(const glm::mat4& viewProjection) {
                          glm::value_ptr(viewProjection));
     program.setUniformValue("u_viewport", static_cast<float>(m_scene.sceneSize.x),
                             static_cast<float>(m_scene.sceneSize.y));
+    return program;
+}
+
+void Renderer::drawMapLines(const glm::mat4& viewProjection) {
+    const RenderSettings& s = m_scene.settings;
+    const std::array<bool, 3> shown{s.showCoastlines, s.showBorders, s.showGraticule};
+    GlFunctions& f = *m_gpu->f;
+    QOpenGLShaderProgram& program = bindScreenLines(viewProjection);
     f.glBindVertexArray(m_gpu->mapLinesVao);
     f.glEnable(GL_BLEND);
     f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -105,13 +111,7 @@ void Renderer::drawBoxBufferLines(unsigned mode, int count, const glm::mat4& vie
                                   float halfWidth, const glm::vec4& colour) {
     // Through the map lines' program: core profiles draw GL lines one aliased pixel wide.
     GlFunctions& f = *m_gpu->f;
-    QOpenGLShaderProgram& program =
-        m_gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
-    program.bind();
-    f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
-                         glm::value_ptr(viewProjection));
-    program.setUniformValue("u_viewport", static_cast<float>(m_scene.sceneSize.x),
-                            static_cast<float>(m_scene.sceneSize.y));
+    QOpenGLShaderProgram& program = bindScreenLines(viewProjection);
     program.setUniformValue("u_halfWidth", halfWidth * m_resolutionScale * m_lineScale);
     program.setUniformValue("u_color", colour.r, colour.g, colour.b, colour.a);
     f.glBindVertexArray(m_gpu->boxVao);

@@ -202,6 +202,23 @@ void expectBoundsOfXlatXlong(const geo::LonLatBounds& bounds, const WrfFiles& fi
 
 }  // namespace
 
+namespace {
+// The files' grid has this mapping, its bounds are XLAT's and XLONG's, and every point lies
+// where they say.
+void expectTheGridWhereXlatAndXlongSay(const WrfFiles& files, const std::string& mapping) {
+    const data::EnsembleDescription d = describe(files);
+    ASSERT_EQ(d.gridMapping.name, mapping);
+    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    ASSERT_EQ(map.kind(), geo::MapProjection::Kind::Projected) << map.reason();
+    const auto bounds = geo::lonLatBounds(d.grid, map);
+    ASSERT_TRUE(bounds.has_value());
+    expectBoundsOfXlatXlong(*bounds, files);
+    const double worst = largestError(d.grid, map, files);
+    EXPECT_LT(worst, 1e-4);
+    std::printf("%s: largest error %.3g degrees\n", mapping.c_str(), worst);
+}
+}  // namespace
+
 TEST(WrfProjection, LambertConformalGridLiesWhereItsXlatAndXlongSay) {
     const test::TempDir dir;
     const WrfCase c;
@@ -243,16 +260,7 @@ TEST(WrfProjection, PolarStereographicGridLiesWhereItsXlatAndXlongSay) {
     c.dx = c.dy = 25000;
     const Projection projection = polarStereographic(c.truelat1, c.standLon);
     const WrfFiles files = writeWrf(dir, c, &projection);
-    const data::EnsembleDescription d = describe(files);
-    ASSERT_EQ(d.gridMapping.name, "polar_stereographic");
-    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
-    ASSERT_EQ(map.kind(), geo::MapProjection::Kind::Projected) << map.reason();
-    const auto bounds = geo::lonLatBounds(d.grid, map);
-    ASSERT_TRUE(bounds.has_value());
-    expectBoundsOfXlatXlong(*bounds, files);
-    const double worst = largestError(d.grid, map, files);
-    EXPECT_LT(worst, 1e-4);
-    std::printf("Polar stereographic: largest error %.3g degrees\n", worst);
+    expectTheGridWhereXlatAndXlongSay(files, "polar_stereographic");
 }
 
 TEST(WrfProjection, MercatorGridLiesWhereItsXlatAndXlongSay) {
@@ -267,16 +275,7 @@ TEST(WrfProjection, MercatorGridLiesWhereItsXlatAndXlongSay) {
     c.dx = c.dy = 30000;
     const Projection projection = mercator(c.truelat1, c.standLon);
     const WrfFiles files = writeWrf(dir, c, &projection);
-    const data::EnsembleDescription d = describe(files);
-    ASSERT_EQ(d.gridMapping.name, "mercator");
-    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
-    ASSERT_EQ(map.kind(), geo::MapProjection::Kind::Projected) << map.reason();
-    const auto bounds = geo::lonLatBounds(d.grid, map);
-    ASSERT_TRUE(bounds.has_value());
-    expectBoundsOfXlatXlong(*bounds, files);
-    const double worst = largestError(d.grid, map, files);
-    EXPECT_LT(worst, 1e-4);
-    std::printf("Mercator: largest error %.3g degrees\n", worst);
+    expectTheGridWhereXlatAndXlongSay(files, "mercator");
 }
 
 TEST(WrfProjection, UnrotatedLatLonGridGetsLongitudeAndLatitudeAxes) {
