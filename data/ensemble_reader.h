@@ -40,6 +40,7 @@ struct VariableInfo {
         dimensions;  // as stored, e.g. {"number", "time", "plev", "lat", "lon"}
     std::vector<std::size_t> shape;
     bool usable = false;
+    std::size_t levels = 0;    // points along the vertical axis, when usable
     bool derived = false;      // computed by ensil (wind_speed from u and v)
     std::string whyNotUsable;  // set when !usable: what is missing, in plain words
 };

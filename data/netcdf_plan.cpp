@@ -237,6 +237,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
         }
         const Analysis a = analyze(file, var, memberDim);
         info.usable = a.component.has_value();
+        if (a.component) info.levels = a.component->sizes[2];
         info.whyNotUsable = a.whyNot;
         list.push_back(std::move(info));
     }
@@ -252,6 +253,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
             info.derived = true;
             for (int id : uv->first->dimIds) info.dimensions.push_back(file.dimension(id).name);
             info.usable = au.component && av.component;
+            if (info.usable) info.levels = std::min(au.component->sizes[2], av.component->sizes[2]);
             info.whyNotUsable = !au.component   ? uv->first->name + " " + au.whyNot
                                 : !av.component ? uv->second->name + " " + av.whyNot
                                                 : "";
@@ -263,11 +265,18 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
 
 NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool requireMemberDim) {
     const std::vector<VariableInfo> variables = listVariables(file, selection.memberDimension);
+    // Named, that variable; else the usable one with the most vertical levels (the most 3D
+    // structure to show: a two-level field is a sheet one cell thick), the first in the file
+    // among equals.
     const VariableInfo* chosen = nullptr;
     for (const VariableInfo& v : variables) {
-        if (selection.variable.empty() ? v.usable : v.name == selection.variable) {
+        if (!selection.variable.empty()) {
+            if (v.name == selection.variable) {
+                chosen = &v;
+                break;
+            }
+        } else if (v.usable && (chosen == nullptr || v.levels > chosen->levels)) {
             chosen = &v;
-            break;
         }
     }
     if (chosen == nullptr && !selection.variable.empty()) {

@@ -450,3 +450,26 @@ TEST(EnsembleReader, SourceIdentityChangesWhenTheFileOrSelectionDoes) {
         path, std::filesystem::last_write_time(path) + std::chrono::seconds(5));
     EXPECT_NE(before, data::sourceIdentity(s)) << "a rewritten file is another source";
 }
+
+TEST(NetcdfReader, WithoutVarTheVariableWithTheMostLevelsIsChosenTheFirstAmongEquals) {
+    // A two-level field first in the file, a five-level one after it: without --var the one
+    // with more 3D structure is drawn.
+    test::TempDir dir;
+    const std::string path = dir.file("levels.nc");
+    {
+        NcTestFile f(path);
+        const int m = f.dim("member", 3, range(3));
+        const int thin = f.dim("plev", 2, {850, 500}, {{"units", "hPa"}});
+        const int deep = f.dim("level", 5, {1000, 850, 700, 500, 300}, {{"units", "hPa"}});
+        const int y = f.dim("lat", 4, range(4, 30, 5), {{"units", "degrees_north"}});
+        const int x = f.dim("lon", 4, range(4, -10, 2), {{"units", "degrees_east"}});
+        const int a = f.variable("sheet", NC_FLOAT, {m, thin, y, x});
+        const int b = f.variable("deep", NC_FLOAT, {m, deep, y, x});
+        const int c = f.variable("deep_too", NC_FLOAT, {m, deep, y, x});
+        f.write(a, 3 * 2 * 16, [](std::size_t n) { return double(n); });
+        f.write(b, 3 * 5 * 16, [](std::size_t n) { return double(n); });
+        f.write(c, 3 * 5 * 16, [](std::size_t n) { return double(n); });
+    }
+    EXPECT_EQ(data::describeEnsemble({.paths = {path}}).variable, "deep");
+    EXPECT_EQ(data::describeEnsemble({.paths = {path}, .variable = "sheet"}).variable, "sheet");
+}
