@@ -42,9 +42,14 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
                            .arg(overview.statistics.mean, 0, 'g', 5);
     facts.missing = overview.statistics.missingCount;
     facts.megabytes = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
+    QStringList warnings;
     if (const auto warning = data::fewLevelsWarning(e.grid)) {
-        facts.warning = QString::fromStdString(*warning);
+        warnings << QString::fromStdString(*warning);
     }
+    for (const std::string& name : overview.membersWithoutData) {
+        warnings << QString::fromStdString(data::memberWithoutDataWarning(e, name));
+    }
+    facts.warning = warnings.join(QLatin1Char('\n'));
     return facts;
 }
 

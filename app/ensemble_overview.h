@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <stop_token>
+#include <string>
 #include <vector>
 
 #include "data/ensemble.h"
@@ -25,6 +26,8 @@ struct EnsembleOverview {
     // Coastlines, borders and graticule in the grid's coordinates (none without geography).
     std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
     std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache
+    // Members with no valid value, left out of `ensemble` (data::leaveOutMembersWithoutData).
+    std::vector<std::string> membersWithoutData;
 };
 
 // Throws data::Cancelled, data::Error.

@@ -291,12 +291,15 @@ void MainWindow::startLoading(const QString& what, std::function<std::string()> 
     m_loader.start(
         [source = std::move(source), identify = std::move(identify)](
             const std::stop_token& stop, const data::Progress& progress) {
-            auto ensemble = std::make_shared<const data::Ensemble>(
-                source(stop, [&](double f) { data::report(progress, 0.6 * f); }));
-            EnsembleOverview overview =
-                buildEnsembleOverview(std::move(ensemble), stop,
-                                      [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
-            overview.sourceKey = identify();
+            data::Ensemble loaded =
+                source(stop, [&](double f) { data::report(progress, 0.6 * f); });
+            // As the command line does: no NaN distance of theirs may reach the clustering.
+            std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded);
+            EnsembleOverview overview = buildEnsembleOverview(
+                std::make_shared<const data::Ensemble>(std::move(loaded)), stop,
+                [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+            overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
+            overview.membersWithoutData = std::move(withoutData);
             return overview;
         },
         [this](EnsembleOverview overview) {

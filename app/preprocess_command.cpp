@@ -73,28 +73,15 @@ QString memberName(const data::Member& member, std::size_t index) {
                                : QString::fromStdString(member.name);
 }
 
-// Members with no valid value have no isosurface and no distance to any other member (their
-// distances, the linkage heights and their figures would all be infinite, null in JSON): they
-// are named on `err` and taken out of the ensemble, so every number the results give is one.
+// Members with no valid value are named on `err` and taken out of the ensemble (the shared
+// rule of data::leaveOutMembersWithoutData, as in the workbench), so every number the results
+// give is one.
 QStringList leaveOutMembersWithoutData(data::Ensemble& ensemble, QTextStream& err) {
-    const std::vector<std::size_t> empty = data::membersWithoutData(ensemble);
-    if (empty.empty()) return {};
     QStringList names;
-    std::vector<data::Member> kept;
-    for (std::size_t m = 0, next = 0; m < ensemble.members.size(); ++m) {
-        if (next < empty.size() && empty[next] == m) {
-            names << memberName(ensemble.members[m], m);
-            ++next;
-        } else {
-            kept.push_back(std::move(ensemble.members[m]));
-        }
-    }
-    ensemble.members = std::move(kept);
-    for (const QString& name : names) {
-        err << "ensil preprocess: warning: '" << name << "' of '"
-            << QString::fromStdString(ensemble.variable)
-            << "' has no valid value (every value is missing); it is left out of the "
-               "clustering and of every per-member result\n";
+    for (const std::string& name : data::leaveOutMembersWithoutData(ensemble)) {
+        err << "ensil preprocess: warning: "
+            << QString::fromStdString(data::memberWithoutDataWarning(ensemble, name)) << "\n";
+        names << QString::fromStdString(name);
     }
     return names;
 }
@@ -278,10 +265,9 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                                    " seed=" + std::to_string(demo.seed)
                                              : data::sourceIdentity(*selection);
         // Meshes of fewer members than the file holds must not be taken for the file's.
-        if (!r.membersWithoutData.isEmpty()) {
-            job.sourceKey +=
-                " without=" + r.membersWithoutData.join(QLatin1Char(',')).toStdString();
-        }
+        std::vector<std::string> withoutData;
+        for (const QString& name : r.membersWithoutData) withoutData.push_back(name.toStdString());
+        job.sourceKey += data::membersWithoutDataKey(withoutData);
         stage.restart();
         const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
         r.seconds["moments"] = seconds(stage);

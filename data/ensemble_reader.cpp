@@ -192,4 +192,35 @@ std::vector<std::size_t> membersWithoutData(const Ensemble& ensemble) {
     return empty;
 }
 
+std::vector<std::string> leaveOutMembersWithoutData(Ensemble& ensemble) {
+    const std::vector<std::size_t> empty = membersWithoutData(ensemble);
+    if (empty.empty()) return {};
+    std::vector<std::string> names;
+    std::vector<Member> kept;
+    kept.reserve(ensemble.members.size() - empty.size());
+    for (std::size_t m = 0, next = 0; m < ensemble.members.size(); ++m) {
+        if (next < empty.size() && empty[next] == m) {
+            const std::string& name = ensemble.members[m].name;
+            names.push_back(name.empty() ? "member " + std::to_string(m + 1) : name);
+            ++next;
+        } else {
+            kept.push_back(std::move(ensemble.members[m]));
+        }
+    }
+    ensemble.members = std::move(kept);
+    return names;
+}
+
+std::string memberWithoutDataWarning(const Ensemble& ensemble, const std::string& name) {
+    return "'" + name + "' of '" + ensemble.variable +
+           "' has no valid value (every value is missing); it is left out of the clustering and "
+           "of every per-member result";
+}
+
+std::string membersWithoutDataKey(const std::vector<std::string>& names) {
+    std::string key;
+    for (const std::string& name : names) key += (key.empty() ? " without=" : ",") + name;
+    return key;
+}
+
 }  // namespace ensil::data

@@ -98,6 +98,20 @@ std::optional<std::string> infiniteValuesWarning(const Ensemble& ensemble);
 // isosurface and no distance to any other member.
 std::vector<std::size_t> membersWithoutData(const Ensemble& ensemble);
 
+// Takes the members membersWithoutData() finds out of `ensemble` and returns their names
+// ("member 3", by position, where the file names none), in member order. Their distances, the
+// linkage heights and their figures would all be NaN or infinite: the command line and the
+// workbench both leave them out of the clustering and of every per-member result this way.
+std::vector<std::string> leaveOutMembersWithoutData(Ensemble& ensemble);
+
+// "'member 2' of 't' has no valid value (every value is missing); it is left out of the
+// clustering and of every per-member result", for one name leaveOutMembersWithoutData() gave.
+std::string memberWithoutDataWarning(const Ensemble& ensemble, const std::string& name);
+
+// What cache keys append for the members left out (" without=member 2"; empty when none), so
+// that meshes of fewer members than the file holds are not taken for the file's.
+std::string membersWithoutDataKey(const std::vector<std::string>& names);
+
 // What identifies the data a selection reads, for cache keys: every file's absolute path,
 // size and modification time, and the variable, member dimension and time index. A file
 // that changes changes the identity.

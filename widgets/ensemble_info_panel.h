@@ -21,7 +21,9 @@ struct EnsembleFacts {
     QString valueRange;
     qulonglong missing = 0;
     double megabytes = 0.0;
-    QString warning;  // what the data cannot show well (few levels); empty when nothing
+    // What the data cannot show well (few levels, members left out), a line each; empty when
+    // nothing.
+    QString warning;
 };
 
 class EnsembleInfoPanel : public QWidget {

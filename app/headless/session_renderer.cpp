@@ -31,8 +31,10 @@ std::string demoSourceKey(const data::DemoEnsembleParams& params) {
 }
 
 RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request) {
-    const data::Ensemble ensemble = state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
-                                               : data::openEnsemble(state.data);
+    data::Ensemble ensemble = state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
+                                         : data::openEnsemble(state.data);
+    // As the workbench does, so a project's member numbers mean the same members here.
+    const std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(ensemble);
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
     const float iso = state.isovalue.value_or(prep::defaultIsovalue(ensemble, stats));
@@ -52,6 +54,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     job.linkage = state.linkage;
     if (request.useCache) job.cacheDirectory = defaultMeshCacheDirectory();
     job.sourceKey = state.demo ? demoSourceKey(state.demoParams) : data::sourceIdentity(state.data);
+    job.sourceKey += data::membersWithoutDataKey(withoutData);
     IsovalueOutcome outcome = runIsovalueJob(job);
 
     const gl::OffscreenContext context;

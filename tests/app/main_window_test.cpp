@@ -10,6 +10,7 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <algorithm>
+#include <cmath>
 
 #include "app/isovalue_session.h"
 #include "tests/app/workbench_helpers.h"
@@ -17,6 +18,7 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
@@ -100,6 +102,50 @@ TEST(MainWindow, OpensARealEnsembleFile) {
     // Two pressure levels: the panel says what that means for its isosurfaces.
     EXPECT_TRUE(window.infoPanel()->text().contains("Note: only 2 levels along plev"))
         << window.infoPanel()->text().toStdString();
+}
+
+TEST(MainWindow, LeavesOutAMemberWithoutDataLikeTheCommandLineAndSaysSo) {
+    // Member 2 is all _FillValue. `ensil preprocess` leaves it out; the workbench once kept it,
+    // and its NaN distances reached the linkage.
+    test::ScopedCacheHome cache;
+    app::MainWindow window;
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy failed(window.isovalueSession(), &app::IsovalueSession::failed);
+    QSignalSpy loadFailed(&window, &app::MainWindow::loadingFailed);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/../bad/member_without_data.nc"};
+    window.openFiles(selection);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return built.count() + failed.count() + loadFailed.count() > 0; }, 60000));
+    ASSERT_EQ(loadFailed.count(), 0) << loadFailed.front().front().toString().toStdString();
+    ASSERT_EQ(failed.count(), 0) << failed.front().front().toString().toStdString();
+    ASSERT_NE(window.overview(), nullptr);
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 3u);
+
+    // The clustering and the member table hold the three members with data, as the command
+    // line's do.
+    const ui::MemberSelection* members = window.memberSelection();
+    ASSERT_EQ(members->memberCount(), 3);
+    EXPECT_EQ(members->tree().memberCount, 3);
+    QStringList names;
+    for (int m = 0; m < members->memberCount(); ++m) names << members->name(m);
+    EXPECT_EQ(names, (QStringList{"member 0", "member 1", "member 3"}));
+    const app::IsovalueResult* result = window.isovalueSession()->result();
+    ASSERT_NE(result, nullptr);
+    ASSERT_EQ(result->distances.size, 3u);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) EXPECT_TRUE(std::isfinite(result->distances.at(i, j)));
+    ASSERT_EQ(result->tree.merges.size(), 2u);
+    for (const prep::Merge& merge : result->tree.merges) EXPECT_TRUE(std::isfinite(merge.height));
+
+    // Said once, in the info panel, naming the member.
+    const QString info = window.infoPanel()->text();
+    EXPECT_TRUE(info.contains("Members: 3")) << info.toStdString();
+    EXPECT_EQ(info.count("has no valid value"), 1) << info.toStdString();
+    EXPECT_TRUE(
+        info.contains("'member 2' of 't' has no valid value (every value is missing); it "
+                      "is left out of the clustering"))
+        << info.toStdString();
 }
 
 TEST(MainWindow, AFailedOpenExplainsAndKeepsWhatIsShown) {
