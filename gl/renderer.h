@@ -194,9 +194,11 @@ private:
         [[nodiscard]] bool clips() const { return bound == culled && culled != full; }
     };
     // `cull`: whether the silhouette modes may use the culling program (if the settings let it).
-    SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, bool pick, bool cull);
+    // `viewport`: the pass's size in pixels.
+    SurfacePrograms bindSurfacePrograms(const glm::mat4& viewProjection, glm::ivec2 viewport,
+                                        bool pick, bool cull);
     void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,
-                                 bool pick);
+                                 glm::ivec2 viewport, bool pick);
     void drawMemberPass(SurfacePrograms& programs, MemberPass pass);
     [[nodiscard]] bool canPick() const;
     // Draws the id pass into the window (GL pixel rows, bottom-up) and reads the ids back,

@@ -98,24 +98,25 @@ MemberAppearance Renderer::appearance(std::size_t member) const {
     return member < m_scene.appearance.size() ? m_scene.appearance[member] : MemberAppearance{};
 }
 
-Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection, bool pick,
-                                                        bool cull) {
+Renderer::SurfacePrograms Renderer::bindSurfacePrograms(const glm::mat4& viewProjection,
+                                                        glm::ivec2 viewport, bool pick, bool cull) {
     SurfacePrograms programs{
         &m_gpu->shaders.program(QStringLiteral("surface")),
         &m_gpu->shaders.program(QStringLiteral("silhouette"), kSilhouetteShaderFiles)};
     if (!cull || !m_scene.settings.silhouetteCulling) programs.culled = programs.full;
     programs.culled->bind();
-    configureSurfaceProgram(*programs.culled, viewProjection, pick);
+    configureSurfaceProgram(*programs.culled, viewProjection, viewport, pick);
     if (programs.full != programs.culled) {
         programs.full->bind();
-        configureSurfaceProgram(*programs.full, viewProjection, pick);
+        configureSurfaceProgram(*programs.full, viewProjection, viewport, pick);
     }
     programs.bound = programs.full;
     return programs;
 }
 
 void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
-                                       const glm::mat4& viewProjection, bool pick) {
+                                       const glm::mat4& viewProjection, glm::ivec2 viewport,
+                                       bool pick) {
     GlFunctions& f = *m_gpu->f;
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
                          glm::value_ptr(viewProjection));
@@ -132,12 +133,9 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     program.setUniformValue("u_removalMax", m_scene.settings.removalMax);
     program.setUniformValue("u_groupSize", m_scene.settings.groupSize);
     program.setUniformValue("u_pick", pick);
-    // The pass's viewport, set by the caller: the culling shader's antialiasing fringe is in
-    // its pixels.
-    std::array<GLint, 4> viewport{};
-    f.glGetIntegerv(GL_VIEWPORT, viewport.data());
-    program.setUniformValue("u_viewportSize", static_cast<float>(viewport[2]),
-                            static_cast<float>(viewport[3]));
+    // The culling shader's antialiasing fringe is in the pass's pixels.
+    program.setUniformValue("u_viewportSize", static_cast<float>(viewport.x),
+                            static_cast<float>(viewport.y));
 
     // The plane's normal is turned towards the viewer, so the shader discards n.p > offset.
     const CuttingPlane& plane = m_scene.settings.plane;
@@ -268,7 +266,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     uploadMeshesIfChanged();
     if (m_gpu->meshes.members().empty() && m_gpu->meshes.mean().vao == 0) return;
 
-    SurfacePrograms programs = bindSurfacePrograms(viewProjection, false, true);
+    SurfacePrograms programs = bindSurfacePrograms(viewProjection, {width, height}, false, true);
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
@@ -351,7 +349,7 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     // few of a pick under the cursor, where it would double the time.
     const bool cull = static_cast<long long>(w) * h * 16 > static_cast<long long>(width) * height;
     SurfacePrograms programs =
-        bindSurfacePrograms(m_scene.camera.viewProjection(aspect), true, cull);
+        bindSurfacePrograms(m_scene.camera.viewProjection(aspect), {width, height}, true, cull);
     drawMemberPass(programs, MemberPass::All);
     f.glBindVertexArray(0);
     programs.bound->release();
