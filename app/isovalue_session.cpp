@@ -98,12 +98,16 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
     // Same names: the selection keeps what the user selected and hid.
     m_selection->setMembers({memberNames(), m_result->distancesToMean, m_result->meanOutlyingness});
     m_selection->setTree(m_result->tree);
-    emit finished(tr("Isovalue %1: %2 triangles for %3 members and the mean, %4 s%5")
+    // Members that could not be compared are said where the user looks after each rebuild.
+    const std::string warning = prep::pairsWithoutOverlapWarning(*m_ensemble, m_result->distances);
+    emit finished(tr("Isovalue %1: %2 triangles for %3 members and the mean, %4 s%5%6")
                       .arg(isovalue)
                       .arg(m_result->triangles)
                       .arg(m_result->meshes->members.size())
                       .arg(m_result->seconds, 0, 'f', 2)
-                      .arg(m_result->fromCache ? tr(" (from the cache)") : QString()));
+                      .arg(m_result->fromCache ? tr(" (from the cache)") : QString())
+                      .arg(warning.empty() ? QString()
+                                           : tr(". Note: %1").arg(QString::fromStdString(warning))));
 }
 
 std::vector<int> IsovalueSession::labels() const { return m_selection->labels(); }

@@ -112,6 +112,11 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
         matrix.append(row);
     }
     o[QStringLiteral("distance_matrix")] = matrix;
+    QJsonArray withoutOverlap;  // pairs whose distance was placed, not measured
+    for (const auto& [i, j] : r.distances.pairsWithoutOverlap) {
+        withoutOverlap.append(QJsonArray{static_cast<qint64>(i), static_cast<qint64>(j)});
+    }
+    o[QStringLiteral("pairs_without_overlap")] = withoutOverlap;
     o[QStringLiteral("linkage_method")] = QString::fromStdString(prep::linkageName(linkage));
     QJsonArray rows;
     for (const prep::Merge& m : r.tree.merges) rows.append(QJsonArray{m.a, m.b, m.height, m.size});
@@ -283,6 +288,10 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                       : QStringLiteral("miss");
         r.meshes = std::move(outcome.meshes);
         r.distances = std::move(outcome.distances);
+        if (const std::string warning = prep::pairsWithoutOverlapWarning(r.ensemble, r.distances);
+            !warning.empty()) {
+            err << "ensil preprocess: warning: " << QString::fromStdString(warning) << "\n";
+        }
         r.tree = std::move(outcome.tree);
         r.labels = prep::clusterLabels(r.tree, k);
         r.distancesToMean = std::move(outcome.distancesToMean);

@@ -186,8 +186,15 @@ bool NetcdfReader::recognizes(const std::string& path) const {
     if (!hasNetcdf4Marks(path)) return false;
     try {
         const NetcdfFile file(path);
-        return std::none_of(file.dimensions().begin(), file.dimensions().end(),
-                            [](const NcDimension& d) { return d.name.starts_with("phony_dim"); });
+        if (std::any_of(file.dimensions().begin(), file.dimensions().end(),
+                        [](const NcDimension& d) { return d.name.starts_with("phony_dim"); })) {
+            return false;
+        }
+        // netCDF-C reads only the root group here: a file with dimension scales whose data sit
+        // in a subgroup (h5py with dimension scales, netCDF-4 groups) has no field there, and
+        // the HDF5 reader, which finds member groups at any depth, is the one to read it.
+        return std::any_of(file.variables().begin(), file.variables().end(),
+                           [](const NcVariable& v) { return v.dimIds.size() >= 3; });
     } catch (const Error&) {
         return false;
     }

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -76,6 +77,28 @@ void accumulateBlock(const Matrix& s, const Matrix& mask, bool missing, PairSums
     }
 }
 
+// Members that share no valid point cannot be compared. An infinite distance would merge them
+// at an infinite height, which no JSON reader or SciPy accepts; they are placed as far apart as
+// the farthest pair that can be compared, so they merge last among equals (METHODS.md
+// section 7).
+void placePairsWithoutOverlap(DistanceMatrix& m) {
+    if (m.pairsWithoutOverlap.empty()) return;
+    std::sort(m.pairsWithoutOverlap.begin(), m.pairsWithoutOverlap.end());
+    const std::size_t pairs = m.size * (m.size - 1) / 2;
+    if (m.pairsWithoutOverlap.size() == pairs) {
+        throw data::Error(data::ErrorKind::AllValuesMissing,
+                          "no two members have a valid value at the same grid point, so no "
+                          "two can be compared");
+    }
+    double farthest = 0.0;
+    for (std::size_t i = 0; i < m.size; ++i) {
+        for (std::size_t j = 0; j < i; ++j) farthest = std::max(farthest, m.at(i, j));
+    }
+    for (const auto& [i, j] : m.pairsWithoutOverlap) {
+        m.values[i * m.size + j] = m.values[j * m.size + i] = farthest;
+    }
+}
+
 DistanceMatrix assemble(const PairSums& sums, std::size_t n) {
     DistanceMatrix result;
     result.size = n;
@@ -88,11 +111,14 @@ DistanceMatrix assemble(const PairSums& sums, std::size_t n) {
             // the tiny negative values that can result.
             const double sum = std::max(
                 0.0, sums.squares(ii, jj) + sums.squares(jj, ii) - 2.0 * sums.cross(ii, jj));
-            const double d = count > 0.0 ? sum / count : std::numeric_limits<double>::infinity();
-            result.values[i * n + j] = d;
-            result.values[j * n + i] = d;
+            if (count > 0.0) {
+                result.values[i * n + j] = result.values[j * n + i] = sum / count;
+            } else {
+                result.pairsWithoutOverlap.emplace_back(j, i);
+            }
         }
     }
+    placePairsWithoutOverlap(result);
     return result;
 }
 
@@ -144,6 +170,29 @@ DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isova
     DistanceMatrix result = assemble(sums, n);
     data::report(progress, 1.0);
     return result;
+}
+
+std::string pairsWithoutOverlapWarning(const data::Ensemble& ensemble,
+                                       const DistanceMatrix& distances) {
+    const auto& pairs = distances.pairsWithoutOverlap;
+    if (pairs.empty()) return {};
+    constexpr std::size_t kNamed = 4;
+    std::string text = pairs.size() == 1 ? "one pair of members shares"
+                                         : std::to_string(pairs.size()) + " pairs of members share";
+    text += " no grid point where both have a valid value (";
+    for (std::size_t p = 0; p < std::min(pairs.size(), kNamed); ++p) {
+        if (p > 0) text += ", ";
+        text += "'" + ensemble.members[pairs[p].first].name + "' and '" +
+                ensemble.members[pairs[p].second].name + "'";
+    }
+    if (pairs.size() > kNamed) text += ", and " + std::to_string(pairs.size() - kNamed) + " more";
+    const auto [i, j] = pairs.front();
+    char distance[32];
+    std::snprintf(distance, sizeof distance, "%.4g", distances.at(i, j));
+    text += "): they cannot be compared, so each such pair is placed as far apart as the farthest "
+            "pair that can be (distance " +
+            std::string(distance) + ")";
+    return text;
 }
 
 }  // namespace ensil::prep

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <stop_token>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "data/ensemble.h"
@@ -19,6 +20,9 @@ namespace ensil::prep {
 struct DistanceMatrix {
     std::size_t size = 0;        // N, the number of members
     std::vector<double> values;  // size * size entries, values[i * size + j] = d(i, j)
+    // The pairs (i < j) that share no valid grid point, whose distance was set by the rule of
+    // computeDistanceMatrix rather than measured; empty when every pair overlaps.
+    std::vector<std::pair<std::size_t, std::size_t>> pairsWithoutOverlap;
 
     [[nodiscard]] double at(std::size_t i, std::size_t j) const { return values[i * size + j]; }
 };
@@ -26,13 +30,16 @@ struct DistanceMatrix {
 // Distances between all members at the given isovalue. A point counts for a pair when both
 // members have a finite value there (NaN marks missing values; infinities are treated as
 // missing too, since one would turn the whole sum into NaN). Two members that share no valid
-// point are infinitely far apart (d = +infinity); the diagonal is always 0.
+// point cannot be compared: they are placed as far apart as the farthest pair that can be
+// (d = the largest measured distance, so they merge last, at a finite height) and listed in
+// pairsWithoutOverlap; the diagonal is always 0. Every distance is finite.
 // Computed as matrix products over blocks of points, accumulated in double: the result agrees
 // with a plain double loop over the points to about 1e-15 times the mean of s_i^2 + s_j^2
 // (s = sqrt|f - mu|), since the expanded square cancels; nearly identical members get distances
 // at that floor (never negative) rather than exactly 0.
 // Throws data::Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble,
-// a non-finite isovalue or a member whose value count differs from the grid's point count. The
+// a non-finite isovalue or a member whose value count differs from the grid's point count, and
+// data::Error(AllValuesMissing) when no two members share a valid point (nothing to measure). The
 // argument checks every distance of this measure needs (here and in member_summaries.h): throws
 // data::Error(InvalidArgument) for an empty ensemble (`what` says what was being done), a
 // non-finite isovalue, or a member whose value count differs from the grid's point count.
@@ -42,5 +49,11 @@ void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop = {},
                                      const data::Progress& progress = {});
+
+// What a user is told when some pairs share no valid point (empty when none): how many, the
+// first few by member name, and the rule that placed them. One text for every command and the
+// workbench.
+std::string pairsWithoutOverlapWarning(const data::Ensemble& ensemble,
+                                       const DistanceMatrix& distances);
 
 }  // namespace ensil::prep

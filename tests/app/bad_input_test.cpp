@@ -9,6 +9,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTextStream>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -156,6 +157,33 @@ TEST(BadInput, AMemberWithoutDataIsNamedAndLeftOutOfTheClustering) {
     EXPECT_EQ(jsonOf(info)["members_without_data"].toArray(), QJsonArray{"member 2"});
     EXPECT_TRUE(info.err.contains("warning: 'member 2' of 't' has no valid value"))
         << info.err.toStdString();
+}
+
+TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
+    // Members 0 and 1 are valid in different halves of the grid: their distance was infinite,
+    // so the distance matrix and the last linkage height were null.
+    const QString file = kBad + "members_without_overlap.nc";
+    const Outcome o = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    ASSERT_EQ(o.code, 0) << o.err.toStdString();
+    EXPECT_TRUE(o.err.contains("warning: one pair of members shares no grid point where both have "
+                               "a valid value ('member 0' and 'member 1')"))
+        << o.err.toStdString();
+    const QJsonObject json = jsonOf(o);
+    EXPECT_FALSE(holdsNull(json)) << o.out.toStdString();
+    EXPECT_EQ(json["pairs_without_overlap"].toArray(), (QJsonArray{QJsonArray{0, 1}}));
+    // Placed as far apart as the farthest pair that was measured.
+    const QJsonArray d = json["distance_matrix"].toArray();
+    double farthestMeasured = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < i; ++j) {
+            if (i == 1 && j == 0) continue;
+            farthestMeasured = std::max(farthestMeasured, d[i].toArray()[j].toDouble());
+        }
+    }
+    EXPECT_GT(farthestMeasured, 0.0);
+    EXPECT_EQ(d[1].toArray()[0].toDouble(), farthestMeasured);
+    EXPECT_EQ(d[0].toArray()[1].toDouble(), farthestMeasured);
+    EXPECT_EQ(json["linkage"].toArray().size(), 3);
 }
 
 TEST(BadInput, InfinitiesInTheDataAreMissingValuesAndSaid) {

@@ -12,7 +12,7 @@ namespace ensil::bench {
 // Euclidean distances between n points of `dims` coordinates each (point i at points[dims * i]).
 inline prep::DistanceMatrix euclideanDistances(const std::vector<double>& points, std::size_t n,
                                                std::size_t dims) {
-    prep::DistanceMatrix d{n, std::vector<double>(n * n)};
+    prep::DistanceMatrix d{n, std::vector<double>(n * n), {}};
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t j = 0; j < n; ++j) {
             double sum = 0.0;

@@ -323,6 +323,47 @@ TEST(Hdf5Reader, SeveralMemberGroupsAreSaidAndVarChoosesAmongThem) {
     for (std::size_t m = 0; m < 2; ++m) expectMemberValues(u, m, m + 5);
 }
 
+TEST(Hdf5Reader, FilesWithDimensionScalesAndTheirDataInASubgroupGoToTheHdf5Reader) {
+    // Dimension scales in the root group, the members in /ensemble: netCDF-C sees only the
+    // root's scales, and the NetCDF reader used to claim the file and say it held no field.
+    // Written through netCDF-4's groups; once as netCDF writes it, once without _NCProperties
+    // (as a writer of dimension scales that is not netCDF, h5py's dims API, leaves it).
+    ensil::test::TempDir dir;
+    for (const bool ncProperties : {true, false}) {
+        const std::string path =
+            dir.file(ncProperties ? "groups_netcdf4.nc" : "groups_dimension_scales.h5");
+        int nc = -1;
+        ASSERT_EQ(nc_create(path.c_str(), NC_NETCDF4, &nc), NC_NOERR);
+        int dims[3] = {};
+        nc_def_dim(nc, "z", kNz, &dims[0]);
+        nc_def_dim(nc, "y", kNy, &dims[1]);
+        nc_def_dim(nc, "x", kNx, &dims[2]);
+        int group = -1;
+        ASSERT_EQ(nc_def_grp(nc, "ensemble", &group), NC_NOERR);
+        for (std::size_t m = 0; m < 3; ++m) {
+            int var = -1;
+            const std::string name = "member_0" + std::to_string(m);
+            ASSERT_EQ(nc_def_var(group, name.c_str(), NC_FLOAT, 3, dims, &var), NC_NOERR);
+            ASSERT_EQ(nc_put_var_float(group, var, memberValues<float>(m).data()), NC_NOERR);
+        }
+        ASSERT_EQ(nc_close(nc), NC_NOERR);
+        if (!ncProperties) {
+            const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+            ASSERT_GE(file, 0);
+            EXPECT_GE(H5Adelete(file, "_NCProperties"), 0);
+            H5Fclose(file);
+        }
+        SCOPED_TRACE(path);
+        const DataSelection s = selection({path});
+        EXPECT_EQ(readerFor(s).name(), "HDF5");
+        EnsembleDescription d;
+        const Ensemble e = openEnsemble(s, {}, {}, &d);
+        EXPECT_EQ(d.variable, "/ensemble");
+        ASSERT_EQ(e.memberCount(), 3u);
+        for (std::size_t m = 0; m < 3; ++m) expectMemberValues(e, m, m);
+    }
+}
+
 TEST(Hdf5Reader, RealNetcdf4FilesStillGoToTheNetcdfReader) {
     for (const char* name :
          {"era5_eda_members.nc", "glosea4_surface_temperature_ensemble.nc", "uk_hires.nc"}) {

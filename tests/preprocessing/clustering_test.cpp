@@ -125,7 +125,7 @@ TEST(Clustering, HandComputedTreesDifferBetweenLinkagesAndTiesFollowTheRule) {
 TEST(Clustering, TiesGoToTheSmallestPairOfIds) {
     expectTree(cluster(matrixFromLine({0, 1, 2, 3, 4}), prep::Linkage::Single),
                {{0, 1, 1, 2}, {2, 3, 1, 2}, {4, 6, 1, 3}, {5, 7, 1, 5}});
-    prep::DistanceMatrix equal{4, std::vector<double>(16, 1.0)};
+    prep::DistanceMatrix equal{4, std::vector<double>(16, 1.0), {}};
     for (std::size_t i = 0; i < 4; ++i) equal.values[i * 5] = 0.0;
     for (const auto linkage : kLinkages) {
         SCOPED_TRACE(prep::linkageName(linkage));
@@ -312,11 +312,11 @@ TEST(Clustering, RejectsBadMatricesAndClusterCounts) {
         }
     };
     expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{}); });
-    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, 1, 1}}); });
-    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, 1, 2, 0}}); });
-    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, -1, -1, 0}}); });
+    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, 1, 1}, {}}); });
+    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, 1, 2, 0}, {}}); });
+    expectInvalid([] { prep::clusterMembers(prep::DistanceMatrix{2, {0, -1, -1, 0}, {}}); });
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    expectInvalid([&] { prep::clusterMembers(prep::DistanceMatrix{2, {0, nan, nan, 0}}); });
+    expectInvalid([&] { prep::clusterMembers(prep::DistanceMatrix{2, {0, nan, nan, 0}, {}}); });
     const auto d = matrixFromLine({0, 1, 5});
     const auto tree = cluster(d, prep::Linkage::Average);
     expectInvalid([&] { prep::clusterLabels(tree, 0); });
@@ -327,7 +327,7 @@ TEST(Clustering, RejectsBadMatricesAndClusterCounts) {
 }
 
 TEST(Clustering, OneMemberAndInfiniteDistances) {
-    const auto single = cluster(prep::DistanceMatrix{1, {0.0}}, prep::Linkage::Ward);
+    const auto single = cluster(prep::DistanceMatrix{1, {0.0}, {}}, prep::Linkage::Ward);
     EXPECT_EQ(single.memberCount, 1);
     EXPECT_TRUE(single.merges.empty());
     EXPECT_EQ(prep::clusterLabels(single, 1), std::vector<int>{0});
@@ -336,7 +336,7 @@ TEST(Clustering, OneMemberAndInfiniteDistances) {
 
     // Members 0 and 1 share no valid point with member 2: it joins last, at infinity.
     const double inf = std::numeric_limits<double>::infinity();
-    const prep::DistanceMatrix d{3, {0, 1, inf, 1, 0, inf, inf, inf, 0}};
+    const prep::DistanceMatrix d{3, {0, 1, inf, 1, 0, inf, inf, inf, 0}, {}};
     for (const auto linkage : kLinkages) {
         SCOPED_TRACE(prep::linkageName(linkage));
         expectTree(cluster(d, linkage), {{0, 1, 1, 2}, {2, 3, inf, 3}});

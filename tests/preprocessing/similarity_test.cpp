@@ -63,9 +63,10 @@ TEST(Similarity, CountsOnlyPointsValidInBothMembers) {
     //   D: f = 0 at p = 1, 4  -> s = 0            (valid exactly where B is missing)
     // d(A,B): common p = 0,2,3,5,6,7: (0-1)^2+(2-1)^2+(3-1)^2+(5-1)^2+(6-1)^2+(7-1)^2
     //         = 1+1+4+16+25+36 = 83 over m = 6.
-    // d(A,C): common p = 1: (1-2)^2 = 1 over m = 1.         d(B,C): no common point: +inf.
+    // d(A,C): common p = 1: (1-2)^2 = 1 over m = 1.         d(B,C): no common point.
     // d(A,D): common p = 1, 4: (1-0)^2 + (4-0)^2 = 17 over m = 2.
-    // d(C,D): common p = 1: (2-0)^2 = 4 over m = 1.         d(B,D): no common point: +inf.
+    // d(C,D): common p = 1: (2-0)^2 = 4 over m = 1.         d(B,D): no common point.
+    // The pairs without a common point are placed at the largest measured distance, 83 / 6.
     const auto e = test::analyticEnsemble(4, 2, 2, 2, [](auto m, auto i, auto j, auto k) {
         const auto p = static_cast<float>(i + 2 * j + 4 * k);
         const bool bMissing = p == 1.0F || p == 4.0F;
@@ -81,14 +82,37 @@ TEST(Similarity, CountsOnlyPointsValidInBothMembers) {
         }
     });
     const auto d = prep::computeDistanceMatrix(e, 0.0F);
-    const double inf = std::numeric_limits<double>::infinity();
     EXPECT_DOUBLE_EQ(d.at(0, 1), 83.0 / 6.0);
     EXPECT_DOUBLE_EQ(d.at(0, 2), 1.0);
-    EXPECT_EQ(d.at(1, 2), inf);
+    EXPECT_DOUBLE_EQ(d.at(1, 2), 83.0 / 6.0);
+    EXPECT_DOUBLE_EQ(d.at(2, 1), 83.0 / 6.0);
     EXPECT_DOUBLE_EQ(d.at(0, 3), 17.0 / 2.0);
     EXPECT_DOUBLE_EQ(d.at(2, 3), 4.0);
-    EXPECT_EQ(d.at(1, 3), inf);
+    EXPECT_DOUBLE_EQ(d.at(1, 3), 83.0 / 6.0);
     for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(d.at(i, i), 0.0);
+    using Pair = std::pair<std::size_t, std::size_t>;
+    EXPECT_EQ(d.pairsWithoutOverlap, (std::vector<Pair>{{1, 2}, {1, 3}}));
+}
+
+TEST(Similarity, EveryDistanceIsMeasuredWhenEveryPairOverlaps) {
+    const auto e = test::analyticEnsemble(
+        3, 4, 4, 2, [](auto m, auto i, auto, auto) { return static_cast<float>(m + i); });
+    EXPECT_TRUE(prep::computeDistanceMatrix(e, 1.0F).pairsWithoutOverlap.empty());
+}
+
+TEST(Similarity, MembersOfWhichNoTwoOverlapCannotBeComparedAndSaySo) {
+    // Each member is valid only in its own column i == m: no pair has a common point.
+    const auto e = test::analyticEnsemble(3, 3, 2, 2, [](auto m, auto i, auto, auto) {
+        return i == m ? 1.0F : kNaN;
+    });
+    try {
+        (void)prep::computeDistanceMatrix(e, 0.0F);
+        FAIL() << "members with no common point were compared";
+    } catch (const data::Error& error) {
+        EXPECT_EQ(error.kind(), data::ErrorKind::AllValuesMissing);
+        EXPECT_NE(std::string(error.what()).find("no two can be compared"), std::string::npos)
+            << error.what();
+    }
 }
 
 TEST(Similarity, MatrixProductsMatchAPlainLoopOverRandomFields) {

@@ -101,7 +101,7 @@ TEST(DendrogramLayout, TheCutLineForKClustersGivesKClusters) {
 TEST(DendrogramLayout, DrawsInfiniteMergesJustAboveTheFiniteOnes) {
     // Two pairs with no valid point in common between them.
     const double inf = std::numeric_limits<double>::infinity();
-    prep::DistanceMatrix d{4, {0, 1, inf, inf, 1, 0, inf, inf, inf, inf, 0, 2, inf, inf, 2, 0}};
+    prep::DistanceMatrix d{4, {0, 1, inf, inf, 1, 0, inf, inf, inf, inf, 0, 2, inf, inf, 2, 0}, {}};
     const DendrogramLayout layout(prep::clusterMembers(d));
     const int root = layout.root();
     EXPECT_TRUE(std::isinf(layout.mergeHeight(root)));

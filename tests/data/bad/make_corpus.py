@@ -86,3 +86,8 @@ ensemble("member_without_data.nc", lambda m, z, y, x: "-999" if m == 2 else smoo
 ensemble("infinite_values.nc",
          lambda m, z, y, x: {(1, 0, 0, 0): "Infinityf", (3, 2, 3, 4): "-Infinityf"}.get(
              (m, z, y, x), smooth(m, z, y, x)))
+# Members 0 and 1 are valid in different halves of the grid, so no point holds both: their
+# distance was infinite, and null in `ensil preprocess --json`.
+ensemble("members_without_overlap.nc",
+         lambda m, z, y, x: "-999" if (m == 0 and x >= 2) or (m == 1 and x < 3)
+         else smooth(m, z, y, x))
