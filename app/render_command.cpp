@@ -64,7 +64,7 @@ const session::SettingOptions& sceneOptions() {
         "azimuth",     "elevation",       "projection",      "background",
         "axis_labels", "legend",          "plane_thickness", "coastlines",
         "borders",     "graticule",       "mean_opacity",    "title",
-        "floor",       "floor_level"};
+        "floor",       "floor_level",     "rims"};
     return options;
 }
 

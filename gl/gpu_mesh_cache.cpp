@@ -3,6 +3,8 @@
 #include <array>
 #include <cstddef>
 
+#include "gl/mesh_rims.h"
+
 namespace ensil::gl {
 namespace {
 // OpenGL takes buffer offsets as pointers.
@@ -14,11 +16,14 @@ void releaseOne(GlFunctions& f, GpuMesh& m) {
     if (m.vao != 0) f.glDeleteVertexArrays(1, &m.vao);
     if (m.vertices != 0) f.glDeleteBuffers(1, &m.vertices);
     if (m.indices != 0) f.glDeleteBuffers(1, &m.indices);
+    if (m.rimVao != 0) f.glDeleteVertexArrays(1, &m.rimVao);
+    if (m.rimIndices != 0) f.glDeleteBuffers(1, &m.rimIndices);
     m = GpuMesh{};
 }
 }  // namespace
 
-GpuMesh GpuMeshCache::uploadOne(GlFunctions& f, const data::PackedMesh& mesh) {
+GpuMesh GpuMeshCache::uploadOne(GlFunctions& f, const data::PackedMesh& mesh,
+                                const glm::vec3& gridLast) {
     GpuMesh g;
     g.boundsMin = mesh.boundsMin;
     g.boundsMax = mesh.boundsMax;
@@ -60,14 +65,35 @@ GpuMesh GpuMeshCache::uploadOne(GlFunctions& f, const data::PackedMesh& mesh) {
     f.glBindVertexArray(0);
     m_bytes += mesh.vertices.size() * sizeof(data::PackedVertex) +
                mesh.indices.size() * sizeof(std::uint32_t);
+
+    const std::vector<std::uint32_t> rims = rimSegments(mesh, gridLast);
+    if (rims.empty()) return g;
+    g.rimIndexCount = static_cast<GLsizei>(rims.size());
+    f.glGenVertexArrays(1, &g.rimVao);
+    f.glBindVertexArray(g.rimVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, g.vertices);
+    f.glGenBuffers(1, &g.rimIndices);
+    f.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.rimIndices);
+    f.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                   static_cast<GLsizeiptr>(rims.size() * sizeof(std::uint32_t)), rims.data(),
+                   GL_STATIC_DRAW);
+    const Attribute& position = layout[0];
+    f.glEnableVertexAttribArray(0);
+    f.glVertexAttribPointer(0, position.size, position.type, position.normalized, stride,
+                            offset(position.offset));
+    f.glBindVertexArray(0);
+    m_bytes += rims.size() * sizeof(std::uint32_t);
     return g;
 }
 
-void GpuMeshCache::upload(GlFunctions& f, const data::MeshSet& meshes) {
+void GpuMeshCache::upload(GlFunctions& f, const data::MeshSet& meshes,
+                          const glm::vec3& gridLast) {
     release(f);
     m_members.reserve(meshes.members.size());
-    for (const data::PackedMesh& m : meshes.members) m_members.push_back(uploadOne(f, m));
-    m_mean = uploadOne(f, meshes.mean);
+    for (const data::PackedMesh& m : meshes.members) {
+        m_members.push_back(uploadOne(f, m, gridLast));
+    }
+    m_mean = uploadOne(f, meshes.mean, gridLast);
 }
 
 void GpuMeshCache::release(GlFunctions& f) {

@@ -14,13 +14,18 @@ namespace ensil::gl {
 struct GpuMesh {
     GLuint vao = 0, vertices = 0, indices = 0;
     GLsizei indexCount = 0;
+    // The rims where the surface meets the box (gl/mesh_rims.h): GL_LINES over the same
+    // vertices, position only.
+    GLuint rimVao = 0, rimIndices = 0;
+    GLsizei rimIndexCount = 0;
     glm::vec3 boundsMin{0.0F}, boundsMax{0.0F};
     float outlyingnessScale = 1.0F;
 };
 
 class GpuMeshCache {
 public:
-    void upload(GlFunctions& f, const data::MeshSet& meshes);
+    // gridLast: the last grid index along each axis, the box whose faces hold the rims.
+    void upload(GlFunctions& f, const data::MeshSet& meshes, const glm::vec3& gridLast);
     void release(GlFunctions& f);
 
     [[nodiscard]] const std::vector<GpuMesh>& members() const { return m_members; }
@@ -28,7 +33,7 @@ public:
     [[nodiscard]] std::size_t bytes() const { return m_bytes; }
 
 private:
-    GpuMesh uploadOne(GlFunctions& f, const data::PackedMesh& mesh);
+    GpuMesh uploadOne(GlFunctions& f, const data::PackedMesh& mesh, const glm::vec3& gridLast);
 
     std::vector<GpuMesh> m_members;
     GpuMesh m_mean;

@@ -77,6 +77,9 @@ struct RenderSettings {
     bool showCoastlines = true;
     bool showBorders = true;
     bool showGraticule = true;
+    // The rims where each surface meets the box (gl/mesh_rims.h): on the top and bottom faces,
+    // each member's contour line at that level.
+    bool showRims = true;
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;

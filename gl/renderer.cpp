@@ -164,6 +164,7 @@ void Renderer::setGrid(const data::Grid& grid) {
     m_scene.frame = data::DisplayFrame(grid, m_scene.frame.verticalExaggeration());
     m_axisTablesDirty = true;
     m_mapLinesDirty = true;
+    m_meshesDirty = true;  // the rims lie on the box's faces
     resetCamera();
 }
 

@@ -123,6 +123,10 @@ public:
     };
     static constexpr int kMaxSolidSelection = 3;
     static constexpr float kUnselectedDimming = 0.6F;
+    // The rims where the surfaces meet the box (gl/mesh_rims.h), in pixels to either side of
+    // the line: about the width of a silhouette at the default tau, wider when selected.
+    static constexpr float kRimHalfWidth = 0.9F;
+    static constexpr float kSelectedRimHalfWidth = 1.6F;
     [[nodiscard]] Selection selectionShown() const;
 
     [[nodiscard]] bool hasGrid() const { return m_scene.hasGrid; }
@@ -200,6 +204,14 @@ private:
     void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,
                                  glm::ivec2 viewport, bool pick);
     void drawMemberPass(SurfacePrograms& programs, MemberPass pass);
+    // The cutting plane's uniforms (u_planeEnabled, u_plane), its normal turned to the viewer.
+    void setPlaneUniforms(QOpenGLShaderProgram& program) const;
+    // A member's colour as drawn: dimmed when others are selected, lightened when highlighted.
+    [[nodiscard]] glm::vec3 memberColour(std::size_t member, const MemberAppearance& a,
+                                         const Selection& selection) const;
+    // Every shown member's rims (and the mean's), after the surfaces (RenderSettings::showRims);
+    // with `pick`, the members' ids into the id pass instead. `viewport`: the pass's pixels.
+    void drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick);
     [[nodiscard]] bool canPick() const;
     // Draws the id pass into the window (GL pixel rows, bottom-up) and reads the ids back,
     // row by row: 0 for nothing, member + 1 otherwise.

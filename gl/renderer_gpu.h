@@ -23,6 +23,10 @@ inline const ShaderFiles kSilhouetteShaderFiles{
 inline const ShaderFiles kMapLineShaderFiles{
     QStringLiteral("map_lines"), QStringLiteral("map_lines"), QStringLiteral("map_lines")};
 
+// The rims of the isosurfaces: packed vertices, widened and cut like the map lines.
+inline const ShaderFiles kRimLineShaderFiles{
+    QStringLiteral("rim_lines"), QStringLiteral("map_lines"), QStringLiteral("map_lines")};
+
 struct Renderer::Gpu {
     GlFunctions* f = nullptr;
     ShaderLibrary shaders;

@@ -77,7 +77,10 @@ void Renderer::uploadMeshesIfChanged() {
     m_meshesDirty = false;
     GlFunctions& f = *m_gpu->f;
     if (m_scene.meshes) {
-        m_gpu->meshes.upload(f, *m_scene.meshes);
+        const glm::vec3 gridLast(static_cast<float>(m_scene.grid.nx() - 1),
+                                 static_cast<float>(m_scene.grid.ny() - 1),
+                                 static_cast<float>(m_scene.grid.nz() - 1));
+        m_gpu->meshes.upload(f, *m_scene.meshes, gridLast);
     } else {
         m_gpu->meshes.release(f);
     }
@@ -137,20 +140,8 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     program.setUniformValue("u_viewportSize", static_cast<float>(viewport.x),
                             static_cast<float>(viewport.y));
 
-    // The plane's normal is turned towards the viewer, so the shader discards n.p > offset.
-    const CuttingPlane& plane = m_scene.settings.plane;
-    glm::vec3 normal = plane.normal;
-    float offset = plane.offset;
-    const glm::vec3 viewerPoint = m_scene.camera.projection() == Camera::Projection::Orthographic
-                                      ? m_scene.camera.target() - 1e3F * viewDirection
-                                      : eye;
-    if (glm::dot(normal, viewerPoint) < offset) {
-        normal = -normal;
-        offset = -offset;
-    }
-    program.setUniformValue("u_planeEnabled", plane.enabled);
-    program.setUniformValue("u_plane", normal.x, normal.y, normal.z, offset);
-    program.setUniformValue("u_planeEpsilon", plane.thickness);
+    setPlaneUniforms(program);
+    program.setUniformValue("u_planeEpsilon", m_scene.settings.plane.thickness);
 
     program.setUniformValue("u_axisTables", 1);
     f.glUniform3i(program.uniformLocation("u_axisSize"), m_gpu->axisSize.x, m_gpu->axisSize.y,
@@ -158,6 +149,97 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     f.glActiveTexture(GL_TEXTURE1);
     f.glBindTexture(GL_TEXTURE_2D, m_gpu->axisTables);
     f.glActiveTexture(GL_TEXTURE0);
+}
+
+void Renderer::setPlaneUniforms(QOpenGLShaderProgram& program) const {
+    // The plane's normal is turned towards the viewer, so the shaders discard n.p > offset.
+    const CuttingPlane& plane = m_scene.settings.plane;
+    glm::vec3 normal = plane.normal;
+    float offset = plane.offset;
+    const glm::vec3 eye = m_scene.camera.eye();
+    const glm::vec3 viewerPoint =
+        m_scene.camera.projection() == Camera::Projection::Orthographic
+            ? m_scene.camera.target() - 1e3F * glm::normalize(m_scene.camera.target() - eye)
+            : eye;
+    if (glm::dot(normal, viewerPoint) < offset) {
+        normal = -normal;
+        offset = -offset;
+    }
+    program.setUniformValue("u_planeEnabled", plane.enabled);
+    program.setUniformValue("u_plane", normal.x, normal.y, normal.z, offset);
+}
+
+glm::vec3 Renderer::memberColour(std::size_t member, const MemberAppearance& a,
+                                 const Selection& selection) const {
+    glm::vec3 colour = a.color;
+    // With a selection, the others step back: their colour goes most of the way to the
+    // background.
+    if (selection.any && !a.selected) {
+        colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
+    }
+    if (static_cast<int>(member) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
+    return colour;
+}
+
+void Renderer::drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick) {
+    if (!m_scene.settings.showRims) return;
+    GlFunctions& f = *m_gpu->f;
+    QOpenGLShaderProgram& program =
+        m_gpu->shaders.program(QStringLiteral("rim_lines"), kRimLineShaderFiles);
+    program.bind();
+    f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
+                         glm::value_ptr(viewProjection));
+    program.setUniformValue("u_viewport", static_cast<float>(viewport.x),
+                            static_cast<float>(viewport.y));
+    setPlaneUniforms(program);
+    program.setUniformValue("u_axisTables", 1);
+    f.glUniform3i(program.uniformLocation("u_axisSize"), m_gpu->axisSize.x, m_gpu->axisSize.y,
+                  m_gpu->axisSize.z);
+    f.glActiveTexture(GL_TEXTURE1);
+    f.glBindTexture(GL_TEXTURE_2D, m_gpu->axisTables);
+    f.glActiveTexture(GL_TEXTURE0);
+    f.glEnable(GL_DEPTH_TEST);
+    if (!pick) {
+        f.glEnable(GL_BLEND);
+        f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    // Tested against the solid surfaces; not written, since a rim lies on its own surface's
+    // edge, except by picking, whose depth gives the place under the cursor.
+    f.glDepthMask(pick ? GL_TRUE : GL_FALSE);
+    const float pixels = pick ? 1.0F : m_resolutionScale * m_lineScale;
+    const auto draw = [&](const GpuMesh& mesh, const glm::vec3& colour, float halfWidth) {
+        if (mesh.rimVao == 0) return;
+        program.setUniformValue("u_boundsMin", mesh.boundsMin.x, mesh.boundsMin.y,
+                                mesh.boundsMin.z);
+        program.setUniformValue("u_boundsMax", mesh.boundsMax.x, mesh.boundsMax.y,
+                                mesh.boundsMax.z);
+        program.setUniformValue("u_halfWidth", halfWidth * pixels);
+        program.setUniformValue("u_color", colour.r, colour.g, colour.b, 1.0F);
+        f.glBindVertexArray(mesh.rimVao);
+        f.glDrawElements(GL_LINES, mesh.rimIndexCount, GL_UNSIGNED_INT, nullptr);
+    };
+    // The id pass writes member + 1 as the colour, as surface.frag does.
+    const auto pickColour = [](std::size_t member) {
+        const auto id = static_cast<unsigned>(member + 1);
+        return glm::vec3((id >> 16) & 255U, (id >> 8) & 255U, id & 255U) / 255.0F;
+    };
+    if (m_scene.settings.showMean && m_animated < 0 && !pick) {
+        draw(m_gpu->meshes.mean(), kMeanSurfaceColor, kRimHalfWidth);
+    }
+    const Selection selection = selectionShown();
+    const std::vector<GpuMesh>& members = m_gpu->meshes.members();
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        MemberAppearance a = appearance(m);
+        const bool animated = static_cast<int>(m) == m_animated;
+        if (m_animated >= 0) a.selected = animated;
+        if ((!a.visible && !animated) || (m_animated >= 0 && !animated)) continue;
+        draw(members[m], pick ? pickColour(m) : memberColour(m, a, selection),
+             a.selected ? kSelectedRimHalfWidth : kRimHalfWidth);
+    }
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_BLEND);
+    f.glBindVertexArray(0);
+    program.release();
 }
 
 glm::ivec4 Renderer::screenRectangle(const glm::mat4& viewProjection, int width, int height) const {
@@ -247,13 +329,7 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
                          : a.selected ? kSurfaces
                          : opaque     ? opaqueMode
                                       : translucentShaderMode;
-        glm::vec3 colour = a.color;
-        // With a selection, the others step back: their colour goes most of the way to the
-        // background.
-        if (selection.any && !a.selected) {
-            colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
-        }
-        if (static_cast<int>(m) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
+        const glm::vec3 colour = memberColour(m, a, selection);
         // Selected members drawn as surfaces keep a thicker, opaque silhouette rim.
         setMember(static_cast<int>(m) + 1, m, mode, colour, mode == kSurfaces && a.selected);
         drawMesh(f, *program, members[m]);
@@ -323,6 +399,7 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     }
     f.glBindVertexArray(0);
     programs.bound->release();
+    drawRims(viewProjection, {width, height}, false);
 }
 
 std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
@@ -353,6 +430,7 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     drawMemberPass(programs, MemberPass::All);
     f.glBindVertexArray(0);
     programs.bound->release();
+    drawRims(m_scene.camera.viewProjection(aspect), {width, height}, true);
 
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4);
     f.glPixelStorei(GL_PACK_ALIGNMENT, 1);

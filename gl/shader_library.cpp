@@ -13,7 +13,20 @@ QByteArray ShaderLibrary::source(const QString& file) {
         throw ShaderError("cannot read shader '" + path.toStdString() +
                           "': " + f.errorString().toStdString());
     }
-    return f.readAll();
+    // GLSL has no #include: a line `#include "FILE"` is replaced by that file's text, so a
+    // function several stages share (the grid-to-display mapping, the widening of a segment on
+    // screen) is written once.
+    QByteArray text;
+    for (const QByteArray& line : f.readAll().split('\n')) {
+        const QByteArray trimmed = line.trimmed();
+        if (trimmed.startsWith("#include \"") && trimmed.endsWith('"') && trimmed.size() > 11) {
+            text += source(QString::fromUtf8(trimmed.mid(10, trimmed.size() - 11)));
+        } else {
+            text += line;
+        }
+        text += '\n';
+    }
+    return text;
 }
 
 QOpenGLShaderProgram& ShaderLibrary::program(const QString& name, const ShaderFiles& files) {

@@ -34,7 +34,8 @@ public:
     // Destroys every program; the context that created them must be current.
     void clear() { m_programs.clear(); }
 
-    // The text of shaders/FILE (embedded, or from ENSIL_SHADER_DIR). Throws ShaderError.
+    // The text of shaders/FILE (embedded, or from ENSIL_SHADER_DIR), with each line
+    // `#include "OTHER"` replaced by the text of shaders/OTHER. Throws ShaderError.
     static QByteArray source(const QString& file);
 
 private:

@@ -37,6 +37,7 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_meanOpacity(new QDoubleSpinBox(this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
+      m_rims(new QCheckBox(tr("Rims where surfaces meet the box"), this)),
       m_floor(new QComboBox(this)),
       m_floorLevel(new QSpinBox(this)),
       m_map(new QGroupBox(tr("Map"), this)),
@@ -58,6 +59,7 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_meanOpacity, "meanOpacity"},
              {m_axes, "axes"},
              {m_legend, "legend"},
+             {m_rims, "rims"},
              {m_floor, "floor"},
              {m_floorLevel, "floorLevel"},
              {m_map, "map"},
@@ -110,6 +112,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     sceneForm->addRow(m_axes);
     m_legend->setToolTip(settingHelp("legend"));
     sceneForm->addRow(m_legend);
+    m_rims->setToolTip(settingHelp("rims"));
+    sceneForm->addRow(m_rims);
     m_floor->addItems({tr("Nothing"), tr("Mean's column maximum"), tr("Mean at a level")});
     m_floor->setToolTip(settingHelp("floor"));
     shapeBySetting(*m_floorLevel, "floor_level");
@@ -150,6 +154,7 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_mean, &QCheckBox::toggled, this, edited);  // also enables the mean's opacity
     connect(m_axes, &QCheckBox::toggled, this, edited);
     connect(m_legend, &QCheckBox::toggled, this, edited);
+    connect(m_rims, &QCheckBox::toggled, this, edited);
     for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
         connect(box, &QCheckBox::toggled, this, edited);
     }
@@ -184,7 +189,7 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
         b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity), b15(m_floor),
-        b16(m_floorLevel);
+        b16(m_floorLevel), b17(m_rims);
     m_floor->setCurrentIndex(static_cast<int>(settings.floor));
     m_floorLevel->setValue(settings.floorLevel);
     m_meanOpacity->setValue(settings.meanOpacity);
@@ -193,6 +198,7 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     m_graticule->setChecked(settings.showGraticule);
     m_axes->setChecked(settings.showAxes);
     m_legend->setChecked(settings.showLegend);
+    m_rims->setChecked(settings.showRims);
     m_mode->setCurrentIndex(static_cast<int>(settings.mode));
     m_thickness->setValue(settings.thickness);
     m_opacity->setValue(settings.surfaceAlpha);
@@ -217,6 +223,7 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.meanOpacity = static_cast<float>(m_meanOpacity->value());
     settings.showAxes = m_axes->isChecked();
     settings.showLegend = m_legend->isChecked();
+    settings.showRims = m_rims->isChecked();
     settings.showCoastlines = m_coastlines->isChecked();
     settings.showBorders = m_borders->isChecked();
     settings.showGraticule = m_graticule->isChecked();

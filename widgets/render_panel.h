@@ -63,6 +63,7 @@ private:
     QDoubleSpinBox* m_meanOpacity;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
+    QCheckBox* m_rims;
     QComboBox* m_floor;
     QSpinBox* m_floorLevel;
     QGroupBox* m_map;

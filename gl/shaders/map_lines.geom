@@ -9,7 +9,9 @@ layout(triangle_strip, max_vertices = 4) out;
 uniform vec2 u_viewport;    // the scene's size in pixels
 uniform float u_halfWidth;  // pixels
 
+in vec3 v_position[];               // display space
 noperspective out float v_across;  // pixels from the line's centre, signed
+out vec3 g_position;               // display space, for the cutting plane
 
 void main() {
     vec4 a = gl_in[0].gl_Position;
@@ -25,17 +27,14 @@ void main() {
     float reach = u_halfWidth + 1.0;
     // Offsets in pixels back to clip space: multiply by w and divide by half the viewport.
     vec2 toClip = 2.0 / u_viewport;
-    v_across = reach;
-    gl_Position = vec4(a.xy + normal * reach * toClip * a.w, a.zw);
-    EmitVertex();
-    v_across = -reach;
-    gl_Position = vec4(a.xy - normal * reach * toClip * a.w, a.zw);
-    EmitVertex();
-    v_across = reach;
-    gl_Position = vec4(b.xy + normal * reach * toClip * b.w, b.zw);
-    EmitVertex();
-    v_across = -reach;
-    gl_Position = vec4(b.xy - normal * reach * toClip * b.w, b.zw);
-    EmitVertex();
+    for (int end = 0; end < 2; ++end) {
+        vec4 p = end == 0 ? a : b;
+        for (int side = 1; side >= -1; side -= 2) {
+            v_across = float(side) * reach;
+            g_position = v_position[end];
+            gl_Position = vec4(p.xy + float(side) * normal * reach * toClip * p.w, p.zw);
+            EmitVertex();
+        }
+    }
     EndPrimitive();
 }

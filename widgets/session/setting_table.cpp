@@ -21,7 +21,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 26> kSettings{{
+const std::array<Setting, 27> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -201,6 +201,22 @@ const std::array<Setting, 26> kSettings{{
      {},
      [](const SessionState& s) { return s.render.showGraticule ? 1.0 : 0.0; },
      [](SessionState& s, double v) { s.render.showGraticule = v != 0.0; }},
+    {"rims",
+     SettingKind::Flag,
+     "rendering.rims",
+     "rims",
+     "rendering/rims",
+     "Rims at the box",
+     "",
+     "Each surface's outline where it meets the data box: on the top and bottom levels, the "
+     "member's contour line there (essential with few levels)",
+     0,
+     1,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return s.render.showRims ? 1.0 : 0.0; },
+     [](SessionState& s, double v) { s.render.showRims = v != 0.0; }},
     {"removal",
      SettingKind::Flag,
      "rendering.removal.enabled",
