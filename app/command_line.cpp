@@ -53,8 +53,8 @@ QString topLevelHelp() {
     text += QStringLiteral(
         "\n"
         "Options:\n"
-        "  --var V           Variable to show (default: the first with three spatial\n"
-        "                    dimensions).\n"
+        "  --var V           Variable to show (default: the one with three spatial\n"
+        "                    dimensions and the most vertical levels).\n"
         "  --member-dim D    Dimension that holds the members, when ensil finds none.\n"
         "  --time-index I    Index along other dimensions such as time (default 0).\n"
         "  -h, --help        Show this help.\n"

@@ -4,8 +4,9 @@ namespace ensil::app {
 
 DataSelectionOptions::DataSelectionOptions()
     : m_variable(QStringList{QStringLiteral("var")},
-                 QStringLiteral("Variable (or dataset, or VTK array) to use; default: the first "
-                                "one with three spatial dimensions."),
+                 QStringLiteral("Variable (or dataset, or VTK array) to use; default: the one "
+                                "with three spatial dimensions and the most vertical levels "
+                                "(the first among equals)."),
                  QStringLiteral("V")),
       m_memberDim(QStringList{QStringLiteral("member-dim")},
                   QStringLiteral("Dimension that holds the members (e.g. time, month), when "
