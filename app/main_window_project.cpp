@@ -157,7 +157,7 @@ float MainWindow::viewAspect() const {
 }
 
 void MainWindow::applyPendingProjectCamera() {
-    session::placeCamera(m_pendingProject->camera, m_view->renderer(), viewAspect());
+    session::placeCamera(m_pendingProject->camera, m_view->renderer());
 }
 
 void MainWindow::applyPendingProjectMembers() {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace ensil::gl {
@@ -21,19 +23,39 @@ void Camera::reset(const glm::vec3& center, float radius) {
     fit(center, radius);
 }
 
-void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect, float fill) {
+void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect, float fill,
+                      const NdcRegion& region) {
     fit(0.5F * (boxMin + boxMax), 0.5F * glm::length(boxMax - boxMin));
-    const auto fits = [&] {
+    // The box's corners on screen (NDC): their bounding rectangle, or nothing when one lies
+    // behind the eye.
+    const auto bounds = [&]() -> std::optional<NdcRegion> {
         const glm::mat4 vp = viewProjection(aspect);
+        NdcRegion r{glm::vec2(std::numeric_limits<float>::max()),
+                    glm::vec2(-std::numeric_limits<float>::max())};
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec4 p = vp * glm::vec4((corner & 1) ? boxMax.x : boxMin.x,
                                                (corner & 2) ? boxMax.y : boxMin.y,
                                                (corner & 4) ? boxMax.z : boxMin.z, 1.0F);
-            if (p.w <= 0.0F || std::abs(p.x / p.w) > fill || std::abs(p.y / p.w) > fill) {
-                return false;
-            }
+            if (p.w <= 0.0F) return std::nullopt;
+            const glm::vec2 ndc = glm::vec2(p) / p.w;
+            r.min = glm::min(r.min, ndc);
+            r.max = glm::max(r.max, ndc);
         }
-        return true;
+        return r;
+    };
+    const glm::vec2 room = fill * (region.max - region.min);
+    const bool wholeView = region.min == glm::vec2(-1.0F) && region.max == glm::vec2(1.0F);
+    // In the whole view the target stays at the box's centre, every corner within `fill`. In a
+    // region the box's size on screen hardly depends on where it is: the distance is chosen
+    // for the size, then the box is moved into the region.
+    const auto fits = [&] {
+        const std::optional<NdcRegion> b = bounds();
+        if (!b) return false;
+        if (wholeView) {
+            const glm::vec2 reach = glm::max(glm::abs(b->min), glm::abs(b->max));
+            return reach.x <= fill && reach.y <= fill;
+        }
+        return b->max.x - b->min.x <= room.x && b->max.y - b->min.y <= room.y;
     };
     // Start from the bounding sphere's distance (moving back when a narrow viewport needs it),
     // then bisect towards the box.
@@ -45,6 +67,22 @@ void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float as
         (fits() ? far : near) = m_distance;
     }
     m_distance = far;
+    // Centre the box's rectangle on the region's centre: pan() in units of half the view's
+    // height moves the scene by NDC units (x scaled by the aspect). A few rounds settle the
+    // small change a perspective view makes as the box moves.
+    const glm::vec2 centre = 0.5F * (region.min + region.max);
+    for (int round = 0; round < 4 && !wholeView; ++round) {
+        const std::optional<NdcRegion> b = bounds();
+        if (!b) break;
+        const glm::vec2 shift = centre - 0.5F * (b->min + b->max);
+        if (glm::length(shift) < 1e-5F) break;
+        pan(shift.x * aspect, -shift.y, 2.0F);
+    }
+}
+
+void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
+                      float fill) {
+    frameBox(boxMin, boxMax, aspect, fill, NdcRegion{});
 }
 
 void Camera::setAngles(float azimuthDeg, float elevationDeg) {

@@ -16,9 +16,17 @@ public:
     void fit(const glm::vec3& center, float radius);
     // Back to the default angles, then fit.
     void reset(const glm::vec3& center, float radius);
-    // From the current angles, the nearest distance at which every corner of the box lies
-    // within `fill` of the viewport's half-extent (NDC), for a viewport of this aspect ratio:
-    // a flat atmospheric box fills the view instead of floating inside its bounding sphere.
+    // A rectangle of the view in normalised device coordinates, (-1, -1) to (1, 1) whole.
+    struct NdcRegion {
+        glm::vec2 min{-1.0F};
+        glm::vec2 max{1.0F};
+    };
+    // From the current angles, the nearest distance at which the box's corners span at most
+    // `fill` of the region's width and height, for a viewport of this aspect ratio, with the
+    // box centred in the region: a flat atmospheric box fills the view instead of floating
+    // inside its bounding sphere, and a region short of the whole view keeps room for panels.
+    void frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect, float fill,
+                  const NdcRegion& region);
     void frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
                   float fill = 0.8F);
 

@@ -177,7 +177,69 @@ void Renderer::setVerticalExaggeration(float exaggeration) {
 }
 
 void Renderer::frameTheBox() {
-    m_scene.camera.frameBox(m_scene.frame.boxMin(), m_scene.frame.boxMax(), viewAspect());
+    const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
+    m_scene.camera.frameBox(lo, hi, viewAspect());
+    // Where the legend or the colour bar would cover the box (a small view, a map seen from
+    // the top that fills it), the box is framed into what the panels leave: beside a strip
+    // on the right for both, or the legend on the right and the colour bar below, whichever
+    // leaves the box larger.
+    const glm::ivec2 size = m_scene.viewSize;
+    if (m_scene.hasGrid && size.x > 0 && size.y > 0) {
+        const QSizeF logical(size.x / m_lineScale, size.y / m_lineScale);
+        const ViewOverlay shown = overlay(size.x, size.y);
+        const PanelRoom room = panelRoom(shown);
+        const auto covered = [&] {
+            const QRectF box(shown.box.topLeft() / m_lineScale, shown.box.size() / m_lineScale);
+            const PanelPlaces places = placePanels(shown, logical, box);
+            // The box with its tick values and axis titles around it.
+            const QRectF labelled =
+                box.adjusted(-room.axisLabels, 0.0, room.axisLabels, room.axisLabels);
+            return places.legend.intersects(labelled) || places.colourBar.intersects(labelled) ||
+                   (shown.floorScale && places.colourBar.isEmpty());
+        };
+        if (covered()) {
+            const auto region = [&](double right, double bottom) {
+                // Logical pixels from each edge to NDC, y up.
+                return Camera::NdcRegion{
+                    {-1.0F, static_cast<float>(-1.0 + 2.0 * bottom / logical.height())},
+                    {static_cast<float>(1.0 - 2.0 * right / logical.width()),
+                     static_cast<float>(1.0 - 2.0 * room.top / logical.height())}};
+            };
+            const double strip = room.margin * 2;
+            const double stackedHeight =
+                room.top + room.legend.height() + room.colourBar.height() + 3 * room.margin;
+            std::vector<Camera::NdcRegion> candidates;
+            if (stackedHeight <= logical.height()) {
+                candidates.push_back(region(
+                    std::max(room.legend.width(), room.colourBar.width()) + strip,
+                    room.axisLabels));
+            }
+            // Below the box its tick values and axis title come before the colour bar.
+            candidates.push_back(region(room.legend.width() + (room.legend.isEmpty() ? 0 : strip),
+                                        room.colourBar.height() + room.axisLabels +
+                                            (room.colourBar.isEmpty() ? 0 : strip)));
+            // The share of the view the box's rectangle takes with this camera.
+            const auto boxShare = [&](const Camera& camera) {
+                const glm::ivec4 r = screenRectangle(camera.viewProjection(viewAspect()),
+                                                     size.x, size.y);
+                return static_cast<double>(r.z) * r.w / (static_cast<double>(size.x) * size.y);
+            };
+            // Not at any price: in a view smaller than ensil supports (480 x 320) the room
+            // would leave a box too small to read, and the panels cover it as before.
+            Camera best = m_scene.camera;
+            double bestShare = kLeastBoxShareBesidePanels;
+            for (const Camera::NdcRegion& r : candidates) {
+                if (r.max.x <= r.min.x + 0.2F || r.max.y <= r.min.y + 0.2F) continue;
+                Camera trial = m_scene.camera;
+                trial.frameBox(lo, hi, viewAspect(), 0.8F, r);
+                if (const double share = boxShare(trial); share > bestShare) {
+                    bestShare = share;
+                    best = trial;
+                }
+            }
+            m_scene.camera = best;
+        }
+    }
     m_framedCamera = m_scene.camera;
 }
 
@@ -195,7 +257,9 @@ void Renderer::lookFrom(float azimuth, float elevation) {
 void Renderer::setViewSize(int width, int height) {
     if (width <= 0 || height <= 0) return;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    if (aspect == m_scene.viewAspect) return;
+    const bool resized = m_scene.viewSize != glm::ivec2(width, height);
+    m_scene.viewSize = {width, height};
+    if (aspect == m_scene.viewAspect && !resized) return;
     m_scene.viewAspect = aspect;
     // A camera still where the last reset or preset put it was framed for another shape: the
     // box would stick out of a narrower view. Framed again; a camera the user moved stays.

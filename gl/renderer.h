@@ -127,6 +127,9 @@ public:
     // the line: about the width of a silhouette at the default tau, wider when selected.
     static constexpr float kRimHalfWidth = 0.9F;
     static constexpr float kSelectedRimHalfWidth = 1.6F;
+    // Framed beside the panels, the box's rectangle must still take this share of the view;
+    // where it would not (views smaller than 480 x 320), the panels cover the box instead.
+    static constexpr double kLeastBoxShareBesidePanels = 0.09;
     [[nodiscard]] Selection selectionShown() const;
 
     [[nodiscard]] bool hasGrid() const { return m_scene.hasGrid; }
@@ -165,6 +168,9 @@ public:
     [[nodiscard]] Camera& camera() { return m_scene.camera; }
     [[nodiscard]] const Camera& camera() const { return m_scene.camera; }
     void resetCamera();
+    // Fits the camera to the box at the view's size, from its angles, and remembers it; where
+    // the legend or colour bar would cover the box, into the part of the view they leave.
+    void frameTheBox();
     // Looks from these angles (degrees; see Camera), fitted to the data box like resetCamera.
     void lookFrom(float azimuth, float elevation);
     // The shape of the frames to come (a window's resize), which the camera is fitted to; a
@@ -228,8 +234,6 @@ private:
                             float halfWidth, const glm::vec4& colour);
     void uploadAxisTables();
     void drawFloorAndBox(const glm::mat4& viewProjection);
-    // Fits the camera to the box at the view's aspect, from its angles, and remembers it.
-    void frameTheBox();
     // The cutting plane itself: its cut through the box as a faint fill with an outline.
     void drawPlaneOutline(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
@@ -249,6 +253,7 @@ private:
         glm::ivec2 lastSize{0};   // the last frame's size, which picking draws at
         glm::ivec2 sceneSize{0};  // the size its scene was drawn at (lastSize times the scale)
         float viewAspect = 1.6F;  // before the first frame: the usual window's shape
+        glm::ivec2 viewSize{0};   // setViewSize's pixels; the panels' room depends on them
     };
 
     std::unique_ptr<Gpu> m_gpu;

@@ -2,6 +2,7 @@
 
 #include <QFont>
 #include <QFontMetricsF>
+#include <QImage>
 #include <QLinearGradient>
 #include <QPainter>
 #include <algorithm>
@@ -99,6 +100,8 @@ QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF pictur
 }
 
 constexpr double kMargin = 10.0;  // from the picture's edge to a panel
+constexpr double kTextPoints = 9.0;      // labels, legend, colour bar
+constexpr double kHeadingPoints = 10.5;  // the title line
 constexpr double kPad = 6.0;      // inside a panel
 constexpr double kBarHeight = 10.0;
 
@@ -288,6 +291,69 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
                  QSizeF(painter.device()->width(), painter.device()->height()));
 }
 
+namespace {
+// Text is measured for the device it is painted on, never for "the screen": without a display
+// server the platform's screen has another resolution, and the same picture would be laid out
+// differently. Without a device (framing the camera), as for a picture, which a QImage is.
+QFont overlayFont(const QPaintDevice* device) {
+    static const QImage picture(1, 1, QImage::Format_RGB32);
+    QFont font(QFont(), device != nullptr ? device : &picture);
+    font.setPointSizeF(kTextPoints);
+    return font;
+}
+
+QFontMetricsF headingMetrics(const QPaintDevice* device) {
+    QFont heading = overlayFont(device);
+    heading.setPointSizeF(kHeadingPoints);
+    heading.setBold(true);
+    return QFontMetricsF(heading);
+}
+}  // namespace
+
+PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QRectF& dataBox,
+                        const QPaintDevice* device) {
+    // The title line centred at the top (elided when the picture is narrower), the legend in a
+    // corner clear of the data box, the floor's colour bar in another corner clear of both
+    // (left out when none is).
+    PanelPlaces places;
+    const QFontMetricsF metrics(overlayFont(device));
+    double panelTop = kMargin;
+    if (!overlay.title.isEmpty()) {
+        places.title = QRectF(kMargin, 6.0, logicalSize.width() - 2 * kMargin,
+                              headingMetrics(device).height());
+        panelTop = places.title.bottom() + 6.0;
+    }
+    if (!overlay.legend.empty()) {
+        places.legend = legendPlace(legendSize(overlay.legend, metrics), panelTop, dataBox,
+                                    logicalSize, kMargin);
+    }
+    if (overlay.floorScale) {
+        const QSizeF size = colourScaleSize(*overlay.floorScale, metrics);
+        const QRectF& legend = places.legend;
+        const QRectF taken = legend.isEmpty()    ? dataBox
+                             : dataBox.isEmpty() ? legend
+                                                 : dataBox.united(legend);
+        QRectF bar = legendPlace(size, panelTop, dataBox, logicalSize, kMargin);
+        if (!legend.isEmpty() && bar.intersects(legend)) {
+            bar = legendPlace(size, panelTop, taken, logicalSize, kMargin);
+        }
+        if (!legend.isEmpty() && bar.intersects(legend)) bar = QRectF();
+        places.colourBar = bar;
+    }
+    return places;
+}
+
+PanelRoom panelRoom(const ViewOverlay& overlay) {
+    const QFontMetricsF metrics(overlayFont(nullptr));
+    PanelRoom room;
+    if (!overlay.title.isEmpty()) room.top = 6.0 + headingMetrics(nullptr).height() + 6.0;
+    if (!overlay.legend.empty()) room.legend = legendSize(overlay.legend, metrics);
+    if (overlay.floorScale) room.colourBar = colourScaleSize(*overlay.floorScale, metrics);
+    if (!overlay.labels.empty()) room.axisLabels = 2.0 * metrics.height() + kTickOffsetPx;
+    room.margin = kMargin;
+    return room;
+}
+
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
                   QSizeF logicalSize, std::vector<PaintedItem>* painted) {
     const auto record = [&](const QRectF& rect, const QString& text) {
@@ -301,55 +367,34 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
     const auto scale = static_cast<float>(1.0 / std::max(pixelRatio, 1e-3));
-    QFont font = painter.font();
-    font.setPointSizeF(9.0);
+    const QFont font = overlayFont(painter.device());
     QFont titleFont = font;
     titleFont.setBold(true);
-    const QFontMetricsF metrics(font);
     const QRectF dataBox = overlay.box.isEmpty()
                                ? QRectF()
                                : QRectF(overlay.box.topLeft() * scale, overlay.box.size() * scale);
-    // Panels are placed first, then the labels around them: the title line (centred at the
-    // top, elided when the picture is narrower), the legend in a corner clear of the data box,
-    // the floor's colour bar in another corner clear of both (left out when none is).
+    const PanelPlaces panels = placePanels(overlay, logicalSize, dataBox, painter.device());
     std::vector<QRectF> placed;
-    double panelTop = kMargin;
-    if (!overlay.title.isEmpty()) {
+    if (!panels.title.isEmpty()) {
         QFont heading = font;
-        heading.setPointSizeF(10.5);
+        heading.setPointSizeF(kHeadingPoints);
         heading.setBold(true);
         painter.setFont(heading);
         const QFontMetricsF headingMetrics(heading);
-        const double width = logicalSize.width() - 2 * kMargin;
-        const QString text = headingMetrics.elidedText(overlay.title, Qt::ElideMiddle, width);
-        const QRectF rect(kMargin, 6.0, width, headingMetrics.height());
+        const QString text =
+            headingMetrics.elidedText(overlay.title, Qt::ElideMiddle, panels.title.width());
         painter.setPen(overlay.text);
-        painter.drawText(rect, Qt::AlignHCenter | Qt::AlignTop, text);
-        record(QRectF(rect.center().x() - 0.5 * headingMetrics.horizontalAdvance(text), rect.top(),
-                      headingMetrics.horizontalAdvance(text), rect.height()),
+        painter.drawText(panels.title, Qt::AlignHCenter | Qt::AlignTop, text);
+        record(QRectF(panels.title.center().x() - 0.5 * headingMetrics.horizontalAdvance(text),
+                      panels.title.top(), headingMetrics.horizontalAdvance(text),
+                      panels.title.height()),
                QStringLiteral("title"));
-        placed.push_back(rect);
-        panelTop = rect.bottom() + 6.0;
+        placed.push_back(panels.title);
     }
-    QRectF legendRect;
-    if (!overlay.legend.empty()) {
-        legendRect = legendPlace(legendSize(overlay.legend, metrics), panelTop, dataBox,
-                                 logicalSize, kMargin);
-        placed.push_back(legendRect);
-    }
-    QRectF barRect;
-    if (overlay.floorScale) {
-        const QSizeF size = colourScaleSize(*overlay.floorScale, metrics);
-        const QRectF taken = legendRect.isEmpty() ? dataBox
-                             : dataBox.isEmpty()  ? legendRect
-                                                  : dataBox.united(legendRect);
-        barRect = legendPlace(size, panelTop, dataBox, logicalSize, kMargin);
-        if (!legendRect.isEmpty() && barRect.intersects(legendRect)) {
-            barRect = legendPlace(size, panelTop, taken, logicalSize, kMargin);
-        }
-        if (!legendRect.isEmpty() && barRect.intersects(legendRect)) barRect = QRectF();
-        if (!barRect.isEmpty()) placed.push_back(barRect);
-    }
+    const QRectF legendRect = panels.legend;
+    if (!legendRect.isEmpty()) placed.push_back(legendRect);
+    const QRectF barRect = panels.colourBar;
+    if (!barRect.isEmpty()) placed.push_back(barRect);
     // Where edges meet (or the box is seen edge-on) labels would pile up: the first one
     // placed keeps its place and later ones that would overlap it are left out. Titles
     // first: where space is short, a title says more than one tick value; then the vertical

@@ -19,6 +19,7 @@
 #include "gl/render_settings.h"
 
 class QPainter;
+class QPaintDevice;
 
 namespace ensil::gl {
 
@@ -95,6 +96,31 @@ struct PaintedItem {
 };
 void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRatio,
                   QSizeF logicalSize, std::vector<PaintedItem>* painted = nullptr);
+
+// Where paintOverlay puts its panels in a picture `logicalSize` big (logical pixels), with the
+// data box's rectangle `dataBox` there: the title line at the top, the legend in the first
+// corner clear of the box, the floor's colour bar in another corner clear of both. An empty
+// rectangle: not shown (the colour bar when no corner is left for it).
+struct PanelPlaces {
+    QRectF title;
+    QRectF legend;
+    QRectF colourBar;
+};
+// Text is measured for `device` (what paintOverlay paints on); null: for a picture.
+PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QRectF& dataBox,
+                        const QPaintDevice* device = nullptr);
+
+// What the panels need, in logical pixels: the title line's strip at the top, the legend's and
+// the colour bar's sizes (empty when not shown), the margin from the picture's edge, and the
+// depth of a row of tick values with an axis title under it (0 without axis labels).
+struct PanelRoom {
+    double top = 0.0;
+    double axisLabels = 0.0;
+    QSizeF legend;
+    QSizeF colourBar;
+    double margin = 0.0;
+};
+PanelRoom panelRoom(const ViewOverlay& overlay);
 
 // The text scale for a picture of this height drawn with no window to compare it with: 1 up
 // to kReferenceHeight pixels, then in proportion.

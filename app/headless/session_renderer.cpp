@@ -83,8 +83,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     gl::Camera& camera = renderer.camera();
     camera.setProjection(state.camera.orthographic ? gl::Camera::Projection::Orthographic
                                                    : gl::Camera::Projection::Perspective);
-    session::placeCamera(state.camera, renderer,
-                         static_cast<float>(request.width) / static_cast<float>(request.height));
+    session::placeCamera(state.camera, renderer);
     if (request.planeAcrossBox) {
         const glm::vec4 p = *request.planeAcrossBox;
         const gl::CuttingPlane given = renderer.settings().plane;

@@ -2,14 +2,14 @@
 
 namespace ensil::session {
 
-void placeCamera(const CameraState& state, gl::Renderer& renderer, float aspect) {
+void placeCamera(const CameraState& state, gl::Renderer& renderer) {
     gl::Camera& camera = renderer.camera();
     camera.setAngles(state.azimuth, state.elevation);
     if (state.placement) {
         camera.setTarget(state.placement->target);
         camera.setDistance(state.placement->distance);
     } else {
-        camera.frameBox(renderer.frame().boxMin(), renderer.frame().boxMax(), aspect);
+        renderer.frameTheBox();
     }
 }
 

@@ -1,5 +1,5 @@
 // A session's camera put on a renderer: its angles, and its saved place, or, with none saved,
-// fitted to the data box for a picture of this shape (what Reset Camera does). Headless
+// fitted to the data box for the renderer's view size (what Reset Camera does). Headless
 // rendering, opening a project and undo all place the camera through this. GUI thread.
 #pragma once
 
@@ -8,6 +8,6 @@
 
 namespace ensil::session {
 
-void placeCamera(const CameraState& camera, gl::Renderer& renderer, float aspect);
+void placeCamera(const CameraState& camera, gl::Renderer& renderer);
 
 }  // namespace ensil::session
