@@ -63,6 +63,7 @@ struct Result {
     std::vector<int> labels;
     std::vector<double> distancesToMean;
     std::vector<double> meanOutlyingness;
+    prep::ContourBoxplot boxplot;
     std::map<std::string, double> seconds;
     QString cache;
     QStringList membersWithoutData;  // left out of everything below
@@ -145,6 +146,13 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
                                    {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
     }
     o[QStringLiteral("members")] = members;
+    // The contour boxplot (METHODS.md section 17): one depth per member, in member order.
+    QJsonArray depth, outliers;
+    for (const double d : r.boxplot.depth) depth.append(d);
+    for (const std::size_t m : r.boxplot.outliers) outliers.append(static_cast<qint64>(m));
+    o[QStringLiteral("depth")] = depth;
+    o[QStringLiteral("median_member")] = static_cast<qint64>(r.boxplot.median);
+    o[QStringLiteral("outliers")] = outliers;
     return o;
 }
 
@@ -172,6 +180,22 @@ void printText(QTextStream& out, const Result& r, int k) {
     out << "Clusters:   " << k << ", sizes";
     for (int s : sizes) out << " " << s;
     out << "\n";
+    if (!r.boxplot.depth.empty()) {
+        const std::size_t median = r.boxplot.median;
+        out << "Boxplot:    median " << memberName(r.ensemble.members[median], median)
+            << " (depth " << r.boxplot.depth[median] << "), ";
+        if (r.boxplot.outliers.empty()) {
+            out << "no outliers";
+        } else {
+            out << "outliers";
+            const char* separator = " ";
+            for (const std::size_t outlier : r.boxplot.outliers) {
+                out << separator << memberName(r.ensemble.members[outlier], outlier);
+                separator = ", ";
+            }
+        }
+        out << "\n";
+    }
 }
 
 }  // namespace
@@ -296,6 +320,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         r.labels = prep::clusterLabels(r.tree, k);
         r.distancesToMean = std::move(outcome.distancesToMean);
         r.meanOutlyingness = std::move(outcome.meanOutlyingness);
+        r.boxplot = std::move(outcome.boxplot);
         r.seconds["total"] = seconds(total);
         if (parser.isSet(o.json)) {
             out << QJsonDocument(toJson(r, k, linkage)).toJson(QJsonDocument::Compact) << "\n";

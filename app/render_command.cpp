@@ -64,7 +64,8 @@ const session::SettingOptions& sceneOptions() {
         "azimuth",     "elevation",       "projection",      "background",
         "axis_labels", "legend",          "plane_thickness", "coastlines",
         "borders",     "graticule",       "mean_opacity",    "title",
-        "floor",       "floor_level",     "rims"};
+        "floor",       "floor_level",     "rims",            "context",
+        "band"};
     return options;
 }
 

@@ -41,10 +41,19 @@ struct MeshSet {
     float isovalue = 0.0F;
     std::vector<PackedMesh> members;  // one per member, in member order (may be empty meshes)
     PackedMesh mean;
+    // The ensemble's summaries as context (METHODS.md section 17; empty when not built): the
+    // surface where half the members exceed the isovalue, the two surfaces bounding the
+    // contour boxplot's 50 % band, its median member (-1: none) and its outliers.
+    PackedMesh probability;
+    PackedMesh bandInner;
+    PackedMesh bandOuter;
+    int median = -1;
+    std::vector<int> outliers;
 
-    // Bytes on the GPU: every member's and the mean's.
+    // Bytes on the GPU: every mesh's.
     [[nodiscard]] std::size_t gpuBytes() const {
-        std::size_t bytes = mean.gpuBytes();
+        std::size_t bytes = mean.gpuBytes() + probability.gpuBytes() + bandInner.gpuBytes() +
+                            bandOuter.gpuBytes();
         for (const PackedMesh& m : members) bytes += m.gpuBytes();
         return bytes;
     }

@@ -94,12 +94,15 @@ void GpuMeshCache::upload(GlFunctions& f, const data::MeshSet& meshes,
         m_members.push_back(uploadOne(f, m, gridLast));
     }
     m_mean = uploadOne(f, meshes.mean, gridLast);
+    m_probability = uploadOne(f, meshes.probability, gridLast);
+    m_bandInner = uploadOne(f, meshes.bandInner, gridLast);
+    m_bandOuter = uploadOne(f, meshes.bandOuter, gridLast);
 }
 
 void GpuMeshCache::release(GlFunctions& f) {
     for (GpuMesh& m : m_members) releaseOne(f, m);
     m_members.clear();
-    releaseOne(f, m_mean);
+    for (GpuMesh* m : {&m_mean, &m_probability, &m_bandInner, &m_bandOuter}) releaseOne(f, *m);
     m_bytes = 0;
 }
 

@@ -30,13 +30,17 @@ public:
 
     [[nodiscard]] const std::vector<GpuMesh>& members() const { return m_members; }
     [[nodiscard]] const GpuMesh& mean() const { return m_mean; }
+    // The summaries (data::MeshSet): P(f > c) = 0.5 and the band's two bounding surfaces.
+    [[nodiscard]] const GpuMesh& probability() const { return m_probability; }
+    [[nodiscard]] const GpuMesh& bandInner() const { return m_bandInner; }
+    [[nodiscard]] const GpuMesh& bandOuter() const { return m_bandOuter; }
     [[nodiscard]] std::size_t bytes() const { return m_bytes; }
 
 private:
     GpuMesh uploadOne(GlFunctions& f, const data::PackedMesh& mesh, const glm::vec3& gridLast);
 
     std::vector<GpuMesh> m_members;
-    GpuMesh m_mean;
+    GpuMesh m_mean, m_probability, m_bandInner, m_bandOuter;
     std::size_t m_bytes = 0;
 };
 

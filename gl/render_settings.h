@@ -54,11 +54,18 @@ struct CuttingPlane {
 // the mean at one level (RenderSettings::floorLevel, a grid index).
 enum class FloorContent { None, ColumnMaximum, MeanAtLevel };
 
+// The gray surface drawn for context (METHODS.md section 17): the mean member's isosurface,
+// the contour boxplot's median member's, or where half the members exceed the isovalue.
+enum class ContextSurface { Mean, Median, Probability };
+
 struct RenderSettings {
     RenderMode mode = RenderMode::ShadedSilhouettes;
     float thickness = 0.006F;   // tau, in display units (the data box is about 1 wide)
     float surfaceAlpha = 0.2F;  // for RenderMode::Surfaces
-    bool showMean = true;       // the mean member's surface, gray, for context
+    bool showMean = true;       // the context surface (below), gray
+    ContextSurface context = ContextSurface::Mean;
+    // The contour boxplot's 50 % band as a translucent envelope, outliers dashed.
+    bool showBand = false;
     // The mean's opacity: below 1 it is a translucent context surface that never hides the
     // members behind it (and is not picked); 1 draws it solid, as the paper does.
     float meanOpacity = 0.3F;

@@ -130,6 +130,19 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     in.appearance = m_scene.meshes ? &m_scene.appearance : nullptr;
     in.showMean =
         m_scene.settings.showMean && m_scene.meshes && !m_scene.meshes->mean.vertices.empty();
+    if (m_scene.meshes) {
+        const data::MeshSet& meshes = *m_scene.meshes;
+        // As contextMesh() chooses: the mean stands in for a summary that is not there.
+        if (m_scene.settings.context == ContextSurface::Median && meshes.median >= 0) {
+            in.contextName = QStringLiteral("Median member");
+        } else if (m_scene.settings.context == ContextSurface::Probability &&
+                   !meshes.probability.vertices.empty()) {
+            in.contextName = QStringLiteral("Half the members exceed");
+        }
+        in.band = m_scene.settings.showBand && !meshes.bandOuter.vertices.empty();
+        in.outliers = in.band ? static_cast<int>(meshes.outliers.size()) : 0;
+        in.bandColor = kBandColor;
+    }
     in.planeCurves =
         m_scene.settings.plane.enabled && m_scene.meshes &&
         m_scene.settings.mode != RenderMode::OpaqueSurfaces &&

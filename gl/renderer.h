@@ -31,6 +31,8 @@ class QOpenGLShaderProgram;
 
 namespace ensil::gl {
 
+struct GpuMesh;
+
 // What lies under a pixel: the member (-1 for none) and its cluster (-1 when unknown).
 // Where a plane cuts a box: the polygon's corners in order around it (3 to 6 of them), or none
 // when the plane misses the box. Display space.
@@ -182,6 +184,11 @@ public:
     static constexpr float kBoxHalfWidth = 0.75F;  // pixels either side of the box's edges
     // The cutting plane's outline and faint fill (a warm tone apart from the cluster palette).
     static constexpr glm::vec4 kPlaneColor{1.0F, 0.85F, 0.55F, 1.0F};
+    // The contour boxplot's 50 % band: a pale blue-gray, apart from the cluster palette and
+    // the context's gray; its outer surface fainter than its inner one.
+    static constexpr glm::vec3 kBandColor{0.70F, 0.80F, 0.95F};
+    static constexpr float kBandOuterAlpha = 0.12F;
+    static constexpr float kBandInnerAlpha = 0.22F;
 
 private:
     struct Gpu;
@@ -212,9 +219,15 @@ private:
     void drawMemberPass(SurfacePrograms& programs, MemberPass pass);
     // The cutting plane's uniforms (u_planeEnabled, u_plane), its normal turned to the viewer.
     void setPlaneUniforms(QOpenGLShaderProgram& program) const;
-    // A member's colour as drawn: dimmed when others are selected, lightened when highlighted.
+    // Whether the contour boxplot counts this member an outlier.
+    [[nodiscard]] bool isOutlier(std::size_t member) const;
+    // A member's colour as drawn: dimmed when others are selected (or, with the band shown,
+    // when it is no outlier), lightened when highlighted.
     [[nodiscard]] glm::vec3 memberColour(std::size_t member, const MemberAppearance& a,
                                          const Selection& selection) const;
+    // The context surface RenderSettings::context asks for (the mean's when that one is not
+    // there).
+    [[nodiscard]] const GpuMesh& contextMesh() const;
     // Every shown member's rims (and the mean's), after the surfaces (RenderSettings::showRims);
     // with `pick`, the members' ids into the id pass instead. `viewport`: the pass's pixels.
     void drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick);

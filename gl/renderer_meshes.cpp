@@ -177,8 +177,19 @@ glm::vec3 Renderer::memberColour(std::size_t member, const MemberAppearance& a,
     if (selection.any && !a.selected) {
         colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
     }
+    // While the band is shown it and the outliers (dashed) are what the picture says; the
+    // other members step back too, unless selected.
+    if (m_scene.settings.showBand && !a.selected && !isOutlier(member)) {
+        colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
+    }
     if (static_cast<int>(member) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
     return colour;
+}
+
+bool Renderer::isOutlier(std::size_t member) const {
+    if (!m_scene.meshes) return false;
+    const std::vector<int>& outliers = m_scene.meshes->outliers;
+    return std::find(outliers.begin(), outliers.end(), static_cast<int>(member)) != outliers.end();
 }
 
 void Renderer::drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick) {
@@ -224,7 +235,7 @@ void Renderer::drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bo
         return glm::vec3((id >> 16) & 255U, (id >> 8) & 255U, id & 255U) / 255.0F;
     };
     if (m_scene.settings.showMean && m_animated < 0 && !pick) {
-        draw(m_gpu->meshes.mean(), kMeanSurfaceColor, kRimHalfWidth);
+        draw(contextMesh(), kMeanSurfaceColor, kRimHalfWidth);
     }
     const Selection selection = selectionShown();
     const std::vector<GpuMesh>& members = m_gpu->meshes.members();
@@ -308,9 +319,20 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         f.glPolygonOffset(1.0F, 2.0F);
         setMember(0, 0, meanTranslucent ? kSurfaces : kSolid, kMeanSurfaceColor);
         program->setUniformValue("u_surfaceAlpha", m_scene.settings.meanOpacity);
-        drawMesh(f, *program, m_gpu->meshes.mean());
+        drawMesh(f, *program, contextMesh());
         program->setUniformValue("u_surfaceAlpha", m_scene.settings.surfaceAlpha);
         f.glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+    // The 50 % band: a faint envelope (the union of the band members' insides) around a
+    // stronger core (their intersection), both translucent and never picked.
+    if (m_scene.settings.showBand && pass == MemberPass::Translucent) {
+        setMember(0, 0, kSurfaces, kBandColor);
+        for (const auto& [mesh, alpha] : {std::pair{&m_gpu->meshes.bandOuter(), kBandOuterAlpha},
+                                          std::pair{&m_gpu->meshes.bandInner(), kBandInnerAlpha}}) {
+            program->setUniformValue("u_surfaceAlpha", alpha);
+            drawMesh(f, *program, *mesh);
+        }
+        program->setUniformValue("u_surfaceAlpha", m_scene.settings.surfaceAlpha);
     }
     for (std::size_t m = 0; m < members.size(); ++m) {
         MemberAppearance a = appearance(m);
@@ -332,9 +354,30 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         const glm::vec3 colour = memberColour(m, a, selection);
         // Selected members drawn as surfaces keep a thicker, opaque silhouette rim.
         setMember(static_cast<int>(m) + 1, m, mode, colour, mode == kSurfaces && a.selected);
+        program->setUniformValue("u_dashed", m_scene.settings.showBand && isOutlier(m));
         drawMesh(f, *program, members[m]);
     }
+    program->setUniformValue("u_dashed", false);
     setClipDistances(f, false);
+}
+
+const GpuMesh& Renderer::contextMesh() const {
+    const GpuMeshCache& meshes = m_gpu->meshes;
+    switch (m_scene.settings.context) {
+        case ContextSurface::Median: {
+            const int median = m_scene.meshes ? m_scene.meshes->median : -1;
+            if (median >= 0 && static_cast<std::size_t>(median) < meshes.members().size()) {
+                return meshes.members()[static_cast<std::size_t>(median)];
+            }
+            break;
+        }
+        case ContextSurface::Probability:
+            if (meshes.probability().vao != 0) return meshes.probability();
+            break;
+        case ContextSurface::Mean:
+            break;
+    }
+    return meshes.mean();
 }
 
 void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height) {
@@ -354,8 +397,9 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
 
     const Selection selection = selectionShown();
     const bool translucentMean = m_scene.settings.showMean && m_scene.settings.meanTranslucent() &&
-                                 m_gpu->meshes.mean().vao != 0;
-    if (translucentMode() || (selection.any && !selection.solid) || translucentMean) {
+                                 contextMesh().vao != 0;
+    const bool band = m_scene.settings.showBand && m_gpu->meshes.bandOuter().vao != 0;
+    if (translucentMode() || (selection.any && !selection.solid) || translucentMean || band) {
         // Every isosurface lies inside the data box: the transparency targets are drawn and
         // composited only over the box's rectangle on screen.
         const glm::ivec4 box = screenRectangle(viewProjection, width, height);

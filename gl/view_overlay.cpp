@@ -275,8 +275,16 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
                                           .arg(otherClusters)
                                           .arg(otherMembers)});
         }
-        if (in.showMean)
-            overlay.legend.push_back({kMeanSurfaceColor, QStringLiteral("Mean member")});
+        if (in.showMean) overlay.legend.push_back({kMeanSurfaceColor, in.contextName});
+        if (in.band) {
+            overlay.legend.push_back({in.bandColor, QStringLiteral("50 % band")});
+            if (in.outliers > 0) {
+                overlay.legend.push_back(
+                    {in.bandColor, in.outliers == 1
+                                       ? QStringLiteral("1 outlier (dashed)")
+                                       : QStringLiteral("%1 outliers (dashed)").arg(in.outliers)});
+            }
+        }
         if (in.planeCurves) {
             overlay.legend.push_back({in.planeColor, QStringLiteral("Plane curves (dashed)")});
         }

@@ -66,6 +66,12 @@ struct OverlayInput {
     int height = 0;
     const std::vector<MemberAppearance>* appearance = nullptr;
     bool showMean = false;
+    // What the context surface is ("Mean member", "Median member", "P = 0.5 surface").
+    QString contextName = QStringLiteral("Mean member");
+    // The contour boxplot's band is shown, with this many outliers dashed.
+    bool band = false;
+    int outliers = 0;
+    glm::vec3 bandColor{1.0F};
     // The cutting plane is on and cuts surfaces: its dashed curves get a legend entry, in the
     // plane's own colour.
     bool planeCurves = false;

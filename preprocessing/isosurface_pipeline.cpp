@@ -37,6 +37,30 @@ void forEachField(std::size_t n, const std::stop_token& stop, const data::Progre
 
 }  // namespace
 
+MeshedField meshField(const data::Grid& grid, const data::FieldValues& field, float isovalue,
+                      const AxisTables& axes, const EnsembleMoments* moments,
+                      const PipelineOptions& options, const std::stop_token& stop) {
+    MeshedField out;
+    FieldMeshStats& s = out.stats;
+    auto t = Clock::now();
+    data::TriangleMesh mesh = extractIsosurface(grid, field, isovalue, stop);
+    s.seconds.meshes = since(t);
+    s.extracted = mesh.triangleCount();
+    t = Clock::now();
+    DecimationResult d = decimateMesh(mesh, options.decimate ? options.maxErrorCells : 0.0F);
+    mesh = std::move(d.mesh);
+    s.error = d.errorCells;
+    s.seconds.decimation = since(t);
+    t = Clock::now();
+    const VertexAttributes a =
+        computeVertexAttributes(grid, field, mesh, axes, isovalue, moments, stop);
+    out.mesh = packMesh(mesh, a);
+    s.seconds.attributes = since(t);
+    s.triangles = mesh.triangleCount();
+    s.vertices = mesh.vertexCount();
+    return out;
+}
+
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
                                    const data::DisplayFrame& frame, const PipelineOptions& options,
                                    const std::stop_token& stop, const data::Progress& progress) {
@@ -53,38 +77,20 @@ IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const Ensembl
 
     // One task per member runs every stage, so each full-resolution mesh is freed as soon as
     // it is packed: peak memory holds a few raw meshes, not all of them.
-    struct MemberStats {
-        StageSeconds seconds;
-        std::size_t extracted = 0, triangles = 0, vertices = 0;
-        float error = 0.0F;
-    };
-    std::vector<MemberStats> stats(n + 1);
+    std::vector<FieldMeshStats> stats(n + 1);
     const auto start = Clock::now();
     forEachField(n + 1, stop, progress, 0.0, 1.0, [&](std::size_t i) {
-        MemberStats& s = stats[i];
-        auto t = Clock::now();
-        data::TriangleMesh mesh = extractIsosurface(ensemble.grid, field(i), iso, stop);
-        s.seconds.meshes = since(t);
-        s.extracted = mesh.triangleCount();
-        t = Clock::now();
-        DecimationResult d = decimateMesh(mesh, options.decimate ? options.maxErrorCells : 0.0F);
-        mesh = std::move(d.mesh);
-        s.error = d.errorCells;
-        s.seconds.decimation = since(t);
-        t = Clock::now();
         // The mean has no outlyingness of its own: it is drawn solid, never removed.
-        const VertexAttributes a = computeVertexAttributes(ensemble.grid, field(i), mesh, axes, iso,
-                                                           i < n ? &moments : nullptr, stop);
-        (i < n ? out.members[i] : out.mean) = packMesh(mesh, a);
-        s.seconds.attributes = since(t);
-        s.triangles = mesh.triangleCount();
-        s.vertices = mesh.vertexCount();
+        MeshedField m = meshField(ensemble.grid, field(i), iso, axes, i < n ? &moments : nullptr,
+                                  options, stop);
+        (i < n ? out.members[i] : out.mean) = std::move(m.mesh);
+        stats[i] = m.stats;
     });
     const double wall = since(start);
 
     // Stages ran interleaved on all threads: give each stage its share of the wall time.
     StageSeconds busy;
-    for (const MemberStats& s : stats) {
+    for (const FieldMeshStats& s : stats) {
         busy.meshes += s.seconds.meshes;
         busy.decimation += s.seconds.decimation;
         busy.attributes += s.seconds.attributes;

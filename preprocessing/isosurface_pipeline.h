@@ -13,6 +13,7 @@
 #include "data/job.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/mesh_packing.h"
+#include "preprocessing/vertex_attributes.h"
 
 namespace ensil::prep {
 
@@ -38,6 +39,23 @@ struct IsovalueMeshes : data::MeshSet {
     std::size_t vertices = 0;
     float worstErrorCells = 0.0F;  // largest decimation error estimate over the meshes
 };
+
+// What meshing one field cost and gave.
+struct FieldMeshStats {
+    StageSeconds seconds;
+    std::size_t extracted = 0, triangles = 0, vertices = 0;
+    float error = 0.0F;  // decimation error estimate, in cells
+};
+struct MeshedField {
+    data::PackedMesh mesh;
+    FieldMeshStats stats;
+};
+
+// One field's isosurface through every stage: marching cubes, decimation, the per-vertex
+// attributes (outlyingness from `moments`, none when null) and packing. Throws data::Cancelled.
+MeshedField meshField(const data::Grid& grid, const data::FieldValues& field, float isovalue,
+                      const AxisTables& axes, const EnsembleMoments* moments,
+                      const PipelineOptions& options, const std::stop_token& stop = {});
 
 // Throws data::Cancelled.
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,

@@ -33,8 +33,10 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_mode(new QComboBox(this)),
       m_thickness(new QDoubleSpinBox(this)),
       m_opacity(new QDoubleSpinBox(this)),
-      m_mean(new QCheckBox(tr("Show the mean member"), this)),
+      m_mean(new QCheckBox(tr("Show the context surface"), this)),
       m_meanOpacity(new QDoubleSpinBox(this)),
+      m_context(new QComboBox(this)),
+      m_band(new QCheckBox(tr("Contour boxplot: 50 % band, outliers dashed"), this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
       m_rims(new QCheckBox(tr("Rims where surfaces meet the box"), this)),
@@ -57,6 +59,8 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_opacity, "opacity"},
              {m_mean, "mean"},
              {m_meanOpacity, "meanOpacity"},
+             {m_context, "context"},
+             {m_band, "band"},
              {m_axes, "axes"},
              {m_legend, "legend"},
              {m_rims, "rims"},
@@ -89,6 +93,13 @@ RenderPanel::RenderPanel(QWidget* parent)
     m_meanOpacity->setToolTip(settingHelp("mean_opacity"));
     m_meanOpacity->setPrefix(tr("opacity "));
     form->addRow(m_mean, m_meanOpacity);  // one row: the panel shares its dock's height
+    // In gl::ContextSurface's order.
+    m_context->addItems({tr("Mean member"), tr("Median member (deepest)"),
+                         tr("Half the members exceed")});
+    m_context->setToolTip(settingHelp("context"));
+    form->addRow(tr("Context"), m_context);
+    m_band->setToolTip(settingHelp("band"));
+    form->addRow(m_band);
 
     m_removal->setCheckable(true);
     m_removal->setToolTip(settingHelp("removal"));
@@ -154,6 +165,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_mean, &QCheckBox::toggled, this, edited);  // also enables the mean's opacity
     connect(m_axes, &QCheckBox::toggled, this, edited);
     connect(m_legend, &QCheckBox::toggled, this, edited);
+    connect(m_context, &QComboBox::currentIndexChanged, this, edited);
+    connect(m_band, &QCheckBox::toggled, this, edited);
     connect(m_rims, &QCheckBox::toggled, this, edited);
     for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
         connect(box, &QCheckBox::toggled, this, edited);
@@ -189,7 +202,7 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
         b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity), b15(m_floor),
-        b16(m_floorLevel), b17(m_rims);
+        b16(m_floorLevel), b17(m_rims), b18(m_context), b19(m_band);
     m_floor->setCurrentIndex(static_cast<int>(settings.floor));
     m_floorLevel->setValue(settings.floorLevel);
     m_meanOpacity->setValue(settings.meanOpacity);
@@ -199,6 +212,8 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     m_axes->setChecked(settings.showAxes);
     m_legend->setChecked(settings.showLegend);
     m_rims->setChecked(settings.showRims);
+    m_context->setCurrentIndex(static_cast<int>(settings.context));
+    m_band->setChecked(settings.showBand);
     m_mode->setCurrentIndex(static_cast<int>(settings.mode));
     m_thickness->setValue(settings.thickness);
     m_opacity->setValue(settings.surfaceAlpha);
@@ -224,6 +239,8 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.showAxes = m_axes->isChecked();
     settings.showLegend = m_legend->isChecked();
     settings.showRims = m_rims->isChecked();
+    settings.context = static_cast<gl::ContextSurface>(m_context->currentIndex());
+    settings.showBand = m_band->isChecked();
     settings.showCoastlines = m_coastlines->isChecked();
     settings.showBorders = m_borders->isChecked();
     settings.showGraticule = m_graticule->isChecked();
@@ -301,6 +318,7 @@ void RenderPanel::updateEnabled() {
     m_thickness->setEnabled(silhouettes);
     m_opacity->setEnabled(mode == gl::RenderMode::Surfaces);
     m_meanOpacity->setEnabled(m_mean->isChecked());
+    m_context->setEnabled(m_mean->isChecked());
     m_floorLevel->setEnabled(m_floor->currentIndex() ==
                              static_cast<int>(gl::FloorContent::MeanAtLevel));
     m_removal->setEnabled(mode != gl::RenderMode::OpaqueSurfaces);

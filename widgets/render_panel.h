@@ -61,6 +61,8 @@ private:
     QDoubleSpinBox* m_opacity;
     QCheckBox* m_mean;
     QDoubleSpinBox* m_meanOpacity;
+    QComboBox* m_context;
+    QCheckBox* m_band;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
     QCheckBox* m_rims;

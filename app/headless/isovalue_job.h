@@ -13,6 +13,7 @@
 #include "data/ensemble.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/ensemble_moments.h"
+#include "preprocessing/inclusion_depth.h"
 #include "preprocessing/isosurface_pipeline.h"
 #include "preprocessing/similarity.h"
 
@@ -36,12 +37,16 @@ struct IsovalueOutcome {
     // similarity measure, and the mean outlyingness over its isosurface's vertices.
     std::vector<double> distancesToMean;
     std::vector<double> meanOutlyingness;
+    // The contour boxplot (METHODS.md section 17): depths, median member, band and outliers;
+    // its surfaces are in `meshes`.
+    prep::ContourBoxplot boxplot;
     bool fromCache = false;
     // Why the results could not be stored in the cache (a read-only folder, a full disk);
     // empty when they were, or when there is no cache.
     std::string cacheWarning;
     std::map<std::string, double>
-        seconds;  // cache_read or meshes/decimation/attributes, similarity, clustering
+        seconds;  // cache_read or meshes/decimation/attributes, context_surfaces, similarity,
+                  // clustering
 };
 
 // Throws Cancelled; data::Error from the steps. A cache that cannot be written is ignored.

@@ -32,6 +32,7 @@ uniform float u_planeEpsilon;  // eps: the thickness of the intersection curves
 uniform bool u_pick;
 uniform int u_pickId;          // 0 = nothing pickable (the mean), else member + 1
 uniform bool u_emphasis;       // a selected member drawn as a surface: a thicker, opaque rim
+uniform bool u_dashed;         // an outlier of the contour boxplot: silhouettes dashed
 
 layout(location = 0) out vec4 o_color;   // opaque colour, OIT accumulation, or the pick id
 layout(location = 1) out float o_reveal; // OIT revealage
@@ -127,6 +128,14 @@ vec3 curveColour(vec3 colour, vec2 gradient) {
                                                                           : 0.35 * colour;
 }
 
+// An outlier's silhouettes are dashed: diagonal stripes on screen, kDashPixels of colour and
+// of a darker gap, cut any line that is not itself diagonal into dashes.
+vec3 outlierColour(vec3 colour) {
+    if (!u_dashed || u_pick) return colour;
+    return fract((gl_FragCoord.x + gl_FragCoord.y) / (2.0 * kDashPixels)) < 0.5 ? colour
+                                                                               : 0.3 * colour;
+}
+
 void main() {
     float side = dot(u_plane.xyz, v_in.position) - u_plane.w;
     float behindPlane = u_planeEnabled ? -side : u_planeEpsilon * 2.0;
@@ -170,7 +179,8 @@ void main() {
     if (removal <= 0.0) discard;
     if (u_mode == 1) {
         // Opaque: the coverage becomes the share of the pixel's samples written.
-        writeOpaque(onCurve ? curveColour(u_color, planeGradient) : u_color, max(band, curve));
+        writeOpaque(onCurve ? curveColour(u_color, planeGradient) : outlierColour(u_color),
+                    max(band, curve));
         return;
     }
     if (onCurve) {
@@ -185,5 +195,5 @@ void main() {
     float opacity = (opacityIntegral(hi) - opacityIntegral(lo)) / silhouetteWidth;
     float brightness = (brightnessIntegral(hi) - brightnessIntegral(lo)) / silhouetteWidth;
     if (opacity <= 0.0) discard;
-    writeTranslucent(u_color * (brightness / opacity), opacity * removal);
+    writeTranslucent(outlierColour(u_color) * (brightness / opacity), opacity * removal);
 }

@@ -6,6 +6,8 @@
 #include <QTextStream>
 
 #include "app/command_line.h"
+#include "data/ensemble_reader.h"
+#include "preprocessing/inclusion_depth.h"
 #include "tests/app/default_isovalue.h"
 #include "tests/support/temp_dir.h"
 
@@ -138,4 +140,27 @@ TEST(PreprocessCommand, RefusesAnIsovalueOutsideTheDataAndBadOptions) {
             << run.err.toStdString();
     }
     EXPECT_EQ(preprocess({"--iso", "3"}).code, 2) << "neither files nor --demo";
+}
+
+TEST(PreprocessCommand, JsonGivesTheContourBoxplotOfTheMembers) {
+    // ERA5's temperature at 260 K: the depths, median and outliers are the engine's
+    // (preprocessing/inclusion_depth.h) for the same members, and a median is the deepest.
+    const std::string file = ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc";
+    const CommandRun r = preprocess({QString::fromStdString(file), "--var", "t", "--iso", "260",
+                                     "--no-cache", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
+    const data::Ensemble e = data::openEnsemble({{file}, "t", {}, 0});
+    const prep::ContourBoxplot expected = prep::computeContourBoxplot(e, 260.0F);
+    const QJsonArray depth = json["depth"].toArray();
+    ASSERT_EQ(depth.size(), static_cast<qsizetype>(e.memberCount()));
+    for (qsizetype m = 0; m < depth.size(); ++m) {
+        EXPECT_DOUBLE_EQ(depth[m].toDouble(), expected.depth[static_cast<std::size_t>(m)]) << m;
+    }
+    const auto median = json["median_member"].toInteger();
+    EXPECT_EQ(median, static_cast<qint64>(expected.median));
+    for (const QJsonValue d : depth) EXPECT_LE(d.toDouble(), depth[median].toDouble());
+    QJsonArray outliers;
+    for (const std::size_t m : expected.outliers) outliers.append(static_cast<qint64>(m));
+    EXPECT_EQ(json["outliers"].toArray(), outliers);
 }

@@ -14,6 +14,8 @@ constexpr std::array<std::string_view, 4> kModes{"shaded", "spaghetti", "surface
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 // In gl::FloorContent's order.
 constexpr std::array<std::string_view, 3> kFloorContents{"none", "column-maximum", "mean-at-level"};
+// In gl::ContextSurface's order.
+constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "probability"};
 // In prep::Linkage's order.
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
@@ -21,7 +23,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 27> kSettings{{
+const std::array<Setting, 29> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -63,9 +65,10 @@ const std::array<Setting, 27> kSettings{{
      "rendering.show_mean",
      "mean",
      "rendering/mean",
-     "Show the mean member",
+     "Show the context surface",
      "",
-     "The mean member's isosurface as a gray surface, for context",
+     "The context surface (the mean member's isosurface unless Context surface says otherwise) "
+     "in gray",
      0,
      1,
      0,
@@ -73,6 +76,29 @@ const std::array<Setting, 27> kSettings{{
      {},
      [](const SessionState& s) { return s.render.showMean ? 1.0 : 0.0; },
      [](SessionState& s, double v) { s.render.showMean = v != 0.0; }},
+    {"context", SettingKind::Choice, "rendering.context", "context", "rendering/context",
+     "Context surface", "",
+     "The gray surface shown for context: the mean member's isosurface, the median member's "
+     "(the contour boxplot's deepest), or where half the members exceed the isovalue",
+     0, 2, 0, 1, kContextSurfaces,
+     [](const SessionState& s) { return static_cast<double>(s.render.context); },
+     [](SessionState& s, double v) { s.render.context = static_cast<gl::ContextSurface>(v); }},
+    {"band",
+     SettingKind::Flag,
+     "rendering.band",
+     "band",
+     "rendering/band",
+     "Contour boxplot band",
+     "",
+     "The contour boxplot's 50 % band as a translucent envelope between its two bounding "
+     "surfaces, with the outlying members' silhouettes dashed",
+     0,
+     1,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return s.render.showBand ? 1.0 : 0.0; },
+     [](SessionState& s, double v) { s.render.showBand = v != 0.0; }},
     {"mean_opacity",
      SettingKind::Number,
      "rendering.mean_opacity",

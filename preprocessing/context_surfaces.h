@@ -1,0 +1,38 @@
+// The surfaces that summarise an ensemble at one isovalue, drawn as context around the members
+// (METHODS.md section 17): the surface where half the members exceed the isovalue (P(f > c) =
+// 0.5, the "median" surface of the exceedance probability), the two surfaces that bound the
+// contour boxplot's 50 % band, and the boxplot itself (depths, median member, outliers).
+// Pure function; any thread.
+#pragma once
+
+#include <stop_token>
+
+#include "data/display_frame.h"
+#include "data/ensemble.h"
+#include "data/job.h"
+#include "data/packed_mesh.h"
+#include "preprocessing/inclusion_depth.h"
+#include "preprocessing/isosurface_pipeline.h"
+
+namespace ensil::prep {
+
+struct ContextSurfaces {
+    data::PackedMesh probability;  // P(f > c) = 0.5
+    data::PackedMesh bandInner;    // inside every member of the 50 % band
+    data::PackedMesh bandOuter;    // inside any of them
+    ContourBoxplot boxplot;
+};
+
+// Meshes the three surfaces at options.isovalue, as the members' are meshed (decimated alike,
+// no outlyingness). Throws data::Cancelled and the errors of computeEnsembleStatistics and
+// computeContourBoxplot.
+ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
+                                     const data::DisplayFrame& frame,
+                                     const PipelineOptions& options,
+                                     const std::stop_token& stop = {},
+                                     const data::Progress& progress = {});
+
+// Copies the surfaces and the boxplot's median and outliers into the renderer's mesh set.
+void addContextSurfaces(data::MeshSet& meshes, const ContextSurfaces& context);
+
+}  // namespace ensil::prep
