@@ -10,6 +10,7 @@
 #include "app/info_command.h"
 #include "app/preprocess_command.h"
 #include "app/render_command.h"
+#include "app/stats_command.h"
 #include "app/version.h"
 
 namespace ensil::app {
@@ -21,8 +22,9 @@ struct Subcommand {
     int (*run)(const QStringList&, QTextStream&, QTextStream&);
 };
 
-constexpr std::array<Subcommand, 4> kSubcommands{{
+constexpr std::array<Subcommand, 5> kSubcommands{{
     {"generate", "Write the built-in demo ensemble as a CF NetCDF file", &runGenerateCommand},
+    {"stats", "Write ensemble statistics at an isovalue as a CF NetCDF file", &runStatsCommand},
     {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", &runInfoCommand},
     {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", &runPreprocessCommand},
     {"render", "Draw an ensemble's silhouettes to a PNG without a window", &runRenderCommand},
