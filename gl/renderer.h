@@ -32,6 +32,7 @@ class QOpenGLShaderProgram;
 namespace ensil::gl {
 
 struct GpuMesh;
+struct ShaderFiles;
 
 // What lies under a pixel: the member (-1 for none) and its cluster (-1 when unknown).
 // Where a plane cuts a box: the polygon's corners in order around it (3 to 6 of them), or none
@@ -241,6 +242,12 @@ private:
     // Binds the program that widens lines on screen (the map lines' and the box's), with the
     // view and the scene's size set.
     QOpenGLShaderProgram& bindScreenLines(const glm::mat4& viewProjection);
+    // Binds a program of lines widened on screen (map_lines.geom), with the view and the
+    // pass's size in pixels set.
+    QOpenGLShaderProgram& bindLinesProgram(const QString& name, const ShaderFiles& files,
+                                           const glm::mat4& viewProjection, glm::ivec2 viewport);
+    // The grid-to-display tables (grid_display.glsl) on texture unit 1.
+    void setAxisTableUniforms(QOpenGLShaderProgram& program);
     // The box's vertex buffer's first `count` points as antialiased lines `halfWidth` pixels
     // to either side (mode GL_LINES or GL_LINE_LOOP), blended, depth-tested but not written.
     void drawBoxBufferLines(unsigned mode, int count, const glm::mat4& viewProjection,

@@ -63,16 +63,22 @@ void Renderer::uploadMapLines() {
                    vertices.data(), GL_STATIC_DRAW);
 }
 
-QOpenGLShaderProgram& Renderer::bindScreenLines(const glm::mat4& viewProjection) {
+QOpenGLShaderProgram& Renderer::bindLinesProgram(const QString& name, const ShaderFiles& files,
+                                                 const glm::mat4& viewProjection,
+                                                 glm::ivec2 viewport) {
     GlFunctions& f = *m_gpu->f;
-    QOpenGLShaderProgram& program =
-        m_gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
+    QOpenGLShaderProgram& program = m_gpu->shaders.program(name, files);
     program.bind();
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
                          glm::value_ptr(viewProjection));
-    program.setUniformValue("u_viewport", static_cast<float>(m_scene.sceneSize.x),
-                            static_cast<float>(m_scene.sceneSize.y));
+    program.setUniformValue("u_viewport", static_cast<float>(viewport.x),
+                            static_cast<float>(viewport.y));
     return program;
+}
+
+QOpenGLShaderProgram& Renderer::bindScreenLines(const glm::mat4& viewProjection) {
+    return bindLinesProgram(QStringLiteral("map_lines"), kMapLineShaderFiles, viewProjection,
+                            m_scene.sceneSize);
 }
 
 void Renderer::drawMapLines(const glm::mat4& viewProjection) {

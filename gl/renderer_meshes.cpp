@@ -142,7 +142,11 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
 
     setPlaneUniforms(program);
     program.setUniformValue("u_planeEpsilon", m_scene.settings.plane.thickness);
+    setAxisTableUniforms(program);
+}
 
+void Renderer::setAxisTableUniforms(QOpenGLShaderProgram& program) {
+    GlFunctions& f = *m_gpu->f;
     program.setUniformValue("u_axisTables", 1);
     f.glUniform3i(program.uniformLocation("u_axisSize"), m_gpu->axisSize.x, m_gpu->axisSize.y,
                   m_gpu->axisSize.z);
@@ -195,20 +199,10 @@ bool Renderer::isOutlier(std::size_t member) const {
 void Renderer::drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick) {
     if (!m_scene.settings.showRims) return;
     GlFunctions& f = *m_gpu->f;
-    QOpenGLShaderProgram& program =
-        m_gpu->shaders.program(QStringLiteral("rim_lines"), kRimLineShaderFiles);
-    program.bind();
-    f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
-                         glm::value_ptr(viewProjection));
-    program.setUniformValue("u_viewport", static_cast<float>(viewport.x),
-                            static_cast<float>(viewport.y));
+    QOpenGLShaderProgram& program = bindLinesProgram(QStringLiteral("rim_lines"),
+                                                     kRimLineShaderFiles, viewProjection, viewport);
     setPlaneUniforms(program);
-    program.setUniformValue("u_axisTables", 1);
-    f.glUniform3i(program.uniformLocation("u_axisSize"), m_gpu->axisSize.x, m_gpu->axisSize.y,
-                  m_gpu->axisSize.z);
-    f.glActiveTexture(GL_TEXTURE1);
-    f.glBindTexture(GL_TEXTURE_2D, m_gpu->axisTables);
-    f.glActiveTexture(GL_TEXTURE0);
+    setAxisTableUniforms(program);
     f.glEnable(GL_DEPTH_TEST);
     if (!pick) {
         f.glEnable(GL_BLEND);
