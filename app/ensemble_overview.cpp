@@ -1,7 +1,6 @@
 #include "app/ensemble_overview.h"
 
 #include "data/error.h"
-#include "preprocessing/column_maximum.h"
 #include "preprocessing/default_isovalue.h"
 
 namespace ensil::app {
@@ -21,7 +20,7 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
     auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
         *ensemble, stop, [&](double f) { data::report(progress, 0.5 + 0.45 * f); }));
     overview.defaultIsovalue = prep::defaultIsovalue(*ensemble, overview.statistics);
-    overview.meanColumnMaximum = prep::computeColumnMaximum(ensemble->grid, moments->mean);
+    overview.columnMaxima = computeColumnMaxima(*ensemble, moments->mean, stop);
     overview.mapLines = std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble->grid, ensemble->gridMapping));
     overview.moments = std::move(moments);

@@ -12,6 +12,7 @@
 #include "data/ensemble.h"
 #include "data/job.h"
 #include "geo/map_lines.h"
+#include "app/headless/floor_map.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
 
@@ -22,7 +23,7 @@ struct EnsembleOverview {
     prep::FieldStatistics statistics;
     float defaultIsovalue = 0.0F;  // where the isovalue starts (preprocessing/default_isovalue.h)
     std::shared_ptr<const prep::EnsembleMoments> moments;  // mean member and variance
-    std::vector<float> meanColumnMaximum;                  // nx * ny
+    ColumnMaxima columnMaxima;  // of the mean and of the spread, for the floor
     // Coastlines, borders and graticule in the grid's coordinates (none without geography).
     std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
     std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache

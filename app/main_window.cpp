@@ -545,7 +545,7 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
 void MainWindow::showFloor(const gl::RenderSettings& settings) {
     if (!m_overview) return;
     m_view->renderer().setFloorMap(floorMapFor(*m_overview->ensemble, m_overview->moments->mean,
-                                               m_overview->meanColumnMaximum, settings));
+                                               m_overview->columnMaxima, settings));
 }
 
 }  // namespace ensil::app

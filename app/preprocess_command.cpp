@@ -106,6 +106,11 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     o[QStringLiteral("decimation_error_cells")] = r.meshes.worstErrorCells;
     o[QStringLiteral("bytes_per_vertex")] = static_cast<int>(sizeof(data::PackedVertex));
     o[QStringLiteral("gpu_bytes")] = static_cast<qint64>(r.meshes.gpuBytes());
+    // Of those, the summaries' surfaces (the P = 0.5 surface and the band's two), which the
+    // vertex and triangle counts above leave out.
+    o[QStringLiteral("context_gpu_bytes")] =
+        static_cast<qint64>(r.meshes.probability.gpuBytes() + r.meshes.bandInner.gpuBytes() +
+                            r.meshes.bandOuter.gpuBytes());
     QJsonArray matrix;
     for (std::size_t i = 0; i < r.distances.size; ++i) {
         QJsonArray row;

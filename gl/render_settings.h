@@ -50,9 +50,10 @@ struct CuttingPlane {
     bool operator==(const CuttingPlane&) const = default;
 };
 
-// What the box's floor shows (METHODS.md section 15): nothing, the mean's column maximum, or
-// the mean at one level (RenderSettings::floorLevel, a grid index).
-enum class FloorContent { None, ColumnMaximum, MeanAtLevel };
+// What the box's floor shows (METHODS.md section 15): nothing, the mean's column maximum, the
+// mean at one level (RenderSettings::floorLevel, a grid index), or the column maximum of the
+// members' standard deviation (section 17).
+enum class FloorContent { None, ColumnMaximum, MeanAtLevel, SpreadMaximum };
 
 // The gray surface drawn for context (METHODS.md section 17): the mean member's isosurface,
 // the contour boxplot's median member's, or where half the members exceed the isovalue.

@@ -3,17 +3,36 @@
 #include <algorithm>
 
 #include "app/headless/picture_title.h"
+#include "preprocessing/column_maximum.h"
+#include "preprocessing/ensemble_statistics.h"
 
 namespace ensil::app {
 
+ColumnMaxima computeColumnMaxima(const data::Ensemble& ensemble, const data::Member& mean,
+                                 const std::stop_token& stop) {
+    ColumnMaxima maxima;
+    maxima.mean = prep::computeColumnMaximum(ensemble.grid, mean);
+    // The spread does not depend on the isovalue; any finite one will do.
+    const prep::EnsembleStatistics statistics =
+        prep::computeEnsembleStatistics(ensemble, 0.0F, stop);
+    maxima.spread = prep::computeColumnMaximum(ensemble.grid, {"stddev", statistics.stddev});
+    return maxima;
+}
+
 gl::FloorMap floorMapFor(const data::Ensemble& e, const data::Member& mean,
-                         const std::vector<float>& columnMaximum,
-                         const gl::RenderSettings& settings) {
+                         const ColumnMaxima& columnMaxima, const gl::RenderSettings& settings) {
     switch (settings.floor) {
         case gl::FloorContent::None:
             return {};
         case gl::FloorContent::ColumnMaximum:
-            return gl::FloorMap::spanning(columnMaximum, QString::fromStdString(floorCaption(e)));
+            return gl::FloorMap::spanning(columnMaxima.mean,
+                                          QString::fromStdString(floorCaption(e)));
+        case gl::FloorContent::SpreadMaximum:
+            return gl::FloorMap::spanning(
+                columnMaxima.spread,
+                QString::fromStdString("floor: column maximum of the members' standard "
+                                       "deviation of " +
+                                       e.variable + (e.units.empty() ? "" : " [" + e.units + "]")));
         case gl::FloorContent::MeanAtLevel: {
             const std::size_t nx = e.grid.nx(), ny = e.grid.ny();
             const auto k = static_cast<std::size_t>(

@@ -1,7 +1,9 @@
-// The floor map a session asks for (gl::FloorContent): none, the mean's column maximum, or the
-// mean at one level, with its colour bar's caption. Shared by the workbench and `ensil render`.
+// The floor map a session asks for (gl::FloorContent): none, the mean's column maximum, the
+// mean at one level, or the column maximum of the members' spread, with its colour bar's
+// caption. Shared by the workbench and `ensil render`.
 #pragma once
 
+#include <stop_token>
 #include <vector>
 
 #include "data/ensemble.h"
@@ -9,9 +11,16 @@
 
 namespace ensil::app {
 
-// `columnMaximum`: the mean's column maximum, computed once per ensemble by the caller.
+// The floor's column maxima (nx * ny each), computed once per ensemble.
+struct ColumnMaxima {
+    std::vector<float> mean;    // of the mean member
+    std::vector<float> spread;  // of the members' sample standard deviation (METHODS.md s. 17)
+};
+// Throws data::Cancelled.
+ColumnMaxima computeColumnMaxima(const data::Ensemble& ensemble, const data::Member& mean,
+                                 const std::stop_token& stop = {});
+
 gl::FloorMap floorMapFor(const data::Ensemble& ensemble, const data::Member& mean,
-                         const std::vector<float>& columnMaximum,
-                         const gl::RenderSettings& settings);
+                         const ColumnMaxima& columnMaxima, const gl::RenderSettings& settings);
 
 }  // namespace ensil::app

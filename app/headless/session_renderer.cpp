@@ -66,8 +66,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setGrid(ensemble.grid);
     renderer.setVerticalExaggeration(state.verticalExaggeration);
     renderer.setFloorMap(floorMapFor(ensemble, moments.mean,
-                                     prep::computeColumnMaximum(ensemble.grid, moments.mean),
-                                     state.render));
+                                     computeColumnMaxima(ensemble, moments.mean), state.render));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;

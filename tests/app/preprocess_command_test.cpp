@@ -77,8 +77,10 @@ TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
     }
     EXPECT_GT(o["triangles"].toInt(), 0);
     EXPECT_GT(o["vertices"].toInt(), 0);
-    EXPECT_EQ(o["gpu_bytes"].toInteger(),
-              o["vertices"].toInteger() * 20 + o["triangles"].toInteger() * 12);
+    EXPECT_GT(o["context_gpu_bytes"].toInteger(), 0);
+    EXPECT_EQ(o["gpu_bytes"].toInteger(), o["vertices"].toInteger() * 20 +
+                                              o["triangles"].toInteger() * 12 +
+                                              o["context_gpu_bytes"].toInteger());
     const QJsonArray d = o["distance_matrix"].toArray();
     ASSERT_EQ(d.size(), 10);
     for (int i = 0; i < 10; ++i) {

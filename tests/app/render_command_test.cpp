@@ -283,6 +283,7 @@ TEST(RenderCommand, TheFloorShowsNothingTheColumnMaximumOrTheMeanAtALevel) {
     const QImage maximum = render("max.png", {});
     const QImage level0 = render("level0.png", {"--floor", "mean-at-level", "--floor-level", "0"});
     const QImage level1 = render("level1.png", {"--floor", "mean-at-level", "--floor-level", "1"});
+    const QImage spread = render("spread.png", {"--floor", "spread-maximum"});
     // Near the box's middle (the equator, no isosurface at 250 K there).
     const QPoint middle(160, 125);
     const QColor background = none.pixelColor(5, 5);
@@ -290,6 +291,8 @@ TEST(RenderCommand, TheFloorShowsNothingTheColumnMaximumOrTheMeanAtALevel) {
     EXPECT_NE(maximum.pixelColor(middle), background);
     EXPECT_NE(level0, maximum);
     EXPECT_NE(level0, level1) << "each level its own map";
+    EXPECT_NE(spread.pixelColor(middle), background);
+    EXPECT_NE(spread, maximum) << "the spread's map, not the mean's";
     const test::EnsilRun bad =
         test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
                         "--out", QString::fromStdString(dir.file("x.png")), "--floor", "spread"});
