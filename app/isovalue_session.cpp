@@ -35,7 +35,9 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);
     // The members are known now; their figures and clusters come with the first isovalue.
-    m_selection->setMembers({memberNames(), {}, {}});
+    ui::MemberFigures names;
+    names.names = memberNames();
+    m_selection->setMembers(std::move(names));
     m_selection->setTree({});  // the same names may belong to other data
     m_selection->setClusterCount(std::min<int>(5, static_cast<int>(m_ensemble->memberCount())));
     m_view->update();
@@ -72,6 +74,9 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             r.tree = std::move(outcome.tree);
             r.distancesToMean = std::move(outcome.distancesToMean);
             r.meanOutlyingness = std::move(outcome.meanOutlyingness);
+            r.depth = std::move(outcome.boxplot.depth);
+            if (!r.depth.empty()) r.medianMember = static_cast<int>(outcome.boxplot.median);
+            r.outliers.assign(outcome.boxplot.outliers.begin(), outcome.boxplot.outliers.end());
             r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
             return r;
         },
@@ -96,7 +101,14 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     m_view->renderer().setMeshes(m_result->meshes);
     // Same names: the selection keeps what the user selected and hid.
-    m_selection->setMembers({memberNames(), m_result->distancesToMean, m_result->meanOutlyingness});
+    ui::MemberFigures figures;
+    figures.names = memberNames();
+    figures.distanceToMean = m_result->distancesToMean;
+    figures.meanOutlyingness = m_result->meanOutlyingness;
+    figures.depth = m_result->depth;
+    figures.median = m_result->medianMember;
+    figures.outliers = m_result->outliers;
+    m_selection->setMembers(std::move(figures));
     m_selection->setTree(m_result->tree);
     // Members that could not be compared are said where the user looks after each rebuild.
     const std::string warning = prep::pairsWithoutOverlapWarning(*m_ensemble, m_result->distances);

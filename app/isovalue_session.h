@@ -1,10 +1,11 @@
 // Keeps the view's isosurfaces in step with the chosen isovalue: for each new isovalue it runs
 // one background job (meshes through the disk cache, similarity matrix, clustering, each
-// member's distance to the mean and mean outlyingness) and, when it is done, hands the meshes to
-// the renderer and the members, their figures and the merge tree to the shared MemberSelection
-// (which colours the view and feeds the panels; see MainWindow). The previous isovalue stays on
-// screen until the new one is ready; a newer request drops an older result. The number of
-// clusters and the linkage change at once from the kept distances. GUI thread only.
+// member's distance to the mean and mean outlyingness, the contour boxplot's depths, median and
+// outliers) and, when it is done, hands the meshes to the renderer and the members, their
+// figures and the merge tree to the shared MemberSelection (which colours the view and feeds
+// the panels; see MainWindow). The previous isovalue stays on screen until the new one is
+// ready; a newer request drops an older result. The number of clusters and the linkage change
+// at once from the kept distances. GUI thread only.
 #pragma once
 
 #include <QObject>
@@ -31,6 +32,11 @@ struct IsovalueResult {
     prep::MergeTree tree;
     std::vector<double> distancesToMean;   // per member, in the similarity measure
     std::vector<double> meanOutlyingness;  // per member, over its isosurface's vertices
+    // The contour boxplot (preprocessing/inclusion_depth.h), without its band fields (their
+    // surfaces are in `meshes`): the inclusion depth per member, the median, the outliers.
+    std::vector<double> depth;
+    int medianMember = -1;
+    std::vector<int> outliers;
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;

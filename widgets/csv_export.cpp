@@ -18,6 +18,8 @@ QString field(const QString& text) {
     return QLatin1Char('"') + quoted + QLatin1Char('"');
 }
 
+QString flag(bool value) { return value ? QStringLiteral("1") : QStringLiteral("0"); }
+
 QString number(double value) {
     if (std::isnan(value)) return {};
     if (std::isinf(value)) return value > 0 ? QStringLiteral("inf") : QStringLiteral("-inf");
@@ -28,17 +30,22 @@ QString number(double value) {
 QString memberTableCsv(const MemberSelection& selection) {
     QStringList lines;
     lines << QStringLiteral(
-        "index,name,cluster,distance_to_mean,mean_outlyingness,visible,selected");
+        "index,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
+        "selected");
     for (int m = 0; m < selection.memberCount(); ++m) {
         const int cluster = selection.clusterNumber(selection.clusterOf(m));
+        // The median and outlier flags are unknown (empty) while the depths are.
+        const bool boxplot = !std::isnan(selection.depth(m));
         lines << QStringList{QString::number(m + 1),
                              field(selection.name(m)),
                              cluster <= 0 ? QString() : QString::number(cluster),
                              number(selection.distanceToMean(m)),
                              number(selection.meanOutlyingness(m)),
-                             selection.isMemberVisible(m) ? QStringLiteral("1")
-                                                          : QStringLiteral("0"),
-                             selection.isSelected(m) ? QStringLiteral("1") : QStringLiteral("0")}
+                             number(selection.depth(m)),
+                             boxplot ? flag(selection.isMedian(m)) : QString(),
+                             boxplot ? flag(selection.isOutlier(m)) : QString(),
+                             flag(selection.isMemberVisible(m)),
+                             flag(selection.isSelected(m))}
                      .join(QLatin1Char(','));
     }
     return lines.join(QStringLiteral("\r\n")) + QStringLiteral("\r\n");

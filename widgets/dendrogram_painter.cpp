@@ -3,6 +3,7 @@
 #include <QFontMetricsF>
 #include <QPainterPath>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -15,6 +16,52 @@ constexpr double kTickLength = 4.0;
 constexpr int kTicks = 4;
 // Selection markers hang below the leaves (radius up to 5 px); names start below them.
 constexpr double kNamesOffset = 14.0;
+constexpr double kNamesStart = 8.0;
+constexpr double kMaxNameWidth = 140.0;  // longer names are elided
+// The contour boxplot's marks (radius up to 4.5 px) hang below the selection markers, in a row
+// of their own that moves the names down when there is a boxplot.
+constexpr double kMarksTop = 12.0;
+constexpr double kMaxMarkRadius = 4.5;
+constexpr double kMarksRow = 14.0;
+constexpr double kLegendMarkGap = 3.0;  // between a legend entry's mark and its text
+
+double marksRow(const MemberSelection& selection) {
+    return selection.hasBoxplot() ? kMarksRow : 0.0;
+}
+
+// A filled diamond (the median) or triangle pointing up (an outlier) of this radius.
+void drawMark(QPainter& painter, QPointF at, double r, bool median, const DendrogramStyle& style) {
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(median ? style.median : style.outlier);
+    if (median) {
+        const std::array<QPointF, 4> diamond{at + QPointF(0, -r), at + QPointF(r, 0),
+                                             at + QPointF(0, r), at + QPointF(-r, 0)};
+        painter.drawPolygon(diamond.data(), static_cast<int>(diamond.size()));
+    } else {
+        const std::array<QPointF, 3> triangle{at + QPointF(0, -r), at + QPointF(r, 0.8 * r),
+                                              at + QPointF(-r, 0.8 * r)};
+        painter.drawPolygon(triangle.data(), static_cast<int>(triangle.size()));
+    }
+    painter.setBrush(Qt::NoBrush);
+}
+
+// The legend's entries: mark (median or not) and text.
+struct LegendEntry {
+    bool median;
+    QString text;
+};
+std::array<LegendEntry, 2> legendEntries() {
+    return {LegendEntry{true, QObject::tr("median")}, LegendEntry{false, QObject::tr("outlier")}};
+}
+double legendMarkRadius(const QFontMetricsF& metrics) { return 0.3 * metrics.ascent(); }
+// The first entry's baseline below the plot: its mark level with the marks under the leaves.
+double legendBaseline(const QFontMetricsF& metrics) {
+    return kMarksTop + kMaxMarkRadius + metrics.ascent() / 2.0 - 1.0;
+}
+// How far below the plot the legend reaches: two lines from legendBaseline.
+double legendBottom(const QFontMetricsF& metrics) {
+    return legendBaseline(metrics) + metrics.lineSpacing() + metrics.descent();
+}
 
 // Names are drawn (turned 90 degrees) only when a line of text fits between two leaves.
 bool namesFit(const QFont& font, double leafWidth) {
@@ -22,12 +69,12 @@ bool namesFit(const QFont& font, double leafWidth) {
 }
 
 double longestName(const MemberSelection& selection, const QFont& font) {
-    const QFontMetricsF metrics(font);
     double widest = 0.0;
     for (int m = 0; m < selection.memberCount(); ++m) {
+        const QFontMetricsF metrics(dendrogramLeafFont(selection, m, font));
         widest = std::max(widest, metrics.horizontalAdvance(selection.name(m)));
     }
-    return std::min(widest, 140.0);  // long names are elided
+    return std::min(widest, kMaxNameWidth);  // long names are elided
 }
 
 // Every node whose members are all selected.
@@ -68,18 +115,51 @@ void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSe
                const DendrogramFrame& frame, const DendrogramStyle& style) {
     const QFontMetricsF metrics(style.font);
     painter.setPen(style.text);
+    const double top = frame.plot.bottom() + kNamesStart + marksRow(selection);
     for (int p = 0; p < layout.memberCount(); ++p) {
         const int member = layout.leafOrder()[static_cast<std::size_t>(p)];
         const double x = frame.pixelX(p + 0.5);
         if (x < frame.plot.left() - 1.0 || x > frame.plot.right() + 1.0) continue;
-        // Elided in the middle: names that differ at their end (dates) stay told apart.
-        const QString name = metrics.elidedText(selection.name(member), Qt::ElideMiddle, 140.0);
         painter.save();
-        painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(),
-                          frame.plot.bottom() + 8.0);
+        painter.setFont(dendrogramLeafFont(selection, member, style.font));
+        painter.translate(x + metrics.ascent() / 2.0 - metrics.descent(), top);
         painter.rotate(90.0);
-        painter.drawText(QPointF(0.0, 0.0), name);
+        // Elided in the middle: names that differ at their end (dates) stay told apart.
+        painter.drawText(QPointF(0.0, 0.0),
+                         QFontMetricsF(painter.font())
+                             .elidedText(selection.name(member), Qt::ElideMiddle, kMaxNameWidth));
         painter.restore();
+    }
+}
+
+// The contour boxplot's marks under the leaves of the median and the outliers.
+void drawBoxplotMarks(QPainter& painter, const DendrogramLayout& layout,
+                      const MemberSelection& selection, const DendrogramFrame& frame,
+                      const DendrogramStyle& style) {
+    const double r = boxplotMarkRadius(frame);
+    for (int p = 0; p < layout.memberCount(); ++p) {
+        const int member = layout.leafOrder()[static_cast<std::size_t>(p)];
+        const bool median = selection.isMedian(member);
+        if (!median && !selection.isOutlier(member)) continue;
+        drawMark(painter, boxplotMarkCenter(frame, p + 0.5), r, median, style);
+    }
+}
+
+// What the marks mean, in the corner below the height axis, beside the leaves: "<diamond>
+// median" level with the marks, "<triangle> outlier" below it.
+void drawBoxplotLegend(QPainter& painter, const MemberSelection& selection, const QRectF& area,
+                       const DendrogramFrame& frame, const DendrogramStyle& style) {
+    const QRectF rect = boxplotLegendRect(selection, area, frame, style.font);
+    if (rect.isEmpty()) return;
+    const QFontMetricsF metrics(style.font);
+    const double r = legendMarkRadius(metrics);
+    double baseline = frame.plot.bottom() + legendBaseline(metrics);
+    for (const LegendEntry& entry : legendEntries()) {
+        drawMark(painter, QPointF(rect.left() + r, baseline - metrics.ascent() / 2.0 + 1.0), r,
+                 entry.median, style);
+        painter.setPen(style.text);
+        painter.drawText(QPointF(rect.left() + 2.0 * r + kLegendMarkGap, baseline), entry.text);
+        baseline += metrics.lineSpacing();
     }
 }
 }  // namespace
@@ -91,9 +171,44 @@ DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFon
     margins.left = metrics.horizontalAdvance(QStringLiteral("0.000e-00")) + kTickLength + 6.0;
     margins.top = metrics.height() / 2.0 + 2.0;
     margins.right = 8.0;
-    margins.bottom =
-        kNamesOffset + 2.0 + (namesFit(font, leafWidth) ? longestName(selection, font) : 0.0);
+    margins.bottom = kNamesOffset + 2.0 + marksRow(selection) +
+                     (namesFit(font, leafWidth) ? longestName(selection, font) : 0.0);
+    // Room for the boxplot's legend in the corner below the axis, names or not.
+    if (selection.hasBoxplot()) {
+        margins.bottom = std::max(margins.bottom, legendBottom(metrics) + 2.0);
+    }
     return margins;
+}
+
+QFont dendrogramLeafFont(const MemberSelection& selection, int member, const QFont& font) {
+    QFont f = font;
+    if (selection.isMedian(member)) {
+        f.setBold(true);
+    } else if (selection.isOutlier(member)) {
+        f.setItalic(true);
+    }
+    return f;
+}
+
+QPointF boxplotMarkCenter(const DendrogramFrame& frame, double leafX) {
+    return {frame.pixelX(leafX), frame.plot.bottom() + kMarksTop + kMaxMarkRadius};
+}
+
+double boxplotMarkRadius(const DendrogramFrame& frame) {
+    return std::clamp(frame.leafWidth * 0.35, 2.5, kMaxMarkRadius);
+}
+
+QRectF boxplotLegendRect(const MemberSelection& selection, const QRectF& area,
+                         const DendrogramFrame& frame, const QFont& font) {
+    if (!selection.hasBoxplot()) return {};
+    const QFontMetricsF metrics(font);
+    double width = 0.0;
+    for (const LegendEntry& entry : legendEntries()) {
+        width = std::max(width, 2.0 * legendMarkRadius(metrics) + kLegendMarkGap +
+                                    metrics.horizontalAdvance(entry.text));
+    }
+    const double top = frame.plot.bottom() + legendBaseline(metrics) - metrics.ascent();
+    return {area.left() + 2.0, top, width, frame.plot.bottom() + legendBottom(metrics) - top};
 }
 
 DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSelection& selection,
@@ -170,6 +285,7 @@ void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayo
         painter.drawEllipse(at, radius, radius);
     }
     painter.setBrush(Qt::NoBrush);
+    if (selection.hasBoxplot()) drawBoxplotMarks(painter, layout, selection, frame, style);
     if (namesFit(style.font, frame.leafWidth)) drawNames(painter, layout, selection, frame, style);
 
     // The cut line across the whole plot, with the number of clusters at its right end.
@@ -186,6 +302,8 @@ void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayo
                                  y - metrics.descent() - 2.0),
                          label);
     }
+    painter.setClipping(false);
+    drawBoxplotLegend(painter, selection, area, frame, style);
     painter.restore();
 }
 

@@ -15,6 +15,7 @@ namespace {
 constexpr double kCutGrab = 5.0;  // pixels either side of the cut line that grab it
 constexpr double kMaxLeafWidth = 60.0;
 constexpr double kZoomStep = 1.25;  // per wheel notch
+constexpr double kMarkGrab = 6.0;   // pixels above and below the boxplot marks that tell them
 }  // namespace
 
 DendrogramView::DendrogramView(MemberSelection* selection, QWidget* parent)
@@ -53,6 +54,7 @@ DendrogramStyle DendrogramView::style() const {
     s.selection = palette().color(QPalette::Text);
     s.hover = palette().color(QPalette::Highlight);
     s.hover.setAlpha(50);
+    s.median = palette().color(QPalette::Text);
     s.font = font();
     return s;
 }
@@ -93,18 +95,52 @@ void DendrogramView::setZoom(double zoom, double anchorX) {
     viewport()->update();
 }
 
+QString DendrogramView::boxplotText(int member) const {
+    const double depth = m_selection->depth(member);
+    if (std::isnan(depth)) return {};
+    const QString value = depthText(depth);
+    if (m_selection->isMedian(member)) {
+        return tr("inclusion depth %1, the median of the contour boxplot (the deepest member)")
+            .arg(value);
+    }
+    if (m_selection->isOutlier(member)) {
+        return tr("inclusion depth %1, an outlier of the contour boxplot (below the lower fence)")
+            .arg(value);
+    }
+    return tr("inclusion depth %1").arg(value);
+}
+
 QString DendrogramView::toolTipAt(QPointF p) const {
     const DendrogramFrame f = frame();
     if (m_selection->clusterCount() > 0 && isOnCutLine(p)) {
         return tr("Cut into %1 clusters: drag up or down to change")
             .arg(m_selection->clusterCount());
     }
+    const QRectF viewArea(viewport()->rect());
+    if (boxplotLegendRect(*m_selection, viewArea, f, font()).contains(p)) {
+        return tr(
+            "Contour boxplot of the members' isosurfaces at this isovalue: a diamond marks "
+            "the median (the deepest, most central member, its name in bold), a triangle "
+            "each outlier (inclusion depth below Q1 - 1.5 IQR, its name in italics)");
+    }
+    // The row of boxplot marks under the leaves: the member whose mark is there.
+    if (m_selection->hasBoxplot() && m_layout.memberCount() > 0) {
+        const QPointF mark = boxplotMarkCenter(f, 0.5);
+        const double leaf = std::floor((p.x() - f.plot.left() + f.scroll) / f.leafWidth);
+        if (std::abs(p.y() - mark.y()) <= kMarkGrab && leaf >= 0 && leaf < m_layout.memberCount() &&
+            p.x() >= f.plot.left() && p.x() <= f.plot.right()) {
+            const int member = m_layout.leafOrder()[static_cast<std::size_t>(leaf)];
+            return tr("%1: %2").arg(m_selection->name(member), boxplotText(member));
+        }
+    }
     const int node = nodeAt(m_layout, f, p);
     if (node < 0) return {};
     if (node < m_layout.memberCount()) {
-        return tr("%1 (cluster %2)")
-            .arg(m_selection->name(node))
-            .arg(m_selection->clusterNumber(m_selection->clusterOf(node)));
+        const QString text = tr("%1 (cluster %2)")
+                                 .arg(m_selection->name(node))
+                                 .arg(m_selection->clusterNumber(m_selection->clusterOf(node)));
+        const QString boxplot = boxplotText(node);
+        return boxplot.isEmpty() ? text : tr("%1, %2").arg(text, boxplot);
     }
     const double h = m_layout.mergeHeight(node);
     return tr("Merge height %1: %2 members")

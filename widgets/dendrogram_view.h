@@ -2,7 +2,7 @@
 // paintDendrogram. Drag the dashed cut line up or down to choose the number of clusters (live);
 // click a branch to select its members (Shift adds, Ctrl toggles; a click on empty space
 // clears); hover a branch for its merge height (its members are shaded), a member's stem to
-// hover the member. The wheel
+// hover the member; the contour boxplot's marks and legend say what they mean. The wheel
 // zooms along the leaves around the pointer, Shift + wheel (or a sideways wheel) scrolls.
 // GUI thread only.
 #pragma once
@@ -52,6 +52,8 @@ private:
     [[nodiscard]] bool isOnCutLine(QPointF p) const;
     void dragCutTo(double y);
     void setHoveredNode(int node);
+    // "inclusion depth 0.672, the median of the contour boxplot ..."; empty when not known.
+    [[nodiscard]] QString boxplotText(int member) const;
 
     MemberSelection* m_selection;
     DendrogramLayout m_layout;

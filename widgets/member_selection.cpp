@@ -1,7 +1,9 @@
 #include "widgets/member_selection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -26,13 +28,30 @@ void requireLength(const std::vector<double>& values, qsizetype names, const cha
                                     " values for " + std::to_string(names) + " members");
     }
 }
+void requireMember(int member, qsizetype names, const char* what) {
+    if (member < 0 || member >= names) {
+        throw std::invalid_argument(std::string(what) + " " + std::to_string(member) +
+                                    " is not one of the " + std::to_string(names) + " members");
+    }
+}
 }  // namespace
+
+QString depthText(double depth) {
+    if (std::isnan(depth)) return QStringLiteral("-");
+    // C's %#.3g: QString::asprintf's own formatting drops a significant zero ("0.050").
+    std::array<char, 32> text{};
+    std::snprintf(text.data(), text.size(), "%#.3g", depth);
+    return QString::fromLatin1(text.data());
+}
 
 MemberSelection::MemberSelection(QObject* parent) : QObject(parent) {}
 
 void MemberSelection::setMembers(MemberFigures figures) {
     requireLength(figures.distanceToMean, figures.names.size(), "the distance to the mean");
     requireLength(figures.meanOutlyingness, figures.names.size(), "the mean outlyingness");
+    requireLength(figures.depth, figures.names.size(), "the depth");
+    if (figures.median != -1) requireMember(figures.median, figures.names.size(), "the median");
+    for (const int m : figures.outliers) requireMember(m, figures.names.size(), "the outlier");
     const bool sameMembers = figures.names == m_figures.names;
     emit membersAboutToBeReset();
     emit clustersAboutToChange();
@@ -100,6 +119,17 @@ double MemberSelection::distanceToMean(int member) const {
 
 double MemberSelection::meanOutlyingness(int member) const {
     return entry(m_figures.meanOutlyingness, member);
+}
+
+double MemberSelection::depth(int member) const { return entry(m_figures.depth, member); }
+
+bool MemberSelection::isMedian(int member) const {
+    return valid(member) && member == m_figures.median;
+}
+
+bool MemberSelection::isOutlier(int member) const {
+    return valid(member) && std::find(m_figures.outliers.begin(), m_figures.outliers.end(),
+                                      member) != m_figures.outliers.end();
 }
 
 int MemberSelection::clusterOf(int member) const {

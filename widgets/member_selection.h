@@ -19,12 +19,23 @@
 
 namespace ensil::ui {
 
-// What the member table shows besides the cluster; one entry per member.
+// What the member table shows besides the cluster; one entry per member. Empty vectors mean
+// "not known yet" (the figures come with each isovalue).
 struct MemberFigures {
     QStringList names;
     std::vector<double> distanceToMean;    // NaN when not known
     std::vector<double> meanOutlyingness;  // NaN when not known (or no isosurface)
+    // The contour boxplot (preprocessing/inclusion_depth.h): each member's inclusion depth in
+    // [0, 1] (1 = most central, 0 = no surface), the median (the deepest member; -1 when not
+    // known) and the outliers (depth below the lower fence), as member indices.
+    std::vector<double> depth;
+    int median = -1;
+    std::vector<int> outliers;
 };
+
+// A depth in [0, 1] as the panels show it: 3 significant digits, trailing zeros kept so a
+// column reads evenly ("0.100", "1.00"); "-" when not known (NaN).
+[[nodiscard]] QString depthText(double depth);
 
 class MemberSelection : public QObject {
     Q_OBJECT
@@ -34,7 +45,7 @@ public:
     // New members. Selection, visibility and hover survive when the names are the same (a new
     // isovalue of the same ensemble); otherwise everything starts afresh. The merge tree is
     // dropped unless its member count still fits. Throws std::invalid_argument when the
-    // figures' lengths differ from the names'.
+    // figures' lengths differ from the names', or a median or outlier is not a member.
     void setMembers(MemberFigures figures);
     // The merge tree of the current members (memberCount == memberCount(), or 0 for "not
     // clustered"). Keeps the number of clusters, clamped to 1..N. Throws std::invalid_argument
@@ -46,6 +57,17 @@ public:
     [[nodiscard]] QString name(int member) const { return m_figures.names.value(member); }
     [[nodiscard]] double distanceToMean(int member) const;
     [[nodiscard]] double meanOutlyingness(int member) const;
+    // The contour boxplot's figures: the inclusion depth (NaN when not known), whether the member
+    // is its median (the deepest) or one of its outliers, and the median (-1 when not known).
+    [[nodiscard]] double depth(int member) const;
+    [[nodiscard]] int medianMember() const { return m_figures.median; }
+    [[nodiscard]] bool isMedian(int member) const;
+    [[nodiscard]] bool isOutlier(int member) const;
+    // Whether any contour boxplot is known (a median or depths), so panels can say what marks
+    // mean only when there are any.
+    [[nodiscard]] bool hasBoxplot() const {
+        return m_figures.median >= 0 || !m_figures.depth.empty();
+    }
 
     [[nodiscard]] const prep::MergeTree& tree() const { return m_tree; }
     [[nodiscard]] bool isClustered() const { return m_tree.memberCount > 0; }

@@ -88,6 +88,15 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
             case MeanOutlyingness:
                 return sort ? number(m_selection->meanOutlyingness(m))
                             : QVariant(numberText(m_selection->meanOutlyingness(m)));
+            case Depth: {
+                // Sorted by the number; the median and the outliers are named beside it.
+                const double depth = m_selection->depth(m);
+                if (sort) return number(depth);
+                const QString dot = QStringLiteral(" ") + QChar(0x00B7) + QStringLiteral(" ");
+                if (m_selection->isMedian(m)) return depthText(depth) + dot + tr("median");
+                if (m_selection->isOutlier(m)) return depthText(depth) + dot + tr("outlier");
+                return depthText(depth);
+            }
             case Visible:
                 return sort ? QVariant(m_selection->isMemberVisible(m)) : QVariant();
             case ColumnCount:
@@ -117,7 +126,30 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
         return tr("Distance of %1 to the mean member in the similarity measure")
             .arg(m_selection->name(m));
     }
+    if (role == Qt::ToolTipRole && column == Depth) return depthToolTip(m);
     return {};
+}
+
+QString MemberTableModel::depthToolTip(int m) const {
+    const QString name = m_selection->name(m);
+    const double depth = m_selection->depth(m);
+    if (std::isnan(depth)) {
+        return tr("The depth of %1 comes with the isovalue's surfaces").arg(name);
+    }
+    const QString value = depthText(depth);
+    if (m_selection->isMedian(m)) {
+        return tr("%1 is the median of the contour boxplot: its isosurface is the deepest "
+                  "(inclusion depth %2), the most central among the others")
+            .arg(name, value);
+    }
+    if (m_selection->isOutlier(m)) {
+        return tr("%1 is an outlier of the contour boxplot: its inclusion depth %2 lies below "
+                  "the lower fence (Q1 - 1.5 IQR of all members' depths)")
+            .arg(name, value);
+    }
+    return tr("Inclusion depth of %1's isosurface among the others: %2 (1 = most central, "
+              "0 = no surface)")
+        .arg(name, value);
 }
 
 QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
@@ -137,6 +169,11 @@ QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, 
             return tip ? tr("Distance to the mean member (similarity measure)") : tr("To mean");
         case MeanOutlyingness:
             return tip ? tr("Mean outlyingness over the member's isosurface") : tr("Outlying");
+        case Depth:
+            return tip ? tr("Inclusion depth of the member's isosurface among the others "
+                            "(contour boxplot): 1 = most central, 0 = no surface; the deepest "
+                            "is the median")
+                       : tr("Depth");
         case Visible:
             return tip ? tr("Drawn in the view") : tr("Shown");
         default:

@@ -1,8 +1,9 @@
 // The members as a table for QTableView: index, name, cluster (with its colour), distance to
-// the mean member, mean outlyingness, and a visibility checkbox; the hovered member's row is
-// tinted. A view onto MemberSelection,
-// which it follows and edits (the checkbox); selection is not part of the model but of the
-// shared MemberSelection (see MemberTablePanel). GUI thread only.
+// the mean member, mean outlyingness, inclusion depth (the contour boxplot's median and outliers
+// named in its cell: "0.672 · median"), and a visibility checkbox; the hovered member's row is
+// tinted. A view onto MemberSelection, which it follows and edits (the checkbox); selection is
+// not part of the model but of the shared MemberSelection (see MemberTablePanel). GUI thread
+// only.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -14,7 +15,16 @@ class MemberSelection;
 class MemberTableModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Index, Name, Cluster, DistanceToMean, MeanOutlyingness, Visible, ColumnCount };
+    enum Column {
+        Index,
+        Name,
+        Cluster,
+        DistanceToMean,
+        MeanOutlyingness,
+        Depth,
+        Visible,
+        ColumnCount
+    };
     // Numbers for sorting (Qt::DisplayRole holds the text shown).
     static constexpr int SortRole = Qt::UserRole + 1;
 
@@ -31,6 +41,7 @@ public:
 private:
     void columnChanged(int column, const QList<int>& roles);
     void rowChanged(int row, const QList<int>& roles);
+    [[nodiscard]] QString depthToolTip(int member) const;
 
     MemberSelection* m_selection;
     int m_hoveredRow = -1;  // the row tinted as hovered, to clear it when the hover moves

@@ -8,6 +8,7 @@
 #include <QTableView>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <array>
 
 #include "widgets/member_filter_proxy.h"
 #include "widgets/member_selection.h"
@@ -43,11 +44,7 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
         showSharedSelection();
     };
     connect(m_proxy, &QAbstractItemModel::modelReset, this, resume);
-    connect(m_proxy, &QAbstractItemModel::modelReset, this, [this] {
-        for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
-            if (c != MemberTableModel::Name) m_table->resizeColumnToContents(c);
-        }
-    });
+    connect(m_proxy, &QAbstractItemModel::modelReset, this, &MemberTablePanel::fitColumns);
     connect(m_proxy, &QAbstractItemModel::layoutChanged, this, resume);
     connect(m_proxy, &QAbstractItemModel::rowsRemoved, this, resume);
     connect(m_proxy, &QAbstractItemModel::rowsInserted, this, resume);
@@ -62,6 +59,12 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     // ResizeToContents would measure every row each time the cut line moves.
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
     m_table->horizontalHeader()->setSectionResizeMode(MemberTableModel::Name, QHeaderView::Stretch);
+    // The column sorted by now shows the arrow: room is made for it, never taken.
+    connect(m_table->horizontalHeader(), &QHeaderView::sortIndicatorChanged, this, [this](int c) {
+        QHeaderView* header = m_table->horizontalHeader();
+        if (c < 0 || c == MemberTableModel::Name) return;
+        header->resizeSection(c, std::max(header->sectionSize(c), header->sectionSizeHint(c)));
+    });
     m_table->setMouseTracking(true);
     m_table->viewport()->installEventFilter(this);
 
@@ -75,6 +78,31 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
             &MemberTablePanel::tableSelectionChanged);
     connect(m_selection, &MemberSelection::selectionChanged, this,
             &MemberTablePanel::showSharedSelection);
+}
+
+void MemberTablePanel::fitColumns() {
+    // Every column but the name's fits its cells and its header's text. QHeaderView's own fit
+    // reserves room for the sort arrow in every header, though only the sorted column shows it:
+    // some 25 pixels a column, which in a side dock were all the names had left. So the headers
+    // are measured without it, and the sorted column alone gets it.
+    QHeaderView* header = m_table->horizontalHeader();
+    std::array<int, MemberTableModel::ColumnCount> plain{};
+    header->setSortIndicatorShown(false);
+    for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+        plain.at(static_cast<std::size_t>(c)) = header->sectionSizeHint(c);
+    }
+    header->setSortIndicatorShown(true);
+    for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+        if (c == MemberTableModel::Name) continue;
+        int width = c == header->sortIndicatorSection() ? header->sectionSizeHint(c)
+                                                        : plain.at(static_cast<std::size_t>(c));
+        const int grid = m_table->showGrid() ? 1 : 0;
+        for (int row = 0; row < m_proxy->rowCount(); ++row) {
+            width =
+                std::max(width, m_table->sizeHintForIndex(m_proxy->index(row, c)).width() + grid);
+        }
+        header->resizeSection(c, width);
+    }
 }
 
 int MemberTablePanel::memberAtRow(int row) const {

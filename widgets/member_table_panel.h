@@ -35,6 +35,8 @@ protected:
 private:
     void tableSelectionChanged();
     void showSharedSelection();
+    // Fits the columns (all but the name's, which takes the rest) when new members arrive.
+    void fitColumns();
 
     MemberSelection* m_selection;
     MemberTableModel* m_model;

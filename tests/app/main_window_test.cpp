@@ -13,12 +13,16 @@
 #include <cmath>
 
 #include "app/isovalue_session.h"
+#include "data/ensemble_reader.h"
+#include "preprocessing/inclusion_depth.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/member_selection.h"
+#include "widgets/member_table_model.h"
+#include "widgets/member_table_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
@@ -228,4 +232,70 @@ TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     exaggeration->setValue(3.0);
     EXPECT_FLOAT_EQ(window.view()->renderer().frame().boxMax().z, 3.0F * height);
     ASSERT_TRUE(built.wait(60000)) << "attributes were not rebuilt";
+}
+
+TEST(MainWindow, TheMemberTableShowsEachIsovaluesContourBoxplotAndANewEnsembleClearsIt) {
+    // ERA5's temperature: the Depth column holds the engine's inclusion depths
+    // (preprocessing/inclusion_depth.h) for the file's members at the isovalue shown, and names
+    // its median and outliers; at the default isovalue and at 260 K, which has an outlier.
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    const std::string file = ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc";
+    data::DataSelection selection;
+    selection.paths = {file};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(120000)) << "no isosurfaces were built";
+    const data::Ensemble era5 = data::openEnsemble({{file}, "t", {}, 0});
+    const ui::MemberTableModel* model = window.memberTable()->model();
+    const QString dot = QStringLiteral(" ") + QChar(0x00B7) + QStringLiteral(" ");
+    std::size_t outliersSeen = 0;
+    const auto checkTable = [&] {
+        const float iso = window.view()->renderer().meshes()->isovalue;
+        const prep::ContourBoxplot expected = prep::computeContourBoxplot(era5, iso);
+        ASSERT_EQ(model->rowCount(), static_cast<int>(era5.memberCount()));
+        for (int m = 0; m < model->rowCount(); ++m) {
+            const QModelIndex cell = model->index(m, ui::MemberTableModel::Depth);
+            const double depth = expected.depth[static_cast<std::size_t>(m)];
+            EXPECT_DOUBLE_EQ(cell.data(ui::MemberTableModel::SortRole).toDouble(), depth)
+                << "member " << m << " at " << iso;
+            const bool median = static_cast<std::size_t>(m) == expected.median;
+            const bool outlier = std::find(expected.outliers.begin(), expected.outliers.end(),
+                                           static_cast<std::size_t>(m)) != expected.outliers.end();
+            const QString text = ui::depthText(depth) + (median    ? dot + QStringLiteral("median")
+                                                         : outlier ? dot + QStringLiteral("outlier")
+                                                                   : QString());
+            EXPECT_EQ(cell.data().toString().toStdString(), text.toStdString())
+                << "member " << m << " at " << iso;
+        }
+        outliersSeen += expected.outliers.size();
+    };
+    checkTable();
+    EXPECT_FALSE(ui::depthText(window.memberSelection()->depth(0)).isEmpty());
+
+    // Another isovalue brings its own boxplot: at 260 K member 5 is an outlier.
+    built.clear();
+    window.renderToolbar()->isovalueBox()->setValue(260.0);
+    ASSERT_TRUE(built.wait(120000)) << "no isosurfaces were built at 260 K";
+    ASSERT_FLOAT_EQ(window.view()->renderer().meshes()->isovalue, 260.0F);
+    checkTable();
+    EXPECT_GT(outliersSeen, 0u) << "the outlier word was never checked";
+
+    // A new ensemble: the members are shown at once, without the old ensemble's depths, which
+    // come back with the new ensemble's first isovalue.
+    std::vector<bool> boxplotOnReset;
+    QObject::connect(window.memberSelection(), &ui::MemberSelection::membersReset, &window,
+                     [&] { boxplotOnReset.push_back(window.memberSelection()->hasBoxplot()); });
+    built.clear();
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5});
+    ASSERT_TRUE(built.wait(120000));
+    ASSERT_EQ(boxplotOnReset.size(), 2u) << "the new members, then their first isovalue's figures";
+    EXPECT_FALSE(boxplotOnReset[0]) << "the old ensemble's depths were kept";
+    EXPECT_TRUE(boxplotOnReset[1]);
+    EXPECT_EQ(model->index(0, ui::MemberTableModel::Depth)
+                  .data(ui::MemberTableModel::SortRole)
+                  .toDouble(),
+              window.isovalueSession()->result()->depth[0]);
 }

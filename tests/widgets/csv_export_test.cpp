@@ -22,11 +22,14 @@ TEST(CsvExport, WritesOneQuotedLinePerMemberWithItsCluster) {
     // The cluster's stable number, as the legend shows it.
     const auto number = [&s](int m) { return s.clusterNumber(s.clusterOf(m)); };
     ASSERT_EQ(lines.size(), 5) << "header, three members, the final line break";
-    EXPECT_EQ(lines[0], "index,name,cluster,distance_to_mean,mean_outlyingness,visible,selected");
+    EXPECT_EQ(lines[0],
+              "index,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
+              "selected");
+    // No contour boxplot yet: its depth and flags are unknown, so empty.
     EXPECT_EQ(lines[1],
-              QStringLiteral("1,\"run \"\"A\"\", control\",%1,0.25,0.5,1,0").arg(number(0)));
-    EXPECT_EQ(lines[2], QStringLiteral("2,m1,%1,10,20,0,0").arg(number(1)));
-    EXPECT_EQ(lines[3], QStringLiteral("3,m2,%1,1,,1,1").arg(number(2)))
+              QStringLiteral("1,\"run \"\"A\"\", control\",%1,0.25,0.5,,,,1,0").arg(number(0)));
+    EXPECT_EQ(lines[2], QStringLiteral("2,m1,%1,10,20,,,,0,0").arg(number(1)));
+    EXPECT_EQ(lines[3], QStringLiteral("3,m2,%1,1,,,,,1,1").arg(number(2)))
         << "unknown outlyingness is empty";
     EXPECT_EQ(s.clusterOf(0), s.clusterOf(2));
     EXPECT_NE(s.clusterOf(0), s.clusterOf(1));

@@ -14,6 +14,7 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/dendrogram_export.h"
 #include "widgets/dendrogram_layout.h"
+#include "widgets/dendrogram_painter.h"
 #include "widgets/dendrogram_view.h"
 #include "widgets/member_selection.h"
 
@@ -36,6 +37,40 @@ void showAndWait(QWidget& w) {
     w.resize(600, 300);
     w.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&w));
+}
+
+// The two groups' figures with a contour boxplot: member 4 the median, member 5 an outlier.
+ui::MemberFigures twoGroupsWithABoxplot() {
+    ui::MemberFigures f = test::figuresOnALine(test::kTwoGroups);
+    f.depth = {0.5, 0.4, 0.6, 0.45, 0.8, 0.05};
+    f.median = 4;
+    f.outliers = {5};
+    return f;
+}
+
+// The attributes of the SVG group that holds this text (QSvgGenerator writes the font of each
+// run of text on the <g> around it); empty when the text is not there.
+QString groupAround(const QString& svg, const QString& text) {
+    const qsizetype at = svg.indexOf(QLatin1Char('>') + text + QLatin1Char('<'));
+    if (at < 0) return {};
+    const qsizetype group = svg.lastIndexOf(QLatin1String("<g "), at);
+    return group < 0 ? QString() : svg.mid(group, svg.indexOf(QLatin1Char('>'), group) - group);
+}
+
+QColor pixelAt(const QImage& image, QPointF p) {
+    return image.pixelColor((p * image.devicePixelRatio()).toPoint());
+}
+
+// Whether some pixel in this rectangle (in widget pixels) has this colour.
+bool hasColourIn(const QImage& image, const QRectF& rect, const QColor& colour) {
+    const qreal ratio = image.devicePixelRatio();
+    const QRect pixels = QRectF(rect.topLeft() * ratio, rect.size() * ratio).toAlignedRect();
+    for (int y = pixels.top(); y <= pixels.bottom(); ++y) {
+        for (int x = pixels.left(); x <= pixels.right(); ++x) {
+            if (image.valid(x, y) && image.pixel(x, y) == colour.rgb()) return true;
+        }
+    }
+    return false;
 }
 
 // A dendrogram view of the two groups, shown.
@@ -262,4 +297,112 @@ TEST(DendrogramExport, ExplainsWhatWentWrong) {
     test::loadTwoGroups(s);
     EXPECT_FALSE(ui::writeDendrogramSvg(s, "/nonexistent-folder/tree.svg", &error));
     EXPECT_TRUE(error.contains("/nonexistent-folder/tree.svg")) << error.toStdString();
+}
+
+TEST(DendrogramExport, MarksTheMediansAndTheOutliersNames) {
+    ui::MemberSelection s;
+    test::loadTwoGroups(s);
+    s.setMembers(twoGroupsWithABoxplot());  // the same members: the tree stays
+    ASSERT_TRUE(s.isClustered());
+    test::TempDir dir;
+    const QString path = QString::fromStdString(dir.file("tree.svg"));
+    ASSERT_TRUE(ui::writeDendrogramSvg(s, path));
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(file.readAll());
+    // The outlier's name in italics, the median's in bold, the others plain.
+    const QString outlier = groupAround(svg, QStringLiteral("m5"));
+    ASSERT_FALSE(outlier.isEmpty()) << svg.toStdString();
+    EXPECT_TRUE(outlier.contains(QLatin1String("font-style=\"italic\""))) << outlier.toStdString();
+    const QString median = groupAround(svg, QStringLiteral("m4"));
+    ASSERT_FALSE(median.isEmpty()) << svg.toStdString();
+    EXPECT_TRUE(median.contains(QLatin1String("font-weight=\"700\""))) << median.toStdString();
+    EXPECT_FALSE(median.contains(QLatin1String("italic"))) << median.toStdString();
+    for (const int m : {0, 1, 2, 3}) {
+        const QString plain = groupAround(svg, QStringLiteral("m%1").arg(m));
+        ASSERT_FALSE(plain.isEmpty()) << m;
+        EXPECT_FALSE(plain.contains(QLatin1String("italic"))) << plain.toStdString();
+        EXPECT_FALSE(plain.contains(QLatin1String("font-weight=\"700\""))) << plain.toStdString();
+    }
+    // The legend says what the marks are.
+    EXPECT_TRUE(svg.contains(QLatin1String(">median<"))) << "legend";
+    EXPECT_TRUE(svg.contains(QLatin1String(">outlier<"))) << "legend";
+}
+
+TEST_F(ShownDendrogram, MarksTheMedianAndTheOutliersUnderTheirLeaves) {
+    const QColor background = view.style().background;
+    // Before the boxplot is known there are no marks and no legend.
+    ui::DendrogramFrame frame = view.frame();
+    QImage image = view.viewport()->grab().toImage();
+    EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, view.layout().x(4))), background);
+    EXPECT_TRUE(
+        ui::boxplotLegendRect(s, QRectF(view.viewport()->rect()), frame, view.font()).isEmpty());
+
+    s.setMembers(twoGroupsWithABoxplot());
+    QApplication::processEvents();  // the repaint the new figures asked for
+    ASSERT_TRUE(s.isClustered());
+    frame = view.frame();
+    image = view.viewport()->grab().toImage();
+    const auto& layout = view.layout();
+    EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(4))).rgb(),
+              view.style().median.rgb())
+        << "the median's mark";
+    EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(5))).rgb(),
+              view.style().outlier.rgb())
+        << "the outlier's mark";
+    for (const int m : {0, 1, 2, 3}) {
+        EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(m))), background) << m;
+    }
+    // The marks and the legend say what they mean where the pointer is.
+    const QString outlierTip = view.toolTipAt(ui::boxplotMarkCenter(frame, layout.x(5)));
+    EXPECT_TRUE(outlierTip.startsWith("m5: inclusion depth 0.0500, an outlier"))
+        << outlierTip.toStdString();
+    const QString medianTip = view.toolTipAt(frame.toPixel(layout.x(4), 0.1));
+    EXPECT_TRUE(medianTip.contains("inclusion depth 0.800, the median of the contour boxplot"))
+        << medianTip.toStdString();
+    const QRectF legend =
+        ui::boxplotLegendRect(s, QRectF(view.viewport()->rect()), frame, view.font());
+    ASSERT_FALSE(legend.isEmpty());
+    const QString legendTip = view.toolTipAt(legend.center());
+    EXPECT_TRUE(legendTip.contains("a diamond marks the median")) << legendTip.toStdString();
+    EXPECT_TRUE(legendTip.contains("a triangle each outlier")) << legendTip.toStdString();
+    // The legend is drawn (not only placed): the outlier's triangle is in it.
+    EXPECT_TRUE(hasColourIn(image, legend, view.style().outlier));
+}
+
+TEST(DendrogramView, MarksTheBoxplotReadablyAtFiftyMembers) {
+    // 50 members in a 600 pixel view: too narrow for names, so the marks alone tell the median
+    // and the outliers, each under its own leaf without touching the next.
+    ui::MemberSelection s;
+    ui::DendrogramView view(&s);
+    std::vector<double> positions;
+    for (int m = 0; m < 50; ++m) positions.push_back(std::sin(m * 0.37) * 10.0 + m * 0.01);
+    ui::MemberFigures figures = test::figuresOnALine(positions);
+    for (int m = 0; m < 50; ++m) figures.depth.push_back(0.5 + 0.4 * std::cos(m * 0.37));
+    figures.median = 17;
+    figures.outliers = {3, 4, 41};
+    s.setMembers(figures);
+    s.setTree(test::treeOnALine(positions));
+    showAndWait(view);
+    const ui::DendrogramFrame frame = view.frame();
+    ASSERT_LT(frame.leafWidth, QFontMetricsF(view.font()).height()) << "names do not fit";
+    EXPECT_LE(2.0 * ui::boxplotMarkRadius(frame), frame.leafWidth - 2.0) << "marks kept apart";
+    const QImage image = view.viewport()->grab().toImage();
+    const auto& layout = view.layout();
+    EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(17))).rgb(),
+              view.style().median.rgb());
+    for (const int m : {3, 4, 41}) {
+        EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(m))).rgb(),
+                  view.style().outlier.rgb())
+            << m;
+    }
+    EXPECT_EQ(pixelAt(image, ui::boxplotMarkCenter(frame, layout.x(20))), view.style().background);
+    // The legend sits in the corner below the height axis: inside the view, covering neither
+    // the plot nor the leaves' marks.
+    const QRectF legend =
+        ui::boxplotLegendRect(s, QRectF(view.viewport()->rect()), frame, view.font());
+    EXPECT_TRUE(QRectF(view.viewport()->rect()).contains(legend));
+    EXPECT_GE(legend.top(), frame.plot.bottom());
+    EXPECT_LE(legend.right(), ui::boxplotMarkCenter(frame, 0.5).x() - ui::boxplotMarkRadius(frame));
+    EXPECT_TRUE(hasColourIn(image, legend, view.style().outlier));
 }

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <QApplication>
+#include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
 #include <QSignalSpy>
@@ -8,6 +10,7 @@
 #include <cmath>
 
 #include "panel_fixtures.h"
+#include "widgets/csv_export.h"
 #include "widgets/member_filter_proxy.h"
 #include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
@@ -105,6 +108,158 @@ TEST(MemberTableModel, ShowsEveryColumnAndFollowsTheCut) {
     EXPECT_EQ(changed.front().at(0).toModelIndex().column(), MemberTableModel::Cluster);
     EXPECT_EQ(cell(3, MemberTableModel::Cluster).toInt(), s.clusterNumber(s.clusterOf(3)))
         << "the stable number the legend shows";
+}
+
+namespace {
+// Members whose figures are not known yet, as a new ensemble's.
+ui::MemberFigures namesOnly(const QStringList& names) {
+    ui::MemberFigures f;
+    f.names = names;
+    return f;
+}
+
+// Four members with a contour boxplot: member 1 the median (0.9), member 2 an outlier (0.1).
+// Member 3's depth (1e-5) reads "1.00e-05", which sorts above "0.900" as text.
+ui::MemberFigures figuresWithABoxplot() {
+    ui::MemberFigures f = test::figuresOnALine({3.0, 20.0, 100.0, 1.0});
+    f.depth = {0.45, 0.9, 0.1, 0.00001};
+    f.median = 1;
+    f.outliers = {2};
+    return f;
+}
+}  // namespace
+
+TEST(MemberTableModel, ShowsEachMembersDepthAndNamesTheMedianAndTheOutliers) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    s.setMembers(figuresWithABoxplot());
+    const auto cell = [&](int row, int role = Qt::DisplayRole) {
+        return model.index(row, MemberTableModel::Depth).data(role);
+    };
+    const QString dot = QStringLiteral(" ") + QChar(0x00B7) + QStringLiteral(" ");
+    EXPECT_EQ(cell(0).toString(), QStringLiteral("0.450"));
+    EXPECT_EQ(cell(1).toString(), QStringLiteral("0.900") + dot + QStringLiteral("median"));
+    EXPECT_EQ(cell(2).toString(), QStringLiteral("0.100") + dot + QStringLiteral("outlier"));
+    EXPECT_EQ(cell(3).toString(), QStringLiteral("1.00e-05"));
+    // Sorting uses the number, not the words.
+    EXPECT_DOUBLE_EQ(cell(1, MemberTableModel::SortRole).toDouble(), 0.9);
+    EXPECT_DOUBLE_EQ(cell(2, MemberTableModel::SortRole).toDouble(), 0.1);
+    // The tips say what the words mean.
+    EXPECT_TRUE(cell(1, Qt::ToolTipRole).toString().contains("median of the contour boxplot"))
+        << cell(1, Qt::ToolTipRole).toString().toStdString();
+    EXPECT_TRUE(cell(1, Qt::ToolTipRole).toString().contains("deepest"));
+    EXPECT_TRUE(cell(2, Qt::ToolTipRole).toString().contains("outlier of the contour boxplot"))
+        << cell(2, Qt::ToolTipRole).toString().toStdString();
+    EXPECT_TRUE(cell(2, Qt::ToolTipRole).toString().contains("lower fence"));
+    EXPECT_TRUE(cell(0, Qt::ToolTipRole).toString().startsWith("Inclusion depth of m0"))
+        << cell(0, Qt::ToolTipRole).toString().toStdString();
+    EXPECT_EQ(model.headerData(MemberTableModel::Depth, Qt::Horizontal, Qt::DisplayRole),
+              QStringLiteral("Depth"));
+    EXPECT_EQ(model.headerData(MemberTableModel::Depth, Qt::Horizontal, Qt::ToolTipRole),
+              QStringLiteral("Inclusion depth of the member's isosurface among the others "
+                             "(contour boxplot): 1 = most central, 0 = no surface; the deepest "
+                             "is the median"));
+
+    // Members without figures yet (a new ensemble): no depth, no median, no outlier.
+    s.setMembers(namesOnly({QStringLiteral("a"), QStringLiteral("b")}));
+    EXPECT_EQ(cell(0).toString(), QStringLiteral("-"));
+    EXPECT_FALSE(cell(0, MemberTableModel::SortRole).isValid()) << "unknown sorts last";
+    EXPECT_FALSE(s.hasBoxplot());
+    EXPECT_EQ(s.medianMember(), -1);
+}
+
+TEST(MemberTableModel, RefusesABoxplotOfOtherMembers) {
+    ui::MemberSelection s;
+    ui::MemberFigures f = figuresWithABoxplot();
+    f.depth.pop_back();
+    EXPECT_THROW(s.setMembers(f), std::invalid_argument);
+    f = figuresWithABoxplot();
+    f.median = 4;
+    EXPECT_THROW(s.setMembers(f), std::invalid_argument);
+    f = figuresWithABoxplot();
+    f.outliers = {-1};
+    EXPECT_THROW(s.setMembers(f), std::invalid_argument);
+}
+
+TEST(MemberFilterProxy, SortsByDepthAsNumbers) {
+    ui::MemberSelection s;
+    MemberTableModel model(&s);
+    ui::MemberFilterProxy proxy;
+    proxy.setSourceModel(&model);
+    s.setMembers(figuresWithABoxplot());
+    proxy.sort(MemberTableModel::Depth, Qt::DescendingOrder);
+    QList<int> order;
+    for (int r = 0; r < proxy.rowCount(); ++r) order << proxy.mapToSource(proxy.index(r, 0)).row();
+    // 0.9 above 0.45 above 0.100 above 1e-5; as text "1.00e-05" would come first.
+    EXPECT_EQ(order, (QList<int>{1, 0, 2, 3}));
+}
+
+TEST(MemberTableModel, TheCsvHasTheDepthAndTheMedianAndOutlierFlags) {
+    ui::MemberSelection s;
+    s.setMembers(figuresWithABoxplot());
+    const QStringList lines = ui::memberTableCsv(s).split(QStringLiteral("\r\n"));
+    ASSERT_GE(lines.size(), 5);
+    const QStringList header = lines[0].split(',');
+    const qsizetype depth = header.indexOf("depth");
+    const qsizetype median = header.indexOf("median");
+    const qsizetype outlier = header.indexOf("outlier");
+    ASSERT_GE(depth, 0) << lines[0].toStdString();
+    ASSERT_GE(median, 0) << lines[0].toStdString();
+    ASSERT_GE(outlier, 0) << lines[0].toStdString();
+    const std::vector<double> depths{0.45, 0.9, 0.1, 0.00001};
+    for (int m = 0; m < 4; ++m) {
+        const QStringList fields = lines[m + 1].split(',');
+        ASSERT_EQ(fields.size(), header.size()) << lines[m + 1].toStdString();
+        EXPECT_EQ(fields[depth].toDouble(), depths[static_cast<std::size_t>(m)])
+            << "full precision: " << fields[depth].toStdString();
+        EXPECT_EQ(fields[median], m == 1 ? "1" : "0") << m;
+        EXPECT_EQ(fields[outlier], m == 2 ? "1" : "0") << m;
+    }
+}
+
+TEST(MemberTablePanel, NamesAndDepthsStayReadableInASideDock) {
+    // ERA5's ten members in a panel as wide as the workbench's side dock (460 pixels): the names
+    // and the depth column with its words are shown whole, and every header's text fits.
+    ui::MemberSelection s;
+    ui::MemberTablePanel panel(&s);
+    panel.resize(450, 400);
+    panel.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
+    ui::MemberFigures f;
+    for (int m = 0; m < 10; ++m) {
+        f.names << QStringLiteral("member %1").arg(m);
+        f.distanceToMean.push_back(0.006396 + 1e-6 * m);
+        f.meanOutlyingness.push_back(0.3467 + 0.01 * m);
+        f.depth.push_back(0.95 - 0.001 * m);
+    }
+    f.median = 0;
+    f.outliers = {9};
+    s.setMembers(f);
+    QApplication::processEvents();
+    const QTableView* table = panel.table();
+    const QHeaderView* header = table->horizontalHeader();
+    const QFontMetrics metrics = table->fontMetrics();
+    EXPECT_GE(header->sectionSize(MemberTableModel::Name),
+              metrics.horizontalAdvance(QStringLiteral("member 0")))
+        << "the names are elided to nothing";
+    for (const int m : {0, 9}) {
+        const QString depth = panel.model()->index(m, MemberTableModel::Depth).data().toString();
+        EXPECT_GE(header->sectionSize(MemberTableModel::Depth), metrics.horizontalAdvance(depth))
+            << depth.toStdString();
+    }
+    for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+        const QString title =
+            panel.model()->headerData(c, Qt::Horizontal, Qt::DisplayRole).toString();
+        EXPECT_GE(header->sectionSize(c), header->fontMetrics().horizontalAdvance(title))
+            << title.toStdString();
+    }
+    EXPECT_LE(header->length(), table->viewport()->width()) << "no sideways scrolling";
+    // The column sorted by gets room for its arrow beside its title.
+    const int before = header->sectionSize(MemberTableModel::MeanOutlyingness);
+    panel.table()->sortByColumn(MemberTableModel::MeanOutlyingness, Qt::DescendingOrder);
+    EXPECT_GE(header->sectionSize(MemberTableModel::MeanOutlyingness),
+              header->sectionSizeHint(MemberTableModel::MeanOutlyingness));
+    EXPECT_GE(header->sectionSize(MemberTableModel::MeanOutlyingness), before) << "never narrower";
 }
 
 TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
@@ -217,11 +372,11 @@ TEST(MemberTableModel, TheNumberColumnAgreesWithTheNamesFromTheFile) {
     // are counted from 1.
     ui::MemberSelection s;
     MemberTableModel model(&s);
-    s.setMembers({{QStringLiteral("member 0"), QStringLiteral("member 9")}, {}, {}});
+    s.setMembers(namesOnly({QStringLiteral("member 0"), QStringLiteral("member 9")}));
     EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 0);
     EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 9);
     s.setMembers(
-        {{QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-02T00:00")}, {}, {}});
+        namesOnly({QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-02T00:00")}));
     EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);
     EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 2);
 }
