@@ -37,6 +37,7 @@ struct IsovalueResult {
     std::vector<double> depth;
     int medianMember = -1;
     std::vector<int> outliers;
+    std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;

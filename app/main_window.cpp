@@ -215,6 +215,8 @@ void MainWindow::createToolbar() {
     connect(m_session, &IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
     connect(m_session, &IsovalueSession::finished, this, &MainWindow::setIdle);
+    connect(m_session, &IsovalueSession::finished, this,
+            [this] { showFloor(m_model->state().render); });
     connect(m_session, &IsovalueSession::failed, this, &MainWindow::setIdle);
 }
 
@@ -544,8 +546,14 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
 
 void MainWindow::showFloor(const gl::RenderSettings& settings) {
     if (!m_overview) return;
-    m_view->renderer().setFloorMap(floorMapFor(*m_overview->ensemble, m_overview->moments->mean,
-                                               m_overview->columnMaxima, settings));
+    ColumnMaxima maxima = m_overview->columnMaxima;
+    // The probability's floor belongs to the isovalue shown.
+    if (const IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
+        maxima.exceedance = shown->exceedanceColumnMaximum;
+        maxima.isovalue = shown->meshes->isovalue;
+    }
+    m_view->renderer().setFloorMap(
+        floorMapFor(*m_overview->ensemble, m_overview->moments->mean, maxima, settings));
 }
 
 }  // namespace ensil::app

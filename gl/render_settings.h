@@ -51,9 +51,9 @@ struct CuttingPlane {
 };
 
 // What the box's floor shows (METHODS.md section 15): nothing, the mean's column maximum, the
-// mean at one level (RenderSettings::floorLevel, a grid index), or the column maximum of the
-// members' standard deviation (section 17).
-enum class FloorContent { None, ColumnMaximum, MeanAtLevel, SpreadMaximum };
+// mean at one level (RenderSettings::floorLevel, a grid index), the column maximum of the
+// members' standard deviation, or of the probability that the isovalue is exceeded (section 17).
+enum class FloorContent { None, ColumnMaximum, MeanAtLevel, SpreadMaximum, ProbabilityMaximum };
 
 // The gray surface drawn for context (METHODS.md section 17): the mean member's isosurface,
 // the contour boxplot's median member's, or where half the members exceed the isovalue.

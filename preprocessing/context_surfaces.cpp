@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_invoke.h>
 
+#include "preprocessing/column_maximum.h"
 #include "preprocessing/ensemble_statistics.h"
 
 namespace ensil::prep {
@@ -26,6 +27,8 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                          [&] { mesh(out.boxplot.bandInner, out.bandInner); },
                          [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
     data::throwIfStopped(stop);
+    out.exceedanceColumnMaximum =
+        computeColumnMaximum(ensemble.grid, {"exceedance", statistics.exceedance});
     data::report(progress, 1.0);
     return out;
 }

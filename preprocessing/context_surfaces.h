@@ -21,6 +21,9 @@ struct ContextSurfaces {
     data::PackedMesh bandInner;    // inside every member of the 50 % band
     data::PackedMesh bandOuter;    // inside any of them
     ContourBoxplot boxplot;
+    // The column maximum of P(f > c) (nx * ny, NaN where the column has no value): where any
+    // level is likely to exceed the isovalue, for the floor.
+    std::vector<float> exceedanceColumnMaximum;
 };
 
 // Meshes the three surfaces at options.isovalue, as the members' are meshed (decimated alike,

@@ -126,7 +126,7 @@ RenderPanel::RenderPanel(QWidget* parent)
     m_rims->setToolTip(settingHelp("rims"));
     sceneForm->addRow(m_rims);
     m_floor->addItems({tr("Nothing"), tr("Mean's column maximum"), tr("Mean at a level"),
-                       tr("Spread's column maximum")});
+                       tr("Spread's column maximum"), tr("Probability's column maximum")});
     m_floor->setToolTip(settingHelp("floor"));
     shapeBySetting(*m_floorLevel, "floor_level");
     m_floorLevel->setToolTip(settingHelp("floor_level"));

@@ -1,6 +1,8 @@
 #include "app/headless/floor_map.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
 
 #include "app/headless/picture_title.h"
 #include "preprocessing/column_maximum.h"
@@ -27,6 +29,18 @@ gl::FloorMap floorMapFor(const data::Ensemble& e, const data::Member& mean,
         case gl::FloorContent::ColumnMaximum:
             return gl::FloorMap::spanning(columnMaxima.mean,
                                           QString::fromStdString(floorCaption(e)));
+        case gl::FloorContent::ProbabilityMaximum: {
+            if (columnMaxima.exceedance.size() != e.grid.nx() * e.grid.ny()) return {};
+            // A probability keeps its own scale, 0 to 1, whatever the values in view.
+            gl::FloorMap map;
+            map.values = columnMaxima.exceedance;
+            std::array<char, 32> isovalue{};
+            std::snprintf(isovalue.data(), isovalue.size(), "%.4g", columnMaxima.isovalue);
+            map.caption = QString::fromStdString("floor: column maximum of P(" + e.variable +
+                                                 " > " + isovalue.data() +
+                                                 (e.units.empty() ? "" : " " + e.units) + ")");
+            return map;
+        }
         case gl::FloorContent::SpreadMaximum:
             return gl::FloorMap::spanning(
                 columnMaxima.spread,

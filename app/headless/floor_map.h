@@ -15,6 +15,9 @@ namespace ensil::app {
 struct ColumnMaxima {
     std::vector<float> mean;    // of the mean member
     std::vector<float> spread;  // of the members' sample standard deviation (METHODS.md s. 17)
+    // Of P(f > c) at `isovalue`: per isovalue, set by the caller (empty before the first).
+    std::vector<float> exceedance;
+    float isovalue = 0.0F;
 };
 // Throws data::Cancelled.
 ColumnMaxima computeColumnMaxima(const data::Ensemble& ensemble, const data::Member& mean,

@@ -61,6 +61,7 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         stop, [&](double f) { data::report(progress, 0.75 + 0.05 * f); });
     prep::addContextSurfaces(out.meshes, context);
     out.boxplot = std::move(context.boxplot);
+    out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
     out.seconds["context_surfaces"] = since(start);
     start = Clock::now();
     out.distances =

@@ -40,6 +40,7 @@ struct IsovalueOutcome {
     // The contour boxplot (METHODS.md section 17): depths, median member, band and outliers;
     // its surfaces are in `meshes`.
     prep::ContourBoxplot boxplot;
+    std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
     bool fromCache = false;
     // Why the results could not be stored in the cache (a read-only folder, a full disk);
     // empty when they were, or when there is no cache.

@@ -65,8 +65,10 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     renderer.setViewSize(request.width, request.height);
     renderer.setGrid(ensemble.grid);
     renderer.setVerticalExaggeration(state.verticalExaggeration);
-    renderer.setFloorMap(floorMapFor(ensemble, moments.mean,
-                                     computeColumnMaxima(ensemble, moments.mean), state.render));
+    ColumnMaxima maxima = computeColumnMaxima(ensemble, moments.mean);
+    maxima.exceedance = outcome.exceedanceColumnMaximum;
+    maxima.isovalue = iso;
+    renderer.setFloorMap(floorMapFor(ensemble, moments.mean, maxima, state.render));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;

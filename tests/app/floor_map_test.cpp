@@ -50,3 +50,26 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
     EXPECT_EQ(floor.values, maxima.spread);
     EXPECT_TRUE(floor.caption.contains("standard deviation of t [K]")) << floor.caption.toStdString();
 }
+
+TEST(FloorMap, TheProbabilityFloorKeepsTheScaleOfAProbabilityAndSaysItsIsovalue) {
+    data::Ensemble e;
+    e.variable = "t";
+    e.units = "K";
+    e.grid = data::Grid(data::makeUniformAxis("x", "m", 0, 1, 2),
+                        data::makeUniformAxis("y", "m", 0, 1, 2),
+                        data::makeUniformAxis("z", "m", 0, 1, 2));
+    app::ColumnMaxima maxima;
+    gl::RenderSettings settings;
+    settings.floor = gl::FloorContent::ProbabilityMaximum;
+    const data::Member mean{"mean", data::FieldValues(8, 1.0F)};
+    EXPECT_TRUE(app::floorMapFor(e, mean, maxima, settings).values.empty())
+        << "no isovalue yet: no floor";
+    maxima.exceedance = {0.2F, 0.4F, 0.4F, 0.6F};
+    maxima.isovalue = 273.15F;
+    const gl::FloorMap floor = app::floorMapFor(e, mean, maxima, settings);
+    EXPECT_EQ(floor.values, maxima.exceedance);
+    // 0 to 1, not the values' own 0.2 to 0.6: a probability of 0.6 must not look certain.
+    EXPECT_EQ(floor.minimum, 0.0F);
+    EXPECT_EQ(floor.maximum, 1.0F);
+    EXPECT_EQ(floor.caption, QStringLiteral("floor: column maximum of P(t > 273.1 K)"));
+}

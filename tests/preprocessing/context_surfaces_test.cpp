@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "fixtures.h"
+#include "preprocessing/column_maximum.h"
+#include "preprocessing/ensemble_statistics.h"
 
 using namespace ensil;
 
@@ -64,6 +66,12 @@ TEST(ContextSurfaces, LieWhereTheDefinitionsPutThemOnNestedSpheres) {
         EXPECT_GT(lo, radius - kStep);
         EXPECT_LT(hi, radius + kStep);
     }
+
+    // The floor's column maximum of P(f > 8): of the exceedance the statistics give.
+    const prep::EnsembleStatistics statistics = prep::computeEnsembleStatistics(e, 8.0F);
+    EXPECT_EQ(s.exceedanceColumnMaximum,
+              prep::computeColumnMaximum(e.grid, {"P", statistics.exceedance}));
+    ASSERT_EQ(s.exceedanceColumnMaximum.size(), 32u * 32u);
 
     data::MeshSet set;
     prep::addContextSurfaces(set, s);

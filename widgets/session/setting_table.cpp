@@ -13,8 +13,8 @@ namespace {
 constexpr std::array<std::string_view, 4> kModes{"shaded", "spaghetti", "surfaces", "opaque"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 // In gl::FloorContent's order.
-constexpr std::array<std::string_view, 4> kFloorContents{"none", "column-maximum", "mean-at-level",
-                                                         "spread-maximum"};
+constexpr std::array<std::string_view, 5> kFloorContents{
+    "none", "column-maximum", "mean-at-level", "spread-maximum", "probability-maximum"};
 // In gl::ContextSurface's order.
 constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "probability"};
 // In prep::Linkage's order.
@@ -165,8 +165,9 @@ const std::array<Setting, 29> kSettings{{
     {"floor", SettingKind::Choice, "rendering.floor.content", "floor", "rendering/floor", "Floor",
      "",
      "What the box's floor shows: nothing, the mean's column maximum, the mean at a level, or "
-     "the column maximum of the members' standard deviation",
-     0, 3, 0, 1, kFloorContents,
+     "the column maximum of the members' standard deviation or of the probability of exceeding "
+     "the isovalue",
+     0, 4, 0, 1, kFloorContents,
      [](const SessionState& s) { return static_cast<double>(s.render.floor); },
      [](SessionState& s, double v) { s.render.floor = static_cast<gl::FloorContent>(v); }},
     {"floor_level",
