@@ -8,16 +8,24 @@
 
 using namespace ensil;
 
-TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
-    // Three members on x = 0, 1 and two levels (the two rows alike). Column x = 0: level 0 holds 1, 2, 3
-    // (sample sd 1), level 1 holds 0, 0, 6 (mean 2, sd sqrt((4 + 4 + 16) / 2) = sqrt(12));
-    // column x = 1: level 0 holds 5, 5, 5 (sd 0), level 1 holds 1, NaN, 3 (sd sqrt(2)).
+namespace {
+// t in K on a 2 x 2 x 2 grid, members to be added.
+data::Ensemble temperaturesOnACube() {
     data::Ensemble e;
     e.variable = "t";
     e.units = "K";
     e.grid = data::Grid(data::makeUniformAxis("x", "m", 0, 1, 2),
                         data::makeUniformAxis("y", "m", 0, 1, 2),
                         data::makeUniformAxis("z", "m", 0, 1, 2));
+    return e;
+}
+}  // namespace
+
+TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
+    // Three members on x = 0, 1 and two levels (the two rows alike). Column x = 0: level 0 holds 1, 2, 3
+    // (sample sd 1), level 1 holds 0, 0, 6 (mean 2, sd sqrt((4 + 4 + 16) / 2) = sqrt(12));
+    // column x = 1: level 0 holds 5, 5, 5 (sd 0), level 1 holds 1, NaN, 3 (sd sqrt(2)).
+    data::Ensemble e = temperaturesOnACube();
     const float nan = std::nanf("");
     // Per member, its value at (x, z); both rows y = 0 and y = 1 alike.
     const float value[3][2][2] = {{{1, 0}, {5, 1}}, {{2, 0}, {5, nan}}, {{3, 6}, {5, 3}}};
@@ -52,12 +60,7 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
 }
 
 TEST(FloorMap, TheProbabilityFloorKeepsTheScaleOfAProbabilityAndSaysItsIsovalue) {
-    data::Ensemble e;
-    e.variable = "t";
-    e.units = "K";
-    e.grid = data::Grid(data::makeUniformAxis("x", "m", 0, 1, 2),
-                        data::makeUniformAxis("y", "m", 0, 1, 2),
-                        data::makeUniformAxis("z", "m", 0, 1, 2));
+    data::Ensemble e = temperaturesOnACube();
     app::ColumnMaxima maxima;
     gl::RenderSettings settings;
     settings.floor = gl::FloorContent::ProbabilityMaximum;
