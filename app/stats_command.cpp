@@ -397,14 +397,8 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         file.range = stats.range;
         file.exceedance = stats.exceedance;
         file.levelCrossing = stats.levelCrossing;
-        const std::pair<const char*, std::span<const float>> fields[] = {
-            {"mean", file.mean},          {"stddev", file.stddev},
-            {"min", file.minimum},        {"max", file.maximum},
-            {"range", file.range},        {"exceedance_probability", file.exceedance},
-            {"member_count", file.count}, {"level_crossing_probability", file.levelCrossing},
-        };
-        for (const auto& [name, values] : fields) {
-            r.fields.emplace_back(QLatin1String(name), finiteRange(values));
+        for (const data::StatisticsField& field : data::statisticsFields(file)) {
+            r.fields.emplace_back(QLatin1String(field.name), finiteRange(field.values));
         }
 
         stage.restart();

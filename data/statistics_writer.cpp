@@ -29,36 +29,6 @@ std::string joined(const std::vector<std::string>& parts, const std::string& sep
     return text;
 }
 
-// One float variable of the file: its name, values, units and long_name, and the CF cell
-// method over the members that made it (empty for counts and probabilities).
-struct Field {
-    const char* name;
-    std::span<const float> values;
-    std::string units;
-    std::string longName;
-    std::string cellMethods;
-    bool onCells = false;
-};
-
-std::vector<Field> fieldsOf(const StatisticsFile& f) {
-    const std::string of = " of " + f.variable;
-    const std::string over = (f.memberAxis.empty() ? "realization" : f.memberAxis) + ": ";
-    const std::string value = numberText(f.isovalue) + (f.units.empty() ? "" : " " + f.units);
-    return {
-        {"mean", f.mean, f.units, "ensemble mean" + of, over + "mean"},
-        {"stddev", f.stddev, f.units, "ensemble standard deviation" + of + " (sample, n - 1)",
-         over + "standard_deviation"},
-        {"min", f.minimum, f.units, "ensemble minimum" + of, over + "minimum"},
-        {"max", f.maximum, f.units, "ensemble maximum" + of, over + "maximum"},
-        {"range", f.range, f.units, "ensemble range" + of + " (max - min)", over + "range"},
-        {"exceedance_probability", f.exceedance, "1",
-         "probability that " + f.variable + " exceeds " + value, ""},
-        {"member_count", f.count, "1", "number of members with a finite value" + of, ""},
-        {"level_crossing_probability", f.levelCrossing, "1",
-         "probability that the " + f.variable + " = " + value + " isosurface crosses the cell", "",
-         true},
-    };
-}
 
 // The variable the data variables' grid_mapping attribute names: "crs", unless an axis took
 // that name.
@@ -104,9 +74,9 @@ void writeFile(const StatisticsFile& f, const NetcdfOutput& nc) {
     const std::array<int, 3> pointDims{points[2].dimension, points[1].dimension,
                                        points[0].dimension};
     const std::array<int, 3> cellDims{cells[2].dimension, cells[1].dimension, cells[0].dimension};
-    const std::vector<Field> fields = fieldsOf(f);
+    const std::vector<StatisticsField> fields = statisticsFields(f);
     std::vector<int> ids;
-    for (const Field& field : fields) {
+    for (const StatisticsField& field : fields) {
         int var = -1;
         nc.check(nc_def_var(nc.id(), field.name, NC_FLOAT, 3,
                             field.onCells ? cellDims.data() : pointDims.data(), &var),
@@ -148,6 +118,26 @@ void writeFile(const StatisticsFile& f, const NetcdfOutput& nc) {
 
 }  // namespace
 
+std::vector<StatisticsField> statisticsFields(const StatisticsFile& f) {
+    const std::string of = " of " + f.variable;
+    const std::string over = (f.memberAxis.empty() ? "realization" : f.memberAxis) + ": ";
+    const std::string value = numberText(f.isovalue) + (f.units.empty() ? "" : " " + f.units);
+    return {
+        {"mean", f.mean, f.units, "ensemble mean" + of, over + "mean"},
+        {"stddev", f.stddev, f.units, "ensemble standard deviation" + of + " (sample, n - 1)",
+         over + "standard_deviation"},
+        {"min", f.minimum, f.units, "ensemble minimum" + of, over + "minimum"},
+        {"max", f.maximum, f.units, "ensemble maximum" + of, over + "maximum"},
+        {"range", f.range, f.units, "ensemble range" + of + " (max - min)", over + "range"},
+        {"exceedance_probability", f.exceedance, "1",
+         "probability that " + f.variable + " exceeds " + value, ""},
+        {"member_count", f.count, "1", "number of members with a finite value" + of, ""},
+        {"level_crossing_probability", f.levelCrossing, "1",
+         "probability that the " + f.variable + " = " + value + " isosurface crosses the cell", "",
+         true},
+    };
+}
+
 std::string cellDimensionName(const Axis& axis) { return axis.name + "_cell"; }
 
 std::vector<double> cellCentres(const Axis& axis) {
@@ -164,7 +154,7 @@ void writeStatisticsNetcdf(const StatisticsFile& file, const std::string& path) 
         throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': the grid is empty");
     }
     const std::size_t cells = (grid.nx() - 1) * (grid.ny() - 1) * (grid.nz() - 1);
-    for (const Field& field : fieldsOf(file)) {
+    for (const StatisticsField& field : statisticsFields(file)) {
         const std::size_t expected = field.onCells ? cells : grid.pointCount();
         if (field.values.size() != expected) {
             throw Error(ErrorKind::InvalidArgument,

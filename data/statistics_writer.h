@@ -41,6 +41,20 @@ struct StatisticsFile {
     std::span<const float> levelCrossing;
 };
 
+// One float variable of the file: its name, values, units and long_name, and the CF cell
+// method over the members that made it (empty for counts and probabilities).
+struct StatisticsField {
+    const char* name;
+    std::span<const float> values;
+    std::string units;
+    std::string longName;
+    std::string cellMethods;
+    bool onCells = false;  // on the cell grid (the level-crossing probability)
+};
+
+// Every variable the file holds, in the order written: the one table of names and attributes.
+std::vector<StatisticsField> statisticsFields(const StatisticsFile& file);
+
 // The name of the dimension and coordinate variable of cell centres along an axis: "lon_cell".
 std::string cellDimensionName(const Axis& axis);
 
