@@ -18,6 +18,10 @@ packages=(
     libxxhash-dev
     # map projections (CF grid mappings: rotated pole, Lambert, stereographic, Mercator)
     libproj-dev
+    # GRIB 1 and 2 (ECMWF's and NCEP's native format) and its command-line tools
+    libeccodes-dev libeccodes-tools
+    # the Python module (pybind11) and its tests (pytest, NumPy)
+    pybind11-dev python3-dev python3-pytest python3-numpy
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
     # the libFuzzer targets (tests/fuzz/, the fuzz preset): clang 14 and its libFuzzer runtime
