@@ -74,6 +74,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             r.tree = std::move(outcome.tree);
             r.distancesToMean = std::move(outcome.distancesToMean);
             r.exceedanceColumnMaximum = std::move(outcome.exceedanceColumnMaximum);
+            r.exceedance = std::move(outcome.exceedance);
             r.meanOutlyingness = std::move(outcome.meanOutlyingness);
             r.depth = std::move(outcome.boxplot.depth);
             if (!r.depth.empty()) r.medianMember = static_cast<int>(outcome.boxplot.median);

@@ -38,6 +38,7 @@ struct IsovalueResult {
     int medianMember = -1;
     std::vector<int> outliers;
     std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
+    std::shared_ptr<const data::FieldValues> exceedance;  // P(f > c), for a section
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;

@@ -215,8 +215,10 @@ void MainWindow::createToolbar() {
     connect(m_session, &IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
     connect(m_session, &IsovalueSession::finished, this, &MainWindow::setIdle);
-    connect(m_session, &IsovalueSession::finished, this,
-            [this] { showFloor(m_model->state().render); });
+    connect(m_session, &IsovalueSession::finished, this, [this] {
+        showFloor(m_model->state().render);
+        showSection();
+    });
     connect(m_session, &IsovalueSession::failed, this, &MainWindow::setIdle);
 }
 
@@ -418,6 +420,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     renderer.setGrid(e.grid);
     // The map spans its own range: the mean's column maxima cover only part of the values.
     showFloor(m_model->state().render);
+    m_lastHoveredMember = -1;
+    showSection();
     renderer.setMapLines(m_overview->mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));

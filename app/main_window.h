@@ -134,6 +134,9 @@ protected:
 private:
     // The floor map the rendering settings ask for (none, column maximum, mean at a level).
     void showFloor(const gl::RenderSettings& settings);
+    // The field the cutting plane's cut face shows (main_window_section.cpp): given to the
+    // renderer when the field, its member or its isovalue changes.
+    void showSection();
     // The screenshot dialog's first suggestion: the picture's facts as a file name.
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.
@@ -232,6 +235,18 @@ private:
     QString m_projectPath;
     QMenu* m_recentProjectsMenu = nullptr;
     std::function<QString(const QString&)> m_locateMissingFile;
+    // What the cut face shows now, so that it is rebuilt only when that changes.
+    struct ShownSection {
+        gl::SectionField field = gl::SectionField::None;
+        int member = -1;
+        const void* exceedance = nullptr;
+        const void* overview = nullptr;
+        bool operator==(const ShownSection&) const = default;
+    };
+    ShownSection m_shownSection;
+    // The member last hovered: a member section keeps showing it while the cursor moves on to
+    // the section to read its values.
+    int m_lastHoveredMember = -1;
 };
 
 }  // namespace ensil::app

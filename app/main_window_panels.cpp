@@ -100,8 +100,10 @@ void MainWindow::linkPanels() {
     // The place, level and values under the cursor, in the tooltip and the status bar.
     m_view->setHoverDescriber([this](const gl::PickResult& hit) {
         if (!m_overview) return QString();
+        const gl::Renderer& renderer = m_view->renderer();
         const PointContext context{m_overview->ensemble.get(), &m_overview->moments->mean,
-                                   m_mapProjection.get(), &m_view->renderer().frame()};
+                                   m_mapProjection.get(), &renderer.frame(),
+                                   renderer.sectionShown() ? &renderer.sectionVolume() : nullptr};
         return describePoint(context, hit);
     });
     connect(m_view, &ui::SilhouetteView::hoverDescribed, m_pointText, &QLabel::setText);
@@ -111,6 +113,7 @@ void MainWindow::showSelectionInView() {
     gl::Renderer& renderer = m_view->renderer();
     renderer.setAppearance(m_selection->appearance());
     renderer.setHighlightedMember(m_selection->hovered());
+    showSection();
     m_view->update();
 }
 

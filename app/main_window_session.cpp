@@ -82,6 +82,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         }
         renderer.settings() = s.render;
         m_renderPanel->setSettings(s.render);
+        showSection();
     }
     if (parts & SessionPart::Plane) {
         m_planePanel->setPlane(s.render.plane);

@@ -65,6 +65,14 @@ QString describePoint(const PointContext& c, const gl::PickResult& hit) {
             .arg(place(c, index), level(e.grid.z(), index.z), variable, value(member, units),
                  value(mean, units));
     }
+    if (hit.section && c.section != nullptr &&
+        c.section->values.size() == e.grid.pointCount()) {
+        const glm::dvec3 index = c.frame->displayToIndex(*hit.section);
+        const float v = data::sampleTrilinear(e.grid, c.section->values, index);
+        return QStringLiteral("%1 \u00b7 %2 \u00b7 %3 %4")
+            .arg(place(c, index), level(e.grid.z(), index.z), c.section->quantity,
+                 value(v, c.section->units.toStdString()));
+    }
     if (hit.floor) {
         glm::dvec3 index = c.frame->displayToIndex(*hit.floor);
         // The floor map: the mean's largest value in the column.

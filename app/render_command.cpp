@@ -65,7 +65,7 @@ const session::SettingOptions& sceneOptions() {
         "axis_labels", "legend",          "plane_thickness", "coastlines",
         "borders",     "graticule",       "mean_opacity",    "title",
         "floor",       "floor_level",     "rims",            "context",
-        "band"};
+        "band",        "section"};
     return options;
 }
 
@@ -155,6 +155,20 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
         }
         state.render.plane.enabled = true;
         request.planeAcrossBox = glm::vec4(normal, static_cast<float>((*p)[3]));
+    }
+    // A fill nothing would show is refused rather than drawn as an empty face.
+    const QString fill = QString::fromStdString(
+        session::setting("section").format(static_cast<double>(state.render.plane.fill)));
+    if (state.render.plane.fill != gl::SectionField::None && !state.render.plane.enabled) {
+        problem = QStringLiteral("--section %1 needs --plane: it fills the plane's cut face")
+                      .arg(fill);
+        return std::nullopt;
+    }
+    if (state.render.plane.fill == gl::SectionField::Member) {
+        problem = QStringLiteral(
+            "--section member shows the first selected member, and the command line selects "
+            "none: select members in the workbench, save a project (.ensil) and render it");
+        return std::nullopt;
     }
     return state;
 }

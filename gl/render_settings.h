@@ -12,6 +12,11 @@ namespace ensil::gl {
 // OpaqueSurfaces draws every member as a solid lit isosurface (a reference; occludes).
 enum class RenderMode { ShadedSilhouettes, Spaghetti, Surfaces, OpaqueSurfaces };
 
+// What the cutting plane's cut face is filled with (METHODS.md section 18): nothing but a faint
+// tint, the values of the hovered (else the first selected) member, the mean, the members'
+// sample standard deviation, or the probability P(f > c) of exceeding the isovalue.
+enum class SectionField { None, Member, Mean, StandardDeviation, Probability };
+
 // A plane that cuts the scene (METHODS.md section 11): points p with dot(normal, p) > offset,
 // in display space, are removed when they lie on the viewer's side; where each member's
 // isosurface crosses the plane, its intersection curve is drawn `thickness` wide.
@@ -20,6 +25,7 @@ struct CuttingPlane {
     glm::vec3 normal{0.0F, 0.0F, 1.0F};  // unit length, display space
     float offset = 0.0F;                 // display units
     float thickness = 0.004F;            // eps, display units
+    SectionField fill = SectionField::None;  // the cut face, coloured with a colour bar
 
     // The plane with this normal through the given display-space point.
     static CuttingPlane through(const glm::vec3& normal, const glm::vec3& point) {

@@ -57,6 +57,7 @@ void Renderer::initialize() {
     // Compile now so a broken shader is reported at start-up, not at the first frame.
     gpu->shaders.program(QStringLiteral("lines"));
     gpu->shaders.program(QStringLiteral("floor_map"));
+    gpu->shaders.program(QStringLiteral("section"));
     gpu->shaders.program(QStringLiteral("map_lines"), kMapLineShaderFiles);
     gpu->shaders.program(QStringLiteral("surface"));
     gpu->shaders.program(QStringLiteral("composite"));
@@ -92,9 +93,12 @@ void Renderer::initialize() {
 
     f.glGenTextures(1, &gpu->floorTexture);
     f.glGenTextures(1, &gpu->axisTables);
+    f.glGenTextures(1, &gpu->sectionTexture);
+    f.glGenTextures(1, &gpu->sectionIndexTables);
     f.glGenVertexArrays(1, &gpu->emptyVao);
     m_gpu = std::move(gpu);
     m_floorDirty = true;
+    m_sectionDirty = true;
     m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;
@@ -111,6 +115,8 @@ void Renderer::releaseGpuResources() {
     f.glDeleteBuffers(1, &m_gpu->mapLinesVbo);
     f.glDeleteTextures(1, &m_gpu->floorTexture);
     f.glDeleteTextures(1, &m_gpu->axisTables);
+    f.glDeleteTextures(1, &m_gpu->sectionTexture);
+    f.glDeleteTextures(1, &m_gpu->sectionIndexTables);
     f.glDeleteVertexArrays(1, &m_gpu->emptyVao);
     m_gpu->meshes.release(f);
     m_gpu->targets.release(f);
@@ -164,8 +170,12 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     if (m_scene.settings.showLegend && m_scene.hasGrid &&
         m_scene.floor.values.size() == m_scene.grid.nx() * m_scene.grid.ny() &&
         !m_scene.floor.caption.isEmpty()) {
-        in.floorScale =
-            ColourScale{m_scene.floor.caption, m_scene.floor.minimum, m_scene.floor.maximum};
+        in.colourScales.push_back(
+            ColourScale{m_scene.floor.caption, m_scene.floor.minimum, m_scene.floor.maximum});
+    }
+    if (m_scene.settings.showLegend && sectionShown() && !m_scene.section.quantity.isEmpty()) {
+        in.colourScales.push_back(ColourScale{m_scene.section.caption(), m_scene.section.minimum,
+                                              m_scene.section.maximum});
     }
     in.background = glm::vec3(m_background);
     return computeOverlay(in);
@@ -208,7 +218,7 @@ void Renderer::frameTheBox() {
             const QRectF labelled =
                 box.adjusted(-room.axisLabels, 0.0, room.axisLabels, room.axisLabels);
             return places.legend.intersects(labelled) || places.colourBar.intersects(labelled) ||
-                   (shown.floorScale && places.colourBar.isEmpty());
+                   (!shown.colourScales.empty() && places.colourBar.isEmpty());
         };
         if (covered()) {
             const auto region = [&](double right, double bottom) {
@@ -348,11 +358,13 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     f.glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (m_scene.hasGrid) {
         if (m_floorDirty) uploadFloorMap();
+        if (m_sectionDirty) uploadSectionVolume();
         if (m_mapLinesDirty) uploadMapLines();
         if (m_axisTablesDirty) uploadAxisTables();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const glm::mat4 viewProjection = m_scene.camera.viewProjection(aspect);
         drawFloorAndBox(viewProjection);
+        drawSection(viewProjection);
         drawMeshes(viewProjection, sceneWidth, sceneHeight);
         if (m_scene.settings.plane.enabled) drawPlaneOutline(viewProjection);
     }
@@ -482,9 +494,11 @@ void Renderer::drawPlaneOutline(const glm::mat4& viewProjection) {
     f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     f.glDepthMask(GL_FALSE);
     // Where the plane lies, faintly: the surfaces behind it stay readable; its outline says
-    // where it meets the box.
-    lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.08F);
-    f.glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(polygon.size()));
+    // where it meets the box. A filled face (drawSection) needs no tint.
+    if (!sectionShown()) {
+        lines.setUniformValue("u_color", kPlaneColor.r, kPlaneColor.g, kPlaneColor.b, 0.08F);
+        f.glDrawArrays(GL_TRIANGLE_FAN, 0, static_cast<GLsizei>(polygon.size()));
+    }
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
     f.glBindVertexArray(0);

@@ -48,6 +48,9 @@ struct PickResult {
     // Where the view ray through the pixel meets the box's floor, in display space (none when
     // it misses the floor): what the floor map shows there.
     std::optional<glm::vec3> floor;
+    // Where it meets the filled cut face (Renderer::sectionShown), in display space. A member
+    // hidden behind the face is not picked.
+    std::optional<glm::vec3> section;
 };
 
 // A 2D field drawn on the box floor: nx * ny values (x fastest), NaN where missing.
@@ -60,6 +63,23 @@ struct FloorMap {
 
     // A map whose colour range spans its own valid values.
     static FloorMap spanning(std::vector<float> values, QString caption = {});
+};
+
+// A 3D field the cutting plane's cut face shows (CuttingPlane::fill): one value per grid point
+// (x fastest), NaN where missing, coloured over [minimum, maximum] with a colour bar.
+struct SectionVolume {
+    std::vector<float> values;
+    float minimum = 0.0F;
+    float maximum = 1.0F;
+    // What a value is ("standard deviation of z", "P(t > 260 K)") and its units (empty for a
+    // probability), for the colour bar and the value under the cursor.
+    QString quantity;
+    QString units;
+    // The colour bar's caption: "section: standard deviation of z [m2 s-2]".
+    [[nodiscard]] QString caption() const {
+        return QStringLiteral("section: ") + quantity +
+               (units.isEmpty() ? QString() : QStringLiteral(" [") + units + QStringLiteral("]"));
+    }
 };
 
 class Renderer {
@@ -139,6 +159,14 @@ public:
     // The grid frames the scene; setting it refits the camera.
     void setGrid(const data::Grid& grid);
     void setFloorMap(FloorMap map);
+    // The field the cut face shows when the plane is on and its fill is not None.
+    void setSectionVolume(SectionVolume volume);
+    [[nodiscard]] const SectionVolume& sectionVolume() const { return m_scene.section; }
+    // Whether the cut face is filled with the section volume in the next frame.
+    [[nodiscard]] bool sectionShown() const;
+    // The section volume's value at a display-space point (trilinear, NaN where missing or
+    // when no section is shown): what the cut face shows there.
+    [[nodiscard]] float sectionValueAt(const glm::vec3& display) const;
     // Coastlines, borders and graticule on the floor, in the grid's axis coordinates (from
     // geo::mapLinesFor, for the grid set here); each kind drawn as RenderSettings says. Null
     // or empty: none.
@@ -189,6 +217,10 @@ public:
     // the context's gray; its outer surface fainter than its inner one.
     static constexpr glm::vec3 kBandColor{0.70F, 0.80F, 0.95F};
     static constexpr float kBandOuterAlpha = 0.12F;
+    // The filled cut face lies this many curve widths eps behind the plane: the curves are
+    // drawn where a surface is within eps of it, and filtered over up to another eps where
+    // the surface is seen edge-on, so all of each curve stays in front of the face.
+    static constexpr float kSectionFaceBehind = 2.5F;
     static constexpr float kBandInnerAlpha = 0.22F;
 
 private:
@@ -218,6 +250,9 @@ private:
     void configureSurfaceProgram(QOpenGLShaderProgram& program, const glm::mat4& viewProjection,
                                  glm::ivec2 viewport, bool pick);
     void drawMemberPass(SurfacePrograms& programs, MemberPass pass);
+    // The cutting plane with its normal turned to the viewer: the half it removes is
+    // dot(normal, p) > offset.
+    [[nodiscard]] CuttingPlane planeFacingViewer() const;
     // The cutting plane's uniforms (u_planeEnabled, u_plane), its normal turned to the viewer.
     void setPlaneUniforms(QOpenGLShaderProgram& program) const;
     // Whether the contour boxplot counts this member an outlier.
@@ -256,6 +291,11 @@ private:
     void drawFloorAndBox(const glm::mat4& viewProjection);
     // The cutting plane itself: its cut through the box as a faint fill with an outline.
     void drawPlaneOutline(const glm::mat4& viewProjection);
+    // The cut face filled with the section volume (renderer_section.cpp), before the members
+    // so that their curves on the plane are drawn over it.
+    void uploadSectionVolume();
+    void uploadSectionIndexTables();
+    void drawSection(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
     void present(unsigned framebuffer, int width, int height);
 
@@ -266,6 +306,7 @@ private:
         data::DisplayFrame frame;
         Camera camera;
         FloorMap floor;
+        SectionVolume section;
         std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
         std::shared_ptr<const data::MeshSet> meshes;
         std::vector<MemberAppearance> appearance;
@@ -280,6 +321,7 @@ private:
     Scene m_scene;
     // What has changed in the scene since it was last uploaded.
     bool m_floorDirty = false;
+    bool m_sectionDirty = false;
     bool m_mapLinesDirty = false;
     bool m_axisTablesDirty = false;
     bool m_meshesDirty = false;

@@ -38,6 +38,11 @@ struct Renderer::Gpu {
     // The segments of each geo::MapLineKind, in order: first vertex and vertex count.
     std::array<glm::ivec2, 3> mapLineRanges{};
     glm::ivec2 floorSize{0};
+    // The section volume, normalised to [0, 1] (negative: missing), and per axis the grid
+    // index at evenly spaced display coordinates (kSectionIndexSamples across the box).
+    GLuint sectionTexture = 0;
+    GLuint sectionIndexTables = 0;
+    bool sectionUploaded = false;
     GLuint axisTables = 0;  // row a: the display coordinate of every grid index along axis a
     glm::ivec3 axisSize{0};
     GpuMeshCache meshes;

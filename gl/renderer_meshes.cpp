@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vector_relational.hpp>
 #include <limits>
 
 #include "gl/palette.h"
@@ -70,6 +71,7 @@ void Renderer::uploadAxisTables() {
                    texels.data());
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     f.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    uploadSectionIndexTables();  // the inverse of the same mapping
 }
 
 void Renderer::uploadMeshesIfChanged() {
@@ -155,22 +157,26 @@ void Renderer::setAxisTableUniforms(QOpenGLShaderProgram& program) {
     f.glActiveTexture(GL_TEXTURE0);
 }
 
-void Renderer::setPlaneUniforms(QOpenGLShaderProgram& program) const {
-    // The plane's normal is turned towards the viewer, so the shaders discard n.p > offset.
-    const CuttingPlane& plane = m_scene.settings.plane;
-    glm::vec3 normal = plane.normal;
-    float offset = plane.offset;
+CuttingPlane Renderer::planeFacingViewer() const {
+    CuttingPlane plane = m_scene.settings.plane;
     const glm::vec3 eye = m_scene.camera.eye();
     const glm::vec3 viewerPoint =
         m_scene.camera.projection() == Camera::Projection::Orthographic
             ? m_scene.camera.target() - 1e3F * glm::normalize(m_scene.camera.target() - eye)
             : eye;
-    if (glm::dot(normal, viewerPoint) < offset) {
-        normal = -normal;
-        offset = -offset;
+    if (glm::dot(plane.normal, viewerPoint) < plane.offset) {
+        plane.normal = -plane.normal;
+        plane.offset = -plane.offset;
     }
+    return plane;
+}
+
+void Renderer::setPlaneUniforms(QOpenGLShaderProgram& program) const {
+    // The plane's normal is turned towards the viewer, so the shaders discard n.p > offset.
+    const CuttingPlane plane = planeFacingViewer();
     program.setUniformValue("u_planeEnabled", plane.enabled);
-    program.setUniformValue("u_plane", normal.x, normal.y, normal.z, offset);
+    program.setUniformValue("u_plane", plane.normal.x, plane.normal.y, plane.normal.z,
+                            plane.offset);
 }
 
 glm::vec3 Renderer::memberColour(std::size_t member, const MemberAppearance& a,
@@ -546,6 +552,28 @@ PickResult Renderer::pick(int x, int y, int radius) {
         if (t >= 0.0F && t <= 1.0F && onFloor.x >= lo.x && onFloor.x <= hi.x && onFloor.y >= lo.y &&
             onFloor.y <= hi.y) {
             result.floor = onFloor;
+        }
+    }
+    if (sectionShown()) {
+        // The filled cut face: where the ray meets the plane inside the box. A surface behind
+        // the face (by more than the curves' width) is hidden by it, so not picked.
+        const CuttingPlane plane = planeFacingViewer();
+        const float along = glm::dot(plane.normal, farPoint - nearPoint);
+        if (std::abs(along) > 1e-9F) {
+            const float t = (plane.offset - glm::dot(plane.normal, nearPoint)) / along;
+            const glm::vec3 onPlane = nearPoint + t * (farPoint - nearPoint);
+            const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
+            const glm::vec3 slack(1e-5F);
+            if (t >= 0.0F && t <= 1.0F && glm::all(glm::greaterThanEqual(onPlane, lo - slack)) &&
+                glm::all(glm::lessThanEqual(onPlane, hi + slack))) {
+                result.section = onPlane;
+                if (result.surface && glm::dot(plane.normal, *result.surface) <
+                                          plane.offset - kSectionFaceBehind * plane.thickness) {
+                    result.member = -1;
+                    result.cluster = -1;
+                    result.surface.reset();
+                }
+            }
         }
     }
     return result;

@@ -109,38 +109,52 @@ QColor panelColour(const ViewOverlay& overlay) {
     return overlay.text.lightness() > 128 ? QColor(0, 0, 0, 110) : QColor(255, 255, 255, 150);
 }
 
-QSizeF colourScaleSize(const ColourScale& scale, const QFontMetricsF& metrics) {
-    const double width = std::max(160.0, metrics.horizontalAdvance(scale.caption)) + 2 * kPad;
-    return {width, 2 * metrics.height() + kBarHeight + 3.5 * kPad};
+// One colour bar: caption, a viridis gradient, the values at its ends.
+double colourScaleHeight(const QFontMetricsF& metrics) {
+    return 2 * metrics.height() + kBarHeight + 2 * kPad;
 }
 
-// The floor's colour bar: caption, a viridis gradient and the values at its ends.
-void drawColourScale(QPainter& painter, const ViewOverlay& overlay, const QFont& font,
-                     const QRectF& place) {
-    const ColourScale& scale = *overlay.floorScale;
+QSizeF colourScalesSize(const std::vector<ColourScale>& scales, const QFontMetricsF& metrics) {
+    double width = 160.0;
+    for (const ColourScale& scale : scales) {
+        width = std::max(width, metrics.horizontalAdvance(scale.caption));
+    }
+    return {width + 2 * kPad,
+            static_cast<double>(scales.size()) * colourScaleHeight(metrics) + 1.5 * kPad};
+}
+
+// The colour bars, one under the other in one panel.
+void drawColourScales(QPainter& painter, const ViewOverlay& overlay, const QFont& font,
+                      const QRectF& place) {
     const QFontMetricsF metrics(font);
     painter.setPen(Qt::NoPen);
     painter.setBrush(panelColour(overlay));
     painter.drawRoundedRect(place, 4.0, 4.0);
     painter.setFont(font);
-    painter.setPen(overlay.text);
     const double inner = place.width() - 2 * kPad;
-    const QRectF caption(place.left() + kPad, place.top() + kPad, inner, metrics.height());
-    painter.drawText(caption, Qt::AlignLeft | Qt::AlignVCenter, scale.caption);
-    const QRectF bar(place.left() + kPad, caption.bottom() + kPad / 2, inner, kBarHeight);
-    QLinearGradient gradient(bar.topLeft(), bar.topRight());
-    for (int i = 0; i <= 16; ++i) {
-        const float t = static_cast<float>(i) / 16.0F;
-        const glm::vec3 c = glm::clamp(viridis(t), glm::vec3(0.0F), glm::vec3(1.0F));
-        gradient.setColorAt(t, QColor::fromRgbF(c.r, c.g, c.b));
+    double top = place.top() + kPad;
+    for (const ColourScale& scale : overlay.colourScales) {
+        painter.setPen(overlay.text);
+        const QRectF caption(place.left() + kPad, top, inner, metrics.height());
+        painter.drawText(caption, Qt::AlignLeft | Qt::AlignVCenter, scale.caption);
+        const QRectF bar(place.left() + kPad, caption.bottom() + kPad / 2, inner, kBarHeight);
+        QLinearGradient gradient(bar.topLeft(), bar.topRight());
+        for (int i = 0; i <= 16; ++i) {
+            const float t = static_cast<float>(i) / 16.0F;
+            const glm::vec3 c = glm::clamp(viridis(t), glm::vec3(0.0F), glm::vec3(1.0F));
+            gradient.setColorAt(t, QColor::fromRgbF(c.r, c.g, c.b));
+        }
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(gradient);
+        painter.drawRect(bar);
+        painter.setPen(overlay.text);
+        const QRectF ends(bar.left(), bar.bottom() + kPad / 2, bar.width(), metrics.height());
+        painter.drawText(ends, Qt::AlignLeft | Qt::AlignTop,
+                         QString::number(scale.minimum, 'g', 4));
+        painter.drawText(ends, Qt::AlignRight | Qt::AlignTop,
+                         QString::number(scale.maximum, 'g', 4));
+        top += colourScaleHeight(metrics);
     }
-    painter.setPen(Qt::NoPen);
-    painter.setBrush(gradient);
-    painter.drawRect(bar);
-    painter.setPen(overlay.text);
-    const QRectF ends(bar.left(), bar.bottom() + kPad / 2, bar.width(), metrics.height());
-    painter.drawText(ends, Qt::AlignLeft | Qt::AlignTop, QString::number(scale.minimum, 'g', 4));
-    painter.drawText(ends, Qt::AlignRight | Qt::AlignTop, QString::number(scale.maximum, 'g', 4));
 }
 
 QSizeF legendSize(const std::vector<LegendEntry>& legend, const QFontMetricsF& metrics) {
@@ -193,7 +207,7 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
     const float luminance = glm::dot(in.background, glm::vec3(0.2126F, 0.7152F, 0.0722F));
     overlay.text = luminance > 0.5F ? QColor(30, 30, 30) : QColor(225, 225, 225);
     overlay.title = in.title;
-    overlay.floorScale = in.floorScale;
+    overlay.colourScales = in.colourScales;
     if (in.width <= 0 || in.height <= 0) return overlay;
 
     if (in.showAxes && in.grid != nullptr && in.frame != nullptr) {
@@ -335,8 +349,8 @@ PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QR
         places.legend = legendPlace(legendSize(overlay.legend, metrics), panelTop, dataBox,
                                     logicalSize, kMargin);
     }
-    if (overlay.floorScale) {
-        const QSizeF size = colourScaleSize(*overlay.floorScale, metrics);
+    if (!overlay.colourScales.empty()) {
+        const QSizeF size = colourScalesSize(overlay.colourScales, metrics);
         const QRectF& legend = places.legend;
         const QRectF taken = legend.isEmpty()    ? dataBox
                              : dataBox.isEmpty() ? legend
@@ -356,7 +370,9 @@ PanelRoom panelRoom(const ViewOverlay& overlay) {
     PanelRoom room;
     if (!overlay.title.isEmpty()) room.top = 6.0 + headingMetrics(nullptr).height() + 6.0;
     if (!overlay.legend.empty()) room.legend = legendSize(overlay.legend, metrics);
-    if (overlay.floorScale) room.colourBar = colourScaleSize(*overlay.floorScale, metrics);
+    if (!overlay.colourScales.empty()) {
+        room.colourBar = colourScalesSize(overlay.colourScales, metrics);
+    }
     if (!overlay.labels.empty()) room.axisLabels = 2.0 * metrics.height() + kTickOffsetPx;
     room.margin = kMargin;
     return room;
@@ -452,7 +468,7 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         record(legendRect, QStringLiteral("legend"));
     }
     if (!barRect.isEmpty()) {
-        drawColourScale(painter, overlay, font, barRect);
+        drawColourScales(painter, overlay, font, barRect);
         record(barRect, QStringLiteral("colour bar"));
     }
     painter.restore();

@@ -38,7 +38,7 @@ struct LegendEntry {
     QString text;
 };
 
-// The floor map's colour bar: what it shows and the values at its two ends.
+// A colour bar (the floor map's, the section's): what it shows and the values at its two ends.
 struct ColourScale {
     QString caption;
     float minimum = 0.0F;
@@ -53,7 +53,8 @@ struct ViewOverlay {
     // The data box's bounding rectangle on screen (pixels, top-left origin; empty when
     // unknown): the legend goes into a corner that keeps clear of it.
     QRectF box;
-    std::optional<ColourScale> floorScale;
+    // The colour bars, stacked in one panel: the floor's, then the section's.
+    std::vector<ColourScale> colourScales;
     QColor text;  // readable on the background
 };
 
@@ -79,7 +80,7 @@ struct OverlayInput {
     bool showAxes = true;
     bool showLegend = true;
     QString title;  // empty: none
-    std::optional<ColourScale> floorScale;
+    std::vector<ColourScale> colourScales;  // the floor's, then the section's
     // Labels at points on the floor (display space): the graticule's true degrees where each
     // line enters the grid. Placed after the axes' labels, where room is left.
     std::vector<std::pair<glm::vec3, QString>> floorLabels;
@@ -105,7 +106,7 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
 
 // Where paintOverlay puts its panels in a picture `logicalSize` big (logical pixels), with the
 // data box's rectangle `dataBox` there: the title line at the top, the legend in the first
-// corner clear of the box, the floor's colour bar in another corner clear of both. An empty
+// corner clear of the box, the colour bars' panel in another corner clear of both. An empty
 // rectangle: not shown (the colour bar when no corner is left for it).
 struct PanelPlaces {
     QRectF title;

@@ -12,7 +12,7 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                                      const PipelineOptions& options, const std::stop_token& stop,
                                      const data::Progress& progress) {
     ContextSurfaces out;
-    const EnsembleStatistics statistics = computeEnsembleStatistics(
+    EnsembleStatistics statistics = computeEnsembleStatistics(
         ensemble, options.isovalue, stop, [&](double f) { data::report(progress, 0.4 * f); });
     out.boxplot = computeContourBoxplot(ensemble, options.isovalue, stop,
                                         [&](double f) { data::report(progress, 0.4 + 0.3 * f); });
@@ -29,6 +29,7 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     data::throwIfStopped(stop);
     out.exceedanceColumnMaximum =
         computeColumnMaximum(ensemble.grid, {"exceedance", statistics.exceedance});
+    out.exceedance = std::move(statistics.exceedance);
     data::report(progress, 1.0);
     return out;
 }

@@ -24,6 +24,9 @@ struct ContextSurfaces {
     // The column maximum of P(f > c) (nx * ny, NaN where the column has no value): where any
     // level is likely to exceed the isovalue, for the floor.
     std::vector<float> exceedanceColumnMaximum;
+    // P(f > c) itself on the grid's points, for a section through it (NaN where no member has
+    // a value).
+    data::FieldValues exceedance;
 };
 
 // Meshes the three surfaces at options.isovalue, as the members' are meshed (decimated alike,

@@ -41,6 +41,35 @@ QVariant ClusterListModel::data(const QModelIndex& index, int role) const {
                 return QVariant::fromValue(Qt::Alignment(Qt::AlignRight | Qt::AlignVCenter));
             }
             break;
+        case Boxplot: {
+            // "median, 2 outliers": where the ensemble's centre and its outlying members are.
+            QStringList marks;
+            QStringList outliers;
+            bool median = false;
+            for (const int m : m_selection->membersOfCluster(c)) {
+                median = median || m_selection->isMedian(m);
+                if (m_selection->isOutlier(m)) outliers << m_selection->name(m);
+            }
+            if (role == Qt::DisplayRole) {
+                if (median) marks << tr("median");
+                if (outliers.size() == 1) marks << tr("1 outlier");
+                if (outliers.size() > 1) marks << tr("%1 outliers").arg(outliers.size());
+                return marks.join(QStringLiteral(", "));
+            }
+            if (role == Qt::ToolTipRole && (median || !outliers.isEmpty())) {
+                QStringList lines;
+                if (median) {
+                    lines << tr("Holds the median member %1 (the deepest)")
+                                 .arg(m_selection->name(m_selection->medianMember()));
+                }
+                if (!outliers.isEmpty()) {
+                    lines << tr("Outliers of the contour boxplot: %1")
+                                 .arg(outliers.join(QStringLiteral(", ")));
+                }
+                return lines.join(QLatin1Char('\n'));
+            }
+            break;
+        }
         case Visible:
             if (role == Qt::CheckStateRole) return m_selection->clusterVisibility(c);
             break;
@@ -64,6 +93,8 @@ QVariant ClusterListModel::headerData(int section, Qt::Orientation orientation, 
             return tr("Cluster");
         case Size:
             return tr("Size");
+        case Boxplot:
+            return tr("Boxplot");
         case Visible:
             return tr("Visible");
         default:

@@ -1,6 +1,6 @@
 // The clusters of the current cut as a list for QTableView/QTreeView: the cluster's colour
-// swatch and name, its size, and a visibility checkbox (checked when all its members are
-// visible, partly when some are). A view onto MemberSelection, which it follows and edits
+// swatch and name, its size, what it holds of the contour boxplot (the median, outliers), and
+// a visibility checkbox (checked when all its members are visible, partly when some are). A view onto MemberSelection, which it follows and edits
 // (the checkbox). GUI thread only.
 #pragma once
 
@@ -13,7 +13,7 @@ class MemberSelection;
 class ClusterListModel : public QAbstractTableModel {
     Q_OBJECT
 public:
-    enum Column { Cluster, Size, Visible, ColumnCount };
+    enum Column { Cluster, Size, Boxplot, Visible, ColumnCount };
 
     explicit ClusterListModel(MemberSelection* selection, QObject* parent = nullptr);
 

@@ -44,7 +44,8 @@ CuttingPlanePanel::CuttingPlanePanel(QWidget* parent)
       m_position(new QSlider(Qt::Horizontal, this)),
       m_dataValue(new QDoubleSpinBox(this)),
       m_dataLabel(new QLabel(this)),
-      m_thickness(new QDoubleSpinBox(this)) {
+      m_thickness(new QDoubleSpinBox(this)),
+      m_fill(new QComboBox(this)) {
     m_enabled->setToolTip(
         tr("Removes everything between the plane and the camera and draws where each member "
            "crosses the plane (Ctrl+Shift+P)"));
@@ -76,6 +77,12 @@ CuttingPlanePanel::CuttingPlanePanel(QWidget* parent)
     shapeBySetting(*m_thickness, "plane_thickness");
     m_thickness->setValue(gl::CuttingPlane{}.thickness);
 
+    // In gl::SectionField's order.
+    m_fill->addItems({tr("Nothing"), tr("Member (selected, else last hovered)"), tr("Mean"),
+                      tr("Standard deviation"), tr("P(f > isovalue)")});
+    m_fill->setObjectName(QStringLiteral("fill"));
+    m_fill->setToolTip(settingHelp("section"));
+
     auto* form = new QFormLayout(this);
     form->addRow(m_enabled);
     form->addRow(tr("Orientation"), m_orientation);
@@ -85,6 +92,7 @@ CuttingPlanePanel::CuttingPlanePanel(QWidget* parent)
     valueRow->addWidget(m_dataValue, 1);
     form->addRow(m_dataLabel, valueRow);
     form->addRow(tr("Curve width \u03b5"), m_thickness);
+    form->addRow(tr("Fill"), m_fill);
 
     connect(m_enabled, &QCheckBox::toggled, this, &CuttingPlanePanel::planeChanged);
     connect(m_orientation, &QComboBox::currentIndexChanged, this,
@@ -93,6 +101,14 @@ CuttingPlanePanel::CuttingPlanePanel(QWidget* parent)
     connect(m_dataValue, &QDoubleSpinBox::valueChanged, this,
             &CuttingPlanePanel::onDataValueEdited);
     connect(m_thickness, &QDoubleSpinBox::valueChanged, this, &CuttingPlanePanel::planeChanged);
+    // A fill is seen only on a cut: choosing one turns the cut on, in the same change.
+    connect(m_fill, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index > 0 && !m_enabled->isChecked()) {
+            const QSignalBlocker block(m_enabled);
+            m_enabled->setChecked(true);
+        }
+        emit planeChanged();
+    });
     onOrientationChosen(AlongZ);
 }
 
@@ -120,6 +136,7 @@ gl::CuttingPlane CuttingPlanePanel::plane() const {
         gl::CuttingPlane::acrossBox(normal(), static_cast<float>(position()), m_boxMin, m_boxMax);
     plane.enabled = m_enabled->isChecked();
     plane.thickness = static_cast<float>(m_thickness->value());
+    plane.fill = static_cast<gl::SectionField>(std::max(m_fill->currentIndex(), 0));
     return plane;
 }
 
@@ -127,6 +144,7 @@ void CuttingPlanePanel::setPlane(const gl::CuttingPlane& plane) {
     const QSignalBlocker b0(this);
     m_enabled->setChecked(plane.enabled);
     m_thickness->setValue(plane.thickness);
+    m_fill->setCurrentIndex(static_cast<int>(plane.fill));
     int orientation = Free;
     for (int axis = 0; axis < 3; ++axis) {
         if (std::abs(std::abs(plane.normal[axis]) - 1.0F) < 1e-6F) orientation = axis;

@@ -1,7 +1,8 @@
 // The cutting plane panel: on/off, an axis-aligned orientation (x, y, z) or a free normal, the
 // position (a slider across the data box, and for axis-aligned planes a spin box in the axis's
-// own units: degrees, hPa, metres), and the width eps of the intersection curves. It produces a
-// gl::CuttingPlane in display space; knows nothing of the renderer. GUI thread only.
+// own units: degrees, hPa, metres), the width eps of the intersection curves, and what the cut
+// face is filled with (gl::SectionField). It produces a gl::CuttingPlane in display space;
+// knows nothing of the renderer. GUI thread only.
 #pragma once
 
 #include <QString>
@@ -71,6 +72,7 @@ private:
     QDoubleSpinBox* m_dataValue;
     QLabel* m_dataLabel;
     QDoubleSpinBox* m_thickness;
+    QComboBox* m_fill;
     glm::vec3 m_boxMin{0.0F};
     glm::vec3 m_boxMax{1.0F};
     std::array<PlaneAxis, 3> m_axes;

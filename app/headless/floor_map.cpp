@@ -18,6 +18,7 @@ ColumnMaxima computeColumnMaxima(const data::Ensemble& ensemble, const data::Mem
     const prep::EnsembleStatistics statistics =
         prep::computeEnsembleStatistics(ensemble, 0.0F, stop);
     maxima.spread = prep::computeColumnMaximum(ensemble.grid, {"stddev", statistics.stddev});
+    maxima.stddev = std::make_shared<const data::FieldValues>(statistics.stddev);
     return maxima;
 }
 
@@ -34,11 +35,8 @@ gl::FloorMap floorMapFor(const data::Ensemble& e, const data::Member& mean,
             // A probability keeps its own scale, 0 to 1, whatever the values in view.
             gl::FloorMap map;
             map.values = columnMaxima.exceedance;
-            std::array<char, 32> isovalue{};
-            std::snprintf(isovalue.data(), isovalue.size(), "%.4g", columnMaxima.isovalue);
-            map.caption = QString::fromStdString("floor: column maximum of P(" + e.variable +
-                                                 " > " + isovalue.data() +
-                                                 (e.units.empty() ? "" : " " + e.units) + ")");
+            map.caption = QString::fromStdString("floor: column maximum of " +
+                                                 exceedanceText(e, columnMaxima.isovalue));
             return map;
         }
         case gl::FloorContent::SpreadMaximum:

@@ -3,6 +3,7 @@
 // caption. Shared by the workbench and `ensil render`.
 #pragma once
 
+#include <memory>
 #include <stop_token>
 #include <vector>
 
@@ -15,6 +16,8 @@ namespace ensil::app {
 struct ColumnMaxima {
     std::vector<float> mean;    // of the mean member
     std::vector<float> spread;  // of the members' sample standard deviation (METHODS.md s. 17)
+    // The standard deviation itself on the grid's points, for a section through it.
+    std::shared_ptr<const data::FieldValues> stddev;
     // Of P(f > c) at `isovalue`: per isovalue, set by the caller (empty before the first).
     std::vector<float> exceedance;
     float isovalue = 0.0F;

@@ -62,6 +62,7 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
     prep::addContextSurfaces(out.meshes, context);
     out.boxplot = std::move(context.boxplot);
     out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
+    out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
     out.seconds["context_surfaces"] = since(start);
     start = Clock::now();
     out.distances =

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -41,6 +42,7 @@ struct IsovalueOutcome {
     // its surfaces are in `meshes`.
     prep::ContourBoxplot boxplot;
     std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
+    std::shared_ptr<const data::FieldValues> exceedance;  // P(f > c), for a section
     bool fromCache = false;
     // Why the results could not be stored in the cache (a read-only folder, a full disk);
     // empty when they were, or when there is no cache.

@@ -72,6 +72,31 @@ std::string floorCaption(const data::Ensemble& e, int level) {
            (e.units.empty() ? "" : " [" + e.units + "]");
 }
 
+std::string exceedanceText(const data::Ensemble& e, float isovalue) {
+    return "P(" + e.variable + " > " + formatValue(isovalue) + (e.units.empty() ? "" : " " + e.units) +
+           ")";
+}
+
+std::string sectionQuantity(const data::Ensemble& e, gl::SectionField field, int member,
+                            float isovalue) {
+    switch (field) {
+        case gl::SectionField::None:
+            return {};
+        case gl::SectionField::Member: {
+            const bool known = member >= 0 && static_cast<std::size_t>(member) < e.memberCount();
+            return (known ? e.members[static_cast<std::size_t>(member)].name : "member") + ": " +
+                   e.variable;
+        }
+        case gl::SectionField::Mean:
+            return "mean " + e.variable;
+        case gl::SectionField::StandardDeviation:
+            return "standard deviation of " + e.variable;
+        case gl::SectionField::Probability:
+            return exceedanceText(e, isovalue);
+    }
+    return {};
+}
+
 std::string pictureFileStem(const data::Ensemble& e, float isovalue) {
     std::string stem = e.variable + "_" + formatValue(isovalue) + e.units;
     for (const std::string& fixed : e.fixedDimensions) stem += "_" + shortFixedDimension(fixed);

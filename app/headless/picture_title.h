@@ -7,6 +7,7 @@
 #include <string>
 
 #include "data/ensemble.h"
+#include "gl/render_settings.h"
 
 namespace ensil::app {
 
@@ -15,6 +16,13 @@ std::string pictureTitle(const data::Ensemble& ensemble, float isovalue);
 // "floor: mean t at 850 hPa [K]" (level: a vertical grid index, clamped to the grid).
 std::string floorCaption(const data::Ensemble& ensemble);
 std::string floorCaption(const data::Ensemble& ensemble, int level);
+// "P(z > 5.757e+04 m2 s-2)": the probability of exceeding the isovalue, in the floor's and
+// the section's captions.
+std::string exceedanceText(const data::Ensemble& ensemble, float isovalue);
+// What a value on the cutting plane's cut face is: "member 7: z", "mean z", "standard
+// deviation of z", "P(t > 260 K)". `member` indexes ensemble.members.
+std::string sectionQuantity(const data::Ensemble& ensemble, gl::SectionField field, int member,
+                            float isovalue);
 // Letters, digits, '.', '-' and '_' only; no extension.
 std::string pictureFileStem(const data::Ensemble& ensemble, float isovalue);
 

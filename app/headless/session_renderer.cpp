@@ -10,6 +10,7 @@
 #include "app/headless/floor_map.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/picture_title.h"
+#include "app/headless/section_volume.h"
 #include "data/demo_ensemble.h"
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
@@ -69,6 +70,17 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     maxima.exceedance = outcome.exceedanceColumnMaximum;
     maxima.isovalue = iso;
     renderer.setFloorMap(floorMapFor(ensemble, moments.mean, maxima, state.render));
+    SectionSources section;
+    section.ensemble = &ensemble;
+    section.mean = &moments.mean;
+    section.stddev = maxima.stddev.get();
+    section.exceedance = outcome.exceedance.get();
+    section.isovalue = iso;
+    section.valueMinimum = stats.minimum;
+    section.valueMaximum = stats.maximum;
+    // No hover in a picture: the first selected member.
+    section.member = state.selection.empty() ? -1 : state.selection.front();
+    renderer.setSectionVolume(sectionVolumeFor(section, state.render.plane.fill));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;
@@ -92,6 +104,7 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
             glm::vec3(p), p.w, renderer.frame().boxMin(), renderer.frame().boxMax());
         renderer.settings().plane.enabled = given.enabled;
         renderer.settings().plane.thickness = given.thickness;
+        renderer.settings().plane.fill = given.fill;
     }
 
     auto* f = QOpenGLContext::currentContext()->functions();

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
@@ -14,6 +15,7 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cutting_plane_panel.h"
+#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/silhouette_view.h"
 
@@ -112,4 +114,46 @@ TEST(MainWindowRenderDocks, DraggingThePlaneSliderDrawsLikeCameraMotion) {
     EXPECT_TRUE(view->inMotion());
     position->setSliderDown(false);
     EXPECT_FALSE(view->inMotion()) << "the frame after the drag is a still one";
+}
+
+TEST(MainWindowRenderDocks, TheCutFaceShowsTheFieldChosenInThePlanePanelAndTheMemberInFocus) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showActiveWorkbench(window, {1000, 700}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 6, .nx = 48, .ny = 24, .nz = 8, .seed = 4}));
+    gl::Renderer& renderer = window.view()->renderer();
+    ui::CuttingPlanePanel& plane = *window.cuttingPlanePanel();
+    auto* fill = plane.findChild<QComboBox*>("fill");
+    ASSERT_NE(fill, nullptr);
+    EXPECT_FALSE(renderer.sectionShown());
+
+    // Choosing a fill turns the cut on and fills the face, with its colour bar.
+    fill->setCurrentIndex(static_cast<int>(gl::SectionField::StandardDeviation));
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(renderer.settings().plane.enabled);
+    ASSERT_TRUE(renderer.sectionShown());
+    EXPECT_EQ(renderer.sectionVolume().caption(),
+              QStringLiteral("section: standard deviation of wind_speed [m s-1]"));
+
+    // A member section shows the selected member, else the one last hovered.
+    fill->setCurrentIndex(static_cast<int>(gl::SectionField::Member));
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(renderer.sectionShown()) << "no member in focus yet";
+    ui::MemberSelection& selection = *window.memberSelection();
+    selection.setHovered(2);
+    selection.setHovered(-1);  // the cursor moves on, to the section
+    const data::Ensemble& e = *window.overview()->ensemble;
+    ASSERT_TRUE(renderer.sectionShown());
+    EXPECT_EQ(renderer.sectionVolume().quantity,
+              QString::fromStdString(e.members[2].name + ": wind_speed"));
+    EXPECT_EQ(renderer.sectionVolume().values[100], e.members[2].values[100]);
+    selection.click({4}, Qt::NoModifier);
+    EXPECT_EQ(renderer.sectionVolume().quantity,
+              QString::fromStdString(e.members[4].name + ": wind_speed"));
+
+    // The probability of exceeding the isovalue shown.
+    fill->setCurrentIndex(static_cast<int>(gl::SectionField::Probability));
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(renderer.sectionVolume().quantity.startsWith("P(wind_speed > "));
 }

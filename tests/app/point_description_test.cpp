@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/headless/section_volume.h"
 #include "data/ensemble_reader.h"
 #include "preprocessing/ensemble_moments.h"
 
@@ -49,6 +50,32 @@ TEST(PointDescription, ASurfacePointSaysPlaceLevelAndTheMembersAndMeansValues) {
         << text.toStdString();
     EXPECT_TRUE(text.contains("mean " + QString::number(mean, 'g', 5) + " K"))
         << text.toStdString();
+}
+
+TEST(PointDescription, OnAFilledCutFaceItSaysTheSectionsFieldAndValueThere) {
+    const Opened era5 = open("era5_eda_members.nc", "t");
+    const data::Grid& g = era5.ensemble.grid;
+    app::SectionSources sources;
+    sources.ensemble = &era5.ensemble;
+    sources.member = 4;
+    sources.valueMinimum = 200.0F;
+    sources.valueMaximum = 300.0F;
+    const gl::SectionVolume section = app::sectionVolumeFor(sources, gl::SectionField::Member);
+    app::PointContext context = era5.context();
+    context.section = &section;
+    const std::size_t i = 40, j = 30, k = 1;
+    gl::PickResult hit;
+    hit.section = era5.frame.indexToDisplay(glm::vec3(i, j, k));
+    hit.floor = era5.frame.indexToDisplay(glm::vec3(i, j, 0));
+    const QString text = app::describePoint(context, hit);
+    const float value = era5.ensemble.members[4].values[g.index(i, j, k)];
+    EXPECT_TRUE(text.startsWith(app::formatLonLat(g.x().values[i], g.y().values[j])))
+        << text.toStdString();
+    EXPECT_TRUE(text.endsWith("member 4: t " + QString::number(value, 'g', 5) + " K"))
+        << text.toStdString();
+    // Without the face filled the same point is the floor's.
+    context.section = nullptr;
+    EXPECT_TRUE(app::describePoint(context, hit).contains("column maximum"));
 }
 
 TEST(PointDescription, LongitudesReadEastAndWestAndRotatedGridsGiveTrueDegrees) {

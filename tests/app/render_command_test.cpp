@@ -11,6 +11,7 @@
 #include "tests/app/default_isovalue.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/image_compare.h"
+#include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -297,4 +298,43 @@ TEST(RenderCommand, TheFloorShowsNothingTheColumnMaximumOrTheMeanAtALevel) {
         test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
                         "--out", QString::fromStdString(dir.file("x.png")), "--floor", "spread"});
     EXPECT_EQ(bad.code, 2);
+}
+
+TEST(RenderCommand, TheSectionFillsThePlanesCutFaceAndIsRefusedWhereNothingWouldShowIt) {
+    test::TempDir dir;
+    const auto render = [&](const QString& name, const QStringList& extra) {
+        const QString png = QString::fromStdString(dir.file(name.toStdString()));
+        const test::EnsilRun r = test::runEnsil(
+            QStringList{"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--iso", "250", "--out", png, "--size", "320x240", "--frames", "1",
+                        "--no-cache", "--no-labels", "--no-title", "--floor", "none"} +
+            extra);
+        EXPECT_EQ(r.code, 0) << r.err.toStdString();
+        return QImage(png).convertToFormat(QImage::Format_RGB32);
+    };
+    // A plane across the latitudes through the middle of the box, seen from the default view.
+    const QStringList plane{"--plane", "0,1,0,0"};
+    const QImage unfilled = render("unfilled.png", plane);
+    const QImage spread = render("spread.png", plane + QStringList{"--section", "stddev"});
+    const QImage probability =
+        render("probability.png", plane + QStringList{"--section", "probability"});
+    EXPECT_GT(test::differingFraction(unfilled, spread, 8), 0.02) << "the face is filled";
+    EXPECT_GT(test::differingFraction(spread, probability, 8), 0.01) << "each field its own";
+
+    const QString out = QString::fromStdString(dir.file("x.png"));
+    const test::EnsilRun noPlane =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", out, "--section", "mean"});
+    EXPECT_EQ(noPlane.code, 2);
+    EXPECT_TRUE(noPlane.err.contains("--section mean needs --plane")) << noPlane.err.toStdString();
+    const test::EnsilRun member = test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                                                  "--var", "t", "--out", out, "--plane", "0,1,0,0",
+                                                  "--section", "member"});
+    EXPECT_EQ(member.code, 2);
+    EXPECT_TRUE(member.err.contains("select members in the workbench")) << member.err.toStdString();
+    const test::EnsilRun unknown = test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
+                                                   "--var", "t", "--out", out, "--plane", "0,1,0,0",
+                                                   "--section", "spread"});
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_TRUE(unknown.err.contains("stddev")) << "names what is allowed: " << unknown.err.toStdString();
 }

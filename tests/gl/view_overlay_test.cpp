@@ -249,8 +249,8 @@ TEST(ViewOverlay, TheFloorsColourBarShowsTheFloorsColours) {
     gl::ViewOverlay o;
     o.text = QColor(225, 225, 225);
     o.legend = {{gl::clusterColor(0), QStringLiteral("Cluster 1")}};
-    o.floorScale =
-        gl::ColourScale{QStringLiteral("floor: column maximum of the mean t [K]"), 237.8F, 303.7F};
+    o.colourScales = {
+        gl::ColourScale{QStringLiteral("floor: column maximum of the mean t [K]"), 237.8F, 303.7F}};
     QImage image(800, 600, QImage::Format_RGB32);
     image.fill(Qt::black);
     {

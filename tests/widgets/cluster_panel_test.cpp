@@ -105,3 +105,32 @@ TEST(ClusterPanel, OffersEveryLinkageThePreprocessingKnows) {
     EXPECT_EQ(panel.linkage(), prep::Linkage::Single);
     EXPECT_EQ(changed.count(), 3) << "setting it from the program is not the user's choice";
 }
+
+TEST(ClusterListModel, SaysWhichClusterHoldsTheMedianAndWhichTheOutliers) {
+    ui::MemberSelection s;
+    ClusterListModel model(&s);
+    // Two groups, {0, 2, 4} and {1, 3, 5}; member 4 is the median, 3 and 5 are outliers.
+    ui::MemberFigures figures = test::figuresOnALine(test::kTwoGroups);
+    figures.depth = {0.5, 0.4, 0.6, 0.1, 0.9, 0.05};
+    figures.median = 4;
+    figures.outliers = {3, 5};
+    s.setMembers(figures);
+    s.setTree(test::treeOnALine(test::kTwoGroups));
+    s.setClusterCount(2);
+    const auto marks = [&](int member) {
+        return model.index(s.clusterOf(member), ClusterListModel::Boxplot).data().toString();
+    };
+    EXPECT_EQ(marks(4), QStringLiteral("median"));
+    EXPECT_EQ(marks(1), QStringLiteral("2 outliers"));
+    EXPECT_TRUE(model.index(s.clusterOf(1), ClusterListModel::Boxplot)
+                    .data(Qt::ToolTipRole)
+                    .toString()
+                    .contains(QStringLiteral("m3, m5")));
+    figures.outliers = {3};
+    s.setMembers(figures);
+    EXPECT_EQ(marks(1), QStringLiteral("1 outlier"));
+    s.setClusterCount(1);
+    EXPECT_EQ(marks(0), QStringLiteral("median, 1 outlier"));
+    EXPECT_EQ(model.headerData(ClusterListModel::Boxplot, Qt::Horizontal, Qt::DisplayRole),
+              QStringLiteral("Boxplot"));
+}

@@ -17,6 +17,9 @@ constexpr std::array<std::string_view, 5> kFloorContents{
     "none", "column-maximum", "mean-at-level", "spread-maximum", "probability-maximum"};
 // In gl::ContextSurface's order.
 constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "probability"};
+// In gl::SectionField's order.
+constexpr std::array<std::string_view, 5> kSectionFields{"none", "member", "mean", "stddev",
+                                                         "probability"};
 // In prep::Linkage's order.
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
@@ -24,7 +27,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 29> kSettings{{
+const std::array<Setting, 30> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -421,6 +424,13 @@ const std::array<Setting, 29> kSettings{{
      {},
      [](const SessionState& s) { return double(s.render.plane.thickness); },
      [](SessionState& s, double v) { s.render.plane.thickness = asFloat(v); }},
+    {"section", SettingKind::Choice, "cutting_plane.fill", "section", "", "Fill", "",
+     "What the cutting plane's cut face shows, with a colour bar: nothing, the hovered (else the "
+     "first selected) member, the mean, the members' standard deviation, or the probability of "
+     "exceeding the isovalue",
+     0, 4, 0, 1, kSectionFields,
+     [](const SessionState& s) { return static_cast<double>(s.render.plane.fill); },
+     [](SessionState& s, double v) { s.render.plane.fill = static_cast<gl::SectionField>(v); }},
 }};
 
 std::string number(double v) {
