@@ -95,10 +95,10 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
 
 int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Describe the ensembles in NetCDF, HDF5 or VTK files: usable variables, "
-                       "member dimension and how it was found, grid and axes, units, value "
-                       "range, missing values."));
+    parser.setApplicationDescription(QStringLiteral(
+        "Describe the ensembles in NetCDF, HDF5, VTK or GRIB files: usable variables, "
+        "member dimension and how it was found, grid and axes, units, value "
+        "range, missing values."));
     parser.addHelpOption();
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
@@ -120,6 +120,9 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
         data::EnsembleDescription description;
         const data::Ensemble ensemble = data::openEnsemble(*selection, {}, {}, &description);
         const prep::FieldStatistics stats = prep::computeFieldStatistics(ensemble, 0);
+        for (const std::string& note : ensemble.warnings) {
+            err << "ensil info: warning: " << qs(note) << "\n";
+        }
         if (const auto note = data::infiniteValuesWarning(ensemble)) {
             err << "ensil info: warning: " << qs(*note) << "\n";
         }

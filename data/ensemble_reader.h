@@ -60,7 +60,7 @@ struct EnsembleDescription {
     std::vector<std::string> memberNames;
     std::vector<std::string> fixedDimensions;  // e.g. "time = 0 of 4 (2017-01-01T00:00)"
     Grid grid;
-    GridMapping gridMapping;  // see data/grid_mapping.h
+    GridMapping gridMapping;            // see data/grid_mapping.h
     std::vector<std::string> warnings;  // as Ensemble::warnings, from the headers alone
     [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
 };

@@ -223,11 +223,10 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
         }
     }
     if (inventory.messages.empty()) {
-        std::string why = inventory.warnings.empty() ? "it holds no GRIB message"
-                                                     : inventory.warnings.front();
-        throw Error(ErrorKind::CorruptFile,
-                    "'" + path + "' has no readable GRIB message: " + why +
-                        ". Check the file with 'grib_ls " + path + "'");
+        std::string why =
+            inventory.warnings.empty() ? "it holds no GRIB message" : inventory.warnings.front();
+        throw Error(ErrorKind::CorruptFile, "'" + path + "' has no readable GRIB message: " + why +
+                                                ". Check the file with 'grib_ls " + path + "'");
     }
     return inventory;
 }
@@ -243,7 +242,7 @@ std::string validityText(long validity) {
 GribAxes gribAxes(const GribGrid& g) {
     GribAxes axes;
     if (g.ni < 2 || g.nj < 2) {
-        axes.why = "its grid is " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
+        axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
                    " points; isosurfaces need at least 2 along each axis";
         return axes;
     }
@@ -256,7 +255,7 @@ GribAxes gribAxes(const GribGrid& g) {
     const double north = g.jPositive ? g.lastLat : g.firstLat;
     const double south = g.jPositive ? g.firstLat : g.lastLat;
     if (!(north > south) || north > 90.0 + 1e-6 || south < -90.0 - 1e-6) {
-        axes.why = "its latitudes run from " + std::to_string(g.firstLat) + " to " +
+        axes.why = "has latitudes from " + std::to_string(g.firstLat) + " to " +
                    std::to_string(g.lastLat) + " degrees, which its scanning mode (j " +
                    (g.jPositive ? "northwards" : "southwards") + ") contradicts";
         return axes;
@@ -264,7 +263,7 @@ GribAxes gribAxes(const GribGrid& g) {
     if (g.type == "regular_gg") {
         // Gaussian latitudes are uneven: the library's own, not a spacing from the header.
         if (g.gaussianN < 1 || g.gaussianN > 100000 || 2 * g.gaussianN < g.nj) {
-            axes.why = "its Gaussian number N = " + std::to_string(g.gaussianN) +
+            axes.why = "has the Gaussian number N = " + std::to_string(g.gaussianN) +
                        " does not fit its " + std::to_string(g.nj) + " latitudes";
             return axes;
         }
@@ -272,8 +271,8 @@ GribAxes gribAxes(const GribGrid& g) {
         {
             const auto lock = lockEccodes();
             if (codes_get_gaussian_latitudes(g.gaussianN, all.data()) != CODES_SUCCESS) {
-                axes.why = "ecCodes has no Gaussian latitudes for N = " +
-                           std::to_string(g.gaussianN);
+                axes.why =
+                    "ecCodes has no Gaussian latitudes for N = " + std::to_string(g.gaussianN);
                 return axes;
             }
         }
@@ -283,7 +282,7 @@ GribAxes gribAxes(const GribGrid& g) {
         const auto nj = static_cast<std::size_t>(g.nj);
         if (first == all.size() || first + nj > all.size() ||
             std::abs(all[first + nj - 1] - south) > tolerance) {
-            axes.why = "its latitudes " + std::to_string(north) + " to " + std::to_string(south) +
+            axes.why = "has latitudes " + std::to_string(north) + " to " + std::to_string(south) +
                        " are not " + std::to_string(g.nj) +
                        " consecutive latitudes of the Gaussian grid N" +
                        std::to_string(g.gaussianN);
@@ -294,8 +293,8 @@ GribAxes gribAxes(const GribGrid& g) {
         axes.y.values.assign(all.begin() + static_cast<std::ptrdiff_t>(first),
                              all.begin() + static_cast<std::ptrdiff_t>(first + nj));
     } else {
-        axes.y = makeUniformAxis("lat", "degrees_north", north, south,
-                                 static_cast<std::size_t>(g.nj));
+        axes.y =
+            makeUniformAxis("lat", "degrees_north", north, south, static_cast<std::size_t>(g.nj));
     }
     axes.y.standardName = "latitude";
     return axes;
@@ -304,19 +303,19 @@ GribAxes gribAxes(const GribGrid& g) {
 std::string unsupportedGridAdvice(const std::string& gridType, const std::string& path) {
     if (gridType == "regular_ll" || gridType == "regular_gg") return {};
     if (gridType == "reduced_gg" || gridType == "reduced_rotated_gg") {
-        return "its grid is a reduced Gaussian grid (" + gridType +
+        return "lies on a reduced Gaussian grid (" + gridType +
                "), whose parallels hold different numbers of points; ensil reads regular "
                "grids. Interpolate it to the regular Gaussian grid first, e.g. 'cdo "
                "setgridtype,regular " +
                path + " regular.grib'";
     }
     if (gridType == "sh") {
-        return "it holds spherical harmonics (gridType sh), not values at grid points; ensil "
+        return "holds spherical harmonics (gridType sh), not values at grid points; ensil "
                "reads regular grids. Transform it to a regular Gaussian grid first, e.g. 'cdo "
-               "sp2gpl " +
+               "sp2gp " +
                path + " gridpoint.grib'";
     }
-    return "its grid is " + (gridType.empty() ? std::string("of an unknown type") : gridType) +
+    return "lies on a grid of type " + (gridType.empty() ? std::string("unknown") : gridType) +
            "; ensil reads regular latitude-longitude and regular Gaussian grids. Interpolate it "
            "to one first, e.g. 'cdo remapbil,r360x181 " +
            path + " latlon.grib' (a 1-degree grid)";
@@ -349,18 +348,18 @@ void GribFile::decode(const GribMessage& message, float* out, std::vector<double
     if (codes_get_size(h.get(), "values", &size) != CODES_SUCCESS || size != n ||
         !(readGrid(h.get()) == g)) {
         throw Error(ErrorKind::CorruptFile,
-                    where + " no longer matches what its header said when the file was opened; "
-                            "was the file changed while ensil read it?");
+                    where +
+                        " no longer matches what its header said when the file was opened; "
+                        "was the file changed while ensil read it?");
     }
     scratch.resize(n);
     error = codes_get_double_array(h.get(), "values", scratch.data(), &size);
     if (error != CODES_SUCCESS || size != n) {
-        throw Error(ErrorKind::CorruptFile, where + ": its values do not decode (" +
-                                                libraryWords(error) +
-                                                "); the message is damaged. Check it with "
-                                                "'grib_dump -O -w count=" +
-                                                std::to_string(message.number) + " " + m_path +
-                                                "'");
+        throw Error(ErrorKind::CorruptFile,
+                    where + ": its values do not decode (" + libraryWords(error) +
+                        "); the message is damaged. Check it with "
+                        "'grib_dump -O -w count=" +
+                        std::to_string(message.number) + " " + m_path + "'");
     }
     // Missing values: where the bitmap says 0, or (GRIB 2 complex packing without a bitmap)
     // where the value is the message's missing-value marker.
@@ -375,8 +374,9 @@ void GribFile::decode(const GribMessage& message, float* out, std::vector<double
         }
         if (bitmap.empty()) {
             throw Error(ErrorKind::CorruptFile,
-                        where + " says it has a bitmap of missing values, but its bitmap does not "
-                                "decode to one bit per point; the message is damaged");
+                        where +
+                            " says it has a bitmap of missing values, but its bitmap does not "
+                            "decode to one bit per point; the message is damaged");
         }
     }
     const bool markerMeansMissing = getLong(h.get(), "missingValueManagementUsed") != 0;
@@ -399,7 +399,8 @@ void GribFile::decode(const GribMessage& message, float* out, std::vector<double
         const std::size_t x = g.iNegative ? ni - 1 - col : col;
         const std::size_t y = g.jPositive ? nj - 1 - row : row;
         const double v = scratch[s];
-        const bool missing = (!bitmap.empty() && bitmap[s] == 0) || (markerMeansMissing && v == marker);
+        const bool missing =
+            (!bitmap.empty() && bitmap[s] == 0) || (markerMeansMissing && v == marker);
         out[x + ni * y] = missing ? kNaN : static_cast<float>(v);
     }
 }

@@ -39,8 +39,8 @@ struct GribMessage {
     std::string shortName, name, units;
     long paramId = 0;
     std::string typeOfLevel;
-    double level = 0;     // "level"; for pressure levels in Pa (isobaricInhPa times 100)
-    long member = 0;      // "number" (perturbation number); 0 for a control or a single run
+    double level = 0;   // "level"; for pressure levels in Pa (isobaricInhPa times 100)
+    long member = 0;    // "number" (perturbation number); 0 for a control or a single run
     long validity = 0;  // reference time + step as YYYYMMDDhhmm (sorts by time)
     GribGrid grid;
     std::size_t values = 0;  // size of the "values" array

@@ -63,7 +63,7 @@ struct Variable {
     std::vector<double> levels;        // increasing, distinct
     GribGrid grid;
     GribAxes axes;
-    std::string whyNot;       // empty when usable
+    std::string whyNot;        // empty when usable
     bool gridRefused = false;  // whyNot is a grid ensil does not read (UnsupportedFormat)
     bool derived = false;
     std::array<std::size_t, 2> parts{};  // u and v for wind_speed, by index in the file's list
@@ -139,8 +139,7 @@ void finish(Variable& v, const std::string& path) {
     }
     if (v.levels.size() < 2) {
         v.whyNot = "has one level only (" + (first.typeOfLevel.empty() ? "?" : first.typeOfLevel) +
-                   ", " + levelsText(v.kind, v.levels) +
-                   "): isosurfaces need at least two levels";
+                   ", " + levelsText(v.kind, v.levels) + "): isosurfaces need at least two levels";
     }
 }
 
@@ -205,8 +204,8 @@ std::vector<Variable> groupVariables(const GribInventory& inventory, const std::
         }
         if (w.whyNot.empty() && !(bestU->grid == bestV->grid)) {
             w.whyNot = "needs " + bestU->name + " and " + bestV->name + " on one grid, but " +
-                       bestU->name + " lies on " + gridText(bestU->grid) + " and " +
-                       bestV->name + " on " + gridText(bestV->grid);
+                       bestU->name + " lies on " + gridText(bestU->grid) + " and " + bestV->name +
+                       " on " + gridText(bestV->grid);
         }
         if (w.whyNot.empty() && w.levels.size() < 2) {
             w.whyNot = "needs " + bestU->name + " and " + bestV->name +
@@ -256,9 +255,8 @@ std::map<FieldKey, const GribMessage*> fieldsOf(const Variable& v, const std::st
             throw Error(
                 ErrorKind::CorruptFile,
                 "'" + path + "': " + messageText(*at->second) + " and " + messageText(*m) +
-                    " both hold '" + v.name + "' for member " + std::to_string(m->member) +
-                    " at " + levelText(v.kind, m->level) + ", valid at " +
-                    validityText(m->validity) +
+                    " both hold '" + v.name + "' for member " + std::to_string(m->member) + " at " +
+                    levelText(v.kind, m->level) + ", valid at " + validityText(m->validity) +
                     " (two forecasts valid at one time, or a copy); keep one with grib_copy, "
                     "e.g. 'grib_copy -w step=0 " +
                     path + " one.grib'");
@@ -322,8 +320,9 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
     const std::string& dim = selection.memberDimension;
     if (!dim.empty() && dim != "number" && dim != "time") {
         throw Error(ErrorKind::MemberDimensionNotFound,
-                    "'" + path + "' is a GRIB file, whose members come from the key 'number' "
-                                 "(the perturbation number); --member-dim " +
+                    "'" + path +
+                        "' is a GRIB file, whose members come from the key 'number' "
+                        "(the perturbation number); --member-dim " +
                         dim + " names no dimension of it. Name 'number', or 'time' to make its " +
                         std::to_string(v.times.size()) + " times the members",
                     {"number", "time"});
@@ -331,8 +330,8 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
     const bool byTime = dim == "time";
     plan.memberDimension = byTime ? "time" : "number";
     plan.memberReason = byTime ? "chosen by the user"
-                               : "GRIB key 'number' (perturbation number; 0 is the control "
-                                 "forecast)";
+                               : "GRIB key 'number', the perturbation number; 0 is the control "
+                                 "forecast";
     const std::vector<long>& memberValues = byTime ? v.times : v.members;
     const std::vector<long>& fixedValues = byTime ? v.members : v.times;
     const std::string fixedName = byTime ? "number" : "time";
@@ -373,10 +372,10 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
                 if (at != components[c].end()) {
                     field[c] = at->second;
                 } else {
-                    missing.push_back((v.derived ? variables[v.parts[c]].name + " of member "
-                                                 : "member ") +
-                                      std::to_string(member) + " at " + levelText(v.kind, level) +
-                                      ", valid at " + validityText(time));
+                    missing.push_back(
+                        (v.derived ? variables[v.parts[c]].name + " of member " : "member ") +
+                        std::to_string(member) + " at " + levelText(v.kind, level) + ", valid at " +
+                        validityText(time));
                 }
             }
         }
@@ -389,12 +388,14 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
         }
         text += ": an ensemble needs every member at every level";
         if (!inventory.warnings.empty()) {
-            text += ". The file is damaged; the messages ensil could not read may have held "
-                    "them: " +
-                    inventory.warnings.front();
+            text +=
+                ". The file is damaged; the messages ensil could not read may have held "
+                "them: " +
+                inventory.warnings.front();
         } else {
-            text += ". Choose another time (--time-index), or a variable whose fields are all "
-                    "there";
+            text +=
+                ". Choose another time (--time-index), or a variable whose fields are all "
+                "there";
         }
         throw Error(ErrorKind::CorruptFile, text);
     }

@@ -16,7 +16,7 @@ struct GribPlan {
     std::string name;  // what the user selects: a variable name or "wind_speed"
     std::string longName;
     std::string units;
-    bool derived = false;  // wind_speed: component 0 is u, component 1 is v
+    bool derived = false;         // wind_speed: component 0 is u, component 1 is v
     std::string memberDimension;  // "number", or "time" when the user chose it
     std::string memberReason;
     std::vector<std::string> memberNames;

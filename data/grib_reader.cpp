@@ -35,9 +35,10 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
     EnsembleDescription& d = opened.description;
     for (std::size_t f = 0; f < selection.paths.size(); ++f) {
         const std::string& path = selection.paths[f];
-        const GribInventory& inventory =
-            *opened.inventories.emplace_back(std::make_unique<GribInventory>(scanGribFile(path, stop)));
-        const GribPlan& plan = opened.plans.emplace_back(planGribVariable(inventory, path, selection));
+        const GribInventory& inventory = *opened.inventories.emplace_back(
+            std::make_unique<GribInventory>(scanGribFile(path, stop)));
+        const GribPlan& plan =
+            opened.plans.emplace_back(planGribVariable(inventory, path, selection));
         if (f == 0) {
             d.format = formatOf(inventory);
             d.variables = listGribVariables(inventory, path);

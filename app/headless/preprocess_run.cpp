@@ -34,6 +34,7 @@ PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,
                                     const data::Progress& progress) {
     PreprocessResult r;
     if (const auto note = data::fewLevelsWarning(given->grid)) notice("note", *note);
+    for (const std::string& note : given->warnings) notice("warning", note);  // damaged input
     if (const auto note = data::infiniteValuesWarning(*given)) notice("warning", *note);
     // So every number the results give is one.
     r.ensemble = withoutMembersWithoutData(std::move(given), r.membersWithoutData);

@@ -104,7 +104,8 @@ void expectValues(const data::Ensemble& e,
         for (std::size_t k = 0; k < g.nz(); ++k)
             for (std::size_t j = 0; j < g.ny(); ++j)
                 for (std::size_t i = 0; i < g.nx(); ++i) {
-                    const double want = expected(m, g.y().values[j], g.x().values[i], g.z().values[k]);
+                    const double want =
+                        expected(m, g.y().values[j], g.x().values[i], g.z().values[k]);
                     const float got = e.members[m].values[g.index(i, j, k)];
                     if (!(std::abs(got - want) <= tolerance)) {
                         if (++wrong <= 3) {
@@ -199,8 +200,7 @@ TEST(GribReader, PressureLevelsInHpaAndPaMakeOnePressureAxis) {
     EXPECT_EQ(e.grid.z().values, (std::vector<double>{50, 100, 50000, 85000}));
     EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 0", "member 1"}));
     expectValues(
-        e,
-        [&](std::size_t m, double lat, double lon, double pa) { return value(m, pa)(lat, lon); },
+        e, [&](std::size_t m, double lat, double lon, double pa) { return value(m, pa)(lat, lon); },
         1e-3);
 }
 
@@ -216,8 +216,8 @@ TEST(GribReader, RegularGaussianGridHasItsUnevenLatitudes) {
     std::vector<GribField> fields;
     for (long member : {0L, 1L}) {
         for (long level : {500L, 850L}) {
-            GribField f = field("t", "isobaricInhPa", level, member, value(member, level), 0,
-                                gaussian);
+            GribField f =
+                field("t", "isobaricInhPa", level, member, value(member, level), 0, gaussian);
             f.sample = "regular_gg_pl_grib2";
             fields.push_back(f);
         }
@@ -275,14 +275,14 @@ TEST(GribReader, EveryScanningModeGivesTheSameField) {
         std::vector<GribField> fields;
         for (long member : {0L, 1L}) {
             for (long level : {500L, 850L}) {
-                fields.push_back(field("t", "isobaricInhPa", level, member, value(member, level),
-                                       0, test::smallGrid(iNegative, jPositive, jConsecutive)));
+                fields.push_back(field("t", "isobaricInhPa", level, member, value(member, level), 0,
+                                       test::smallGrid(iNegative, jPositive, jConsecutive)));
             }
         }
-        const std::string path = writeGrib(dir.file("mode" + std::to_string(mode) + ".grib2"), fields);
+        const std::string path =
+            writeGrib(dir.file("mode" + std::to_string(mode) + ".grib2"), fields);
         const data::Ensemble e = data::openEnsemble(select(path));
-        EXPECT_EQ(e.grid.x().values,
-                  (std::vector<double>{0, 10, 20, 30, 40, 50, 60, 70}));
+        EXPECT_EQ(e.grid.x().values, (std::vector<double>{0, 10, 20, 30, 40, 50, 60, 70}));
         EXPECT_EQ(e.grid.y().values, (std::vector<double>{40, 30, 20, 10, 0}));
         expectValues(e, expected, 1e-3);
     }
@@ -342,9 +342,9 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     for (long step : {0L, 6L}) {
         for (long member : {0L, 1L}) {
             for (long level : {500L, 850L}) {
-                fields.push_back(field("t", "isobaricInhPa", level, member,
-                                       [=](double lat, double lon) { return lat + lon + step; },
-                                       step));
+                fields.push_back(field(
+                    "t", "isobaricInhPa", level, member,
+                    [=](double lat, double lon) { return lat + lon + step; }, step));
             }
         }
     }
@@ -359,7 +359,8 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     const std::string offset7 = "byte offset " + std::to_string(offsets[7]);
     const data::Ensemble early = data::openEnsemble(select(cut, "t", 0));
     ASSERT_EQ(early.warnings.size(), 1u);
-    EXPECT_TRUE(early.warnings.front().find(offset7) != std::string::npos) << early.warnings.front();
+    EXPECT_TRUE(early.warnings.front().find(offset7) != std::string::npos)
+        << early.warnings.front();
     EXPECT_TRUE(early.warnings.front().find(cut) != std::string::npos) << early.warnings.front();
     const data::Error late = errorOf(select(cut, "t", 1));
     EXPECT_EQ(late.kind(), data::ErrorKind::CorruptFile);
@@ -406,7 +407,7 @@ TEST(GribReader, ReducedGaussianAndSphericalHarmonicsAreRefusedWithARegridComman
     const test::TempDir dir;
     for (const auto& [sample, command] :
          {std::pair<std::string, std::string>{"reduced_gg_pl_32_grib2", "cdo setgridtype,regular"},
-          {"sh_pl_grib2", "cdo sp2gpl"}}) {
+          {"sh_pl_grib2", "cdo sp2gp"}}) {
         std::vector<GribField> fields;
         for (long member : {0L, 1L}) {
             for (long level : {500L, 850L}) {
@@ -429,17 +430,22 @@ TEST(GribReader, ReducedGaussianAndSphericalHarmonicsAreRefusedWithARegridComman
 TEST(GribReader, WindSpeedFromUAndVOnTheirCommonLevels) {
     const test::TempDir dir;
     const auto u = [](long member, long level) {
-        return [=](double lat, double lon) { return lat - lon + static_cast<double>(member + level); };
+        return
+            [=](double lat, double lon) { return lat - lon + static_cast<double>(member + level); };
     };
     const auto v = [](long member, long level) {
-        return [=](double lat, double lon) { return 0.5 * lon - 0.2 * lat + static_cast<double>(level - member); };
+        return [=](double lat, double lon) {
+            return 0.5 * lon - 0.2 * lat + static_cast<double>(level - member);
+        };
     };
     const auto write = [&](const std::string& name, std::vector<long> uLevels,
                            std::vector<long> vLevels) {
         std::vector<GribField> fields;
         for (long member : {0L, 1L}) {
-            for (long level : uLevels) fields.push_back(field("u", "isobaricInhPa", level, member, u(member, level)));
-            for (long level : vLevels) fields.push_back(field("v", "isobaricInhPa", level, member, v(member, level)));
+            for (long level : uLevels)
+                fields.push_back(field("u", "isobaricInhPa", level, member, u(member, level)));
+            for (long level : vLevels)
+                fields.push_back(field("v", "isobaricInhPa", level, member, v(member, level)));
         }
         return writeGrib(dir.file(name), fields);
     };
@@ -465,4 +471,45 @@ TEST(GribReader, WindSpeedFromUAndVOnTheirCommonLevels) {
     EXPECT_EQ(error.kind(), data::ErrorKind::NotThreeDimensional);
     EXPECT_TRUE(mentions(error, "at least two common levels")) << error.what();
     EXPECT_TRUE(mentions(error, "700 hPa")) << error.what();
+}
+
+TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
+    const test::TempDir dir;
+    // One forecast (no ensemble template, so no 'number'), 3 steps from 2024-01-15 00:00
+    // (the last crossing a day), 2 levels.
+    std::vector<GribField> fields;
+    for (long step : {30L, 6L, 12L}) {
+        for (long level : {500L, 850L}) {
+            GribField f = field(
+                "t", "isobaricInhPa", level, 0,
+                [=](double lat, double lon) { return lat + lon + static_cast<double>(step); },
+                step);
+            std::erase_if(f.keys, [](const GribKey& k) {
+                return k.first == "productDefinitionTemplateNumber" ||
+                       k.first == "numberOfForecastsInEnsemble" || k.first == "perturbationNumber";
+            });
+            fields.push_back(f);
+        }
+    }
+    const std::string path = writeGrib(dir.file("forecast.grib2"), fields);
+    const data::Error alone = errorOf(select(path));
+    EXPECT_EQ(alone.kind(), data::ErrorKind::MemberDimensionNotFound) << alone.what();
+    EXPECT_EQ(alone.choices(), std::vector<std::string>{"time"});
+
+    data::DataSelection byTime = select(path);
+    byTime.memberDimension = "time";
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(byTime, {}, {}, &d);
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"2024-01-15T06:00", "2024-01-15T12:00",
+                                                       "2024-01-16T06:00"}));
+    EXPECT_EQ(d.fixedDimensions, std::vector<std::string>{"number = 0 of 1 (member 0)"});
+    const std::vector<double> steps{6, 12, 30};
+    expectValues(
+        e, [&](std::size_t m, double lat, double lon, double) { return lat + lon + steps[m]; },
+        1e-3);
+
+    // Three times: index 3 is past their end.
+    const data::Error past = errorOf(select(path, "t", 3));
+    EXPECT_EQ(past.kind(), data::ErrorKind::InvalidArgument);
+    EXPECT_TRUE(mentions(past, "dimension 'time'")) << past.what();
 }
