@@ -338,11 +338,11 @@ range and mean, missing values, the file's variables.)doc")
         });
 
     module.def("_open", &openFiles, py::arg("paths"), py::arg("var"), py::arg("member_dim"),
-          py::arg("time_index"), py::arg("progress"));
+               py::arg("time_index"), py::arg("progress"));
     module.def("_from_numpy", &fromArray, py::arg("values"), py::arg("axes"), py::arg("variable"),
-          py::arg("units"), py::arg("names"), py::arg("member_dim"));
+               py::arg("units"), py::arg("names"), py::arg("member_dim"));
     module.def("demo", &demoEnsemble, py::arg("members") = 50, py::arg("seed") = 1,
-          py::arg("progress") = py::none(), R"doc(
+               py::arg("progress") = py::none(), R"doc(
 The workbench's built-in demo ensemble: `members` members (1 to 1000) of a wind-speed-like
 field on a 256 x 128 x 16 longitude/latitude/pressure grid, in four flow regimes, drawn from
 `seed`. The same members as `ensil preprocess --demo` and the workbench's demo.)doc");

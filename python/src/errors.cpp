@@ -55,8 +55,10 @@ void translate(std::exception_ptr failure) {
 
 }  // namespace
 
-void warn(const std::string& message) {
-    if (PyErr_WarnEx(g_dataWarning, message.c_str(), 2) != 0) throw py::error_already_set();
+void warn(const std::string& message, int stackLevel) {
+    if (PyErr_WarnEx(g_dataWarning, message.c_str(), stackLevel) != 0) {
+        throw py::error_already_set();
+    }
 }
 
 void bindErrors(py::module_& m) {

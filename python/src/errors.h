@@ -32,6 +32,7 @@ void bindErrors(pybind11::module_& m);
 
 namespace ensil::python {
 // Says `message` as an ensil.DataWarning (a UserWarning), as the command line prints its
-// "warning:" and "note:" lines. Throws pybind11::error_already_set when warnings are errors.
-void warn(const std::string& message);
+// "warning:" and "note:" lines, pointing at the Python frame `stackLevel` up (1: the one that
+// called into the module). Throws pybind11::error_already_set when warnings are errors.
+void warn(const std::string& message, int stackLevel = 1);
 }  // namespace ensil::python

@@ -2,6 +2,8 @@
 // through the same code (app::preprocessEnsemble), plus the meshes and the ensemble statistics.
 #include <pybind11/stl.h>
 
+#include <QString>
+
 #include "app/headless/isovalue_job.h"
 #include "app/headless/preprocess_run.h"
 #include "preprocessing/ensemble_statistics.h"
@@ -318,8 +320,8 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
             (std::string(kStatsDoc) + "\nHere `iso` is the result's isovalue.").c_str())
         .def("__repr__", [](const PyPreprocessResult& r) {
             return "<ensil.PreprocessResult: " + std::to_string(r.result->ensemble->memberCount()) +
-                   " members at " + std::to_string(r.result->meshes.isovalue) + ", " +
-                   std::to_string(r.result->k) + " clusters, " +
+                   " members at " + QString::number(r.result->meshes.isovalue).toStdString() +
+                   ", " + std::to_string(r.result->k) + " clusters, " +
                    std::to_string(r.result->meshes.triangles) + " triangles>";
         });
 

@@ -129,7 +129,8 @@ py::tuple render(const py::object& target, const std::optional<double>& iso,
                       ? app::renderEnsemble(ensemble->data, ensemble->sourceKey(), state, request)
                       : app::renderSession(state, request);
     }
-    if (!outcome.note.empty()) warn("note: " + outcome.note);
+    // Called through ensil.render (python/ensil/__init__.py): the user's line is one further up.
+    if (!outcome.note.empty()) warn("note: " + outcome.note, 2);
     PySession drawn;
     *drawn.state = outcome.drawn;
     py::dict facts;
@@ -160,8 +161,8 @@ py::bytes png(const py::array_t<std::uint8_t, py::array::c_style | py::array::fo
 }  // namespace
 
 void bindRender(py::module_& module) {
-    module.def("_render", &render, py::arg("target"), py::arg("iso"), py::arg("size"), py::arg("view"),
-          py::arg("cache"));
+    module.def("_render", &render, py::arg("target"), py::arg("iso"), py::arg("size"),
+               py::arg("view"), py::arg("cache"));
     module.def("_png", &png, py::arg("rgba"), "The PNG file of an RGBA picture, as bytes.");
 }
 

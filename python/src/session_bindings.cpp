@@ -43,7 +43,8 @@ std::vector<std::string> pathList(const py::object& given) {
     if (given.is_none()) return {};
     const py::module_ os = py::module_::import("os");
     const auto one = [&os](const py::handle& p) {
-        return os.attr("path").attr("abspath")(os.attr("fsdecode")(os.attr("fspath")(p)))
+        return os.attr("path")
+            .attr("abspath")(os.attr("fsdecode")(os.attr("fspath")(p)))
             .cast<std::string>();
     };
     if (py::isinstance<py::str>(given) || py::hasattr(given, "__fspath__")) return {one(given)};
@@ -225,7 +226,9 @@ Writes the session as a project file (atomically: a failed write leaves the old 
                                    ? "'" + s.data.paths.front() + "'"
                                    : std::to_string(s.data.paths.size()) + " files";
             return "<ensil.Session of " + data + ", isovalue " +
-                   (s.isovalue ? std::to_string(*s.isovalue) : std::string("default")) + ">";
+                   (s.isovalue ? QString::number(*s.isovalue).toStdString()
+                               : std::string("default")) +
+                   ">";
         });
 }
 

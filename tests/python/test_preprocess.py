@@ -5,7 +5,9 @@ callable; other Python threads run meanwhile."""
 
 import os
 import signal
+import sys
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -171,7 +173,11 @@ def test_the_default_number_of_clusters_is_lowered_to_the_members():
     assert few.preprocess(iso=0.0).k == 3
 
 
-def test_ctrl_c_stops_the_work_at_its_next_check(spheres):
+def test_ctrl_c_stops_the_work_at_its_next_check(tmp_path):
+    # The demo's meshes go through the mesh cache, which a finished run writes: an empty cache
+    # afterwards shows that the work stopped, not only that the call raised.
+    ens = ensil.demo(members=2)
+    cache = tmp_path / "cache"
     fractions = []
 
     def press_ctrl_c(fraction):
@@ -180,11 +186,12 @@ def test_ctrl_c_stops_the_work_at_its_next_check(spheres):
             os.kill(os.getpid(), signal.SIGINT)
 
     with pytest.raises(KeyboardInterrupt):
-        spheres.preprocess(iso=0.5, clusters=2, progress=press_ctrl_c)
-    # Stopped after the first report: no later report reached Python, the work did not finish.
+        ens.preprocess(cache_dir=str(cache), progress=press_ctrl_c)
     assert len(fractions) == 1 and fractions[0] < 1.0
-    # And the next call runs as usual.
-    assert spheres.preprocess(iso=0.5, clusters=2).k == 2
+    assert not cache.exists() or not any(cache.iterdir())
+    # And the next call runs as usual, storing its meshes.
+    assert not ens.preprocess(cache_dir=str(cache)).from_cache
+    assert any(cache.iterdir())
 
 
 def test_an_exception_from_the_progress_callable_stops_the_work(spheres):
@@ -207,8 +214,10 @@ def test_progress_rises_to_the_end(spheres):
 
 
 def test_other_python_threads_run_while_it_works():
-    # A thread counts while another preprocesses with no progress callable: with the GIL held
-    # through the work, the count could not move between the call's start and end.
+    # With a switch interval longer than the test, a thread holding the GIL keeps it until it
+    # lets it go itself: the count below moves while the other thread preprocesses only if
+    # preprocess lets the GIL go while it works. time.sleep(0) is no wait: it hands the GIL to
+    # the worker whenever the worker asks for it.
     ens = sphere_ensemble([3.0 + 0.1 * i for i in range(12)], n=40)
     count = [0]
     seen = {}
@@ -220,9 +229,28 @@ def test_other_python_threads_run_while_it_works():
         seen["after"] = count[0]
         done.set()
 
-    worker = threading.Thread(target=work)
-    worker.start()
-    while not done.is_set():
-        count[0] += 1
-    worker.join()
-    assert seen["after"] - seen["before"] > 1000
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        while not done.is_set():
+            count[0] += 1
+            time.sleep(0)
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert seen["after"] - seen["before"] > 100
+
+
+def test_members_without_data_are_left_out_and_said():
+    values = np.stack([np.full((3, 4, 5), np.nan), *[np.indices((3, 4, 5))[2] - 2.0 + 0.1 * k
+                                                   for k in range(3)]]).astype(np.float32)
+    axis = {"z": np.arange(3.0), "y": np.arange(4.0), "x": np.arange(5.0)}
+    with pytest.warns(ensil.DataWarning, match="'member 1' of 'values' has no valid value"):
+        ens = ensil.from_numpy(values, axis)
+    with pytest.warns(ensil.DataWarning, match="it is left out of the clustering"):
+        result = ens.preprocess(iso=0.5, cache=False)
+    assert result.members_without_data == ["member 1"]
+    assert result.members == ["member 2", "member 3", "member 4"]
+    assert result.distance_matrix.shape == (3, 3) and len(result.labels) == 3

@@ -78,6 +78,12 @@ def test_values_outside_the_range_are_refused_as_the_command_line_refuses_them()
         session.settings["thicknes"] = 0.1
     with pytest.raises(ensil.ArgumentError, match=r"^--iso 'nan' is refused"):
         session.isovalue = float("nan")
+    with pytest.raises(ensil.ArgumentError, match=r"^--view 'up' is refused: it must be one of "
+                                                  r"top, north"):
+        session.look_from("up")
+    session.look_from("top")  # the map view: straight down, orthographic
+    assert session.settings["elevation"] == 90.0
+    assert session.settings["projection"] == "orthographic"
     # Nothing changed, also by a set() whose second value is refused.
     with pytest.raises(ensil.ArgumentError):
         session.set(thickness=0.05, mode="bogus")
