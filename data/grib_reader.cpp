@@ -1,7 +1,11 @@
 #include "data/grib_reader.h"
 
+#include <filesystem>
+#include <list>
 #include <memory>
+#include <mutex>
 
+#include "data/content_hash.h"
 #include "data/error.h"
 #include "data/grib_messages.h"
 #include "data/grib_plan.h"
@@ -19,10 +23,35 @@ std::string formatOf(const GribInventory& inventory) {
     return one && two ? "GRIB 1 and 2" : two ? "GRIB 2" : "GRIB 1";
 }
 
+// The messages of a file, scanned once for openEnsemble()'s describe() and read() and for the
+// Open dialog's repeated descriptions: ecCodes takes milliseconds a message to say what it
+// holds, hashing the file's bytes far less. The last few files are kept, each under its path
+// and the hash of its contents (a file rewritten with its size and time kept is other data).
+std::shared_ptr<const GribInventory> inventoryOf(const std::string& path,
+                                                 const std::stop_token& stop) {
+    std::error_code error;
+    const std::string key =
+        std::filesystem::absolute(path, error).string() + '\n' + std::to_string(contentHash(path));
+    static std::mutex mutex;
+    static std::list<std::pair<std::string, std::shared_ptr<const GribInventory>>> recent;
+    constexpr std::size_t kFilesKept = 4;
+    {
+        const std::lock_guard lock(mutex);
+        for (const auto& [k, inventory] : recent) {
+            if (k == key) return inventory;
+        }
+    }
+    auto inventory = std::make_shared<const GribInventory>(scanGribFile(path, stop));
+    const std::lock_guard lock(mutex);
+    recent.emplace_front(key, inventory);
+    if (recent.size() > kFilesKept) recent.pop_back();
+    return inventory;
+}
+
 // The files' inventories and plans, and what they say together. The plans point into the
 // inventories, which therefore stay where they are.
 struct OpenedFiles {
-    std::vector<std::unique_ptr<GribInventory>> inventories;
+    std::vector<std::shared_ptr<const GribInventory>> inventories;
     std::vector<GribPlan> plans;
     EnsembleDescription description;
 };
@@ -35,8 +64,7 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
     EnsembleDescription& d = opened.description;
     for (std::size_t f = 0; f < selection.paths.size(); ++f) {
         const std::string& path = selection.paths[f];
-        const GribInventory& inventory = *opened.inventories.emplace_back(
-            std::make_unique<GribInventory>(scanGribFile(path, stop)));
+        const GribInventory& inventory = *opened.inventories.emplace_back(inventoryOf(path, stop));
         const GribPlan& plan =
             opened.plans.emplace_back(planGribVariable(inventory, path, selection));
         if (f == 0) {

@@ -12,8 +12,9 @@
 // regrids them. A damaged message is skipped with a warning naming its byte offset
 // (Ensemble::warnings), and the ensemble is refused only when a field it needs is missing.
 // wind_speed = sqrt(u^2 + v^2) is offered when u and v exist, on the levels they share.
-// One file with members, or one file per member. Stateless; callable from any thread
-// (ecCodes calls are serialised).
+// One file with members, or one file per member. Callable from any thread (ecCodes calls are
+// serialised); its only state is the message lists of the last few files it read, kept under
+// each file's path and content hash so describe() and read() scan a file once.
 #pragma once
 
 #include "data/ensemble_reader.h"
