@@ -6,10 +6,12 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <string_view>
 
 #include "data/error.h"
 #include "data/job.h"
@@ -93,17 +95,37 @@ std::string atOffset(const std::string& path, std::size_t number, std::size_t of
            std::to_string(offset);
 }
 
-// The first "GRIB" in [from, to) of the file: where a message that failed to read began.
-std::size_t findMessageStart(std::FILE* file, long from, long to) {
-    constexpr long kLookAt = 1 << 20;  // a damaged message's start lies near where reading began
-    const long end = std::min(to, from + kLookAt);
-    if (end - from < 4 || std::fseek(file, from, SEEK_SET) != 0) {
-        return static_cast<std::size_t>(from);
+// Where the next message begins: the first "GRIB" at or after `from`; nullopt when none is left.
+std::optional<long> nextMessageStart(std::FILE* file, long from) {
+    constexpr std::size_t kChunk = 1 << 16;
+    std::string bytes(kChunk + 3, '\0');
+    for (long at = from;; at += static_cast<long>(kChunk)) {
+        if (std::fseek(file, at, SEEK_SET) != 0) return std::nullopt;
+        const std::size_t got = std::fread(bytes.data(), 1, bytes.size(), file);
+        const std::size_t found = std::string_view(bytes.data(), got).find("GRIB");
+        if (found != std::string_view::npos) return at + static_cast<long>(found);
+        if (got < bytes.size()) return std::nullopt;  // the 3 bytes overlap the next chunk
     }
-    std::string bytes(static_cast<std::size_t>(end - from), '\0');
-    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
-    const std::size_t at = bytes.find("GRIB");
-    return static_cast<std::size_t>(from) + (at == std::string::npos ? 0 : at);
+}
+
+// The smallest length the message at `start` says it has (section 0): GRIB 1's 3-byte length
+// (without the flag of ECMWF's large messages, whose true length is larger still), GRIB 2's
+// 8-byte one. nullopt for another edition number, which ecCodes refuses itself.
+std::optional<std::uint64_t> claimedLength(std::FILE* file, long start) {
+    std::array<unsigned char, 16> head{};
+    if (std::fseek(file, start, SEEK_SET) != 0) return std::nullopt;
+    const std::size_t got = std::fread(head.data(), 1, head.size(), file);
+    if (got < 8) return std::uint64_t{8};
+    std::uint64_t length = 0;
+    if (head[7] == 1) {
+        length = (std::uint64_t{head[4]} << 16 | std::uint64_t{head[5]} << 8 | head[6]) & 0x7fffff;
+    } else if (head[7] == 2) {
+        if (got < 16) return std::uint64_t{16};
+        for (std::size_t i = 8; i < 16; ++i) length = length << 8 | head[i];
+    } else {
+        return std::nullopt;
+    }
+    return length;
 }
 
 GribGrid readGrid(codes_handle* h) {
@@ -191,35 +213,42 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
                     "cannot open '" + path + "' for reading: " + std::strerror(errno));
     }
     GribInventory inventory;
+    std::fseek(file.get(), 0, SEEK_END);
+    const long size = std::ftell(file.get());
+    long position = 0;
     for (std::size_t number = 1;; ++number) {
         throwIfStopped(stop);
-        const auto lock = lockEccodes();
-        const long before = std::ftell(file.get());
-        int error = CODES_SUCCESS;
-        const Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
-        if (h) {
-            GribMessage m = readKeys(h.get(), number);
-            if (m.validity >= 0) {
-                inventory.messages.push_back(std::move(m));
-            } else {
-                inventory.warnings.push_back(
-                    atOffset(path, number, m.offset) +
-                    " is damaged (its reference date, time or forecast step is impossible); "
-                    "ensil skipped it");
-            }
+        const std::optional<long> start = nextMessageStart(file.get(), position);
+        if (!start) break;
+        const auto skip = [&](const std::string& why) {
+            inventory.warnings.push_back(atOffset(path, number, static_cast<std::size_t>(*start)) +
+                                         " is damaged (" + why + "); ensil skipped it");
+        };
+        // ecCodes allocates the length a message claims before reading it: a damaged length
+        // would ask for gigabytes. A message longer than what is left of the file is cut.
+        const auto length = claimedLength(file.get(), *start);
+        const auto left = static_cast<std::uint64_t>(size - *start);
+        if (length && *length > left) {
+            skip("it says it is " + std::to_string(*length) + " bytes long, but the file ends " +
+                 std::to_string(left) + " bytes after its start");
+            position = *start + 4;
             continue;
         }
-        if (error == CODES_SUCCESS) break;  // the end of the file
-        // A damaged message: say where it began, and go on after it. ecCodes has moved past
-        // what it read; a read that did not move would loop forever.
-        const long after = std::ftell(file.get());
-        const std::string words = libraryWords(error);
-        const std::size_t start = findMessageStart(file.get(), before, after);
-        inventory.warnings.push_back(atOffset(path, number, start) + " is damaged (" + words +
-                                     "); ensil skipped it");
-        if (after <= before || std::fseek(file.get(), after, SEEK_SET) != 0 ||
-            std::feof(file.get()) != 0) {
-            break;
+        const auto lock = lockEccodes();
+        std::fseek(file.get(), *start, SEEK_SET);
+        int error = CODES_SUCCESS;
+        const Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
+        // Go on after what ecCodes read, and at least after this "GRIB": never loop in place.
+        position = std::max(std::ftell(file.get()), *start + 4);
+        if (!h) {
+            skip(error == CODES_SUCCESS ? "ecCodes found no message there" : libraryWords(error));
+            continue;
+        }
+        GribMessage m = readKeys(h.get(), number);
+        if (m.validity >= 0) {
+            inventory.messages.push_back(std::move(m));
+        } else {
+            skip("its reference date, time or forecast step is impossible");
         }
     }
     if (inventory.messages.empty()) {

@@ -367,7 +367,8 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     EXPECT_TRUE(mentions(late, offset7)) << late.what();
     EXPECT_TRUE(mentions(late, "member 1 at 850 hPa")) << late.what();
 
-    // A message whose length field is wrong (the third, time 0) is skipped: time 1 reads.
+    // A message whose length field is wrong (the third, time 0) is skipped, before ecCodes
+    // allocates the 2 GB it claims: time 1 reads.
     std::string bytes = good;
     bytes[offsets[2] + 12] = static_cast<char>(0x7f);  // GRIB 2's 8-byte length, most significant
     const std::string damaged = dir.file("length.grib2");
@@ -376,6 +377,8 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     ASSERT_FALSE(later.warnings.empty());
     EXPECT_TRUE(later.warnings.front().find("byte offset " + std::to_string(offsets[2])) !=
                 std::string::npos)
+        << later.warnings.front();
+    EXPECT_TRUE(later.warnings.front().find("bytes long, but the file ends") != std::string::npos)
         << later.warnings.front();
     EXPECT_EQ(errorOf(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
 
