@@ -25,7 +25,7 @@ struct Subcommand {
 constexpr std::array<Subcommand, 5> kSubcommands{{
     {"generate", "Write the built-in demo ensemble as a CF NetCDF file", &runGenerateCommand},
     {"stats", "Write ensemble statistics at an isovalue as a CF NetCDF file", &runStatsCommand},
-    {"info", "Describe the ensembles in NetCDF, HDF5 or VTK files", &runInfoCommand},
+    {"info", "Describe the ensembles in NetCDF, HDF5, VTK or GRIB files", &runInfoCommand},
     {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", &runPreprocessCommand},
     {"render", "Draw an ensemble's silhouettes to a PNG without a window", &runRenderCommand},
 }};

@@ -21,8 +21,9 @@ void DataSelectionOptions::addTo(QCommandLineParser& parser) const {
     parser.addOptions({m_variable, m_memberDim, m_timeIndex});
     parser.addPositionalArgument(
         QStringLiteral("PATH"),
-        QStringLiteral("NetCDF, HDF5 or VTK file(s): one file with a member dimension, or one "
-                       "file per member."),
+        QStringLiteral(
+            "NetCDF, HDF5, VTK or GRIB file(s): one file with a member dimension, or one "
+            "file per member."),
         QStringLiteral("PATH..."));
 }
 

@@ -43,6 +43,7 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
     facts.missing = overview.statistics.missingCount;
     facts.megabytes = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
     QStringList warnings;
+    for (const std::string& warning : e.warnings) warnings << QString::fromStdString(warning);
     if (const auto warning = data::fewLevelsWarning(e.grid)) {
         warnings << QString::fromStdString(*warning);
     }

@@ -318,7 +318,8 @@ void MainWindow::chooseFiles() {
     const QStringList files = QFileDialog::getOpenFileNames(
         this, tr("Open Ensemble (one file with members, or one file per member)"),
         settings.value(QStringLiteral("open/lastFolder")).toString(),
-        tr("Ensemble files (*.nc *.nc4 *.cdf *.netcdf *.h5 *.hdf5 *.he5 *.vtk *.vti);;"
+        tr("Ensemble files (*.nc *.nc4 *.cdf *.netcdf *.h5 *.hdf5 *.he5 *.vtk *.vti *.grib "
+           "*.grb *.grib1 *.grib2 *.grb2);;"
            "All files (*)"));
     if (files.isEmpty()) return;
     settings.setValue(QStringLiteral("open/lastFolder"), QFileInfo(files.front()).absolutePath());

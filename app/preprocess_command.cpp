@@ -1,25 +1,20 @@
 #include "app/preprocess_command.h"
 
-#include <QColor>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "app/data_selection_options.h"
 #include "app/headless/isovalue_job.h"
+#include "app/headless/preprocess_run.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
-#include "gl/palette.h"
-#include "preprocessing/cluster_identity.h"
 #include "preprocessing/clustering.h"
-#include "preprocessing/default_isovalue.h"
-#include "preprocessing/field_statistics.h"
 #include "widgets/session/setting_options.h"
 
 namespace ensil::app {
@@ -55,18 +50,9 @@ const session::SettingOptions& clusterOptions() {
 
 double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
 
-struct Result {
-    data::Ensemble ensemble;
-    prep::IsovalueMeshes meshes;
-    prep::DistanceMatrix distances;
-    prep::MergeTree tree;
-    std::vector<int> labels;
-    std::vector<double> distancesToMean;
-    std::vector<double> meanOutlyingness;
-    prep::ContourBoxplot boxplot;
-    std::map<std::string, double> seconds;
+// The shared result, with what only the command reports.
+struct Result : PreprocessResult {
     QString cache;
-    QStringList membersWithoutData;  // left out of everything below
 };
 
 QString memberName(const data::Member& member, std::size_t index) {
@@ -74,27 +60,19 @@ QString memberName(const data::Member& member, std::size_t index) {
                                : QString::fromStdString(member.name);
 }
 
-// Members with no valid value are named on `err` and taken out of the ensemble (the shared
-// rule of data::leaveOutMembersWithoutData, as in the workbench), so every number the results
-// give is one.
-QStringList leaveOutMembersWithoutData(data::Ensemble& ensemble, QTextStream& err) {
-    QStringList names;
-    for (const std::string& name : data::leaveOutMembersWithoutData(ensemble)) {
-        err << "ensil preprocess: warning: "
-            << QString::fromStdString(data::memberWithoutDataWarning(ensemble, name)) << "\n";
-        names << QString::fromStdString(name);
-    }
-    return names;
-}
-
-QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
+QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     QJsonObject o;
-    const data::Grid& g = r.ensemble.grid;
-    o[QStringLiteral("member_count")] = static_cast<qint64>(r.ensemble.memberCount());
-    o[QStringLiteral("members_without_data")] = QJsonArray::fromStringList(r.membersWithoutData);
+    const data::Ensemble& e = *r.ensemble;
+    const data::Grid& g = e.grid;
+    o[QStringLiteral("member_count")] = static_cast<qint64>(e.memberCount());
+    QJsonArray withoutData;
+    for (const std::string& name : r.membersWithoutData) {
+        withoutData.append(QString::fromStdString(name));
+    }
+    o[QStringLiteral("members_without_data")] = withoutData;
     o[QStringLiteral("grid")] = QJsonArray{static_cast<qint64>(g.nx()), static_cast<qint64>(g.ny()),
                                            static_cast<qint64>(g.nz())};
-    o[QStringLiteral("variable")] = QString::fromStdString(r.ensemble.variable);
+    o[QStringLiteral("variable")] = QString::fromStdString(e.variable);
     o[QStringLiteral("isovalue")] = r.meshes.isovalue;
     QJsonObject secs;
     for (const auto& [name, value] : r.seconds) secs[QString::fromStdString(name)] = value;
@@ -127,25 +105,19 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     QJsonArray rows;
     for (const prep::Merge& m : r.tree.merges) rows.append(QJsonArray{m.a, m.b, m.height, m.size});
     o[QStringLiteral("linkage")] = rows;
-    o[QStringLiteral("k")] = k;
+    o[QStringLiteral("k")] = r.k;
     QJsonArray labels;
     for (int l : r.labels) labels.append(l);
     o[QStringLiteral("clusters")] = labels;
-    // The colour each member is drawn in, by the stable identity rule from the tree (the
-    // workbench's colours for this tree and k when it opens the data).
-    const std::vector<int> identities =
-        prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, k));
+    // The colour each member is drawn in (the workbench's for this tree and k).
     QJsonArray colors;
-    for (const int identity : identities) {
-        const glm::vec3 c = gl::clusterColor(identity);
-        colors.append(QColor::fromRgbF(c.r, c.g, c.b).name());
-    }
+    for (const std::string& color : r.colors) colors.append(QString::fromStdString(color));
     o[QStringLiteral("colors")] = colors;
     // What the workbench's member table shows; NaN (no isosurface) and infinity are null.
     const auto figure = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
     QJsonArray members;
-    for (std::size_t m = 0; m < r.ensemble.memberCount(); ++m) {
-        members.append(QJsonObject{{"name", memberName(r.ensemble.members[m], m)},
+    for (std::size_t m = 0; m < e.memberCount(); ++m) {
+        members.append(QJsonObject{{"name", memberName(e.members[m], m)},
                                    {"cluster", m < r.labels.size() ? r.labels[m] : -1},
                                    {"distance_to_mean", figure(r.distancesToMean[m])},
                                    {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
@@ -161,12 +133,14 @@ QJsonObject toJson(const Result& r, int k, prep::Linkage linkage) {
     return o;
 }
 
-void printText(QTextStream& out, const Result& r, int k) {
+void printText(QTextStream& out, const Result& r) {
     const auto& m = r.meshes;
-    out << "Ensemble:   " << r.ensemble.memberCount() << " members of "
-        << QString::fromStdString(r.ensemble.variable) << " on " << r.ensemble.grid.nx() << " x "
-        << r.ensemble.grid.ny() << " x " << r.ensemble.grid.nz() << ", isovalue " << m.isovalue;
-    if (!r.membersWithoutData.isEmpty()) {
+    const data::Ensemble& e = *r.ensemble;
+    const int k = r.k;
+    out << "Ensemble:   " << e.memberCount() << " members of " << QString::fromStdString(e.variable)
+        << " on " << e.grid.nx() << " x " << e.grid.ny() << " x " << e.grid.nz() << ", isovalue "
+        << m.isovalue;
+    if (!r.membersWithoutData.empty()) {
         out << " (" << r.membersWithoutData.size() << " without data left out)";
     }
     out << "\n";
@@ -187,15 +161,15 @@ void printText(QTextStream& out, const Result& r, int k) {
     out << "\n";
     if (!r.boxplot.depth.empty()) {
         const std::size_t median = r.boxplot.median;
-        out << "Boxplot:    median " << memberName(r.ensemble.members[median], median)
-            << " (depth " << r.boxplot.depth[median] << "), ";
+        out << "Boxplot:    median " << memberName(e.members[median], median) << " (depth "
+            << r.boxplot.depth[median] << "), ";
         if (r.boxplot.outliers.empty()) {
             out << "no outliers";
         } else {
             out << "outliers";
             const char* separator = " ";
             for (const std::size_t outlier : r.boxplot.outliers) {
-                out << separator << memberName(r.ensemble.members[outlier], outlier);
+                out << separator << memberName(e.members[outlier], outlier);
                 separator = ", ";
             }
         }
@@ -241,98 +215,56 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         err << "ensil preprocess: " << problem << "\n";
         return 2;
     }
-    int k = requested.clusters;
-    const bool clustersGiven = clusterOptions().given(parser).contains("--clusters");
     QElapsedTimer total, stage;
     total.start();
     try {
         const prep::Linkage linkage = requested.linkage;
-        Result r;
         stage.start();
         const data::DemoEnsembleParams demo;
-        r.ensemble = parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
-                                          : data::openEnsemble(*selection);
-        r.seconds["load"] = seconds(stage);
-        if (const auto note = data::fewLevelsWarning(r.ensemble.grid)) {
-            err << "ensil preprocess: note: " << QString::fromStdString(*note) << "\n";
-        }
-        if (const auto note = data::infiniteValuesWarning(r.ensemble)) {
-            err << "ensil preprocess: warning: " << QString::fromStdString(*note) << "\n";
-        }
-        r.membersWithoutData = leaveOutMembersWithoutData(r.ensemble, err);
-        const int members = static_cast<int>(r.ensemble.memberCount());
-        if (k > members && !clustersGiven) {
-            k = members;  // the default asks for more clusters than a small ensemble has
-        } else if (k > members) {
-            err << "ensil preprocess: --clusters " << k << " is more than the " << members
-                << " members of this ensemble"
-                << (r.membersWithoutData.isEmpty() ? "" : " with data") << "; give at most "
-                << members << "\n";
-            return 2;
-        }
-        const prep::FieldStatistics stats =
-            prep::computeFieldStatistics(r.ensemble, prep::kIsovalueHistogramBins);
-        if (!iso) iso = prep::defaultIsovalue(r.ensemble, stats);
-        if (*iso <= stats.minimum || *iso >= stats.maximum) {
-            err << "ensil preprocess: isovalue " << *iso << " is outside the values of '"
-                << QString::fromStdString(r.ensemble.variable) << "' (" << stats.minimum << " .. "
-                << stats.maximum << " " << QString::fromStdString(r.ensemble.units)
-                << "): no member has a surface there. Choose an isovalue inside that range\n";
-            return 1;
-        }
-        IsovalueJobInput job;
-        job.ensemble = &r.ensemble;
-        job.options.isovalue = static_cast<float>(*iso);
-        job.options.decimate = !parser.isSet(o.noDecimation);
-        job.options.maxErrorCells = static_cast<float>(*errorCells);
-        job.linkage = linkage;
+        auto ensemble = std::make_shared<const data::Ensemble>(
+            parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
+                                 : data::openEnsemble(*selection));
+        const double loadSeconds = seconds(stage);
+        PreprocessRequest request;
+        request.isovalue = iso;
+        request.clusters = requested.clusters;
+        request.clustersGiven = clusterOptions().given(parser).contains("--clusters");
+        request.linkage = linkage;
+        request.decimate = !parser.isSet(o.noDecimation);
+        request.errorCells = *errorCells;
         if (!parser.isSet(o.noCache)) {
             if (parser.isSet(o.cacheDir) && parser.value(o.cacheDir).trimmed().isEmpty()) {
                 err << "ensil preprocess: --cache-dir '' is refused: name a folder, or use "
                        "--no-cache\n";
                 return 2;
             }
-            job.cacheDirectory = parser.isSet(o.cacheDir) ? parser.value(o.cacheDir).toStdString()
-                                                          : defaultMeshCacheDirectory();
+            request.cacheDirectory = parser.isSet(o.cacheDir)
+                                         ? parser.value(o.cacheDir).toStdString()
+                                         : defaultMeshCacheDirectory();
         }
-        job.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
-                                                   " seed=" + std::to_string(demo.seed)
-                                             : data::sourceIdentity(*selection);
-        // Meshes of fewer members than the file holds must not be taken for the file's.
-        std::vector<std::string> withoutData;
-        for (const QString& name : r.membersWithoutData) withoutData.push_back(name.toStdString());
-        job.sourceKey += data::membersWithoutDataKey(withoutData);
-        stage.restart();
-        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(r.ensemble);
-        r.seconds["moments"] = seconds(stage);
-        job.moments = &moments;
-        IsovalueOutcome outcome = runIsovalueJob(job);
-        r.seconds.insert(outcome.seconds.begin(), outcome.seconds.end());
-        if (!outcome.cacheWarning.empty()) {
-            err << "ensil preprocess: warning: " << QString::fromStdString(outcome.cacheWarning)
-                << "; going on without storing the results\n";
-        }
-        r.cache = !job.cacheDirectory ? QStringLiteral("off")
-                  : outcome.fromCache ? QStringLiteral("hit")
-                                      : QStringLiteral("miss");
-        r.meshes = std::move(outcome.meshes);
-        r.distances = std::move(outcome.distances);
-        if (const std::string warning = prep::pairsWithoutOverlapWarning(r.ensemble, r.distances);
-            !warning.empty()) {
-            err << "ensil preprocess: warning: " << QString::fromStdString(warning) << "\n";
-        }
-        r.tree = std::move(outcome.tree);
-        r.labels = prep::clusterLabels(r.tree, k);
-        r.distancesToMean = std::move(outcome.distancesToMean);
-        r.meanOutlyingness = std::move(outcome.meanOutlyingness);
-        r.boxplot = std::move(outcome.boxplot);
+        request.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
+                                                       " seed=" + std::to_string(demo.seed)
+                                                 : data::sourceIdentity(*selection);
+        Result r;
+        static_cast<PreprocessResult&>(r) = preprocessEnsemble(
+            std::move(ensemble), request, [&](const std::string& kind, const std::string& text) {
+                err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
+                    << QString::fromStdString(text) << "\n";
+            });
+        r.seconds["load"] = loadSeconds;
+        r.cache = !request.cacheDirectory ? QStringLiteral("off")
+                  : r.fromCache           ? QStringLiteral("hit")
+                                          : QStringLiteral("miss");
         r.seconds["total"] = seconds(total);
         if (parser.isSet(o.json)) {
-            out << QJsonDocument(toJson(r, k, linkage)).toJson(QJsonDocument::Compact) << "\n";
+            out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
         } else {
-            printText(out, r, k);
+            printText(out, r);
         }
         return 0;
+    } catch (const PreprocessRefused& e) {
+        err << "ensil preprocess: " << e.what() << "\n";
+        return e.exitCode();
     } catch (const data::Error& e) {
         err << "ensil preprocess: " << e.what() << "\n";
         return 1;

@@ -349,6 +349,9 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     r.variable = QString::fromStdString(ensemble.variable);
     r.units = QString::fromStdString(ensemble.units);
     r.grid = {ensemble.grid.nx(), ensemble.grid.ny(), ensemble.grid.nz()};
+    for (const std::string& note : ensemble.warnings) {
+        err << "ensil stats: warning: " << QString::fromStdString(note) << "\n";
+    }
     if (const auto note = data::infiniteValuesWarning(ensemble)) {
         err << "ensil stats: warning: " << QString::fromStdString(*note) << "\n";
     }

@@ -34,6 +34,9 @@ struct Ensemble {
     // Values that were +inf or -inf in the file: openEnsemble() makes them NaN (missing), since
     // no isosurface, range or distance can use them; the count is kept so it can be said.
     std::size_t infiniteValues = 0;
+    // What the reader read around and the user should know, one sentence each: e.g. a damaged
+    // GRIB message it skipped, naming the byte offset. Empty for a clean read.
+    std::vector<std::string> warnings;
 
     [[nodiscard]] std::size_t memberCount() const { return members.size(); }
     [[nodiscard]] std::size_t bytes() const {

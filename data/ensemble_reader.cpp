@@ -14,6 +14,7 @@
 
 #include "data/content_hash.h"
 #include "data/error.h"
+#include "data/grib_reader.h"
 #include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
 #include "data/vtk_reader.h"
@@ -28,6 +29,7 @@ const std::vector<std::unique_ptr<EnsembleReader>>& readers() {
         r.push_back(std::make_unique<NetcdfReader>());
         r.push_back(std::make_unique<Hdf5Reader>());
         r.push_back(std::make_unique<VtkReader>());
+        r.push_back(std::make_unique<GribReader>());
         return r;
     }();
     return list;
@@ -78,18 +80,6 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
                             "' is not a regular file (a named pipe, a device or a socket); "
                             "name a file that holds the data");
         }
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::array<char, 4> magic{};
-    if (in.read(magic.data(), magic.size()) && std::string(magic.data(), 4) == "GRIB") {
-        throw Error(ErrorKind::UnsupportedFormat,
-                    "'" + path +
-                        "' is a GRIB file, which ensil does not read yet; convert it to "
-                        "NetCDF first, e.g. with 'cdo -f nc4 copy " +
-                        path +
-                        " out.nc' or "
-                        "'grib_to_netcdf -o out.nc " +
-                        path + "'");
     }
     std::string names;
     for (const auto& reader : readers()) {

@@ -48,7 +48,8 @@ struct VariableInfo {
 // What a selection resolves to, read from headers only (cheap): everything `ensil info` prints
 // except the value statistics.
 struct EnsembleDescription {
-    std::string format;  // "NetCDF-4", "NetCDF classic", "HDF5", "VTK legacy", "VTK XML image"
+    std::string format;  // "NetCDF-4", "NetCDF classic", "HDF5", "VTK legacy", "VTK XML image",
+                         // "GRIB 1", "GRIB 2", "GRIB 1 and 2"
     std::vector<VariableInfo> variables;
     std::string variable;  // the chosen one
     std::string longName;
@@ -59,7 +60,8 @@ struct EnsembleDescription {
     std::vector<std::string> memberNames;
     std::vector<std::string> fixedDimensions;  // e.g. "time = 0 of 4 (2017-01-01T00:00)"
     Grid grid;
-    GridMapping gridMapping;  // see data/grid_mapping.h
+    GridMapping gridMapping;            // see data/grid_mapping.h
+    std::vector<std::string> warnings;  // as Ensemble::warnings, from the headers alone
     [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
 };
 

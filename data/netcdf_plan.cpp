@@ -8,6 +8,7 @@
 
 #include "data/cf_conventions.h"
 #include "data/error.h"
+#include "data/reader_support.h"
 #include "data/wrf_conventions.h"
 
 namespace ensil::data {
@@ -247,8 +248,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
             const Analysis av = analyze(file, *uv->second, memberDim);
             VariableInfo info;
             info.name = "wind_speed";
-            info.longName = "wind speed sqrt(" + uv->first->name + "^2 + " + uv->second->name +
-                            "^2), derived by ensil";
+            info.longName = windSpeedLongName(uv->first->name, uv->second->name);
             info.units = file.text(uv->first->id, "units");
             info.derived = true;
             for (int id : uv->first->dimIds) info.dimensions.push_back(file.dimension(id).name);

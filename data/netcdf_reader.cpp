@@ -154,13 +154,9 @@ void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, 
     readComponent(file, plan, plan.components.front(), member, out, scratch);
     destagger(plan.components.front(), plan.grid, out);
     if (!plan.derived) return;
-    for (float& v : out) v *= v;
-    for (std::size_t c = 1; c < plan.components.size(); ++c) {
-        readComponent(file, plan, plan.components[c], member, part, scratch);
-        destagger(plan.components[c], plan.grid, part);
-        for (std::size_t i = 0; i < out.size(); ++i) out[i] += part[i] * part[i];
-    }
-    for (float& v : out) v = std::sqrt(v);
+    readComponent(file, plan, plan.components.at(1), member, part, scratch);
+    destagger(plan.components[1], plan.grid, part);
+    toWindSpeed(out.data(), part.data(), out.size());
 }
 
 std::size_t membersIn(const NetcdfFile& file, const NcPlan& plan) {

@@ -1,6 +1,7 @@
 #include "data/reader_support.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -97,6 +98,14 @@ void requireThreeDimensional(const std::string& what, std::size_t nx, std::size_
     throw Error(ErrorKind::NotThreeDimensional,
                 what + ": the grid is " + shapeText(nx, ny, nz) +
                     " (x by y by z); isosurfaces need at least 2 points along every axis");
+}
+
+std::string windSpeedLongName(const std::string& u, const std::string& v) {
+    return "wind speed sqrt(" + u + "^2 + " + v + "^2), derived by ensil";
+}
+
+void toWindSpeed(float* u, const float* v, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) u[i] = std::sqrt(u[i] * u[i] + v[i] * v[i]);
 }
 
 void checkSameGrid(const std::string& firstPath, const Grid& first, const std::string& path,

@@ -43,6 +43,12 @@ Axis uniformAxis(std::string name, double origin, double spacing, std::size_t n,
 void requireThreeDimensional(const std::string& what, std::size_t nx, std::size_t ny,
                              std::size_t nz);
 
+// The derived variable wind_speed that the NetCDF and GRIB readers offer when a file holds u and
+// v: its long name, "wind speed sqrt(u^2 + v^2), derived by ensil" for components u and v...
+std::string windSpeedLongName(const std::string& u, const std::string& v);
+// ...and its values: u[i] = sqrt(u[i]^2 + v[i]^2) for i < n (NaN where either is missing).
+void toWindSpeed(float* u, const float* v, std::size_t n);
+
 // Throws Error(GridMismatch) naming both files and their grid sizes when the grids differ.
 void checkSameGrid(const std::string& firstPath, const Grid& first, const std::string& path,
                    const Grid& grid);

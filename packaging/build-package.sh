@@ -20,7 +20,12 @@ if [ $# -eq 1 ]; then
              "(cmake --preset ci) or run without arguments to build the release preset" >&2
         exit 2
     fi
-    cmake --build "$build_dir" --target ensil
+    targets=(ensil)
+    # The Python module, where the build has it (python/CMakeLists.txt): the package holds it.
+    if grep -q '^ENSIL_PYTHON_MODULE:INTERNAL=ON' "$build_dir/CMakeCache.txt"; then
+        targets+=(ensil_python)
+    fi
+    cmake --build "$build_dir" --target "${targets[@]}"
 else
     build_dir=build/release
     cmake --preset release

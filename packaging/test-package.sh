@@ -25,7 +25,7 @@ version=$(dpkg-deb --field "$deb" Version)
 depends=$(dpkg-deb --field "$deb" Depends)
 step "ensil $version, $(du -k "$deb" | cut -f1) KiB; Depends: $depends"
 # dpkg-shlibdeps found the linked libraries; the rest is declared by hand (debian/cpack.cmake).
-for needed in libqt6gui6 libqt6svg6 libgl1-mesa-dri libegl-mesa0; do
+for needed in libqt6gui6 libqt6svg6 libgl1-mesa-dri libegl-mesa0 python3-numpy; do
     grep -qE "(^|, )$needed( |,|$)" <<<"$depends" || fail "Depends lacks $needed"
 done
 contents=$(dpkg-deb --contents "$deb" | awk '{print $6}')
@@ -36,7 +36,9 @@ for path in ./usr/bin/ensil \
             ./usr/share/icons/hicolor/scalable/apps/$app_id.svg \
             ./usr/share/icons/hicolor/48x48/apps/$app_id.png \
             ./usr/share/icons/hicolor/256x256/apps/$app_id.png \
-            ./usr/share/doc/ensil/copyright; do
+            ./usr/share/doc/ensil/copyright \
+            ./usr/lib/python3/dist-packages/ensil/__init__.py \
+            ./usr/lib/python3/dist-packages/ensil/__init__.pyi; do
     grep -qxF "$path" <<<"$contents" || fail "the package does not hold $path"
 done
 
@@ -70,10 +72,11 @@ DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recomme
 
 # Every shared library the installed binary loads must come from a package that ensil's
 # dependencies pull in; that is what makes `apt-get install ./ensil_*.deb` enough on a fresh system.
-step "checking that the dependencies cover every library /usr/bin/ensil loads"
+step "checking that the dependencies cover every library /usr/bin/ensil and the Python module load"
 closure=$(apt-cache depends --recurse --installed --no-recommends --no-suggests --no-conflicts \
               --no-breaks --no-replaces --no-enhances ensil | grep -v '^ ' | tr -d '<>' | sort -u)
-libraries=$(ldd /usr/bin/ensil | awk '$2 == "=>" && $3 ~ /^\// {print $3}')
+module=$(ls /usr/lib/python3/dist-packages/ensil/_ensil.*.so)
+libraries=$(ldd /usr/bin/ensil "$module" | awk '$2 == "=>" && $3 ~ /^\// {print $3}' | sort -u)
 [ -n "$libraries" ] || fail "ldd found no libraries for /usr/bin/ensil"
 for library in $libraries; do
     real=$(realpath "$library")
@@ -93,6 +96,14 @@ desktop-file-validate /usr/share/applications/$app_id.desktop
 appstreamcli validate --no-net /usr/share/metainfo/$app_id.metainfo.xml
 # The shared-mime-info trigger has compiled the package's MIME type into the system database.
 python3 "$checks" mime-glob /usr/share/mime '*.ensil' application/x-ensil-project
+
+# The Python module imports from the installed package with Debian's interpreter, outside the
+# source tree, and its engine reads the demo.
+# No bytecode is written, so that apt-get purge leaves no folder behind.
+step "python3 -c 'import ensil'"
+(cd / && PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 -c \
+    "import ensil; e = ensil.demo(members=2); print(ensil.__file__, e)") ||
+    fail "the installed Python module does not import"
 
 # --- A headless render from the installed binary -------------------------------------------
 work=$(mktemp -d)
@@ -114,6 +125,8 @@ xvfb-run -a -s "-screen 0 1600x1000x24" packaging/window-icon-check.sh /usr/bin/
 remove_package
 trap 'rm -rf "$work"' EXIT
 [ ! -e /usr/bin/ensil ] || fail "/usr/bin/ensil is still there after apt-get purge"
+[ ! -e /usr/lib/python3/dist-packages/ensil ] ||
+    fail "the Python module is still there after apt-get purge"
 if python3 "$checks" mime-glob /usr/share/mime '*.ensil' application/x-ensil-project \
         >/dev/null 2>&1; then
     fail "*.ensil is still mapped after apt-get purge"

@@ -47,7 +47,7 @@ public:
     }
     [[nodiscard]] static QString defaultPlaceholder() {
         return tr(
-            "No ensemble loaded.\nFile > Open (Ctrl+O) reads NetCDF, HDF5 or VTK files;\n"
+            "No ensemble loaded.\nFile > Open (Ctrl+O) reads NetCDF, HDF5, VTK or GRIB files;\n"
             "File > Open Demo Ensemble shows a generated one.");
     }
 

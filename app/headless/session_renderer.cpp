@@ -10,6 +10,7 @@
 #include "app/headless/floor_map.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/picture_title.h"
+#include "app/headless/preprocess_run.h"
 #include "app/headless/section_volume.h"
 #include "data/demo_ensemble.h"
 #include "gl/offscreen_context.h"
@@ -32,10 +33,23 @@ std::string demoSourceKey(const data::DemoEnsembleParams& params) {
 }
 
 RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request) {
-    data::Ensemble ensemble = state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
-                                         : data::openEnsemble(state.data);
+    auto ensemble = std::make_shared<const data::Ensemble>(
+        state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
+                   : data::openEnsemble(state.data));
+    return renderEnsemble(
+        std::move(ensemble),
+        state.demo ? demoSourceKey(state.demoParams) : data::sourceIdentity(state.data), state,
+        request);
+}
+
+RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
+                             const std::string& sourceKey, const session::SessionState& state,
+                             const RenderRequest& request) {
     // As the workbench does, so a project's member numbers mean the same members here.
-    const std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(ensemble);
+    std::vector<std::string> withoutData;
+    const std::shared_ptr<const data::Ensemble> kept =
+        withoutMembersWithoutData(std::move(read), withoutData);
+    const data::Ensemble& ensemble = *kept;
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins);
     const float iso = state.isovalue.value_or(prep::defaultIsovalue(ensemble, stats));
@@ -53,9 +67,8 @@ RenderOutcome renderSession(const session::SessionState& state, const RenderRequ
     job.options.isovalue = iso;
     job.verticalExaggeration = state.verticalExaggeration;
     job.linkage = state.linkage;
-    if (request.useCache) job.cacheDirectory = defaultMeshCacheDirectory();
-    job.sourceKey = state.demo ? demoSourceKey(state.demoParams) : data::sourceIdentity(state.data);
-    job.sourceKey += data::membersWithoutDataKey(withoutData);
+    if (request.useCache && !sourceKey.empty()) job.cacheDirectory = defaultMeshCacheDirectory();
+    job.sourceKey = sourceKey + data::membersWithoutDataKey(withoutData);
     IsovalueOutcome outcome = runIsovalueJob(job);
 
     const gl::OffscreenContext context;

@@ -9,6 +9,7 @@
 #include <QImage>
 #include <cstddef>
 #include <glm/vec4.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -43,6 +44,13 @@ struct RenderOutcome {
 
 // Throws data::Error, session::ProjectError (isovalue outside the values) or std::runtime_error.
 RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request);
+
+// Draws `state` on an ensemble already read (the state's data source is not read again; the
+// Python module draws ensembles made from arrays this way). `sourceKey` identifies the data for
+// the mesh cache; empty: no cache. Throws as renderSession.
+RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
+                             const std::string& sourceKey, const session::SessionState& state,
+                             const RenderRequest& request);
 
 // The source key the workbench uses for the mesh cache, so both share cached meshes.
 std::string demoSourceKey(const data::DemoEnsembleParams& params);

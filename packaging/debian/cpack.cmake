@@ -17,6 +17,12 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Debian 12's libqt6gui6 holds the xcb and offscreen platform plugins itself; qt6-qpa-plugins
 # only adds VNC and TUIO, so it is not needed.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libqt6svg6, libgl1-mesa-dri, libegl-mesa0")
+# The Python module (python/CMakeLists.txt) under /usr/lib/python3/dist-packages: the
+# interpreter it was built for (its ABI tag names one minor version) and NumPy, which
+# dpkg-shlibdeps cannot see either (an extension module links no libpython).
+if(ENSIL_PYTHON_PACKAGE_DEPENDS)
+    string(APPEND CPACK_DEBIAN_PACKAGE_DEPENDS ", ${ENSIL_PYTHON_PACKAGE_DEPENDS}")
+endif()
 # Native Wayland windows (without it, Qt uses XWayland).
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland")
 # `ensil render` on a machine without a display runs under xvfb-run.

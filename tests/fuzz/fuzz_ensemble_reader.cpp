@@ -1,7 +1,8 @@
 // Fuzzes the whole reading path behind EnsembleReader (data/ensemble_reader.h): the reader is
 // chosen by the file's first bytes (NetCDF classic/64-bit/CDF-5 and NetCDF-4, plain HDF5,
-// legacy VTK and VTK XML), describe() runs the header planning (CF conventions, member
-// dimension detection, grids from coordinate variables, attributes), and read() then reads
+// legacy VTK and VTK XML, GRIB 1 and 2 through ecCodes), describe() runs the header planning
+// (CF conventions, member dimension detection, grids from coordinate variables, attributes;
+// GRIB messages grouped into variables, levels, members and times), and read() then reads
 // the values, as openEnsemble() would. The documented failure is data::Error; any other
 // exception type, a crash, a hang, an allocation beyond what the header check allows, or a
 // file left open afterwards is a finding (not for HDF5 files: netCDF-C 4.9 itself keeps one

@@ -6,7 +6,8 @@ bytes), and copies of the small bad files of tests/data/bad/. Every file stays w
 of findings (fixed bugs, and the library leaks lsan.supp ignores) are committed in the same
 folders by hand, named finding_*, and are left alone here.
 
-Needs ncgen (Debian netcdf-bin) and h5import (Debian hdf5-tools)."""
+Needs ncgen (Debian netcdf-bin), h5import (Debian hdf5-tools) and grib_set and codes_info
+(Debian libeccodes-tools)."""
 import pathlib
 import shutil
 import struct
@@ -198,11 +199,40 @@ def ensemble_reader_seeds():
     # dimension there and the NetCDF reader takes (and refuses) the file.
     h5import(out / "hdf5_group.h5", [("members/run_01", (2, 2, 3)),
                                      ("members/run_02", (2, 2, 3)), ("mean", (2, 2, 3))])
+    grib_seeds(out)
     (out / "points.vtk").write_bytes(VTK_SEEDS["points.vtk"])
     (out / "binary_rectilinear.vtk").write_bytes(VTK_SEEDS["binary_rectilinear.vtk"])
     (out / "image.vti").write_bytes(VTI)
     for bad in sorted(BAD.glob("*.nc")) + sorted(BAD.glob("*.vtk"))[:2]:
         shutil.copy(bad, out / ("bad_" + bad.name))
+
+
+def grib_seeds(out):
+    """Two members on two pressure levels, from ecCodes's smallest samples (16 x 31 lat-lon),
+    in GRIB 1 (ECMWF local definition 1 for the member number) and GRIB 2 (an ensemble
+    template), the second with a bitmap."""
+    samples = subprocess.run(["codes_info", "-s"], check=True, capture_output=True,
+                             text=True).stdout.strip()
+    editions = {
+        "grib1_members_levels.grib1": ("regular_ll_pl_grib1.tmpl",
+                                       "setLocalDefinition=1,localDefinitionNumber=1,"
+                                       "indicatorOfParameter=130,number={m},level={l}"),
+        "grib2_members_levels_bitmap.grib2": ("regular_ll_pl_grib2.tmpl",
+                                              "productDefinitionTemplateNumber=1,"
+                                              "perturbationNumber={m},level={l},"
+                                              "bitmapPresent=1"),
+    }
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, (sample, keys) in editions.items():
+            parts = []
+            for member in (0, 1):
+                for level in (500, 850):
+                    part = pathlib.Path(tmp, "part")
+                    part.unlink(missing_ok=True)
+                    subprocess.run(["grib_set", "-s", keys.format(m=member, l=level),
+                                    str(pathlib.Path(samples, sample)), str(part)], check=True)
+                    parts.append(part.read_bytes())
+            (out / name).write_bytes(b"".join(parts))
 
 
 def vtk_seeds():

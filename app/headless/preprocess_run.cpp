@@ -1,0 +1,106 @@
+#include "app/headless/preprocess_run.h"
+
+#include <QColor>
+#include <QString>
+#include <chrono>
+
+#include "app/headless/isovalue_job.h"
+#include "data/ensemble_reader.h"
+#include "gl/palette.h"
+#include "preprocessing/cluster_identity.h"
+#include "preprocessing/default_isovalue.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/field_statistics.h"
+
+namespace ensil::app {
+namespace {
+
+// Numbers in messages as the command line's text streams write them (6 significant digits).
+std::string number(double v) { return QString::number(v, 'g', 6).toStdString(); }
+
+}  // namespace
+
+std::shared_ptr<const data::Ensemble> withoutMembersWithoutData(
+    std::shared_ptr<const data::Ensemble> ensemble, std::vector<std::string>& names) {
+    if (data::membersWithoutData(*ensemble).empty()) return ensemble;
+    auto reduced = std::make_shared<data::Ensemble>(*ensemble);
+    names = data::leaveOutMembersWithoutData(*reduced);
+    return reduced;
+}
+
+PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,
+                                    const PreprocessRequest& request,
+                                    const PreprocessNotice& notice, const std::stop_token& stop,
+                                    const data::Progress& progress) {
+    PreprocessResult r;
+    if (const auto note = data::fewLevelsWarning(given->grid)) notice("note", *note);
+    for (const std::string& note : given->warnings) notice("warning", note);  // damaged input
+    if (const auto note = data::infiniteValuesWarning(*given)) notice("warning", *note);
+    // So every number the results give is one.
+    r.ensemble = withoutMembersWithoutData(std::move(given), r.membersWithoutData);
+    const data::Ensemble& ensemble = *r.ensemble;
+    for (const std::string& name : r.membersWithoutData) {
+        notice("warning", data::memberWithoutDataWarning(ensemble, name));
+    }
+    const int members = static_cast<int>(ensemble.memberCount());
+    r.k = request.clusters;
+    if (r.k > members && !request.clustersGiven) {
+        r.k = members;  // the default asks for more clusters than a small ensemble has
+    } else if (r.k > members) {
+        throw PreprocessRefused("--clusters " + std::to_string(r.k) + " is more than the " +
+                                    std::to_string(members) + " members of this ensemble" +
+                                    (r.membersWithoutData.empty() ? "" : " with data") +
+                                    "; give at most " + std::to_string(members),
+                                2);
+    }
+    const prep::FieldStatistics stats =
+        prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins, stop);
+    const double iso = request.isovalue.value_or(prep::defaultIsovalue(ensemble, stats));
+    if (iso <= stats.minimum || iso >= stats.maximum) {
+        throw PreprocessRefused("isovalue " + number(iso) + " is outside the values of '" +
+                                    ensemble.variable + "' (" + number(stats.minimum) + " .. " +
+                                    number(stats.maximum) + " " + ensemble.units +
+                                    "): no member has a surface there. Choose an isovalue "
+                                    "inside that range",
+                                1);
+    }
+    IsovalueJobInput job;
+    job.ensemble = &ensemble;
+    job.options.isovalue = static_cast<float>(iso);
+    job.options.decimate = request.decimate;
+    job.options.maxErrorCells = static_cast<float>(request.errorCells);
+    job.linkage = request.linkage;
+    job.cacheDirectory = request.cacheDirectory;
+    // Meshes of fewer members than the file holds must not be taken for the file's.
+    job.sourceKey = request.sourceKey + data::membersWithoutDataKey(r.membersWithoutData);
+    const auto start = std::chrono::steady_clock::now();
+    const prep::EnsembleMoments moments = prep::computeEnsembleMoments(ensemble, stop);
+    r.seconds["moments"] =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    job.moments = &moments;
+    IsovalueOutcome outcome = runIsovalueJob(job, stop, progress);
+    r.seconds.insert(outcome.seconds.begin(), outcome.seconds.end());
+    if (!outcome.cacheWarning.empty()) {
+        notice("warning", outcome.cacheWarning + "; going on without storing the results");
+    }
+    r.fromCache = outcome.fromCache;
+    r.meshes = std::move(outcome.meshes);
+    r.distances = std::move(outcome.distances);
+    if (const std::string warning = prep::pairsWithoutOverlapWarning(ensemble, r.distances);
+        !warning.empty()) {
+        notice("warning", warning);
+    }
+    r.tree = std::move(outcome.tree);
+    r.labels = prep::clusterLabels(r.tree, r.k);
+    for (const int identity :
+         prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, r.k))) {
+        const glm::vec3 c = gl::clusterColor(identity);
+        r.colors.push_back(QColor::fromRgbF(c.r, c.g, c.b).name().toStdString());
+    }
+    r.distancesToMean = std::move(outcome.distancesToMean);
+    r.meanOutlyingness = std::move(outcome.meanOutlyingness);
+    r.boxplot = std::move(outcome.boxplot);
+    return r;
+}
+
+}  // namespace ensil::app

@@ -1,0 +1,88 @@
+// `ensil preprocess`'s work on an ensemble already read, for one isovalue: the notes and
+// warnings it gives, members without data left out, the number of clusters checked against the
+// members, the default isovalue and its range check, the isovalue job (cache, meshes,
+// similarity, clustering, contour boxplot) and each member's cluster and colour. Shared by the
+// command and the Python module (Ensemble.preprocess), so both give the same results and the
+// same messages. Any thread.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "data/ensemble.h"
+#include "data/job.h"
+#include "preprocessing/clustering.h"
+#include "preprocessing/inclusion_depth.h"
+#include "preprocessing/isosurface_pipeline.h"
+#include "preprocessing/similarity.h"
+
+namespace ensil::app {
+
+struct PreprocessRequest {
+    std::optional<double> isovalue;  // none: the workbench's default for the variable
+    int clusters = 5;
+    // A default number of clusters is lowered to the members there are; one the user gave is
+    // refused when it is more.
+    bool clustersGiven = false;
+    prep::Linkage linkage = prep::Linkage::Average;
+    bool decimate = true;
+    double errorCells = 0.25;                   // decimation error bound, in grid cells
+    std::optional<std::string> cacheDirectory;  // no cache when empty
+    std::string sourceKey;                      // the data's identity, for the cache key
+};
+
+struct PreprocessResult {
+    // The ensemble the results are of: the one given, less any member without data.
+    std::shared_ptr<const data::Ensemble> ensemble;
+    std::vector<std::string> membersWithoutData;  // their names, left out of everything below
+    prep::IsovalueMeshes meshes;
+    prep::DistanceMatrix distances;
+    prep::MergeTree tree;
+    int k = 0;                // clusters, after lowering a default to the member count
+    std::vector<int> labels;  // each member's cluster, 0..k-1
+    // The colour each member is drawn in, "#rrggbb", by the stable identity rule from the tree
+    // (the workbench's colours for this tree and k).
+    std::vector<std::string> colors;
+    std::vector<double> distancesToMean;  // per member; NaN where it has no isosurface
+    std::vector<double> meanOutlyingness;
+    prep::ContourBoxplot boxplot;
+    bool fromCache = false;
+    std::map<std::string, double> seconds;  // each stage's
+};
+
+// A request the data cannot answer, with the command's exit status: 2 for a bad option (too
+// many clusters), 1 for a bad value for this data (an isovalue outside its values).
+class PreprocessRefused : public std::runtime_error {
+public:
+    PreprocessRefused(const std::string& message, int exitCode)
+        : std::runtime_error(message), m_exitCode(exitCode) {}
+    [[nodiscard]] int exitCode() const { return m_exitCode; }
+
+private:
+    int m_exitCode;
+};
+
+// The ensemble less its members with no valid value (the shared rule of
+// data::leaveOutMembersWithoutData, as in the workbench), their names in `names`; the same
+// ensemble, not a copy, when every member has data.
+std::shared_ptr<const data::Ensemble> withoutMembersWithoutData(
+    std::shared_ptr<const data::Ensemble> ensemble, std::vector<std::string>& names);
+
+// Said along the way: kind is "note" or "warning", text what the command prints after it.
+using PreprocessNotice = std::function<void(const std::string& kind, const std::string& text)>;
+
+// Throws PreprocessRefused, data::Error, data::Cancelled. `progress` and `notice` are called on
+// the calling thread or on the job's workers.
+PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
+                                    const PreprocessRequest& request,
+                                    const PreprocessNotice& notice,
+                                    const std::stop_token& stop = {},
+                                    const data::Progress& progress = {});
+
+}  // namespace ensil::app

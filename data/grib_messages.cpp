@@ -1,0 +1,437 @@
+#include "data/grib_messages.h"
+
+#include <eccodes.h>
+
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <string_view>
+
+#include "data/error.h"
+#include "data/job.h"
+
+namespace ensil::data {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+std::mutex& eccodesMutex() {
+    static std::mutex mutex;
+    return mutex;
+}
+
+// ecCodes prints its complaints to stderr; ensil's messages say what went wrong instead, with
+// the library's last words appended. Written only under eccodesMutex().
+std::string& lastLibraryMessage() {
+    static std::string message;
+    return message;
+}
+
+void keepLibraryMessage(const codes_context* /*context*/, int /*level*/, const char* text) {
+    lastLibraryMessage() = text != nullptr ? text : "";
+}
+
+// Takes the ecCodes lock; the first one also routes ecCodes's log into lastLibraryMessage().
+std::unique_lock<std::mutex> lockEccodes() {
+    std::unique_lock lock(eccodesMutex());
+    static const bool quiet = [] {
+        codes_context_set_logging_proc(codes_context_get_default(), keepLibraryMessage);
+        return true;
+    }();
+    (void)quiet;
+    lastLibraryMessage().clear();
+    return lock;
+}
+
+std::string libraryWords(int code) {
+    std::string words = codes_get_error_message(code);
+    if (!lastLibraryMessage().empty()) words += " (ecCodes: " + lastLibraryMessage() + ")";
+    return words;
+}
+
+struct HandleDeleter {
+    void operator()(codes_handle* h) const { codes_handle_delete(h); }
+};
+using Handle = std::unique_ptr<codes_handle, HandleDeleter>;
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+};
+
+long getLong(codes_handle* h, const char* key, long fallback = 0) {
+    long value = fallback;
+    if (codes_is_defined(h, key) == 0 || codes_get_long(h, key, &value) != CODES_SUCCESS) {
+        return fallback;
+    }
+    return value;
+}
+
+double getDouble(codes_handle* h, const char* key, double fallback = 0) {
+    double value = fallback;
+    if (codes_is_defined(h, key) == 0 || codes_get_double(h, key, &value) != CODES_SUCCESS) {
+        return fallback;
+    }
+    return value;
+}
+
+std::string getString(codes_handle* h, const char* key) {
+    std::array<char, 256> text{};
+    std::size_t length = text.size();
+    if (codes_is_defined(h, key) == 0 ||
+        codes_get_string(h, key, text.data(), &length) != CODES_SUCCESS) {
+        return {};
+    }
+    return text.data();
+}
+
+std::string atOffset(const std::string& path, std::size_t number, std::size_t offset) {
+    return "'" + path + "', GRIB message " + std::to_string(number) + " at byte offset " +
+           std::to_string(offset);
+}
+
+// Where the next message begins: the first "GRIB" at or after `from`; nullopt when none is left.
+std::optional<long> nextMessageStart(std::FILE* file, long from) {
+    constexpr std::size_t kChunk = 1 << 16;
+    std::string bytes(kChunk + 3, '\0');
+    for (long at = from;; at += static_cast<long>(kChunk)) {
+        if (std::fseek(file, at, SEEK_SET) != 0) return std::nullopt;
+        const std::size_t got = std::fread(bytes.data(), 1, bytes.size(), file);
+        const std::size_t found = std::string_view(bytes.data(), got).find("GRIB");
+        if (found != std::string_view::npos) return at + static_cast<long>(found);
+        if (got < bytes.size()) return std::nullopt;  // the 3 bytes overlap the next chunk
+    }
+}
+
+// The smallest length the message at `start` says it has (section 0): GRIB 1's 3-byte length
+// (without the flag of ECMWF's large messages, whose true length is larger still), GRIB 2's
+// 8-byte one. nullopt for another edition number, which ecCodes refuses itself.
+std::optional<std::uint64_t> claimedLength(std::FILE* file, long start) {
+    std::array<unsigned char, 16> head{};
+    if (std::fseek(file, start, SEEK_SET) != 0) return std::nullopt;
+    const std::size_t got = std::fread(head.data(), 1, head.size(), file);
+    if (got < 8) return std::uint64_t{8};
+    std::uint64_t length = 0;
+    if (head[7] == 1) {
+        length = (std::uint64_t{head[4]} << 16 | std::uint64_t{head[5]} << 8 | head[6]) & 0x7fffff;
+    } else if (head[7] == 2) {
+        if (got < 16) return std::uint64_t{16};
+        for (std::size_t i = 8; i < 16; ++i) length = length << 8 | head[i];
+    } else {
+        return std::nullopt;
+    }
+    return length;
+}
+
+GribGrid readGrid(codes_handle* h) {
+    GribGrid g;
+    g.type = getString(h, "gridType");
+    g.ni = getLong(h, "Ni");
+    g.nj = getLong(h, "Nj");
+    g.gaussianN = getLong(h, "N");
+    g.firstLat = getDouble(h, "latitudeOfFirstGridPointInDegrees");
+    g.firstLon = getDouble(h, "longitudeOfFirstGridPointInDegrees");
+    g.lastLat = getDouble(h, "latitudeOfLastGridPointInDegrees");
+    g.lastLon = getDouble(h, "longitudeOfLastGridPointInDegrees");
+    g.iNegative = getLong(h, "iScansNegatively") != 0;
+    g.jPositive = getLong(h, "jScansPositively") != 0;
+    g.jConsecutive = getLong(h, "jPointsAreConsecutive") != 0;
+    g.alternateRows = getLong(h, "alternativeRowScanning") != 0;
+    return g;
+}
+
+// The validity time as YYYYMMDDhhmm: the reference date and time plus the forecast step,
+// computed here because ecCodes's own validityDate loops for ever on some damaged steps.
+// nullopt when the date is impossible.
+std::optional<long> validityOf(codes_handle* h) {
+    using namespace std::chrono;
+    const long date = getLong(h, "dataDate"), time = getLong(h, "dataTime");
+    long step = 0;
+    std::size_t length = 1;
+    if (codes_is_defined(h, "endStep") != 0 &&
+        (codes_set_string(h, "stepUnits", "m", &length) != CODES_SUCCESS ||
+         codes_get_long(h, "endStep", &step) != CODES_SUCCESS)) {
+        return std::nullopt;
+    }
+    const year_month_day day{year(static_cast<int>(date / 10000)),
+                             month(static_cast<unsigned>(date / 100 % 100)),
+                             std::chrono::day(static_cast<unsigned>(date % 100))};
+    constexpr long kCenturiesInMinutes = 100L * 366 * 24 * 60;
+    if (date < 10000 || date > 99991231 || !day.ok() || time < 0 || time / 100 > 23 ||
+        time % 100 > 59 || std::abs(step) > kCenturiesInMinutes) {
+        return std::nullopt;
+    }
+    const auto valid = sys_days(day) + hours(time / 100) + minutes(time % 100 + step);
+    const auto validDay = floor<days>(valid);
+    const year_month_day ymd(validDay);
+    const auto minute = duration_cast<minutes>(valid - validDay).count();
+    const long yyyymmdd = static_cast<long>(static_cast<int>(ymd.year())) * 10000 +
+                          static_cast<long>(static_cast<unsigned>(ymd.month())) * 100 +
+                          static_cast<long>(static_cast<unsigned>(ymd.day()));
+    return yyyymmdd * 10000 + minute / 60 * 100 + minute % 60;
+}
+
+GribMessage readKeys(codes_handle* h, std::size_t number) {
+    GribMessage m;
+    m.number = number;
+    m.offset = static_cast<std::size_t>(std::max(0L, getLong(h, "offset")));
+    m.edition = getLong(h, "edition");
+    m.shortName = getString(h, "shortName");
+    m.name = getString(h, "name");
+    m.units = getString(h, "units");
+    m.paramId = getLong(h, "paramId");
+    m.typeOfLevel = getString(h, "typeOfLevel");
+    m.level = getDouble(h, "level");
+    if (m.typeOfLevel == "isobaricInhPa") m.level *= 100.0;  // one pressure axis, in Pa
+    m.member = getLong(h, "number");
+    m.validity = validityOf(h).value_or(-1);
+    m.grid = readGrid(h);
+    std::size_t size = 0;
+    if (codes_get_size(h, "values", &size) == CODES_SUCCESS) m.values = size;
+    return m;
+}
+
+// The index of `value` in `list` within `tolerance`; list.size() when there is none.
+std::size_t nearestIndex(const std::vector<double>& list, double value, double tolerance) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        if (std::abs(list[i] - value) <= tolerance) return i;
+    }
+    return list.size();
+}
+
+}  // namespace
+
+GribInventory scanGribFile(const std::string& path, const std::stop_token& stop) {
+    const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) {
+        throw Error(ErrorKind::FileNotFound,
+                    "cannot open '" + path + "' for reading: " + std::strerror(errno));
+    }
+    GribInventory inventory;
+    std::fseek(file.get(), 0, SEEK_END);
+    const long size = std::ftell(file.get());
+    long position = 0;
+    for (std::size_t number = 1;; ++number) {
+        throwIfStopped(stop);
+        const std::optional<long> start = nextMessageStart(file.get(), position);
+        if (!start) break;
+        const auto skip = [&](const std::string& why) {
+            inventory.warnings.push_back(atOffset(path, number, static_cast<std::size_t>(*start)) +
+                                         " is damaged (" + why + "); ensil skipped it");
+        };
+        // ecCodes allocates the length a message claims before reading it: a damaged length
+        // would ask for gigabytes. A message longer than what is left of the file is cut.
+        const auto length = claimedLength(file.get(), *start);
+        const auto left = static_cast<std::uint64_t>(size - *start);
+        if (length && *length > left) {
+            skip("it says it is " + std::to_string(*length) + " bytes long, but the file ends " +
+                 std::to_string(left) + " bytes after its start");
+            position = *start + 4;
+            continue;
+        }
+        const auto lock = lockEccodes();
+        std::fseek(file.get(), *start, SEEK_SET);
+        int error = CODES_SUCCESS;
+        const Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
+        // Go on after what ecCodes read, and at least after this "GRIB": never loop in place.
+        position = std::max(std::ftell(file.get()), *start + 4);
+        if (!h) {
+            skip(error == CODES_SUCCESS ? "ecCodes found no message there" : libraryWords(error));
+            continue;
+        }
+        GribMessage m = readKeys(h.get(), number);
+        if (m.validity >= 0) {
+            inventory.messages.push_back(std::move(m));
+        } else {
+            skip("its reference date, time or forecast step is impossible");
+        }
+    }
+    if (inventory.messages.empty()) {
+        std::string why =
+            inventory.warnings.empty() ? "it holds no GRIB message" : inventory.warnings.front();
+        throw Error(ErrorKind::CorruptFile, "'" + path + "' has no readable GRIB message: " + why +
+                                                ". Check the file with 'grib_ls " + path + "'");
+    }
+    return inventory;
+}
+
+std::string validityText(long validity) {
+    const long date = validity / 10000, time = validity % 10000;
+    std::array<char, 40> text{};
+    std::snprintf(text.data(), text.size(), "%04ld-%02ld-%02ldT%02ld:%02ld", date / 10000,
+                  date / 100 % 100, date % 100, time / 100, time % 100);
+    return text.data();
+}
+
+GribAxes gribAxes(const GribGrid& g) {
+    GribAxes axes;
+    if (g.ni < 2 || g.nj < 2) {
+        axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
+                   " points; isosurfaces need at least 2 along each axis";
+        return axes;
+    }
+    // The western and northern ends, whichever way the points were scanned.
+    const double west = g.iNegative ? g.lastLon : g.firstLon;
+    double east = g.iNegative ? g.firstLon : g.lastLon;
+    if (east <= west) east += 360.0;  // a grid across the date line or the meridian of 0
+    axes.x = makeUniformAxis("lon", "degrees_east", west, east, static_cast<std::size_t>(g.ni));
+    axes.x.standardName = "longitude";
+    const double north = g.jPositive ? g.lastLat : g.firstLat;
+    const double south = g.jPositive ? g.firstLat : g.lastLat;
+    if (!(north > south) || north > 90.0 + 1e-6 || south < -90.0 - 1e-6) {
+        axes.why = "has latitudes from " + std::to_string(g.firstLat) + " to " +
+                   std::to_string(g.lastLat) + " degrees, which its scanning mode (j " +
+                   (g.jPositive ? "northwards" : "southwards") + ") contradicts";
+        return axes;
+    }
+    if (g.type == "regular_gg") {
+        // Gaussian latitudes are uneven: the library's own, not a spacing from the header.
+        if (g.gaussianN < 1 || g.gaussianN > 100000 || 2 * g.gaussianN < g.nj) {
+            axes.why = "has the Gaussian number N = " + std::to_string(g.gaussianN) +
+                       " does not fit its " + std::to_string(g.nj) + " latitudes";
+            return axes;
+        }
+        std::vector<double> all(2 * static_cast<std::size_t>(g.gaussianN));
+        {
+            const auto lock = lockEccodes();
+            if (codes_get_gaussian_latitudes(g.gaussianN, all.data()) != CODES_SUCCESS) {
+                axes.why =
+                    "ecCodes has no Gaussian latitudes for N = " + std::to_string(g.gaussianN);
+                return axes;
+            }
+        }
+        // Headers store latitudes in milli- (GRIB 1) or micro-degrees (GRIB 2).
+        const double tolerance = 0.002;
+        const std::size_t first = nearestIndex(all, north, tolerance);
+        const auto nj = static_cast<std::size_t>(g.nj);
+        if (first == all.size() || first + nj > all.size() ||
+            std::abs(all[first + nj - 1] - south) > tolerance) {
+            axes.why = "has latitudes " + std::to_string(north) + " to " + std::to_string(south) +
+                       " are not " + std::to_string(g.nj) +
+                       " consecutive latitudes of the Gaussian grid N" +
+                       std::to_string(g.gaussianN);
+            return axes;
+        }
+        axes.y.name = "lat";
+        axes.y.units = "degrees_north";
+        axes.y.values.assign(all.begin() + static_cast<std::ptrdiff_t>(first),
+                             all.begin() + static_cast<std::ptrdiff_t>(first + nj));
+    } else {
+        axes.y =
+            makeUniformAxis("lat", "degrees_north", north, south, static_cast<std::size_t>(g.nj));
+    }
+    axes.y.standardName = "latitude";
+    return axes;
+}
+
+std::string unsupportedGridAdvice(const std::string& gridType, const std::string& path) {
+    if (gridType == "regular_ll" || gridType == "regular_gg") return {};
+    if (gridType == "reduced_gg" || gridType == "reduced_rotated_gg") {
+        return "lies on a reduced Gaussian grid (" + gridType +
+               "), whose parallels hold different numbers of points; ensil reads regular "
+               "grids. Interpolate it to the regular Gaussian grid first, e.g. 'cdo "
+               "setgridtype,regular " +
+               path + " regular.grib'";
+    }
+    if (gridType == "sh") {
+        return "holds spherical harmonics (gridType sh), not values at grid points; ensil "
+               "reads regular grids. Transform it to a regular Gaussian grid first, e.g. 'cdo "
+               "sp2gp " +
+               path + " gridpoint.grib'";
+    }
+    return "lies on a grid of type " + (gridType.empty() ? std::string("unknown") : gridType) +
+           "; ensil reads regular latitude-longitude and regular Gaussian grids. Interpolate it "
+           "to one first, e.g. 'cdo remapbil,r360x181 " +
+           path + " latlon.grib' (a 1-degree grid)";
+}
+
+GribFile::GribFile(const std::string& path) : m_path(path), m_file(std::fopen(path.c_str(), "rb")) {
+    if (m_file == nullptr) {
+        throw Error(ErrorKind::FileNotFound,
+                    "cannot open '" + path + "' for reading: " + std::strerror(errno));
+    }
+}
+
+GribFile::~GribFile() { std::fclose(m_file); }
+
+void GribFile::decode(const GribMessage& message, float* out, std::vector<double>& scratch) const {
+    const std::string where = atOffset(m_path, message.number, message.offset);
+    const auto lock = lockEccodes();
+    if (std::fseek(m_file, static_cast<long>(message.offset), SEEK_SET) != 0) {
+        throw Error(ErrorKind::CorruptFile, where + " cannot be reached: the file changed");
+    }
+    int error = CODES_SUCCESS;
+    const Handle h(codes_handle_new_from_file(nullptr, m_file, PRODUCT_GRIB, &error));
+    if (!h) {
+        throw Error(ErrorKind::CorruptFile, where + " no longer reads: " + libraryWords(error) +
+                                                ". Was the file changed while ensil read it?");
+    }
+    const GribGrid& g = message.grid;
+    const std::size_t n = g.pointCount();
+    std::size_t size = 0;
+    if (codes_get_size(h.get(), "values", &size) != CODES_SUCCESS || size != n ||
+        !(readGrid(h.get()) == g)) {
+        throw Error(ErrorKind::CorruptFile,
+                    where +
+                        " no longer matches what its header said when the file was opened; "
+                        "was the file changed while ensil read it?");
+    }
+    scratch.resize(n);
+    error = codes_get_double_array(h.get(), "values", scratch.data(), &size);
+    if (error != CODES_SUCCESS || size != n) {
+        throw Error(ErrorKind::CorruptFile,
+                    where + ": its values do not decode (" + libraryWords(error) +
+                        "); the message is damaged. Check it with "
+                        "'grib_dump -O -w count=" +
+                        std::to_string(message.number) + " " + m_path + "'");
+    }
+    // Missing values: where the bitmap says 0, or (GRIB 2 complex packing without a bitmap)
+    // where the value is the message's missing-value marker.
+    std::vector<long> bitmap;
+    if (getLong(h.get(), "bitmapPresent") != 0) {
+        std::size_t bits = 0;
+        if (codes_get_size(h.get(), "bitmap", &bits) == CODES_SUCCESS && bits == n) {
+            bitmap.resize(n);
+            if (codes_get_long_array(h.get(), "bitmap", bitmap.data(), &bits) != CODES_SUCCESS) {
+                bitmap.clear();
+            }
+        }
+        if (bitmap.empty()) {
+            throw Error(ErrorKind::CorruptFile,
+                        where +
+                            " says it has a bitmap of missing values, but its bitmap does not "
+                            "decode to one bit per point; the message is damaged");
+        }
+    }
+    const bool markerMeansMissing = getLong(h.get(), "missingValueManagementUsed") != 0;
+    const double marker = getDouble(h.get(), "missingValue", 9999.0);
+
+    const auto ni = static_cast<std::size_t>(g.ni), nj = static_cast<std::size_t>(g.nj);
+    for (std::size_t s = 0; s < n; ++s) {
+        // Where point s of the message lies: its column and row as scanned...
+        std::size_t col = 0, row = 0;
+        if (g.jConsecutive) {
+            col = s / nj;
+            row = s % nj;
+            if (g.alternateRows && col % 2 == 1) row = nj - 1 - row;
+        } else {
+            row = s / ni;
+            col = s % ni;
+            if (g.alternateRows && row % 2 == 1) col = ni - 1 - col;
+        }
+        // ...then in ensil's order: west to east, north to south.
+        const std::size_t x = g.iNegative ? ni - 1 - col : col;
+        const std::size_t y = g.jPositive ? nj - 1 - row : row;
+        const double v = scratch[s];
+        const bool missing =
+            (!bitmap.empty() && bitmap[s] == 0) || (markerMeansMissing && v == marker);
+        out[x + ni * y] = missing ? kNaN : static_cast<float>(v);
+    }
+}
+
+}  // namespace ensil::data

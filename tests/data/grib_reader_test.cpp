@@ -1,0 +1,518 @@
+// The GRIB reader: the ERA5 sample against its NetCDF conversion, and small GRIB files written
+// here with ecCodes for each case the reader must handle (pressure levels in hPa and Pa, a
+// Gaussian grid, every scanning mode, bitmaps, damaged messages, grids it refuses, wind speed).
+#include <eccodes.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "data/ensemble_reader.h"
+#include "data/error.h"
+#include "tests/data/grib_test_file.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+using test::GribField;
+using test::GribKey;
+
+namespace {
+
+std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+
+data::DataSelection select(const std::string& path, const std::string& variable = {},
+                           std::size_t timeIndex = 0) {
+    data::DataSelection s;
+    s.paths = {path};
+    s.variable = variable;
+    s.timeIndex = timeIndex;
+    return s;
+}
+
+data::Error errorOf(const data::DataSelection& s) {
+    try {
+        (void)data::openEnsemble(s);
+    } catch (const data::Error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for " << s.paths.front();
+    return data::Error(data::ErrorKind::InvalidArgument, "");
+}
+
+bool mentions(const std::exception& e, const std::string& text) {
+    return std::string(e.what()).find(text) != std::string::npos;
+}
+
+// The largest packingError ecCodes states for the messages of `shortName`: how far a decoded
+// value may lie from what was packed.
+double packingError(const std::string& path, const std::string& shortName) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    EXPECT_NE(file, nullptr);
+    double worst = 0;
+    int error = 0;
+    while (codes_handle* h = codes_handle_new_from_file(nullptr, file, PRODUCT_GRIB, &error)) {
+        char name[64] = {};
+        std::size_t length = sizeof name;
+        double e = 0;
+        codes_get_string(h, "shortName", name, &length);
+        if (shortName == name && codes_get_double(h, "packingError", &e) == 0) {
+            worst = std::max(worst, e);
+        }
+        codes_handle_delete(h);
+    }
+    std::fclose(file);
+    return worst;
+}
+
+// One message on the small grid of test::smallGrid().
+GribField field(const std::string& shortName, const std::string& typeOfLevel, long level,
+                long member, std::function<double(double, double)> value, long step = 0,
+                std::vector<GribKey> grid = test::smallGrid()) {
+    GribField f;
+    f.keys = std::move(grid);
+    f.keys.insert(f.keys.end(), {{"shortName", shortName},
+                                 {"typeOfLevel", typeOfLevel},
+                                 {"level", level},
+                                 {"perturbationNumber", member},
+                                 {"dataDate", 20240115L},
+                                 {"dataTime", 0L},
+                                 {"step", step}});
+    f.value = std::move(value);
+    return f;
+}
+
+std::string writeGrib(const std::string& path, const std::vector<GribField>& fields,
+                      std::vector<std::size_t>* offsets = nullptr) {
+    std::string bytes;
+    for (const GribField& f : fields) {
+        if (offsets != nullptr) offsets->push_back(bytes.size());
+        bytes += test::encodeGrib(f);
+    }
+    test::writeBytes(path, bytes);
+    return path;
+}
+
+// Checks every value of the ensemble against expected(member, lat, lon, level).
+void expectValues(const data::Ensemble& e,
+                  const std::function<double(std::size_t, double, double, double)>& expected,
+                  double tolerance) {
+    const data::Grid& g = e.grid;
+    std::size_t wrong = 0;
+    for (std::size_t m = 0; m < e.members.size(); ++m)
+        for (std::size_t k = 0; k < g.nz(); ++k)
+            for (std::size_t j = 0; j < g.ny(); ++j)
+                for (std::size_t i = 0; i < g.nx(); ++i) {
+                    const double want =
+                        expected(m, g.y().values[j], g.x().values[i], g.z().values[k]);
+                    const float got = e.members[m].values[g.index(i, j, k)];
+                    if (!(std::abs(got - want) <= tolerance)) {
+                        if (++wrong <= 3) {
+                            ADD_FAILURE() << "member " << m << " at (" << i << ", " << j << ", "
+                                          << k << "): " << got << ", expected " << want;
+                        }
+                    }
+                }
+    EXPECT_EQ(wrong, 0u);
+}
+
+}  // namespace
+
+TEST(GribReader, Era5OpensAsTheSameEnsembleAsItsNetcdfConversion) {
+    const std::string grib = shared("era5-levels-members.grib");
+    const std::string nc = shared("era5_eda_members.nc");
+    for (const char* variable : {"z", "t"}) {
+        const double tolerance = packingError(grib, variable);
+        ASSERT_GT(tolerance, 0.0);
+        for (std::size_t time = 0; time < 4; ++time) {
+            SCOPED_TRACE(std::string(variable) + " at time index " + std::to_string(time));
+            data::EnsembleDescription gd, nd;
+            const data::Ensemble g = data::openEnsemble(select(grib, variable, time), {}, {}, &gd);
+            const data::Ensemble n = data::openEnsemble(select(nc, variable, time), {}, {}, &nd);
+            EXPECT_EQ(gd.format, "GRIB 1");
+            EXPECT_EQ(gd.variable, nd.variable);
+            EXPECT_EQ(gd.longName, nd.longName);
+            EXPECT_EQ(gd.units, nd.units);
+            EXPECT_EQ(gd.memberDimension, nd.memberDimension);
+            EXPECT_EQ(gd.members, nd.members);
+            EXPECT_EQ(gd.memberNames, nd.memberNames);
+            EXPECT_EQ(gd.fixedDimensions, nd.fixedDimensions);
+            ASSERT_EQ(gd.variables.size(), nd.variables.size());
+            for (std::size_t v = 0; v < gd.variables.size(); ++v) {
+                EXPECT_EQ(gd.variables[v].name, nd.variables[v].name);
+                EXPECT_EQ(gd.variables[v].dimensions, nd.variables[v].dimensions);
+                EXPECT_EQ(gd.variables[v].shape, nd.variables[v].shape);
+                EXPECT_EQ(gd.variables[v].units, nd.variables[v].units);
+                EXPECT_EQ(gd.variables[v].levels, nd.variables[v].levels);
+            }
+            for (int a = 0; a < 3; ++a) {
+                const data::Axis& ga = g.grid.axis(a);
+                const data::Axis& na = n.grid.axis(a);
+                EXPECT_EQ(ga.name, na.name);
+                EXPECT_EQ(ga.units, na.units);
+                EXPECT_EQ(ga.standardName, na.standardName);
+                EXPECT_EQ(ga.positiveUp, na.positiveUp);
+                ASSERT_EQ(ga.size(), na.size());
+                for (std::size_t i = 0; i < ga.size(); ++i) {
+                    EXPECT_NEAR(ga.values[i], na.values[i], 1e-9) << ga.name << "[" << i << "]";
+                }
+            }
+            ASSERT_EQ(g.memberCount(), n.memberCount());
+            std::size_t wrong = 0;
+            for (std::size_t m = 0; m < g.memberCount(); ++m) {
+                EXPECT_EQ(g.members[m].name, n.members[m].name);
+                ASSERT_EQ(g.members[m].values.size(), n.members[m].values.size());
+                for (std::size_t p = 0; p < g.members[m].values.size(); ++p) {
+                    wrong += std::abs(g.members[m].values[p] - n.members[m].values[p]) <= tolerance
+                                 ? 0
+                                 : 1;
+                }
+            }
+            EXPECT_EQ(wrong, 0u) << "values further apart than the packing error " << tolerance;
+            EXPECT_TRUE(g.warnings.empty());
+        }
+    }
+}
+
+TEST(GribReader, PressureLevelsInHpaAndPaMakeOnePressureAxis) {
+    const test::TempDir dir;
+    const auto value = [](std::size_t member, double pa) {
+        return [member, pa](double lat, double lon) {
+            return 1000.0 * static_cast<double>(member) + pa / 100.0 + lat * 0.1 + lon * 0.01;
+        };
+    };
+    std::vector<GribField> fields;
+    for (long member : {1L, 0L}) {
+        // Out of order on purpose: the axis is sorted by pressure, whatever the file's order.
+        fields.push_back(field("t", "isobaricInPa", 50, member, value(member, 50)));
+        fields.push_back(field("t", "isobaricInhPa", 850, member, value(member, 85000)));
+        fields.push_back(field("t", "isobaricInPa", 100, member, value(member, 100)));
+        fields.push_back(field("t", "isobaricInhPa", 500, member, value(member, 50000)));
+    }
+    const std::string path = writeGrib(dir.file("mixed.grib2"), fields);
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(select(path), {}, {}, &d);
+    EXPECT_EQ(d.format, "GRIB 2");
+    EXPECT_EQ(e.grid.z().name, "plev");
+    EXPECT_EQ(e.grid.z().units, "Pa");
+    EXPECT_FALSE(e.grid.z().positiveUp);
+    EXPECT_EQ(e.grid.z().values, (std::vector<double>{50, 100, 50000, 85000}));
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 0", "member 1"}));
+    expectValues(
+        e, [&](std::size_t m, double lat, double lon, double pa) { return value(m, pa)(lat, lon); },
+        1e-3);
+}
+
+TEST(GribReader, RegularGaussianGridHasItsUnevenLatitudes) {
+    const test::TempDir dir;
+    const auto value = [](long member, long level) {
+        return [member, level](double lat, double lon) {
+            return 2.0 * lat + 0.01 * lon + static_cast<double>(member * 100 + level);
+        };
+    };
+    const std::vector<GribKey> gaussian{{"packingType", std::string("grid_ieee")},
+                                        {"productDefinitionTemplateNumber", 1L}};
+    std::vector<GribField> fields;
+    for (long member : {0L, 1L}) {
+        for (long level : {500L, 850L}) {
+            GribField f =
+                field("t", "isobaricInhPa", level, member, value(member, level), 0, gaussian);
+            f.sample = "regular_gg_pl_grib2";
+            fields.push_back(f);
+        }
+    }
+    const std::string path = writeGrib(dir.file("gaussian.grib2"), fields);
+    const data::Ensemble e = data::openEnsemble(select(path));
+
+    // The latitudes ecCodes gives the grid, north to south.
+    codes_handle* h = codes_grib_handle_new_from_samples(nullptr, "regular_gg_pl_grib2");
+    ASSERT_NE(h, nullptr);
+    std::size_t n = 0;
+    ASSERT_EQ(codes_get_size(h, "distinctLatitudes", &n), 0);
+    std::vector<double> latitudes(n);
+    ASSERT_EQ(codes_get_double_array(h, "distinctLatitudes", latitudes.data(), &n), 0);
+    codes_handle_delete(h);
+    std::sort(latitudes.rbegin(), latitudes.rend());
+
+    const data::Axis& y = e.grid.y();
+    ASSERT_EQ(y.size(), latitudes.size());
+    EXPECT_EQ(e.grid.nx(), 128u);
+    // Gaussian latitudes are unevenly spaced: not the even steps between the first and last.
+    double furthest = 0;
+    for (std::size_t j = 0; j < y.size(); ++j) {
+        EXPECT_NEAR(y.values[j], latitudes[j], 1e-6);
+        const double even = latitudes.front() + (latitudes.back() - latitudes.front()) *
+                                                    static_cast<double>(j) /
+                                                    static_cast<double>(y.size() - 1);
+        furthest = std::max(furthest, std::abs(y.values[j] - even));
+    }
+    EXPECT_GT(furthest, 0.01);
+    expectValues(
+        e,
+        [&](std::size_t m, double lat, double lon, double pa) {
+            return value(static_cast<long>(m), std::lround(pa / 100))(lat, lon);
+        },
+        1e-3);
+}
+
+TEST(GribReader, EveryScanningModeGivesTheSameField) {
+    const test::TempDir dir;
+    const auto value = [](long member, long level) {
+        return [member, level](double lat, double lon) {
+            return lat * 10 + lon + static_cast<double>(member * 1000 + level);
+        };
+    };
+    const auto expected = [&](std::size_t m, double lat, double lon, double pa) {
+        return value(static_cast<long>(m), std::lround(pa / 100))(lat, lon);
+    };
+    for (int mode = 0; mode < 8; ++mode) {
+        const bool iNegative = (mode & 1) != 0, jPositive = (mode & 2) != 0,
+                   jConsecutive = (mode & 4) != 0;
+        SCOPED_TRACE("iScansNegatively " + std::to_string(iNegative) + ", jScansPositively " +
+                     std::to_string(jPositive) + ", jPointsAreConsecutive " +
+                     std::to_string(jConsecutive));
+        std::vector<GribField> fields;
+        for (long member : {0L, 1L}) {
+            for (long level : {500L, 850L}) {
+                fields.push_back(field("t", "isobaricInhPa", level, member, value(member, level), 0,
+                                       test::smallGrid(iNegative, jPositive, jConsecutive)));
+            }
+        }
+        const std::string path =
+            writeGrib(dir.file("mode" + std::to_string(mode) + ".grib2"), fields);
+        const data::Ensemble e = data::openEnsemble(select(path));
+        EXPECT_EQ(e.grid.x().values, (std::vector<double>{0, 10, 20, 30, 40, 50, 60, 70}));
+        EXPECT_EQ(e.grid.y().values, (std::vector<double>{40, 30, 20, 10, 0}));
+        expectValues(e, expected, 1e-3);
+    }
+}
+
+TEST(GribReader, BitmapMakesNaNExactlyWhereValuesAreMissing) {
+    const test::TempDir dir;
+    const auto missingAt = [](double lat, double lon) {
+        return (std::lround(lat / 10) + std::lround(lon / 10)) % 3 == 0;
+    };
+    const auto value = [&](long member) {
+        return [member, missingAt](double lat, double lon) {
+            return missingAt(lat, lon) ? std::nan("") : lat + lon + static_cast<double>(member);
+        };
+    };
+    std::vector<GribField> fields;
+    for (long member : {0L, 1L}) {
+        for (long level : {500L, 850L}) {
+            fields.push_back(field("t", "isobaricInhPa", level, member, value(member)));
+        }
+    }
+    const std::string path = writeGrib(dir.file("bitmap.grib2"), fields);
+    // The file really has a bitmap (ecCodes would otherwise have packed 9999s).
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    int error = 0;
+    codes_handle* h = codes_handle_new_from_file(nullptr, file, PRODUCT_GRIB, &error);
+    ASSERT_NE(h, nullptr);
+    long bitmapPresent = 0;
+    codes_get_long(h, "bitmapPresent", &bitmapPresent);
+    EXPECT_EQ(bitmapPresent, 1);
+    codes_handle_delete(h);
+    std::fclose(file);
+
+    const data::Ensemble e = data::openEnsemble(select(path));
+    const data::Grid& g = e.grid;
+    std::size_t missing = 0;
+    for (std::size_t m = 0; m < 2; ++m)
+        for (std::size_t k = 0; k < 2; ++k)
+            for (std::size_t j = 0; j < g.ny(); ++j)
+                for (std::size_t i = 0; i < g.nx(); ++i) {
+                    const double lat = g.y().values[j], lon = g.x().values[i];
+                    const float got = e.members[m].values[g.index(i, j, k)];
+                    if (missingAt(lat, lon)) {
+                        EXPECT_TRUE(std::isnan(got)) << i << ", " << j;
+                        ++missing;
+                    } else {
+                        EXPECT_NEAR(got, lat + lon + static_cast<double>(m), 1e-4);
+                    }
+                }
+    EXPECT_GT(missing, 0u);
+    EXPECT_LT(missing, 2 * 2 * g.nx() * g.ny());
+}
+
+TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
+    const test::TempDir dir;
+    std::vector<GribField> fields;
+    for (long step : {0L, 6L}) {
+        for (long member : {0L, 1L}) {
+            for (long level : {500L, 850L}) {
+                fields.push_back(field(
+                    "t", "isobaricInhPa", level, member,
+                    [=](double lat, double lon) { return lat + lon + step; }, step));
+            }
+        }
+    }
+    std::vector<std::size_t> offsets;
+    const std::string good = test::readBytes(writeGrib(dir.file("good.grib2"), fields, &offsets));
+    ASSERT_EQ(offsets.size(), 8u);
+
+    // Cut in the middle of the last message (time 1): time 0 reads, with a warning naming
+    // where the cut message starts; time 1 lacks a field and is refused naming it too.
+    const std::string cut = dir.file("cut.grib2");
+    test::writeBytes(cut, good.substr(0, offsets[7] + (good.size() - offsets[7]) / 2));
+    const std::string offset7 = "byte offset " + std::to_string(offsets[7]);
+    const data::Ensemble early = data::openEnsemble(select(cut, "t", 0));
+    ASSERT_EQ(early.warnings.size(), 1u);
+    EXPECT_TRUE(early.warnings.front().find(offset7) != std::string::npos)
+        << early.warnings.front();
+    EXPECT_TRUE(early.warnings.front().find(cut) != std::string::npos) << early.warnings.front();
+    const data::Error late = errorOf(select(cut, "t", 1));
+    EXPECT_EQ(late.kind(), data::ErrorKind::CorruptFile);
+    EXPECT_TRUE(mentions(late, offset7)) << late.what();
+    EXPECT_TRUE(mentions(late, "member 1 at 850 hPa")) << late.what();
+
+    // A message whose length field is wrong (the third, time 0) is skipped, before ecCodes
+    // allocates the 2 GB it claims: time 1 reads.
+    std::string bytes = good;
+    bytes[offsets[2] + 12] = static_cast<char>(0x7f);  // GRIB 2's 8-byte length, most significant
+    const std::string damaged = dir.file("length.grib2");
+    test::writeBytes(damaged, bytes);
+    const data::Ensemble later = data::openEnsemble(select(damaged, "t", 1));
+    ASSERT_FALSE(later.warnings.empty());
+    EXPECT_TRUE(later.warnings.front().find("byte offset " + std::to_string(offsets[2])) !=
+                std::string::npos)
+        << later.warnings.front();
+    EXPECT_TRUE(later.warnings.front().find("bytes long, but the file ends") != std::string::npos)
+        << later.warnings.front();
+    EXPECT_EQ(errorOf(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
+
+    // Bytes flipped anywhere: an ensemble or a data::Error, never anything else.
+    std::mt19937 random(17);
+    for (int trial = 0; trial < 60; ++trial) {
+        std::string flipped = good;
+        const int flips = 1 + trial % 6;
+        for (int f = 0; f < flips; ++f) {
+            const std::size_t at = random() % flipped.size();
+            flipped[at] = static_cast<char>(flipped[at] ^ static_cast<char>(1 + random() % 255));
+        }
+        const std::string path = dir.file("flipped.grib2");
+        test::writeBytes(path, flipped);
+        for (std::size_t time : {0u, 1u}) {
+            try {
+                const data::Ensemble e = data::openEnsemble(select(path, {}, time));
+                for (const data::Member& m : e.members) {
+                    ASSERT_EQ(m.values.size(), e.grid.pointCount());
+                }
+            } catch (const data::Error&) {
+                // a clear refusal is fine
+            }
+        }
+    }
+}
+
+TEST(GribReader, ReducedGaussianAndSphericalHarmonicsAreRefusedWithARegridCommand) {
+    const test::TempDir dir;
+    for (const auto& [sample, command] :
+         {std::pair<std::string, std::string>{"reduced_gg_pl_32_grib2", "cdo setgridtype,regular"},
+          {"sh_pl_grib2", "cdo sp2gp"}}) {
+        std::vector<GribField> fields;
+        for (long member : {0L, 1L}) {
+            for (long level : {500L, 850L}) {
+                GribField f;
+                f.sample = sample;
+                f.keys = {{"productDefinitionTemplateNumber", 1L},
+                          {"perturbationNumber", member},
+                          {"typeOfLevel", std::string("isobaricInhPa")},
+                          {"level", level}};
+                fields.push_back(f);
+            }
+        }
+        const std::string path = writeGrib(dir.file(sample + ".grib2"), fields);
+        const data::Error e = errorOf(select(path));
+        EXPECT_EQ(e.kind(), data::ErrorKind::UnsupportedFormat) << e.what();
+        EXPECT_TRUE(mentions(e, command + " " + path)) << e.what();
+    }
+}
+
+TEST(GribReader, WindSpeedFromUAndVOnTheirCommonLevels) {
+    const test::TempDir dir;
+    const auto u = [](long member, long level) {
+        return
+            [=](double lat, double lon) { return lat - lon + static_cast<double>(member + level); };
+    };
+    const auto v = [](long member, long level) {
+        return [=](double lat, double lon) {
+            return 0.5 * lon - 0.2 * lat + static_cast<double>(level - member);
+        };
+    };
+    const auto write = [&](const std::string& name, std::vector<long> uLevels,
+                           std::vector<long> vLevels) {
+        std::vector<GribField> fields;
+        for (long member : {0L, 1L}) {
+            for (long level : uLevels)
+                fields.push_back(field("u", "isobaricInhPa", level, member, u(member, level)));
+            for (long level : vLevels)
+                fields.push_back(field("v", "isobaricInhPa", level, member, v(member, level)));
+        }
+        return writeGrib(dir.file(name), fields);
+    };
+    const std::string path = write("uv.grib2", {850, 700, 500}, {850, 500, 300});
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(select(path, "wind_speed"), {}, {}, &d);
+    EXPECT_EQ(e.grid.z().values, (std::vector<double>{50000, 85000}));
+    EXPECT_EQ(e.units, "m s**-1");
+    const auto speed = d.variables.back();
+    EXPECT_EQ(speed.name, "wind_speed");
+    EXPECT_TRUE(speed.derived);
+    EXPECT_EQ(speed.levels, 2u);
+    expectValues(
+        e,
+        [&](std::size_t m, double lat, double lon, double pa) {
+            const long member = static_cast<long>(m), level = std::lround(pa / 100);
+            return std::hypot(u(member, level)(lat, lon), v(member, level)(lat, lon));
+        },
+        1e-3);
+
+    const std::string apart = write("apart.grib2", {850, 700}, {500, 300});
+    const data::Error error = errorOf(select(apart, "wind_speed"));
+    EXPECT_EQ(error.kind(), data::ErrorKind::NotThreeDimensional);
+    EXPECT_TRUE(mentions(error, "at least two common levels")) << error.what();
+    EXPECT_TRUE(mentions(error, "700 hPa")) << error.what();
+}
+
+TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
+    const test::TempDir dir;
+    // One forecast (no ensemble template, so no 'number'), 3 steps from 2024-01-15 00:00
+    // (the last crossing a day), 2 levels.
+    std::vector<GribField> fields;
+    for (long step : {30L, 6L, 12L}) {
+        for (long level : {500L, 850L}) {
+            GribField f = field(
+                "t", "isobaricInhPa", level, 0,
+                [=](double lat, double lon) { return lat + lon + static_cast<double>(step); },
+                step);
+            std::erase_if(f.keys, [](const GribKey& k) {
+                return k.first == "productDefinitionTemplateNumber" ||
+                       k.first == "numberOfForecastsInEnsemble" || k.first == "perturbationNumber";
+            });
+            fields.push_back(f);
+        }
+    }
+    const std::string path = writeGrib(dir.file("forecast.grib2"), fields);
+    const data::Error alone = errorOf(select(path));
+    EXPECT_EQ(alone.kind(), data::ErrorKind::MemberDimensionNotFound) << alone.what();
+    EXPECT_EQ(alone.choices(), std::vector<std::string>{"time"});
+
+    data::DataSelection byTime = select(path);
+    byTime.memberDimension = "time";
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(byTime, {}, {}, &d);
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"2024-01-15T06:00", "2024-01-15T12:00",
+                                                       "2024-01-16T06:00"}));
+    EXPECT_EQ(d.fixedDimensions, std::vector<std::string>{"number = 0 of 1 (member 0)"});
+    const std::vector<double> steps{6, 12, 30};
+    expectValues(
+        e, [&](std::size_t m, double lat, double lon, double) { return lat + lon + steps[m]; },
+        1e-3);
+
+    // Three times: index 3 is past their end.
+    const data::Error past = errorOf(select(path, "t", 3));
+    EXPECT_EQ(past.kind(), data::ErrorKind::InvalidArgument);
+    EXPECT_TRUE(mentions(past, "dimension 'time'")) << past.what();
+}
