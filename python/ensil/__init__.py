@@ -158,8 +158,9 @@ def render(target, iso=None, size=(1600, 1000), mode=None, view=None, cache=True
     settings  any other setting by id (thickness=0.02, clusters=3, legend=False), with the
               ranges and refusals of ``ensil render``'s options
 
-    The GIL is released while it draws. Raises ensil.ArgumentError for a refused value,
-    ensil.Error when the data cannot be drawn.
+    Call it from one thread: the one that first rendered, where Qt starts. The GIL is released
+    while it draws; Ctrl+C is noticed when it returns. Raises ensil.ArgumentError for a refused
+    value, ensil.Error when the data cannot be drawn.
     """
     rgba, session, facts = _ensil._render(target, iso, tuple(size), view, cache, mode=mode,
                                           **settings)
