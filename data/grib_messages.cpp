@@ -95,6 +95,10 @@ std::string atOffset(const std::string& path, std::size_t number, std::size_t of
            std::to_string(offset);
 }
 
+// Section 0, a GRIB 1 section 1 (28 bytes at least) and "7777" already take 40 bytes; GRIB 2's
+// sections 0 and 1 take 37, its end 4.
+constexpr std::uint64_t kShortestMessage = 40;
+
 // Where the next message begins: the first "GRIB" at or after `from`; nullopt when none is left.
 std::optional<long> nextMessageStart(std::FILE* file, long from) {
     constexpr std::size_t kChunk = 1 << 16;
@@ -226,11 +230,16 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
         };
         // ecCodes allocates the length a message claims before reading it: a damaged length
         // would ask for gigabytes. A message longer than what is left of the file is cut.
+        // One claiming less than its own first sections makes ecCodes copy them past the end of
+        // the buffer it allocated for it.
         const auto length = claimedLength(file.get(), *start);
         const auto left = static_cast<std::uint64_t>(size - *start);
-        if (length && *length > left) {
-            skip("it says it is " + std::to_string(*length) + " bytes long, but the file ends " +
-                 std::to_string(left) + " bytes after its start");
+        if (length && (*length > left || *length < kShortestMessage)) {
+            skip("it says it is " + std::to_string(*length) + " bytes long, but " +
+                 (*length > left
+                      ? "the file ends " + std::to_string(left) + " bytes after its start"
+                      : "no GRIB message is shorter than " + std::to_string(kShortestMessage) +
+                            " bytes"));
             position = *start + 4;
             continue;
         }

@@ -382,6 +382,19 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
         << later.warnings.front();
     EXPECT_EQ(errorOf(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
 
+    // A length shorter than GRIB's own first sections (ecCodes would copy them past the end of
+    // the buffer it allocates) is skipped too: the fifth message, time 1.
+    bytes = good;
+    for (std::size_t i = 8; i < 16; ++i) bytes[offsets[4] + i] = static_cast<char>(i == 15 ? 2 : 0);
+    const std::string tiny = dir.file("tiny.grib2");
+    test::writeBytes(tiny, bytes);
+    const data::Ensemble first = data::openEnsemble(select(tiny, "t", 0));
+    ASSERT_EQ(first.warnings.size(), 1u);
+    EXPECT_TRUE(first.warnings.front().find("byte offset " + std::to_string(offsets[4]) +
+                                            " is damaged (it says it is 2 bytes long") !=
+                std::string::npos)
+        << first.warnings.front();
+
     // Bytes flipped anywhere: an ensemble or a data::Error, never anything else.
     std::mt19937 random(17);
     for (int trial = 0; trial < 60; ++trial) {
