@@ -33,9 +33,10 @@ from ._ensil import (  # noqa: F401  (re-exported)
 )
 from . import _ensil
 
+# Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
-    "Session", "Settings", "demo", "from_numpy", "open", "render",
+    "Session", "Settings", "demo", "from_numpy", "render",
 ]
 
 
