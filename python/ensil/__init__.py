@@ -33,6 +33,10 @@ from ._ensil import (  # noqa: F401  (re-exported)
 )
 from . import _ensil
 
+# help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
+for _type in (Ensemble, Mesh, PreprocessResult, Session, Settings, demo):
+    _type.__module__ = __name__
+
 # Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
