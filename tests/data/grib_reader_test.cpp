@@ -529,3 +529,34 @@ TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
     EXPECT_EQ(past.kind(), data::ErrorKind::InvalidArgument);
     EXPECT_TRUE(mentions(past, "dimension 'time'")) << past.what();
 }
+
+TEST(GribReader, OneFilePerMemberIsNamedByItsFiles) {
+    const test::TempDir dir;
+    std::vector<std::string> paths;
+    for (long run : {1L, 2L, 3L}) {
+        std::vector<GribField> fields;
+        for (long level : {500L, 850L}) {
+            GribField f = field("t", "isobaricInhPa", level, 0, [=](double lat, double lon) {
+                return lat + lon + static_cast<double>(run);
+            });
+            std::erase_if(f.keys, [](const GribKey& k) {
+                return k.first == "productDefinitionTemplateNumber" ||
+                       k.first == "numberOfForecastsInEnsemble" || k.first == "perturbationNumber";
+            });
+            fields.push_back(f);
+        }
+        paths.push_back(writeGrib(dir.file("run_0" + std::to_string(run) + ".grib2"), fields));
+    }
+    data::DataSelection s;
+    s.paths = paths;
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(s, {}, {}, &d);
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"run_01", "run_02", "run_03"}));
+    EXPECT_EQ(d.memberDimensionReason, "one file per member");
+    expectValues(
+        e,
+        [](std::size_t m, double lat, double lon, double) {
+            return lat + lon + static_cast<double>(m + 1);
+        },
+        1e-3);
+}
