@@ -279,6 +279,15 @@ std::string validityText(long validity) {
 
 GribAxes gribAxes(const GribGrid& g) {
     GribAxes axes;
+    // A constant field packs any number of points into a few bytes: a damaged Ni or Nj would
+    // have the axes alone take gigabytes before the ensemble's size is checked.
+    constexpr long kMostAlongAnAxis = 1000000;  // 0.00036 degrees around the globe
+    if (g.ni > kMostAlongAnAxis || g.nj > kMostAlongAnAxis) {
+        axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
+                   " points, more than ensil reads (" + std::to_string(kMostAlongAnAxis) +
+                   " along an axis); its header is likely damaged";
+        return axes;
+    }
     if (g.ni < 2 || g.nj < 2) {
         axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
                    " points; isosurfaces need at least 2 along each axis";
