@@ -114,7 +114,8 @@ std::optional<long> nextMessageStart(std::FILE* file, long from) {
 
 // The smallest length the message at `start` says it has (section 0): GRIB 1's 3-byte length
 // (without the flag of ECMWF's large messages, whose true length is larger still), GRIB 2's
-// 8-byte one. nullopt for another edition number, which ecCodes refuses itself.
+// 8-byte one. nullopt for another edition number: ensil reads editions 1 and 2 only (ecCodes
+// would take a damaged edition 3 for its experimental GRIB 3 and allocate what it claims).
 std::optional<std::uint64_t> claimedLength(std::FILE* file, long start) {
     std::array<unsigned char, 16> head{};
     if (std::fseek(file, start, SEEK_SET) != 0) return std::nullopt;
@@ -234,7 +235,12 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
         // the buffer it allocated for it.
         const auto length = claimedLength(file.get(), *start);
         const auto left = static_cast<std::uint64_t>(size - *start);
-        if (length && (*length > left || *length < kShortestMessage)) {
+        if (!length) {
+            skip("its edition number is neither 1 nor 2");
+            position = *start + 4;
+            continue;
+        }
+        if (*length > left || *length < kShortestMessage) {
             skip("it says it is " + std::to_string(*length) + " bytes long, but " +
                  (*length > left
                       ? "the file ends " + std::to_string(left) + " bytes after its start"
