@@ -95,6 +95,10 @@ std::string atOffset(const std::string& path, std::size_t number, std::size_t of
            std::to_string(offset);
 }
 
+// Section 0, a GRIB 1 section 1 (28 bytes at least) and "7777" already take 40 bytes; GRIB 2's
+// sections 0 and 1 take 37, its end 4.
+constexpr std::uint64_t kShortestMessage = 40;
+
 // Where the next message begins: the first "GRIB" at or after `from`; nullopt when none is left.
 std::optional<long> nextMessageStart(std::FILE* file, long from) {
     constexpr std::size_t kChunk = 1 << 16;
@@ -110,7 +114,8 @@ std::optional<long> nextMessageStart(std::FILE* file, long from) {
 
 // The smallest length the message at `start` says it has (section 0): GRIB 1's 3-byte length
 // (without the flag of ECMWF's large messages, whose true length is larger still), GRIB 2's
-// 8-byte one. nullopt for another edition number, which ecCodes refuses itself.
+// 8-byte one. nullopt for another edition number: ensil reads editions 1 and 2 only (ecCodes
+// would take a damaged edition 3 for its experimental GRIB 3 and allocate what it claims).
 std::optional<std::uint64_t> claimedLength(std::FILE* file, long start) {
     std::array<unsigned char, 16> head{};
     if (std::fseek(file, start, SEEK_SET) != 0) return std::nullopt;
@@ -226,11 +231,21 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
         };
         // ecCodes allocates the length a message claims before reading it: a damaged length
         // would ask for gigabytes. A message longer than what is left of the file is cut.
+        // One claiming less than its own first sections makes ecCodes copy them past the end of
+        // the buffer it allocated for it.
         const auto length = claimedLength(file.get(), *start);
         const auto left = static_cast<std::uint64_t>(size - *start);
-        if (length && *length > left) {
-            skip("it says it is " + std::to_string(*length) + " bytes long, but the file ends " +
-                 std::to_string(left) + " bytes after its start");
+        if (!length) {
+            skip("its edition number is neither 1 nor 2");
+            position = *start + 4;
+            continue;
+        }
+        if (*length > left || *length < kShortestMessage) {
+            skip("it says it is " + std::to_string(*length) + " bytes long, but " +
+                 (*length > left
+                      ? "the file ends " + std::to_string(left) + " bytes after its start"
+                      : "no GRIB message is shorter than " + std::to_string(kShortestMessage) +
+                            " bytes"));
             position = *start + 4;
             continue;
         }
@@ -270,6 +285,15 @@ std::string validityText(long validity) {
 
 GribAxes gribAxes(const GribGrid& g) {
     GribAxes axes;
+    // A constant field packs any number of points into a few bytes: a damaged Ni or Nj would
+    // have the axes alone take gigabytes before the ensemble's size is checked.
+    constexpr long kMostAlongAnAxis = 1000000;  // 0.00036 degrees around the globe
+    if (g.ni > kMostAlongAnAxis || g.nj > kMostAlongAnAxis) {
+        axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
+                   " points, more than ensil reads (" + std::to_string(kMostAlongAnAxis) +
+                   " along an axis); its header is likely damaged";
+        return axes;
+    }
     if (g.ni < 2 || g.nj < 2) {
         axes.why = "lies on a grid of " + std::to_string(g.ni) + " x " + std::to_string(g.nj) +
                    " points; isosurfaces need at least 2 along each axis";

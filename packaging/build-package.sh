@@ -22,7 +22,7 @@ if [ $# -eq 1 ]; then
     fi
     targets=(ensil)
     # The Python module, where the build has it (python/CMakeLists.txt): the package holds it.
-    if grep -q '^ENSIL_PYTHON_MODULE:INTERNAL=ON' "$build_dir/CMakeCache.txt"; then
+    if cmake --build "$build_dir" --target help | grep -qw ensil_python; then
         targets+=(ensil_python)
     fi
     cmake --build "$build_dir" --target "${targets[@]}"

@@ -33,9 +33,14 @@ from ._ensil import (  # noqa: F401  (re-exported)
 )
 from . import _ensil
 
+# help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
+for _type in (Ensemble, Mesh, PreprocessResult, Session, Settings, demo):
+    _type.__module__ = __name__
+
+# Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
-    "Session", "Settings", "demo", "from_numpy", "open", "render",
+    "Session", "Settings", "demo", "from_numpy", "render",
 ]
 
 
@@ -158,8 +163,9 @@ def render(target, iso=None, size=(1600, 1000), mode=None, view=None, cache=True
     settings  any other setting by id (thickness=0.02, clusters=3, legend=False), with the
               ranges and refusals of ``ensil render``'s options
 
-    The GIL is released while it draws. Raises ensil.ArgumentError for a refused value,
-    ensil.Error when the data cannot be drawn.
+    Call it from one thread: the one that first rendered, where Qt starts. The GIL is released
+    while it draws; Ctrl+C is noticed when it returns. Raises ensil.ArgumentError for a refused
+    value, ensil.Error when the data cannot be drawn.
     """
     rgba, session, facts = _ensil._render(target, iso, tuple(size), view, cache, mode=mode,
                                           **settings)

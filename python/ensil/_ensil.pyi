@@ -1,5 +1,6 @@
 # Type hints of the extension module ensil._ensil (python/src/*.cpp); use the `ensil` package.
-from typing import Any, Callable, Iterator, Optional, Sequence
+import os
+from typing import Any, Callable, Iterator, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -108,8 +109,9 @@ class Settings:
     def describe(self, id: str) -> dict[str, Any]: ...
 
 class Session:
-    def __init__(self, paths: Optional[Sequence[str]] = None, var: str = "",
-                 member_dim: str = "", time_index: int = 0) -> None: ...
+    def __init__(self, paths: Union[str, os.PathLike[str], Sequence[Union[str, os.PathLike[str]]],
+                                    None] = None,
+                 var: str = "", member_dim: str = "", time_index: int = 0) -> None: ...
     @staticmethod
     def load(path: str) -> Session: ...
     def save(self, path: Optional[str] = None) -> None: ...

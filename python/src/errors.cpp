@@ -48,9 +48,14 @@ void translate(std::exception_ptr failure) {
         raise(g_error, e.what(), "project");
     } catch (const data::Cancelled& e) {
         raise(g_error, e.what(), "cancelled");
+    } catch (const py::builtin_exception&) {
+        throw;  // IndexError and the like, raised on purpose: pybind11's own translation
+    } catch (const std::runtime_error& e) {
+        // What the renderer cannot do (no OpenGL 4.1 context, no display server and no EGL, a
+        // call from another thread), said as the command line says it.
+        raise(g_error, e.what());
     }
-    // Anything else (std::bad_alloc as MemoryError, a std::runtime_error from the renderer as
-    // RuntimeError): pybind11's own translation.
+    // Anything else (std::bad_alloc as MemoryError): pybind11's own translation.
 }
 
 }  // namespace

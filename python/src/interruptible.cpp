@@ -17,6 +17,7 @@ struct Handshake {
     std::mutex mutex;
     std::condition_variable changed;
     std::optional<double> pending;  // a report the Python side has not answered yet
+    double reported = -1.0;         // the highest fraction handed over so far
     bool finished = false;
 };
 
@@ -31,6 +32,10 @@ void runInterruptible(const Step& step, const py::object& progress) {
     const data::Progress report = [&h](double fraction) {
         std::unique_lock lock(h.mutex);
         h.changed.wait(lock, [&h] { return !h.pending.has_value(); });
+        // The step's parallel workers report as they finish, not always in order: Python sees
+        // the fraction rise only.
+        if (fraction <= h.reported) return;
+        h.reported = fraction;
         h.pending = fraction;
         h.changed.notify_all();
         h.changed.wait(lock, [&h] { return !h.pending.has_value(); });

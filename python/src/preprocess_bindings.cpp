@@ -336,7 +336,7 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
 Meshes every member's isosurface at `iso` and the mean's, decimates them (error bound `error`
 in grid cells, 0.001 to 10; decimate=False keeps every triangle), computes the per-vertex
 attributes, the distances, the clustering (`linkage`: average, single, complete or ward;
-`clusters`: 1 to 50, default 5 lowered to the members there are) and the contour boxplot:
+`clusters`: default 5, lowered to the members there are; more is refused) and the contour boxplot:
 what `ensil preprocess` does, through the same code. `iso` defaults to the workbench's (the
 90th percentile of the values). Meshes of files and the demo go through the mesh cache
 (the command line's and the workbench's; cache=False or cache_dir=FOLDER to change that).

@@ -382,6 +382,19 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
         << later.warnings.front();
     EXPECT_EQ(errorOf(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
 
+    // A length shorter than GRIB's own first sections (ecCodes would copy them past the end of
+    // the buffer it allocates) is skipped too: the fifth message, time 1.
+    bytes = good;
+    for (std::size_t i = 8; i < 16; ++i) bytes[offsets[4] + i] = static_cast<char>(i == 15 ? 2 : 0);
+    const std::string tiny = dir.file("tiny.grib2");
+    test::writeBytes(tiny, bytes);
+    const data::Ensemble first = data::openEnsemble(select(tiny, "t", 0));
+    ASSERT_EQ(first.warnings.size(), 1u);
+    EXPECT_TRUE(first.warnings.front().find("byte offset " + std::to_string(offsets[4]) +
+                                            " is damaged (it says it is 2 bytes long") !=
+                std::string::npos)
+        << first.warnings.front();
+
     // Bytes flipped anywhere: an ensemble or a data::Error, never anything else.
     std::mt19937 random(17);
     for (int trial = 0; trial < 60; ++trial) {
@@ -515,4 +528,35 @@ TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
     const data::Error past = errorOf(select(path, "t", 3));
     EXPECT_EQ(past.kind(), data::ErrorKind::InvalidArgument);
     EXPECT_TRUE(mentions(past, "dimension 'time'")) << past.what();
+}
+
+TEST(GribReader, OneFilePerMemberIsNamedByItsFiles) {
+    const test::TempDir dir;
+    std::vector<std::string> paths;
+    for (long run : {1L, 2L, 3L}) {
+        std::vector<GribField> fields;
+        for (long level : {500L, 850L}) {
+            GribField f = field("t", "isobaricInhPa", level, 0, [=](double lat, double lon) {
+                return lat + lon + static_cast<double>(run);
+            });
+            std::erase_if(f.keys, [](const GribKey& k) {
+                return k.first == "productDefinitionTemplateNumber" ||
+                       k.first == "numberOfForecastsInEnsemble" || k.first == "perturbationNumber";
+            });
+            fields.push_back(f);
+        }
+        paths.push_back(writeGrib(dir.file("run_0" + std::to_string(run) + ".grib2"), fields));
+    }
+    data::DataSelection s;
+    s.paths = paths;
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(s, {}, {}, &d);
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"run_01", "run_02", "run_03"}));
+    EXPECT_EQ(d.memberDimensionReason, "one file per member");
+    expectValues(
+        e,
+        [](std::size_t m, double lat, double lon, double) {
+            return lat + lon + static_cast<double>(m + 1);
+        },
+        1e-3);
 }

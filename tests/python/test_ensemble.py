@@ -174,3 +174,9 @@ def test_help_and_repr_say_what_things_are():
         warnings.simplefilter("error")
         import pydoc
         assert "preprocess" in pydoc.render_doc(ensil.Ensemble)
+
+
+def test_a_star_import_leaves_the_builtin_open_alone():
+    names = {}
+    exec("from ensil import *", names)
+    assert "open" not in names and "from_numpy" in names and "render" in names

@@ -240,7 +240,8 @@ def test_other_python_threads_run_while_it_works():
         worker.join()
     finally:
         sys.setswitchinterval(interval)
-    assert seen["after"] - seen["before"] > 100
+    # Held through the work, at most the final join would let the count move once or twice.
+    assert seen["after"] - seen["before"] > 20
 
 
 def test_members_without_data_are_left_out_and_said():

@@ -6,6 +6,7 @@ import os
 import struct
 import subprocess
 import sys
+import threading
 import zlib
 
 import numpy as np
@@ -162,3 +163,20 @@ def test_refusals_say_what_ensil_render_says(spheres, tmp_path):
         ensil.render(spheres, iso=100.0, size=(16, 16))
     with pytest.raises(ensil.ArgumentError, match="not a project"):
         ensil.render(str(tmp_path / "data.nc"))
+
+
+def test_another_thread_is_told_why_it_cannot_render(spheres):
+    ensil.render(spheres, iso=0.0, size=(16, 16))  # Qt starts on this thread
+    raised = []
+
+    def render_here():
+        try:
+            ensil.render(spheres, iso=0.0, size=(16, 16))
+        except ensil.Error as e:
+            raised.append(str(e))
+
+    worker = threading.Thread(target=render_here)
+    worker.start()
+    worker.join()
+    assert raised == ["ensil.render must be called from the thread Qt started on "
+                      "(the first render's)"]
