@@ -43,6 +43,15 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_view->update();
 }
 
+void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
+                                  std::shared_ptr<const prep::EnsembleMoments> moments,
+                                  std::string sourceKey) {
+    m_job.cancel();
+    m_ensemble = std::move(ensemble);
+    m_moments = std::move(moments);
+    m_sourceKey = std::move(sourceKey);
+}
+
 void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     if (!m_ensemble) return;
     prep::PipelineOptions options;

@@ -54,6 +54,11 @@ public:
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
     void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                      std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
+    // Another time step of the same members: the last step's surfaces, figures and clusters
+    // stay on screen until setIsovalue's are built, and its clusters are what the new ones are
+    // matched to (MemberSelection), so colours follow groups across steps.
+    void setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
+                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
     // Builds (or reads from the cache) this isovalue's surfaces, their attributes taken in the
     // display space of this vertical exaggeration.
     void setIsovalue(float isovalue, float verticalExaggeration);

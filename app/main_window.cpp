@@ -37,6 +37,8 @@
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/cluster_timeline.h"
+#include "widgets/time_bar.h"
 #include "widgets/session/session_model.h"
 #include "widgets/session/view_presets.h"
 #include "widgets/silhouette_view.h"
@@ -92,6 +94,7 @@ MainWindow::MainWindow(QWidget* parent)
     createToolbar();
     createRenderDocks();
     createAnimation();
+    createTimeBar();
     createMenus();
     linkPanels();
     // Last: everything the bindings show the session in exists now.
@@ -222,6 +225,10 @@ void MainWindow::createToolbar() {
     connect(m_session, &IsovalueSession::failed, this, &MainWindow::setIdle);
 }
 
+void MainWindow::showProgress(double fraction) {
+    m_progress->setValue(static_cast<int>(fraction * kProgressSteps));
+}
+
 void MainWindow::createStatusBar() {
     m_statusText = new QLabel(this);
     m_progress = new QProgressBar(this);
@@ -285,6 +292,21 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
         });
 }
 
+EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
+                                         const std::function<std::string()>& identify,
+                                         const std::stop_token& stop,
+                                         const data::Progress& progress) {
+    data::Ensemble loaded = source(stop, [&](double f) { data::report(progress, 0.6 * f); });
+    // As the command line does: no NaN distance of theirs may reach the clustering.
+    std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded);
+    EnsembleOverview overview =
+        buildEnsembleOverview(std::make_shared<const data::Ensemble>(std::move(loaded)), stop,
+                              [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+    overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
+    overview.membersWithoutData = std::move(withoutData);
+    return overview;
+}
+
 void MainWindow::startLoading(const QString& what, std::function<std::string()> identify,
                               EnsembleSource source) {
     setBusy(what);
@@ -292,19 +314,11 @@ void MainWindow::startLoading(const QString& what, std::function<std::string()> 
         m_info->showMessage(tr("Loading..."));
         m_view->setPlaceholderText(what);
     }
+    forgetTimeSteps();  // other data: the steps read ahead are not its
     m_loader.start(
         [source = std::move(source), identify = std::move(identify)](
             const std::stop_token& stop, const data::Progress& progress) {
-            data::Ensemble loaded =
-                source(stop, [&](double f) { data::report(progress, 0.6 * f); });
-            // As the command line does: no NaN distance of theirs may reach the clustering.
-            std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded);
-            EnsembleOverview overview = buildEnsembleOverview(
-                std::make_shared<const data::Ensemble>(std::move(loaded)), stop,
-                [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
-            overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
-            overview.membersWithoutData = std::move(withoutData);
-            return overview;
+            return loadOverview(source, identify, stop, progress);
         },
         [this](EnsembleOverview overview) {
             showOverview(std::make_unique<EnsembleOverview>(std::move(overview)));
@@ -428,6 +442,14 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(ensembleFacts(*m_overview));
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
+    QStringList times;
+    for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
+    m_timeBar->setSteps(times, m_requested ? static_cast<int>(m_requested->timeIndex) : 0);
+    m_timeline->setSteps(times);
+    m_timelineClusters = 0;
+    if (auto* dock = findChild<QDockWidget*>(QStringLiteral("clusterTimelineDock"))) {
+        dock->setVisible(times.size() > 1);
+    }
     m_view->setMemberNames(memberNames());
     const prep::FieldStatistics& stats = m_overview->statistics;
     const int members = static_cast<int>(e.memberCount());

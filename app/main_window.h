@@ -9,6 +9,7 @@
 #include <QMainWindow>
 #include <QStringList>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -34,6 +35,8 @@ class RenderToolbar;
 class RenderPanel;
 class CuttingPlanePanel;
 class AnimationBar;
+class TimeBar;
+class ClusterTimeline;
 class OpenDataDialog;
 class MemberSelection;
 class MemberTablePanel;
@@ -76,6 +79,7 @@ public:
     [[nodiscard]] ui::RenderPanel* renderPanel() const { return m_renderPanel; }
     [[nodiscard]] ui::CuttingPlanePanel* cuttingPlanePanel() const { return m_planePanel; }
     [[nodiscard]] ui::AnimationBar* animationBar() const { return m_animation; }
+    [[nodiscard]] ui::TimeBar* timeBar() const { return m_timeBar; }
     [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
@@ -143,8 +147,23 @@ private:
     void lookFrom(const session::ViewPreset& preset);
     using EnsembleSource =
         std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
-    // `identify` gives the data's identity for the mesh cache; it runs on the worker, since it
-    // reads the files (a content hash).
+    // Reads an ensemble and builds its overview (on a worker). `identify` gives the data's
+    // identity for the mesh cache; it runs on the worker, since it reads the files (a content
+    // hash).
+    static EnsembleOverview loadOverview(const EnsembleSource& source,
+                                         const std::function<std::string()>& identify,
+                                         const std::stop_token& stop,
+                                         const data::Progress& progress);
+    // Time as an axis of the session (main_window_time.cpp): the time bar, a step asked for
+    // (read in the background, the last step kept on screen until this one is built), the
+    // step shown, and the steps read ahead or visited, kept within a memory budget.
+    void createTimeBar();
+    void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
+    void goToTimeStep(std::size_t step);
+    void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);
+    void readAhead();
+    void forgetTimeSteps();
+    [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
     void startLoading(const QString& what, std::function<std::string()> identify,
                       EnsembleSource source);
     void createToolbar();
@@ -206,6 +225,15 @@ private:
     ui::RenderPanel* m_renderPanel = nullptr;
     ui::CuttingPlanePanel* m_planePanel = nullptr;
     ui::AnimationBar* m_animation = nullptr;
+    ui::TimeBar* m_timeBar = nullptr;
+    ui::ClusterTimeline* m_timeline = nullptr;
+    int m_timelineClusters = 0;  // the cluster count the timeline's steps were recorded at
+    // The clusters of the step on screen go into the timeline (main_window_time.cpp).
+    void recordStepClusters();
+    // Time steps read (ahead, or visited before) and not on screen, by time index.
+    std::map<std::size_t, std::unique_ptr<EnsembleOverview>> m_timeSteps;
+    BackgroundJob<EnsembleOverview> m_readAhead{this};
+    std::size_t m_readingAhead = 0;  // the step m_readAhead reads
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;

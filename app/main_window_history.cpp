@@ -14,6 +14,7 @@
 #include "widgets/session/session_camera.h"
 #include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
+#include "widgets/time_bar.h"
 
 namespace ensil::app {
 
@@ -49,6 +50,7 @@ void MainWindow::createHistory(QMenu* edit) {
     connect(m_selection, &ui::MemberSelection::clustersChanged, this, record, queued);
     connect(m_selection, &ui::MemberSelection::visibilityChanged, this, record, queued);
     connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, record, queued);
+    connect(m_timeBar, &ui::TimeBar::stepRequested, this, record, queued);
     connect(
         m_resetCameraAction, &QAction::triggered, this,
         [this] { m_history->record(/*cameraStep=*/true); }, queued);

@@ -18,6 +18,7 @@
 #include "geo/map_projection.h"
 #include "gl/renderer.h"
 #include "widgets/cluster_panel.h"
+#include "widgets/cluster_timeline.h"
 #include "widgets/csv_export.h"
 #include "widgets/dendrogram_export.h"
 #include "widgets/dendrogram_view.h"
@@ -54,6 +55,8 @@ void MainWindow::createPanels() {
     makeDock(this, tr("Clusters"), "clusterDock", m_clusterPanel);
     makeDock(this, tr("Members"), "memberTableDock", m_memberTable);
     makeDock(this, tr("Dendrogram"), "dendrogramDock", m_dendrogram);
+    m_timeline = new ui::ClusterTimeline(m_selection);
+    makeDock(this, tr("Clusters over Time"), "clusterTimelineDock", m_timeline);
     arrangeDefaultLayout();
 }
 
@@ -65,6 +68,7 @@ void MainWindow::arrangeDefaultLayout() {
     auto* clusters = findChild<QDockWidget*>(QStringLiteral("clusterDock"));
     auto* members = findChild<QDockWidget*>(QStringLiteral("memberTableDock"));
     auto* dendrogram = findChild<QDockWidget*>(QStringLiteral("dendrogramDock"));
+    auto* timeline = findChild<QDockWidget*>(QStringLiteral("clusterTimelineDock"));
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     addDockWidget(Qt::RightDockWidgetArea, clusters);
@@ -72,6 +76,8 @@ void MainWindow::arrangeDefaultLayout() {
     // Tabified after the split, or the split would land in the tab group.
     if (ensemble != nullptr) tabifyDockWidget(clusters, ensemble);
     addDockWidget(Qt::BottomDockWidgetArea, dendrogram);
+    // Beside the dendrogram, below the view: shown for data with time steps.
+    if (timeline != nullptr) splitDockWidget(dendrogram, timeline, Qt::Horizontal);
     clusters->raise();
     resizeDocks({clusters}, {kSideDockWidth}, Qt::Horizontal);
     resizeDocks({clusters, members}, {kClusterListHeight, 1000 - kClusterListHeight}, Qt::Vertical);

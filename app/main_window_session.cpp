@@ -62,6 +62,11 @@ void MainWindow::bindSession() {
 
 void MainWindow::showSessionParts(session::SessionParts parts) {
     gl::Renderer& renderer = m_view->renderer();
+    // Another time step of the data shown (the time bar, undo): read in the background.
+    if ((parts & SessionPart::Data) && m_overview && m_requested && !m_showingNewData) {
+        const data::DataSelection& wanted = m_model->state().data;
+        if (timeStepSelection(wanted.timeIndex) == wanted) goToTimeStep(wanted.timeIndex);
+    }
     // First the box, which the plane is placed across: without a new plane, the plane keeps
     // its place across the reshaped box (a change of the session of its own, made here).
     if (parts & SessionPart::Exaggeration) {

@@ -41,22 +41,6 @@ std::string gib(double bytes) {
     return text.data();
 }
 
-// Memory the system can give without swapping; 0 when unknown.
-std::size_t availableMemory() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    std::size_t kib = 0;
-    std::string unit;
-    while (meminfo >> key >> kib >> unit) {
-        if (key == "MemAvailable:") return kib * 1024;
-    }
-    const long pages = sysconf(_SC_AVPHYS_PAGES);
-    const long pageSize = sysconf(_SC_PAGESIZE);
-    return pages > 0 && pageSize > 0
-               ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
-               : 0;
-}
-
 }  // namespace
 
 const EnsembleReader& readerFor(const DataSelection& selection) {
@@ -116,8 +100,23 @@ std::string sourceIdentity(const DataSelection& selection) {
            " time-index=" + std::to_string(selection.timeIndex);
 }
 
+std::size_t availableMemoryBytes() {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string key;
+    std::size_t kib = 0;
+    std::string unit;
+    while (meminfo >> key >> kib >> unit) {
+        if (key == "MemAvailable:") return kib * 1024;
+    }
+    const long pages = sysconf(_SC_AVPHYS_PAGES);
+    const long pageSize = sysconf(_SC_PAGESIZE);
+    return pages > 0 && pageSize > 0
+               ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
+               : 0;
+}
+
 void checkMemoryFor(std::size_t bytes, const std::string& what) {
-    const std::size_t available = availableMemory();
+    const std::size_t available = availableMemoryBytes();
     // Keep a quarter of what is free for meshes, the cache and everything else.
     if (available > 0 && static_cast<double>(bytes) > 0.75 * static_cast<double>(available)) {
         throw Error(ErrorKind::OutOfMemory,

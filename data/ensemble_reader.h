@@ -59,6 +59,7 @@ struct EnsembleDescription {
     std::size_t members = 0;
     std::vector<std::string> memberNames;
     std::vector<std::string> fixedDimensions;  // e.g. "time = 0 of 4 (2017-01-01T00:00)"
+    TimeSteps timeSteps;                       // what timeIndex may be, with dates
     Grid grid;
     GridMapping gridMapping;            // see data/grid_mapping.h
     std::vector<std::string> warnings;  // as Ensemble::warnings, from the headers alone
@@ -118,6 +119,9 @@ std::string membersWithoutDataKey(const std::vector<std::string>& names);
 // size and modification time, and the variable, member dimension and time index. A file
 // that changes changes the identity.
 std::string sourceIdentity(const DataSelection& selection);
+
+// Memory the system can give now without swapping (MemAvailable); 0 when unknown.
+std::size_t availableMemoryBytes();
 
 // Throws Error(OutOfMemory) when `bytes` will not fit in the memory available now.
 void checkMemoryFor(std::size_t bytes, const std::string& what);

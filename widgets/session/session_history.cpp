@@ -15,11 +15,18 @@ bool isCameraSetting(const Setting& s) { return s.projectKey.starts_with("camera
 
 // Merge keys: a setting's index in the table, or one of these past its end.
 constexpr int kPlaneKey = 1000;
+constexpr int kTimeKey = 1001;  // steps in a row (playing) are one step back
 
 }  // namespace
 
 std::optional<SessionChange> describeChange(const SessionState& before, const SessionState& after,
                                             bool cameraCounts) {
+    if (before.data.timeIndex != after.data.timeIndex && before.data.paths == after.data.paths) {
+        return SessionChange{QStringLiteral("Time Step %1 -> %2")
+                                 .arg(before.data.timeIndex + 1)
+                                 .arg(after.data.timeIndex + 1),
+                             kTimeKey};
+    }
     if (before.isovalue != after.isovalue && after.isovalue) {
         return SessionChange{
             before.isovalue ? QStringLiteral("Isovalue %1 -> %2")

@@ -1,0 +1,85 @@
+// Time as an axis of the workbench session: the time bar steps ERA5 through its four times,
+// each step's surfaces replacing the last only when built, clusters keeping their colours,
+// the strip recording each step, undo going back a step, and a project keeping the step.
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
+#include "tests/support/scoped_cache_home.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/cluster_timeline.h"
+#include "widgets/member_selection.h"
+#include "widgets/silhouette_view.h"
+#include "widgets/time_bar.h"
+
+using namespace ensil;
+
+namespace {
+// Waits until the step's surfaces are on screen.
+bool stepShown(app::MainWindow& window, int step) {
+    return QTest::qWaitFor([&] { return window.timeBar()->shownStep() == step &&
+                                        window.timeBar()->pendingStep() < 0 &&
+                                        !window.isovalueSession()->isRunning(); },
+                           60000);
+}
+}  // namespace
+
+TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilTheNextIsBuilt) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(60000));
+    ui::TimeBar& bar = *window.timeBar();
+    ASSERT_EQ(bar.stepCount(), 4);
+    EXPECT_EQ(bar.shownStep(), 0);
+    const gl::Renderer& renderer = window.view()->renderer();
+    const auto firstMeshes = renderer.meshes();
+    const float firstValue = window.overview()->ensemble->members[0].values[0];
+    EXPECT_TRUE(renderer.title().contains("2017-01-01T00:00")) << renderer.title().toStdString();
+
+    bar.step(1);
+    EXPECT_EQ(bar.pendingStep(), 1);
+    // Until step 1 is built, step 0's surfaces stay on screen.
+    EXPECT_EQ(renderer.meshes(), firstMeshes);
+    ASSERT_TRUE(stepShown(window, 1));
+    EXPECT_NE(renderer.meshes(), firstMeshes);
+    EXPECT_EQ(window.overview()->ensemble->memberCount(), 10u);
+    EXPECT_NE(window.overview()->ensemble->members[0].values[0], firstValue) << "another time";
+    EXPECT_TRUE(renderer.title().contains("2017-01-01T12:00")) << renderer.title().toStdString();
+    EXPECT_EQ(window.captureSession().data.timeIndex, 1u);
+
+    // The strip holds both steps' clusters, each member in one.
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    EXPECT_EQ(strip.stepClusters(0).size(), 10u);
+    EXPECT_EQ(strip.stepClusters(1).size(), 10u);
+    EXPECT_TRUE(strip.stepClusters(2).empty()) << "not visited yet";
+    ui::MemberSelection& members = *window.memberSelection();
+    for (int m = 0; m < 10; ++m) {
+        EXPECT_EQ(strip.stepClusters(1)[static_cast<std::size_t>(m)],
+                  members.identityOf(members.clusterOf(m)));
+    }
+    // A click on a bar selects that cluster's members at that step.
+    const int identity = strip.stepClusters(0).front();
+    const QList<int> cluster = strip.membersAt(0, identity);
+    QTest::mouseClick(const_cast<ui::ClusterTimeline*>(&strip), Qt::LeftButton, Qt::NoModifier,
+                      strip.barRect(0, identity).center().toPoint());
+    EXPECT_EQ(members.selectedMembers(), cluster);
+
+    // Undo goes back to the step before.
+    QAction* undo = window.findChild<QAction*>("undoAction");
+    ASSERT_TRUE(QTest::qWaitFor([&] { return undo->text().contains("Time Step 1 -> 2"); }, 10000))
+        << undo->text().toStdString();
+    undo->trigger();
+    ASSERT_TRUE(stepShown(window, 0));
+    EXPECT_EQ(window.overview()->ensemble->members[0].values[0], firstValue);
+}
