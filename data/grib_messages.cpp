@@ -278,10 +278,17 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
                 continue;
             }
             GribMessage m = readKeys(h.get(), number);
-            if (m.validity >= 0) {
-                inventory.messages.push_back(std::move(m));
-            } else {
+            // ecCodes allocates what a message says it packs when it decodes it: a damaged
+            // count would take gigabytes for a grid of a few hundred points.
+            const long packed = std::max(getLong(h.get(), "numberOfValues"),
+                                         getLong(h.get(), "numberOfCodedValues"));
+            if (m.validity < 0) {
                 skip("its reference date, time or forecast step is impossible");
+            } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
+                skip("it says it packs " + std::to_string(packed) + " values, but its grid has " +
+                     std::to_string(m.values) + " points");
+            } else {
+                inventory.messages.push_back(std::move(m));
             }
         } catch (const LibraryAssertion& e) {
             skip(std::string("ecCodes gave up on it: ") + e.what());
