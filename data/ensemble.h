@@ -14,6 +14,17 @@
 
 namespace ensil::data {
 
+// (Here rather than in ensemble_reader.h, which includes this file, so that Ensemble can hold it.)
+// The steps DataSelection::timeIndex picks from (the dimension(s) fixed to one index, e.g.
+// forecast times): the dimension's name and one label per step, ISO 8601 where the file dates
+// it ("2017-01-01T12:00"), else the index. Empty (no labels) when the data have no steps.
+struct TimeSteps {
+    std::string dimension;
+    std::vector<std::string> labels;
+    [[nodiscard]] std::size_t count() const { return labels.size(); }
+    bool operator==(const TimeSteps&) const = default;
+};
+
 struct Member {
     std::string name;    // e.g. "member 7", "2012-10-17T00"
     FieldValues values;  // grid.pointCount() values, NaN where missing
@@ -29,6 +40,8 @@ struct Ensemble {
     // The other dimensions fixed to one index, as EnsembleDescription says them:
     // "time = 0 of 4 (2017-01-01T00:00)".
     std::vector<std::string> fixedDimensions;
+    // The steps the time index picks from, as EnsembleDescription::timeSteps says them.
+    TimeSteps timeSteps;
     GridMapping gridMapping;  // the horizontal axes' map projection, when the file names one
     std::vector<Member> members;
     // Values that were +inf or -inf in the file: openEnsemble() makes them NaN (missing), since

@@ -59,6 +59,7 @@ struct EnsembleDescription {
     std::size_t members = 0;
     std::vector<std::string> memberNames;
     std::vector<std::string> fixedDimensions;  // e.g. "time = 0 of 4 (2017-01-01T00:00)"
+    TimeSteps timeSteps;                       // what timeIndex may be, with dates
     Grid grid;
     GridMapping gridMapping;            // see data/grid_mapping.h
     std::vector<std::string> warnings;  // as Ensemble::warnings, from the headers alone
