@@ -2,7 +2,6 @@
 
 #include <QObject>
 #include <algorithm>
-#include <limits>
 
 #include "app/ensemble_facts.h"
 #include "data/error.h"
@@ -19,29 +18,17 @@ bool isAxis(const data::Grid& grid, const std::string& dimension) {
     return false;
 }
 
-// The readers describe each fixed dimension as "time = 0 of 4 (2017-01-01T00:00)".
-bool isFixed(const data::EnsembleDescription& d, const std::string& dimension) {
-    return std::any_of(
-        d.fixedDimensions.begin(), d.fixedDimensions.end(),
-        [&](const std::string& line) { return line.starts_with(dimension + " = "); });
-}
-
 // The candidates for the member dimension (the chosen variable's non-spatial dimensions) and
-// how many time indices there are to choose from (the same index is taken along every fixed
-// dimension, so the shortest one bounds it).
+// how many time indices there are to choose from (the readers' TimeSteps).
 void fillChoices(ui::DataProbe& probe, const data::EnsembleDescription& d) {
     const auto chosen =
         std::find_if(d.variables.begin(), d.variables.end(),
                      [&](const data::VariableInfo& v) { return v.name == d.variable; });
     if (chosen == d.variables.end()) return;
-    std::size_t steps = std::numeric_limits<std::size_t>::max();
-    for (std::size_t i = 0; i < chosen->dimensions.size(); ++i) {
-        const std::string& dim = chosen->dimensions[i];
-        if (isAxis(d.grid, dim)) continue;
-        probe.memberDimensionChoices << qs(dim);
-        if (isFixed(d, dim) && i < chosen->shape.size()) steps = std::min(steps, chosen->shape[i]);
+    for (const std::string& dim : chosen->dimensions) {
+        if (!isAxis(d.grid, dim)) probe.memberDimensionChoices << qs(dim);
     }
-    if (steps != std::numeric_limits<std::size_t>::max()) probe.timeSteps = static_cast<int>(steps);
+    if (d.timeSteps.count() > 0) probe.timeSteps = static_cast<int>(d.timeSteps.count());
 }
 
 void fill(ui::DataProbe& probe, const data::EnsembleDescription& d) {

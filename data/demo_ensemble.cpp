@@ -1,12 +1,14 @@
 #include "data/demo_ensemble.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <thread>
 
+#include "data/cf_conventions.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
 
@@ -192,6 +194,15 @@ void fillMember(const MemberRecipe& recipe, const Grid& grid, const std::vector<
     }
 }
 
+// out = (1 - w) out + w (the field of `recipe`): a member on its way to another regime.
+void blendInto(const MemberRecipe& recipe, double w, const Grid& grid,
+               const std::vector<double>& heightKm, FieldValues& out) {
+    FieldValues other(grid.pointCount());
+    fillMember(recipe, grid, heightKm, other);
+    const auto a = static_cast<float>(1.0 - w), b = static_cast<float>(w);
+    for (std::size_t p = 0; p < out.size(); ++p) out[p] = a * out[p] + b * other[p];
+}
+
 Axis pressureAxis(std::size_t nz) {
     Axis axis;
     axis.name = "plev";
@@ -207,10 +218,66 @@ Axis pressureAxis(std::size_t nz) {
     return axis;
 }
 
+// How a member changes over the steps: the regime it turns into, with its own jets, and the
+// fraction of the series at which it is half way there.
+struct MemberChange {
+    bool changes = false;
+    DemoRegime to = DemoRegime::Zonal;
+    MemberRecipe recipe;
+    double halfWay = 0.5;
+};
+
+// About a third of the members (never the outlier) turn into another regime. Drawn from their
+// own engine, so the recipes of step 0, and makeDemoEnsemble's ensemble, stay as they were.
+std::vector<MemberChange> drawChanges(const std::vector<DemoRegime>& regimes,
+                                      const std::vector<MemberRecipe>& recipes,
+                                      std::uint64_t seed) {
+    std::mt19937_64 rng(seed ^ 0x7469'6d65'7374'6570ULL);  // "timestep"
+    std::vector<MemberChange> changes(regimes.size());
+    constexpr std::array<DemoRegime, 3> kRegimes{DemoRegime::Zonal, DemoRegime::Split,
+                                                 DemoRegime::NorthFading};
+    for (std::size_t m = 0; m < regimes.size(); ++m) {
+        MemberChange& c = changes[m];
+        const double draw = uniform(rng);
+        const auto offset = static_cast<std::size_t>(1 + rng() % 2);
+        c.halfWay = uniform(rng, 0.15, 0.85);
+        if (regimes[m] == DemoRegime::Outlier || draw >= 0.35) continue;
+        const auto from = static_cast<std::size_t>(
+            std::find(kRegimes.begin(), kRegimes.end(), regimes[m]) - kRegimes.begin());
+        c.changes = true;
+        c.to = kRegimes[(from + offset) % kRegimes.size()];
+        c.recipe = makeRecipe(c.to, rng);
+        c.recipe.waves = recipes[m].waves;  // the same small-scale noise: only the flow changes
+    }
+    return changes;
+}
+
+// The drift every jet makes by fraction `t` of the series: 30 degrees east, 3 degrees north.
+MemberRecipe drifted(MemberRecipe recipe, double t) {
+    for (Jet& jet : recipe.jets) {
+        jet.phase += 30.0 * t;
+        jet.coreLat += 3.0 * t;
+        jet.lonStart += 30.0 * t;
+        jet.lonEnd += 30.0 * t;
+    }
+    return recipe;
+}
+
 }  // namespace
 
 DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_token& stop,
                               const Progress& progress) {
+    return makeDemoEnsembleAt(params, 0, 1, stop, progress);
+}
+
+DemoEnsemble makeDemoEnsembleAt(const DemoEnsembleParams& params, std::size_t step,
+                                std::size_t steps, const std::stop_token& stop,
+                                const Progress& progress) {
+    if (step >= steps) {
+        throw Error(ErrorKind::InvalidArgument, "the demo's step " + std::to_string(step) +
+                                                    " is past its " + std::to_string(steps) +
+                                                    " steps");
+    }
     if (params.members < 1) {
         throw Error(ErrorKind::InvalidArgument, "the demo ensemble needs at least 1 member");
     }
@@ -235,6 +302,17 @@ DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_
     ens.memberDimension = "number";
     ens.source = "demo";
     ens.grid = Grid(std::move(lon), std::move(lat), pressureAxis(params.nz));
+    if (steps > 1) {
+        ens.timeSteps.dimension = "time";
+        for (std::size_t i = 0; i < steps; ++i) {
+            ens.timeSteps.labels.push_back(
+                formatCfTime(kDemoHoursPerStep * static_cast<double>(i), kDemoTimeUnits)
+                    .value_or(std::to_string(i)));
+        }
+        ens.fixedDimensions.push_back("time = " + std::to_string(step) + " of " +
+                                      std::to_string(steps) + " (" + ens.timeSteps.labels[step] +
+                                      ")");
+    }
 
     std::vector<double> heightKm(params.nz);
     for (std::size_t k = 0; k < params.nz; ++k) {
@@ -247,6 +325,20 @@ DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_
     std::vector<MemberRecipe> recipes;
     recipes.reserve(params.members);
     for (DemoRegime regime : result.regimes) recipes.push_back(makeRecipe(regime, rng));
+    const double along =  // the fraction of the series at this step
+        steps > 1 ? static_cast<double>(step) / static_cast<double>(steps - 1) : 0.0;
+    std::vector<MemberChange> changes;
+    std::vector<double> weights(params.members, 0.0);  // of the regime turned into
+    if (steps > 1) {
+        changes = drawChanges(result.regimes, recipes, params.seed);
+        for (std::size_t m = 0; m < params.members; ++m) {
+            if (!changes[m].changes) continue;
+            weights[m] = smoothstep((along - changes[m].halfWay) / 0.3 + 0.5);
+            changes[m].recipe = drifted(std::move(changes[m].recipe), along);
+            if (weights[m] >= 0.5) result.regimes[m] = changes[m].to;
+        }
+        for (MemberRecipe& recipe : recipes) recipe = drifted(std::move(recipe), along);
+    }
 
     ens.members.resize(params.members);
     for (std::size_t m = 0; m < params.members; ++m) {
@@ -263,6 +355,9 @@ DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_
                 for (std::size_t m = t; m < params.members && !stop.stop_requested();
                      m += threads) {
                     fillMember(recipes[m], ens.grid, heightKm, ens.members[m].values);
+                    if (weights[m] > 0.0)
+                        blendInto(changes[m].recipe, weights[m], ens.grid, heightKm,
+                                  ens.members[m].values);
                     const std::size_t finished = ++done;
                     // One thread reports, so the callback is never called concurrently.
                     if (t == 0) {

@@ -40,4 +40,17 @@ struct DemoEnsemble {
 DemoEnsemble makeDemoEnsemble(const DemoEnsembleParams& params, const std::stop_token& stop = {},
                               const Progress& progress = {});
 
+// The demo as it evolves over `steps` steps, at step `step` (0 .. steps - 1): every jet drifts
+// east and its core north, and about a third of the members change regime, each at its own
+// step (a smooth blend over a few steps), so clusters split and merge from step to step. Step 0
+// is makeDemoEnsemble's ensemble. `regimes` gives each member's nearer regime at that step.
+// Throws as makeDemoEnsemble, and Error(InvalidArgument) for step >= steps.
+DemoEnsemble makeDemoEnsembleAt(const DemoEnsembleParams& params, std::size_t step,
+                                std::size_t steps, const std::stop_token& stop = {},
+                                const Progress& progress = {});
+
+// The hours between the demo's steps, and its first step's date (the CF time units).
+inline constexpr double kDemoHoursPerStep = 12.0;
+inline constexpr const char* kDemoTimeUnits = "hours since 2026-01-01 00:00:00";
+
 }  // namespace ensil::data

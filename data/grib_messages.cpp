@@ -11,6 +11,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string_view>
 
 #include "data/error.h"
@@ -37,11 +38,26 @@ void keepLibraryMessage(const codes_context* /*context*/, int /*level*/, const c
     lastLibraryMessage() = text != nullptr ? text : "";
 }
 
-// Takes the ecCodes lock; the first one also routes ecCodes's log into lastLibraryMessage().
+// An assertion inside ecCodes: on some damaged messages (a bitmap section where none can be,
+// say) ecCodes 2.28 asserts, and by default aborts the program. ensil has it throw this instead
+// (ecCodes takes no lock and is built with unwind tables, so the exception passes through it;
+// what it had allocated is lost), and turns it into a skipped message or a data::Error.
+class LibraryAssertion : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void throwLibraryAssertion(const char* message) {
+    throw LibraryAssertion(message != nullptr ? message : "an internal check failed");
+}
+
+// Takes the ecCodes lock; the first one also routes ecCodes's log into lastLibraryMessage()
+// and its assertions into LibraryAssertion.
 std::unique_lock<std::mutex> lockEccodes() {
     std::unique_lock lock(eccodesMutex());
     static const bool quiet = [] {
         codes_context_set_logging_proc(codes_context_get_default(), keepLibraryMessage);
+        codes_set_codes_assertion_failed_proc(throwLibraryAssertion);
         return true;
     }();
     (void)quiet;
@@ -251,19 +267,32 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
         }
         const auto lock = lockEccodes();
         std::fseek(file.get(), *start, SEEK_SET);
-        int error = CODES_SUCCESS;
-        const Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
-        // Go on after what ecCodes read, and at least after this "GRIB": never loop in place.
-        position = std::max(std::ftell(file.get()), *start + 4);
-        if (!h) {
-            skip(error == CODES_SUCCESS ? "ecCodes found no message there" : libraryWords(error));
-            continue;
-        }
-        GribMessage m = readKeys(h.get(), number);
-        if (m.validity >= 0) {
-            inventory.messages.push_back(std::move(m));
-        } else {
-            skip("its reference date, time or forecast step is impossible");
+        try {
+            int error = CODES_SUCCESS;
+            const Handle h(codes_handle_new_from_file(nullptr, file.get(), PRODUCT_GRIB, &error));
+            // Go on after what ecCodes read, and at least after this "GRIB": never loop in place.
+            position = std::max(std::ftell(file.get()), *start + 4);
+            if (!h) {
+                skip(error == CODES_SUCCESS ? "ecCodes found no message there"
+                                            : libraryWords(error));
+                continue;
+            }
+            GribMessage m = readKeys(h.get(), number);
+            // ecCodes allocates what a message says it packs when it decodes it: a damaged
+            // count would take gigabytes for a grid of a few hundred points.
+            const long packed = std::max(getLong(h.get(), "numberOfValues"),
+                                         getLong(h.get(), "numberOfCodedValues"));
+            if (m.validity < 0) {
+                skip("its reference date, time or forecast step is impossible");
+            } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
+                skip("it says it packs " + std::to_string(packed) + " values, but its grid has " +
+                     std::to_string(m.values) + " points");
+            } else {
+                inventory.messages.push_back(std::move(m));
+            }
+        } catch (const LibraryAssertion& e) {
+            skip(std::string("ecCodes gave up on it: ") + e.what());
+            position = *start + 4;
         }
     }
     if (inventory.messages.empty()) {
@@ -323,7 +352,13 @@ GribAxes gribAxes(const GribGrid& g) {
         std::vector<double> all(2 * static_cast<std::size_t>(g.gaussianN));
         {
             const auto lock = lockEccodes();
-            if (codes_get_gaussian_latitudes(g.gaussianN, all.data()) != CODES_SUCCESS) {
+            int error = CODES_SUCCESS;
+            try {
+                error = codes_get_gaussian_latitudes(g.gaussianN, all.data());
+            } catch (const LibraryAssertion&) {
+                error = CODES_INTERNAL_ERROR;
+            }
+            if (error != CODES_SUCCESS) {
                 axes.why =
                     "ecCodes has no Gaussian latitudes for N = " + std::to_string(g.gaussianN);
                 return axes;
@@ -384,8 +419,19 @@ GribFile::GribFile(const std::string& path) : m_path(path), m_file(std::fopen(pa
 GribFile::~GribFile() { std::fclose(m_file); }
 
 void GribFile::decode(const GribMessage& message, float* out, std::vector<double>& scratch) const {
-    const std::string where = atOffset(m_path, message.number, message.offset);
     const auto lock = lockEccodes();
+    try {
+        decodeLocked(message, out, scratch);
+    } catch (const LibraryAssertion& e) {
+        throw Error(ErrorKind::CorruptFile, atOffset(m_path, message.number, message.offset) +
+                                                " is damaged: ecCodes gave up on it (" + e.what() +
+                                                ")");
+    }
+}
+
+void GribFile::decodeLocked(const GribMessage& message, float* out,
+                            std::vector<double>& scratch) const {
+    const std::string where = atOffset(m_path, message.number, message.offset);
     if (std::fseek(m_file, static_cast<long>(message.offset), SEEK_SET) != 0) {
         throw Error(ErrorKind::CorruptFile, where + " cannot be reached: the file changed");
     }

@@ -89,6 +89,8 @@ public:
     void decode(const GribMessage& message, float* out, std::vector<double>& scratch) const;
 
 private:
+    void decodeLocked(const GribMessage& message, float* out, std::vector<double>& scratch) const;
+
     std::string m_path;
     std::FILE* m_file = nullptr;
 };

@@ -347,6 +347,10 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
         fixedName + " = " + std::to_string(selection.timeIndex) + " of " +
         std::to_string(fixedValues.size()) + " (" +
         (byTime ? "member " + std::to_string(fixed) : validityText(fixed)) + ")");
+    plan.timeSteps.dimension = fixedName;
+    for (std::size_t i = 0; i < fixedValues.size(); ++i) {
+        plan.timeSteps.labels.push_back(byTime ? std::to_string(i) : validityText(fixedValues[i]));
+    }
     plan.oneMember = memberValues.size() == 1;
     for (long m : memberValues) {
         plan.memberNames.push_back(byTime ? validityText(m) : "member " + std::to_string(m));

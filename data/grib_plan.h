@@ -21,6 +21,7 @@ struct GribPlan {
     std::string memberReason;
     std::vector<std::string> memberNames;
     std::vector<std::string> fixedDimensions;
+    TimeSteps timeSteps;     // validity times; member indices when times are the members
     bool oneMember = false;  // the file holds one member (a single forecast)
     Grid grid;
     // fields[member][level] = the message of each component (u, v for wind_speed).

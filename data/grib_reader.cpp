@@ -75,6 +75,7 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
             d.units = plan.units;
             d.grid = plan.grid;
             d.fixedDimensions = plan.fixedDimensions;
+            d.timeSteps = plan.timeSteps;
             d.memberDimension = plan.memberDimension;
             d.memberDimensionReason = oneFile ? plan.memberReason : "one file per member";
         } else {
@@ -136,6 +137,7 @@ Ensemble GribReader::read(const DataSelection& selection, const std::stop_token&
     e.source = sourceOf(selection.paths);
     e.grid = d.grid;
     e.fixedDimensions = d.fixedDimensions;
+    e.timeSteps = d.timeSteps;
     e.warnings = d.warnings;
     e.members.resize(d.members);
     const std::size_t layer = d.grid.nx() * d.grid.ny();

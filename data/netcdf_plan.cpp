@@ -377,6 +377,36 @@ std::vector<std::string> describeFixedDimensions(const NetcdfFile& file, const N
     return lines;
 }
 
+TimeSteps describeTimeSteps(const NetcdfFile& file, const NcPlan& plan) {
+    TimeSteps steps;
+    const auto& sd = plan.components.front().spatialDims;
+    const NcDimension* first = nullptr;
+    std::size_t count = 0;
+    for (int id : plan.components.front().variable->dimIds) {
+        if (id == plan.memberDim || std::find(sd.begin(), sd.end(), id) != sd.end()) continue;
+        const NcDimension& d = file.dimension(id);
+        count = first == nullptr ? d.size : std::min(count, d.size);
+        if (first == nullptr) first = &d;
+    }
+    if (first == nullptr) return steps;
+    steps.dimension = first->name;
+    std::vector<double> values;
+    std::string units, calendar;
+    if (const NcVariable* coord = file.coordinateVariable(*first)) {
+        if (coord->type != NC_CHAR && coord->type != NC_STRING) {
+            values = file.readDoubles(*coord);
+            units = file.text(coord->id, "units");
+            calendar = file.text(coord->id, "calendar");
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        std::optional<std::string> date;
+        if (i < values.size()) date = formatCfTime(values[i], units, calendar);
+        steps.labels.push_back(date.value_or(std::to_string(i)));
+    }
+    return steps;
+}
+
 std::vector<std::string> memberNames(const NetcdfFile& file, const NcPlan& plan) {
     if (plan.memberDim < 0) return {};
     const NcDimension& dim = file.dimension(plan.memberDim);

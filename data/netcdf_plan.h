@@ -46,6 +46,10 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool
 
 // "time = 0 of 4 (2017-01-01T00:00)" for each dimension fixed to an index.
 std::vector<std::string> describeFixedDimensions(const NetcdfFile& file, const NcPlan& plan);
+// The steps the time index picks from: named after the first fixed dimension, as many as the
+// shortest fixed dimension has (the one index is taken along all of them), labelled with the
+// first one's dates where its coordinate has CF time units, else with the index.
+TimeSteps describeTimeSteps(const NetcdfFile& file, const NcPlan& plan);
 
 // Member names: from the member coordinate (dates for time-like ones), else "member N".
 std::vector<std::string> memberNames(const NetcdfFile& file, const NcPlan& plan);

@@ -213,6 +213,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
             d.grid = plan.grid;
             d.gridMapping = plan.gridMapping;
             d.fixedDimensions = describeFixedDimensions(file, plan);
+            d.timeSteps = describeTimeSteps(file, plan);
             if (plan.memberDim >= 0) {
                 d.memberDimension = file.dimension(plan.memberDim).name;
                 d.memberDimensionReason = plan.memberReason;
@@ -254,6 +255,7 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
     e.grid = description.grid;
     e.gridMapping = description.gridMapping;
     e.fixedDimensions = description.fixedDimensions;
+    e.timeSteps = description.timeSteps;
     e.members.resize(description.members);
     std::size_t next = 0;
     for (const std::string& path : selection.paths) {

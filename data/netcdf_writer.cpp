@@ -12,7 +12,10 @@
 namespace ensil::data {
 namespace {
 
-void writeFile(const Ensemble& ensemble, const NetcdfOutput& nc, const WriteProgress& progress) {
+// With `time`, the variable gains a leading time dimension and `stepAt` gives each step after
+// the first (`ensemble`).
+void writeFile(const Ensemble& ensemble, const NetcdfOutput& nc, const WriteProgress& progress,
+               const TimeCoordinate* time = nullptr, const EnsembleAtStep& stepAt = {}) {
     const Grid& grid = ensemble.grid;
     const std::string memberDim =
         ensemble.memberDimension.empty() ? "number" : ensemble.memberDimension;
@@ -34,9 +37,24 @@ void writeFile(const Ensemble& ensemble, const NetcdfOutput& nc, const WriteProg
         axisDimIds[ai] = c.dimension;
         axisVarIds[ai] = c.variable;
     }
-    const std::array<int, 4> dims{memberDimId, axisDimIds[2], axisDimIds[1], axisDimIds[0]};
+    std::vector<int> dims{memberDimId, axisDimIds[2], axisDimIds[1], axisDimIds[0]};
+    int timeVarId = 0;
+    if (time != nullptr) {
+        int timeDimId = 0;
+        nc.check(nc_def_dim(nc.id(), "time", time->values.size(), &timeDimId),
+                 "define dimension time");
+        nc.check(nc_def_var(nc.id(), "time", NC_DOUBLE, 1, &timeDimId, &timeVarId),
+                 "define variable time");
+        nc.text(timeVarId, "standard_name", "time");
+        nc.text(timeVarId, "long_name", "time");
+        nc.text(timeVarId, "units", time->units);
+        nc.text(timeVarId, "calendar", "standard");
+        nc.text(timeVarId, "axis", "T");
+        dims.insert(dims.begin(), timeDimId);
+    }
     int var = 0;
-    nc.check(nc_def_var(nc.id(), ensemble.variable.c_str(), NC_FLOAT, 4, dims.data(), &var),
+    nc.check(nc_def_var(nc.id(), ensemble.variable.c_str(), NC_FLOAT, static_cast<int>(dims.size()),
+                        dims.data(), &var),
              "define variable " + ensemble.variable);
     nc.text(var, "units", ensemble.units);
     nc.text(var, "long_name", ensemble.longName);
@@ -55,13 +73,36 @@ void writeFile(const Ensemble& ensemble, const NetcdfOutput& nc, const WriteProg
                                    grid.axis(a).values.data()),
                  "write coordinate " + grid.axis(a).name);
     }
-    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
-        const std::array<std::size_t, 4> start{m, 0, 0, 0};
-        const std::array<std::size_t, 4> count{1, grid.nz(), grid.ny(), grid.nx()};
-        nc.check(nc_put_vara_float(nc.id(), var, start.data(), count.data(),
-                                   ensemble.members[m].values.data()),
-                 "write member " + std::to_string(m + 1));
-        if (progress) progress(m + 1, ensemble.memberCount());
+    if (time == nullptr) {
+        for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
+            const std::array<std::size_t, 4> start{m, 0, 0, 0};
+            const std::array<std::size_t, 4> count{1, grid.nz(), grid.ny(), grid.nx()};
+            nc.check(nc_put_vara_float(nc.id(), var, start.data(), count.data(),
+                                       ensemble.members[m].values.data()),
+                     "write member " + std::to_string(m + 1));
+            if (progress) progress(m + 1, ensemble.memberCount());
+        }
+        return;
+    }
+    nc.check(nc_put_var_double(nc.id(), timeVarId, time->values.data()), "write time");
+    const std::size_t steps = time->values.size(), members = ensemble.memberCount();
+    for (std::size_t t = 0; t < steps; ++t) {
+        const Ensemble later = t == 0 ? Ensemble{} : stepAt(t);
+        const Ensemble& e = t == 0 ? ensemble : later;
+        if (e.memberCount() != members || e.grid.nx() != grid.nx() || e.grid.ny() != grid.ny() ||
+            e.grid.nz() != grid.nz()) {
+            throw Error(ErrorKind::InvalidArgument, "step " + std::to_string(t) +
+                                                        " has other members or another grid "
+                                                        "than the first step");
+        }
+        for (std::size_t m = 0; m < members; ++m) {
+            const std::array<std::size_t, 5> start{t, m, 0, 0, 0};
+            const std::array<std::size_t, 5> count{1, 1, grid.nz(), grid.ny(), grid.nx()};
+            nc.check(nc_put_vara_float(nc.id(), var, start.data(), count.data(),
+                                       e.members[m].values.data()),
+                     "write member " + std::to_string(m + 1) + " of step " + std::to_string(t));
+            if (progress) progress(t * members + m + 1, steps * members);
+        }
     }
 }
 
@@ -80,6 +121,19 @@ void writeNetcdf(const Ensemble& ensemble, const std::string& path, const WriteP
         }
     }
     writeCfFile(path, [&](const NetcdfOutput& nc) { writeFile(ensemble, nc, progress); });
+}
+
+void writeNetcdfSteps(const EnsembleAtStep& stepAt, const TimeCoordinate& time,
+                      const std::string& path, const WriteProgress& progress) {
+    if (time.values.empty()) {
+        throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': no time steps");
+    }
+    const Ensemble first = stepAt(0);
+    if (first.members.empty()) {
+        throw Error(ErrorKind::InvalidArgument, "cannot write '" + path + "': no members");
+    }
+    writeCfFile(path,
+                [&](const NetcdfOutput& nc) { writeFile(first, nc, progress, &time, stepAt); });
 }
 
 }  // namespace ensil::data

@@ -41,6 +41,7 @@ data::EnsembleDescription describeLoaded(const data::Ensemble& e, const std::str
     d.members = e.memberCount();
     for (std::size_t m = 0; m < e.memberCount(); ++m) d.memberNames.push_back(memberName(e, m));
     d.fixedDimensions = e.fixedDimensions;
+    d.timeSteps = e.timeSteps;
     d.grid = e.grid;
     d.gridMapping = e.gridMapping;
     data::VariableInfo v;

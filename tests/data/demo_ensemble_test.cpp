@@ -173,3 +173,32 @@ TEST(DemoEnsemble, MakingItCanBeCancelledAndReportsProgress) {
     stop.request_stop();
     EXPECT_THROW((void)makeDemoEnsemble(small, stop.get_token()), Cancelled);
 }
+
+TEST(DemoEnsemble, OverTimeStartsAsTheDemoDriftsAndMembersChangeRegime) {
+    const DemoEnsembleParams params = smallParams();
+    const DemoEnsemble plain = makeDemoEnsemble(params);
+    const DemoEnsemble first = makeDemoEnsembleAt(params, 0, 6);
+    const DemoEnsemble last = makeDemoEnsembleAt(params, 5, 6);
+    for (std::size_t m = 0; m < plain.ensemble.memberCount(); ++m) {
+        ASSERT_EQ(rmsDistance(plain.ensemble.members[m], first.ensemble.members[m]), 0.0)
+            << "step 0 is the demo itself, member " << m;
+    }
+    EXPECT_EQ(first.ensemble.timeSteps.dimension, "time");
+    ASSERT_EQ(first.ensemble.timeSteps.count(), 6u);
+    EXPECT_EQ(first.ensemble.timeSteps.labels[1], "2026-01-01T12:00");
+    EXPECT_EQ(last.ensemble.fixedDimensions,
+              std::vector<std::string>{"time = 5 of 6 (2026-01-03T12:00)"});
+    // Some members change regime, not most; the outlier stays one.
+    std::size_t changed = 0;
+    for (std::size_t m = 0; m < params.members; ++m) {
+        if (first.regimes[m] != last.regimes[m]) ++changed;
+        if (first.regimes[m] == DemoRegime::Outlier) {
+            EXPECT_EQ(last.regimes[m], DemoRegime::Outlier);
+        }
+        EXPECT_GT(rmsDistance(first.ensemble.members[m], last.ensemble.members[m]), 0.5)
+            << "every jet drifts, member " << m;
+    }
+    EXPECT_GE(changed, params.members / 6);
+    EXPECT_LE(changed, params.members / 2);
+    EXPECT_THROW((void)makeDemoEnsembleAt(params, 6, 6), Error);
+}

@@ -411,6 +411,50 @@ TEST(NetcdfReader, TimeIndexSelectsAndIsChecked) {
     EXPECT_NE(message.find("0 to 2"), std::string::npos) << message;
 }
 
+TEST(NetcdfReader, TimeStepsAreDatedAlongTheFirstFixedDimensionAndAsManyAsTheShortest) {
+    test::TempDir dir;
+    const std::string dated = dir.file("dated.nc"), undated = dir.file("undated.nc");
+    {
+        NcTestFile f(dated);
+        const int m = f.dim("number", 2);
+        const int t = f.dim("time", 3, range(3, 0, 6), {{"units", "hours since 2020-02-28 12:00"}});
+        const int z = f.dim("plev", 2, {85000, 50000}, {{"units", "Pa"}});
+        const int y = f.dim("lat", 2, range(2)), x = f.dim("lon", 2, range(2));
+        const int v = f.variable("z", NC_FLOAT, {m, t, z, y, x});
+        f.write(v, 48, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    const data::TimeSteps expected{
+        .dimension = "time",
+        .labels = {"2020-02-28T12:00", "2020-02-28T18:00", "2020-02-29T00:00"}};
+    EXPECT_EQ(data::describeEnsemble({.paths = {dated}, .timeIndex = 1}).timeSteps, expected);
+    EXPECT_EQ(data::openEnsemble({.paths = {dated}}).timeSteps, expected) << "copied on reading";
+    {
+        // Two fixed dimensions: the one index runs along both, so the shorter (2) bounds it; a
+        // coordinate that is not a date labels nothing, the index does.
+        NcTestFile f(undated);
+        const int m = f.dim("number", 2);
+        const int s = f.dim("step", 3, {6, 12, 18}, {{"units", "hours"}});
+        const int r = f.dim("run", 2);
+        const int z = f.dim("plev", 2, {85000, 50000}, {{"units", "Pa"}});
+        const int y = f.dim("lat", 2, range(2)), x = f.dim("lon", 2, range(2));
+        const int v = f.variable("z", NC_FLOAT, {m, s, r, z, y, x});
+        f.write(v, 96, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    EXPECT_EQ(data::describeEnsemble({.paths = {undated}}).timeSteps,
+              (data::TimeSteps{.dimension = "step", .labels = {"0", "1"}}));
+    // Without fixed dimensions there are no steps.
+    const std::string plain = dir.file("plain.nc");
+    {
+        NcTestFile f(plain);
+        const int m = f.dim("number", 2);
+        const int z = f.dim("plev", 2, {85000, 50000}, {{"units", "Pa"}});
+        const int y = f.dim("lat", 2, range(2)), x = f.dim("lon", 2, range(2));
+        const int v = f.variable("z", NC_FLOAT, {m, z, y, x});
+        f.write(v, 16, [](std::size_t n) { return static_cast<double>(n); });
+    }
+    EXPECT_EQ(data::describeEnsemble({.paths = {plain}}).timeSteps, data::TimeSteps{});
+}
+
 TEST(NetcdfReader, CancelStopsBetweenMembersAndProgressIsMonotonic) {
     test::TempDir dir;
     const std::string path = writeStandard(dir, "member");

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "data/demo_ensemble.h"
+#include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "tests/support/temp_dir.h"
 
@@ -79,6 +80,28 @@ TEST(NetcdfWriter, WritesCfFileThatReadsBackExactly) {
     nc_get_var_double(nc, plev, plevValues.data());
     EXPECT_EQ(plevValues, e.grid.z().values);
     nc_close(nc);
+}
+
+TEST(NetcdfWriter, StepsGetACfTimeDimensionTheReaderDates) {
+    ensil::test::TempDir dir;
+    const std::string path = dir.file("steps.nc");
+    const DemoEnsembleParams params{.members = 3, .nx = 8, .ny = 6, .nz = 4, .seed = 3};
+    writeNetcdfSteps([&](std::size_t t) { return makeDemoEnsembleAt(params, t, 3).ensemble; },
+                     {.units = "hours since 2026-01-01 00:00:00", .values = {0, 12, 24}}, path);
+    const EnsembleDescription d = describeEnsemble({.paths = {path}});
+    EXPECT_EQ(d.memberDimension, "number");
+    EXPECT_EQ(d.members, 3u);
+    EXPECT_EQ(d.timeSteps,
+              (TimeSteps{.dimension = "time",
+                         .labels = {"2026-01-01T00:00", "2026-01-01T12:00", "2026-01-02T00:00"}}));
+    const Ensemble last = openEnsemble({.paths = {path}, .timeIndex = 2});
+    const Ensemble expected = makeDemoEnsembleAt(params, 2, 3).ensemble;
+    for (std::size_t m = 0; m < 3; ++m) {
+        ASSERT_EQ(std::vector<float>(last.members[m].values.begin(), last.members[m].values.end()),
+                  std::vector<float>(expected.members[m].values.begin(),
+                                     expected.members[m].values.end()))
+            << "member " << m << " of step 2 reads back exactly";
+    }
 }
 
 TEST(NetcdfWriter, ReportsProgressPerMember) {

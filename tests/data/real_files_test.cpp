@@ -53,6 +53,25 @@ TEST(RealFiles, Era5EdaIsATenMemberEnsembleAlongNumber) {
     EXPECT_EQ(e.members[3].values[e.grid.index(20, 10, 1)], rawValue(path, "t", {3, 1, 1, 10, 20}));
 }
 
+TEST(RealFiles, Era5InNetcdfAndGribHasTheSameFourDatedSteps) {
+    const data::TimeSteps expected{
+        .dimension = "time",
+        .labels = {"2017-01-01T00:00", "2017-01-01T12:00", "2017-01-02T00:00", "2017-01-02T12:00"}};
+    for (const char* name : {"era5_eda_members.nc", "era5-levels-members.grib"}) {
+        const auto d = data::describeEnsemble({.paths = {shared(name)}, .timeIndex = 2});
+        EXPECT_EQ(d.timeSteps, expected) << name;
+        EXPECT_EQ(data::openEnsemble({.paths = {shared(name)}, .variable = "t"}).timeSteps,
+                  expected)
+            << name << ": the ensemble read keeps them";
+    }
+    // Times made the members: the members' index is what is left to step through.
+    const auto byTime = data::describeEnsemble(
+        {.paths = {shared("era5-levels-members.grib")}, .memberDimension = "time"});
+    EXPECT_EQ(byTime.timeSteps.dimension, "number");
+    EXPECT_EQ(byTime.timeSteps.count(), 10u);
+    EXPECT_EQ(byTime.timeSteps.labels.front(), "0");
+}
+
 TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
     const std::string path = shared("eraint_uvz.nc");
     EXPECT_EQ(errorOf({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
@@ -109,6 +128,7 @@ TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
     const data::Ensemble z =
         data::openEnsemble({.paths = {path}, .variable = "Z", .memberDimension = "frtime"});
     ASSERT_EQ(z.memberCount(), 7u);
+    EXPECT_EQ(z.timeSteps, data::TimeSteps{}) << "the forecast times are the members: no steps";
     const data::Grid& g = z.grid;
     // valid_range [-150, 5000] m masks the upper levels (100 hPa is ~16 km up); 1000 hPa stays.
     std::size_t bottomValid = 0, topValid = 0;
