@@ -35,6 +35,7 @@ std::size_t timeStepBudget() {
 void MainWindow::createTimeBar() {
     m_timeBar = new ui::TimeBar(this);
     addToolBar(Qt::BottomToolBarArea, m_timeBar);
+    m_timeBar->hide();  // shown for data with time steps
     connect(m_timeBar, &ui::TimeBar::stepRequested, this, [this](int step) {
         m_model->update([step](session::SessionState& s) {
             s.data.timeIndex = static_cast<std::size_t>(step);
