@@ -8,7 +8,9 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <filesystem>
+#include <stop_token>
 
 #include "app/headless/picture_title.h"
 #include "data/ensemble_reader.h"
@@ -252,4 +254,36 @@ TEST(RenderTimes, SeveralStepsNeedANumberPatternAndARangeInsideTheSteps) {
         test::runEnsil({"render", "--demo", "--times", "all", "--out", "f_%d.png"});
     EXPECT_EQ(demo.code, 2);
     EXPECT_TRUE(demo.err.contains("no time steps")) << demo.err.toStdString();
+}
+
+TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps) {
+    app::TimeSeriesRequest request;
+    request.selection = {.paths = {kEra5.toStdString()}, .variable = "t"};
+    request.steps = {0, 3};
+    request.preprocess.isovalue = 260.0;
+    request.preprocess.clusters = 3;
+    const auto quiet = [](const std::string&, const std::string&) {};
+    std::vector<double> fractions;
+    std::vector<std::string> times;
+    const auto steps = app::preprocessTimeSeries(
+        request, quiet, {}, [&](double f) { fractions.push_back(f); },
+        [&](const app::TimeStepResult& step) { times.push_back(step.time); });
+    ASSERT_EQ(steps.size(), 4u);
+    std::vector<std::string> expected;
+    for (const QString& t : kEra5Times) expected.push_back(t.toStdString());
+    EXPECT_EQ(times, expected);
+    ASSERT_FALSE(fractions.empty());
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
+    EXPECT_LE(fractions.front(), 0.25);
+
+    // Stopped once the second step is done: no third step is read.
+    std::stop_source stop;
+    std::size_t done = 0;
+    EXPECT_THROW((void)app::preprocessTimeSeries(request, quiet, stop.get_token(), {},
+                                                 [&](const app::TimeStepResult&) {
+                                                     if (++done == 2) stop.request_stop();
+                                                 }),
+                 data::Cancelled);
+    EXPECT_EQ(done, 2u);
 }
