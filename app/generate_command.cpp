@@ -28,6 +28,10 @@ bool parseGridSize(const QString& text, std::size_t& nx, std::size_t& ny, std::s
     return true;
 }
 
+namespace {
+constexpr qulonglong kMaxTimes = 1000;
+}  // namespace
+
 int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
     parser.setApplicationDescription(
@@ -56,7 +60,17 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
     const QCommandLineOption output(QStringLiteral("out"),
                                     QStringLiteral("The NetCDF file to write (required)."),
                                     QStringLiteral("FILE.nc"));
-    parser.addOptions({members, grid, seed, output});
+    const QCommandLineOption times(
+        QStringLiteral("times"),
+        QStringLiteral("Write T time steps, %1 hours apart from 2026-01-01T00:00, in a CF time "
+                       "dimension: the jets drift east and about a third of the members change "
+                       "flow regime, each at its own step, so clusters split and merge "
+                       "(ensil preprocess FILE --times all shows them). T from 1 to %2; "
+                       "without it the file has no time dimension.")
+            .arg(data::kDemoHoursPerStep)
+            .arg(kMaxTimes),
+        QStringLiteral("T"));
+    parser.addOptions({members, grid, seed, output, times});
 
     if (auto done = parseSubcommand(parser, args, QStringLiteral("generate"), out, err)) {
         return *done;
@@ -87,6 +101,15 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
             << parser.value(seed) << "'\n";
         return 2;
     }
+    qulonglong steps = 0;  // no time dimension
+    if (parser.isSet(times)) {
+        steps = parser.value(times).toULongLong(&ok);
+        if (!ok || steps < 1 || steps > kMaxTimes) {
+            err << "ensil generate: --times must be a whole number from 1 to " << kMaxTimes
+                << ", not '" << parser.value(times) << "'\n";
+            return 2;
+        }
+    }
     if (!parser.isSet(output)) {
         err << "ensil generate: say where to write the file with --out FILE.nc\n";
         return 2;
@@ -95,12 +118,30 @@ int runGenerateCommand(const QStringList& args, QTextStream& out, QTextStream& e
     try {
         QElapsedTimer timer;
         timer.start();
-        const data::DemoEnsemble demo = data::makeDemoEnsemble(params);
-        data::writeNetcdf(demo.ensemble, path.toStdString());
-        const double mib = static_cast<double>(demo.ensemble.bytes()) / (1024.0 * 1024.0);
+        double bytes = 0;
+        if (steps == 0) {
+            const data::DemoEnsemble demo = data::makeDemoEnsemble(params);
+            data::writeNetcdf(demo.ensemble, path.toStdString());
+            bytes = static_cast<double>(demo.ensemble.bytes());
+        } else {
+            data::TimeCoordinate time{.units = data::kDemoTimeUnits, .values = {}};
+            for (std::size_t t = 0; t < steps; ++t) {
+                time.values.push_back(data::kDemoHoursPerStep * static_cast<double>(t));
+            }
+            data::writeNetcdfSteps(
+                [&](std::size_t t) { return data::makeDemoEnsembleAt(params, t, steps).ensemble; },
+                time, path.toStdString());
+            bytes = static_cast<double>(params.members * params.nx * params.ny * params.nz *
+                                        sizeof(float) * steps);
+        }
+        const double mib = bytes / (1024.0 * 1024.0);
         out << "wrote " << path << ": " << params.members << " members of wind_speed (m s-1) on "
-            << params.nx << " x " << params.ny << " x " << params.nz << " (lon x lat x plev), "
-            << QString::number(mib, 'f', 1) << " MiB in "
+            << params.nx << " x " << params.ny << " x " << params.nz << " (lon x lat x plev)";
+        if (steps > 0) {
+            out << " at " << steps << (steps == 1 ? " time" : " times")
+                << " from 2026-01-01T00:00, " << data::kDemoHoursPerStep << " hours apart";
+        }
+        out << ", " << QString::number(mib, 'f', 1) << " MiB in "
             << QString::number(static_cast<double>(timer.elapsed()) / 1000.0, 'f', 2) << " s\n";
         return 0;
     } catch (const data::Error& e) {

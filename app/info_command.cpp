@@ -67,6 +67,11 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
             << "\n";
     }
     for (const auto& f : d.fixedDimensions) out << "Fixed:      " << qs(f) << "\n";
+    if (d.timeSteps.count() > 1) {  // what --time-index and --times pick from
+        out << "Times:      " << d.timeSteps.count() << " along '" << qs(d.timeSteps.dimension)
+            << "', " << qs(d.timeSteps.labels.front()) << " ... " << qs(d.timeSteps.labels.back())
+            << "\n";
+    }
     out << "Grid:       " << d.grid.nx() << " x " << d.grid.ny() << " x " << d.grid.nz() << "\n";
     for (int a = 0; a < 3; ++a) {
         out << "  "

@@ -11,6 +11,7 @@
 #include "app/data_selection_options.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/preprocess_run.h"
+#include "app/headless/time_series.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
 #include "data/error.h"
@@ -40,6 +41,14 @@ struct Options {
     QCommandLineOption demo{QStringLiteral("demo"),
                             QStringLiteral("Use the built-in demo ensemble instead of files.")};
     QCommandLineOption json{QStringLiteral("json"), QStringLiteral("Print one JSON object.")};
+    QCommandLineOption times{
+        QStringLiteral("times"),
+        QStringLiteral("Preprocess every time step from A to B, both included (time indices "
+                       "from 0, as --time-index counts them), or all of them, at one isovalue "
+                       "(--iso, else the first step's default), matching each step's clusters "
+                       "to the previous step's so a group keeps its number and colour. --json "
+                       "then gives 'steps', one object per step with its 'time'."),
+        QStringLiteral("all|A:B")};
 };
 
 // Clusters and linkage, with their ranges from the one setting table.
@@ -177,6 +186,99 @@ void printText(QTextStream& out, const Result& r) {
     }
 }
 
+// What a step adds to the one-isovalue JSON: its time and each cluster's identity.
+QJsonObject stepJson(const TimeStepResult& step, prep::Linkage linkage, const QString& cache) {
+    Result r;
+    static_cast<PreprocessResult&>(r) = step.result;
+    r.cache = cache;
+    QJsonObject o = toJson(r, linkage);
+    o[QStringLiteral("time")] = QString::fromStdString(step.time);
+    o[QStringLiteral("time_index")] = static_cast<qint64>(step.index);
+    QJsonArray identities;
+    for (const int identity : step.identities) identities.append(identity);
+    o[QStringLiteral("identities")] = identities;
+    return o;
+}
+
+// One line a step: its time, the clusters by the number the legend shows (identity + 1) with
+// their sizes, and the members that changed cluster since the previous step.
+void printStep(QTextStream& out, const TimeStepResult& step, const TimeStepResult* previous) {
+    std::map<int, int> sizes;
+    for (const int identity : step.memberIdentities) ++sizes[identity];
+    out << QString::fromStdString(step.time) << "  clusters";
+    for (const auto& [identity, size] : sizes) out << " " << identity + 1 << ":" << size;
+    if (previous != nullptr) {
+        std::map<std::string, int> before;
+        const auto& members = previous->result.ensemble->members;
+        for (std::size_t m = 0; m < members.size(); ++m) {
+            before[members[m].name] = previous->memberIdentities[m];
+        }
+        QStringList moved;
+        const auto& now = step.result.ensemble->members;
+        for (std::size_t m = 0; m < now.size(); ++m) {
+            const auto at = before.find(now[m].name);
+            if (at != before.end() && at->second != step.memberIdentities[m]) {
+                moved << QStringLiteral("%1 %2->%3")
+                             .arg(QString::fromStdString(now[m].name))
+                             .arg(at->second + 1)
+                             .arg(step.memberIdentities[m] + 1);
+            }
+        }
+        out << "; moved: " << (moved.isEmpty() ? QStringLiteral("none") : moved.join(", "));
+    }
+    out << "\n";
+}
+
+int runTimeSeries(const QString& times, const data::DataSelection& selection,
+                  const PreprocessRequest& preprocess, bool json, QTextStream& out,
+                  QTextStream& err) {
+    const data::EnsembleDescription d = data::describeEnsemble(selection);
+    std::string problem;
+    const auto range = parseStepRange(times.toStdString(), d.timeSteps.count(),
+                                      "'" + selection.paths.front() + "'", problem);
+    if (!range) {
+        err << "ensil preprocess: " << QString::fromStdString(problem) << "\n";
+        return 2;
+    }
+    TimeSeriesRequest request{.selection = selection, .steps = *range, .preprocess = preprocess};
+    const QString cache = !preprocess.cacheDirectory ? QStringLiteral("off") : QString();
+    std::vector<TimeStepResult> steps =
+        preprocessTimeSeries(request,
+                             [&](const std::string& kind, const std::string& text) {
+                                 err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
+                                     << QString::fromStdString(text) << "\n";
+                             },
+                             {}, {});
+    const auto cacheOf = [&](const TimeStepResult& step) {
+        return !cache.isEmpty()        ? cache
+               : step.result.fromCache ? QStringLiteral("hit")
+                                       : QStringLiteral("miss");
+    };
+    if (json) {
+        QJsonObject o;
+        o[QStringLiteral("variable")] = QString::fromStdString(d.variable);
+        o[QStringLiteral("time_dimension")] = QString::fromStdString(d.timeSteps.dimension);
+        o[QStringLiteral("isovalue")] = steps.front().result.meshes.isovalue;
+        o[QStringLiteral("k")] = steps.front().result.k;
+        QJsonArray array;
+        for (const TimeStepResult& step : steps) {
+            array.append(stepJson(step, preprocess.linkage, cacheOf(step)));
+        }
+        o[QStringLiteral("steps")] = array;
+        out << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
+        return 0;
+    }
+    const TimeStepResult& first = steps.front();
+    out << "Ensemble:   " << first.result.ensemble->memberCount() << " members of "
+        << QString::fromStdString(d.variable) << ", isovalue " << first.result.meshes.isovalue
+        << ", " << steps.size() << (steps.size() == 1 ? " step" : " steps") << " of "
+        << QString::fromStdString(d.timeSteps.dimension) << "; clusters by number (colour)\n";
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        printStep(out, steps[s], s == 0 ? nullptr : &steps[s - 1]);
+    }
+    return 0;
+}
+
 }  // namespace
 
 int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -188,7 +290,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json});
+    parser.addOptions(
+        {o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json, o.times});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -197,6 +300,13 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     session::SessionState requested;
     if (selection && selection->paths.empty() != parser.isSet(o.demo)) {
         problem = QStringLiteral("name the files to preprocess, or use --demo");
+    } else if (selection && parser.isSet(o.times) && parser.isSet(QStringLiteral("time-index"))) {
+        problem = QStringLiteral(
+            "--times and --time-index are refused together: --times names the steps");
+    } else if (selection && parser.isSet(o.times) && parser.isSet(o.demo)) {
+        problem = QStringLiteral(
+            "--times is refused with --demo: the built-in demo has no time steps; write one "
+            "that has with ensil generate --times T --out FILE.nc");
     }
     // No --iso: the workbench's default for the variable, chosen once the data is read.
     std::optional<double> iso;
@@ -219,12 +329,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     total.start();
     try {
         const prep::Linkage linkage = requested.linkage;
-        stage.start();
         const data::DemoEnsembleParams demo;
-        auto ensemble = std::make_shared<const data::Ensemble>(
-            parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
-                                 : data::openEnsemble(*selection));
-        const double loadSeconds = seconds(stage);
         PreprocessRequest request;
         request.isovalue = iso;
         request.clusters = requested.clusters;
@@ -242,6 +347,15 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          ? parser.value(o.cacheDir).toStdString()
                                          : defaultMeshCacheDirectory();
         }
+        if (parser.isSet(o.times)) {
+            return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
+                                 out, err);
+        }
+        stage.start();
+        auto ensemble = std::make_shared<const data::Ensemble>(
+            parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
+                                 : data::openEnsemble(*selection));
+        const double loadSeconds = seconds(stage);
         request.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
                                                        " seed=" + std::to_string(demo.seed)
                                                  : data::sourceIdentity(*selection);

@@ -4,11 +4,13 @@
 #include <QGuiApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <glm/geometric.hpp>
 #include <optional>
 
 #include "app/data_selection_options.h"
 #include "app/headless/session_renderer.h"
+#include "app/headless/time_series.h"
 #include "app/subcommand.h"
 #include "widgets/session/project_file.h"
 #include "widgets/session/setting_options.h"
@@ -49,6 +51,14 @@ struct Options {
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
     QCommandLineOption json{"json", "Print frame_ms, gpu_bytes, width, height as JSON."};
+    QCommandLineOption times{
+        "times",
+        "Draw one picture per time step from A to B, both included (time indices from 0, as "
+        "--time-index counts them), or all of them, with the same camera and settings, each "
+        "titled with its time and its clusters matched to the previous step's so colours follow "
+        "the groups. --out must then hold one printf-style number, e.g. frame_%03d.png, which "
+        "becomes the time index.",
+        "all|A:B"};
     QCommandLineOption saveProject{
         "save-project",
         "Also write the session drawn as a project: `ensil render P.ensil` then draws the same "
@@ -173,6 +183,38 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
     return state;
 }
 
+// True when `pattern` holds exactly one printf-style whole-number field (%d, %03d) and no other
+// conversion, so that QString::asprintf gives one file name per step.
+bool isFramePattern(const QString& pattern) {
+    static const QRegularExpression one(QStringLiteral("^[^%]*%0?[0-9]{0,2}d[^%]*$"));
+    return one.match(pattern).hasMatch();
+}
+
+// One picture per step of `range`: the first step's drawn session (isovalue, camera) is the
+// next one's, only the time index changes; each step's clusters are matched to the previous.
+int renderTimes(const session::SessionState& first, RenderRequest request, const StepRange& range,
+                const QString& pattern, QTextStream& out, QTextStream& err) {
+    session::SessionState state = first;
+    for (std::size_t t = range.first; t <= range.last; ++t) {
+        state.data.timeIndex = t;
+        const RenderOutcome result = renderSession(state, request);
+        const QString path = range.count() == 1 && !isFramePattern(pattern)
+                                 ? pattern
+                                 : QString::asprintf(pattern.toUtf8().constData(),
+                                                     static_cast<int>(t));
+        if (!result.image.save(path)) {
+            err << "ensil render: cannot write '" << path << "'\n";
+            return 1;
+        }
+        out << "wrote " << path << ": time index " << t << ", " << result.members
+            << " members at " << result.drawn.isovalue.value_or(0.0F) << "\n";
+        state = result.drawn;
+        request.previousMembers = result.memberNames;
+        request.previousIdentities = result.memberIdentities;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
@@ -187,7 +229,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     selectionOptions.addTo(parser);
     const Options o;
     parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.view, o.frames,
-                       o.noCache, o.demo, o.json, o.saveProject});
+                       o.noCache, o.demo, o.json, o.saveProject, o.times});
     sceneOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
 
@@ -220,8 +262,43 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         }
     } else if (selection->paths.empty() != parser.isSet(o.demo)) {
         problem = QStringLiteral("name the files to render, or use --demo");
+    } else if (parser.isSet(o.times) &&
+               (parser.isSet(o.demo) || parser.isSet(QStringLiteral("time-index")) ||
+                parser.isSet(o.saveProject) || parser.isSet(o.json))) {
+        problem = parser.isSet(o.demo)
+                      ? QStringLiteral("--times is refused with --demo: the built-in demo has no "
+                                       "time steps; write one that has with ensil generate "
+                                       "--times T --out FILE.nc")
+                      : QStringLiteral("--times is refused with --time-index, --save-project "
+                                       "and --json: it draws several steps");
     } else {
         state = sessionFromOptions(parser, o, *selection, request, problem);
+    }
+    if (problem.isEmpty() && parser.isSet(o.times) && fromProject) {
+        problem = QStringLiteral("--times draws data files, not a project: name the files");
+    }
+    std::optional<StepRange> range;
+    if (problem.isEmpty() && parser.isSet(o.times)) {
+        std::string why;
+        try {
+            range = parseStepRange(parser.value(o.times).toStdString(),
+                                   data::describeEnsemble(*selection).timeSteps.count(),
+                                   "'" + selection->paths.front() + "'", why);
+        } catch (const std::exception& e) {
+            err << "ensil render: " << e.what() << "\n";
+            return 1;
+        }
+        if (!range) {
+            problem = QString::fromStdString(why);
+        } else if (range->count() > 1 && !isFramePattern(parser.value(o.output))) {
+            // Concatenated, not arg()-ed: QString::arg would take "%03" for a place marker.
+            problem = QStringLiteral("--out '") + parser.value(o.output) +
+                      QStringLiteral("' is refused with --times ") + parser.value(o.times) +
+                      QStringLiteral(": it draws ") + QString::number(range->count()) +
+                      QStringLiteral(
+                          " pictures, so --out must hold one number pattern such as "
+                          "frame_%03d.png");
+        }
     }
     if (!problem.isEmpty()) {
         err << "ensil render: " << problem << "\n";
@@ -234,6 +311,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         request.height = size->second;
         request.frames = static_cast<int>(*frames);
         request.useCache = !parser.isSet(o.noCache);
+        if (range) return renderTimes(*state, request, *range, parser.value(o.output), out, err);
         const RenderOutcome result = renderSession(*state, request);
         if (!result.image.save(parser.value(o.output))) {
             err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";

@@ -42,6 +42,12 @@ QJsonObject ensembleInfoJson(const data::EnsembleDescription& d, const prep::Fie
     QJsonArray fixed;
     for (const auto& f : d.fixedDimensions) fixed.append(qs(f));
     o[QStringLiteral("fixed_dimensions")] = fixed;
+    QJsonArray timeLabels;
+    for (const auto& label : d.timeSteps.labels) timeLabels.append(qs(label));
+    // The steps --time-index and --times pick from; an empty list when there are none.
+    o[QStringLiteral("time_steps")] =
+        QJsonObject{{QStringLiteral("dimension"), qs(d.timeSteps.dimension)},
+                    {QStringLiteral("labels"), timeLabels}};
     o[QStringLiteral("grid_mapping")] =
         d.gridMapping.empty() ? QJsonValue() : QJsonValue(qs(d.gridMapping.name));
     const Geography geography = geographyOf(d);

@@ -12,6 +12,7 @@
 #include "app/headless/picture_title.h"
 #include "app/headless/preprocess_run.h"
 #include "app/headless/section_volume.h"
+#include "app/headless/time_series.h"
 #include "data/demo_ensemble.h"
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
@@ -100,8 +101,12 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     renderer.setMeshes(std::make_shared<data::MeshSet>(std::move(outcome.meshes)));
     // Coloured, hidden and selected as the workbench shows the session.
     const std::vector<int> labels = prep::clusterLabels(outcome.tree, k);
-    renderer.setAppearance(session::memberAppearance(labels,
-                                                     prep::identitiesFromTree(outcome.tree, k),
+    std::vector<std::string> names;
+    for (const data::Member& member : ensemble.members) names.push_back(member.name);
+    const std::vector<int> identities = matchStepIdentities(
+        outcome.tree, k, labels,
+        previousIdentitiesByName(request.previousMembers, request.previousIdentities, names));
+    renderer.setAppearance(session::memberAppearance(labels, identities,
                                                      session::memberFlags(state, labels, members)));
     renderer.settings() = state.render;
     renderer.setTitle(QString::fromStdString(pictureTitle(ensemble, iso)));
@@ -163,6 +168,8 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     result.note = data::fewLevelsWarning(ensemble.grid).value_or("");
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();
+    result.memberNames = std::move(names);
+    result.memberIdentities = prep::memberIdentities(labels, identities);
     renderer.releaseGpuResources();
     return result;
 }

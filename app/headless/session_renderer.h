@@ -25,6 +25,11 @@ struct RenderRequest {
     // A plane given across the box (gl::CuttingPlane::acrossBox: normal, position from -1 to
     // 1) rather than in display units; it replaces the session's plane normal and offset.
     std::optional<glm::vec4> planeAcrossBox;
+    // The previous time step's members (by name) and the cluster identity each had there:
+    // this picture's clusters are matched to them (matchStepIdentities), so colours follow the
+    // groups from frame to frame. Empty: the identities come from the tree alone.
+    std::vector<std::string> previousMembers;
+    std::vector<int> previousIdentities;
 };
 
 struct RenderOutcome {
@@ -39,7 +44,9 @@ struct RenderOutcome {
     std::string variable;    // the one drawn (the default when none was named)
     std::string note;        // what the data cannot show well (data::fewLevelsWarning), or empty
     std::string glRenderer;  // GL_RENDERER: the driver that drew it
-    bool withoutDisplay = false;  // drawn through EGL's surfaceless platform
+    bool withoutDisplay = false;           // drawn through EGL's surfaceless platform
+    std::vector<std::string> memberNames;  // of the members drawn, and each one's identity:
+    std::vector<int> memberIdentities;     // the next frame's RenderRequest::previous...
 };
 
 // Throws data::Error, session::ProjectError (isovalue outside the values) or std::runtime_error.

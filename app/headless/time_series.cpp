@@ -1,0 +1,157 @@
+#include "app/headless/time_series.h"
+
+#include <QColor>
+#include <algorithm>
+#include <charconv>
+#include <map>
+#include <mutex>
+#include <set>
+
+#include "gl/palette.h"
+#include "preprocessing/cluster_identity.h"
+
+namespace ensil::app {
+namespace {
+
+std::optional<std::size_t> parseIndex(const std::string& text) {
+    std::size_t value = 0;
+    const char* end = text.data() + text.size();
+    const auto [at, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || at != end) return std::nullopt;
+    return value;
+}
+
+}  // namespace
+
+std::optional<StepRange> parseStepRange(const std::string& text, std::size_t steps,
+                                        const std::string& what, std::string& problem) {
+    const std::string refused = "--times '" + text + "' is refused: ";
+    const std::string has = what + " has " + std::to_string(steps) +
+                            (steps == 1 ? " time step" : " time steps") +
+                            (steps == 0 ? "" : ", 0 to " + std::to_string(steps - 1));
+    if (steps == 0) {
+        problem = refused + what +
+                  " has no time steps (no dimension besides the members and the grid's axes)";
+        return std::nullopt;
+    }
+    if (text == "all") return StepRange{0, steps - 1};
+    const std::size_t colon = text.find(':');
+    const auto first =
+        colon == std::string::npos ? std::nullopt : parseIndex(text.substr(0, colon));
+    const auto last =
+        colon == std::string::npos ? std::nullopt : parseIndex(text.substr(colon + 1));
+    if (!first || !last) {
+        problem = refused +
+                  "it must be 'all' or A:B, the first and last time index (both "
+                  "included, from 0), e.g. 0:3";
+        return std::nullopt;
+    }
+    if (*first > *last) {
+        problem = refused + "the first step " + std::to_string(*first) + " comes after the last " +
+                  std::to_string(*last);
+        return std::nullopt;
+    }
+    if (*last >= steps) {
+        problem = refused + has;
+        return std::nullopt;
+    }
+    return StepRange{*first, *last};
+}
+
+std::vector<int> matchStepIdentities(const prep::MergeTree& tree, int k,
+                                     const std::vector<int>& labels,
+                                     const std::vector<int>& previous) {
+    const bool known = std::any_of(previous.begin(), previous.end(), [](int i) { return i >= 0; });
+    if (!known) return prep::identitiesFromTree(tree, k);
+    return prep::matchIdentities(labels, k, previous);
+}
+
+std::vector<int> previousIdentitiesByName(const std::vector<std::string>& previousMembers,
+                                          const std::vector<int>& previousIdentities,
+                                          const std::vector<std::string>& members) {
+    std::map<std::string, int> byName;
+    for (std::size_t m = 0; m < previousMembers.size() && m < previousIdentities.size(); ++m) {
+        byName.emplace(previousMembers[m], previousIdentities[m]);
+    }
+    std::vector<int> result;
+    result.reserve(members.size());
+    for (const std::string& name : members) {
+        const auto at = byName.find(name);
+        result.push_back(at == byName.end() ? -1 : at->second);
+    }
+    return result;
+}
+
+std::string identityColorName(int identity) {
+    const glm::vec3 c = gl::clusterColor(identity);
+    return QColor::fromRgbF(c.r, c.g, c.b).name().toStdString();
+}
+
+std::vector<TimeStepResult> preprocessTimeSeries(const TimeSeriesRequest& request,
+                                                 const PreprocessNotice& notice,
+                                                 const std::stop_token& stop,
+                                                 const data::Progress& progress,
+                                                 const StepDone& stepDone) {
+    std::vector<TimeStepResult> steps;
+    const std::size_t count = request.steps.count();
+    // The job's workers report as they finish; the whole series' fraction only rises.
+    std::mutex progressMutex;
+    double reported = 0.0;
+    const auto reportStep = [&](std::size_t done, double fraction) {
+        if (!progress) return;
+        const std::lock_guard lock(progressMutex);
+        const double overall = (static_cast<double>(done) + std::clamp(fraction, 0.0, 1.0)) /
+                               static_cast<double>(count);
+        if (overall < reported) return;
+        reported = overall;
+        progress(overall);
+    };
+    PreprocessRequest preprocess = request.preprocess;
+    std::vector<std::string> previousMembers;
+    std::vector<int> previousIdentities;
+    std::set<std::string> said;  // a note true of every step (few levels) is said once
+    for (std::size_t s = 0; s < count; ++s) {
+        data::throwIfStopped(stop);
+        TimeStepResult step;
+        step.index = request.steps.first + s;
+        data::DataSelection selection = request.selection;
+        selection.timeIndex = step.index;
+        auto ensemble = std::make_shared<const data::Ensemble>(data::openEnsemble(selection, stop));
+        const data::TimeSteps& times = ensemble->timeSteps;
+        step.time =
+            step.index < times.count() ? times.labels[step.index] : std::to_string(step.index);
+        preprocess.sourceKey = data::sourceIdentity(selection);
+        const auto stepNotice = [&](const std::string& kind, const std::string& text) {
+            if (said.insert(kind + ": " + text).second) notice(kind, step.time + ": " + text);
+        };
+        try {
+            step.result = preprocessEnsemble(std::move(ensemble), preprocess, stepNotice, stop,
+                                             [&](double fraction) { reportStep(s, fraction); });
+        } catch (const PreprocessRefused& e) {
+            throw PreprocessRefused(
+                "at " + step.time + " (time index " + std::to_string(step.index) + "): " + e.what(),
+                e.exitCode());
+        }
+        // Every later step at the first one's isovalue.
+        preprocess.isovalue = step.result.meshes.isovalue;
+        std::vector<std::string> members;
+        for (const data::Member& m : step.result.ensemble->members) members.push_back(m.name);
+        const std::vector<int> previous =
+            previousIdentitiesByName(previousMembers, previousIdentities, members);
+        step.identities =
+            matchStepIdentities(step.result.tree, step.result.k, step.result.labels, previous);
+        step.memberIdentities = prep::memberIdentities(step.result.labels, step.identities);
+        step.result.colors.clear();
+        for (const int identity : step.memberIdentities) {
+            step.result.colors.push_back(identityColorName(identity));
+        }
+        previousMembers = std::move(members);
+        previousIdentities = step.memberIdentities;
+        reportStep(s, 1.0);
+        if (stepDone) stepDone(step);
+        steps.push_back(std::move(step));
+    }
+    return steps;
+}
+
+}  // namespace ensil::app

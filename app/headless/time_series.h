@@ -1,0 +1,84 @@
+// An ensemble over time, preprocessed step by step: for each time index of a range, the
+// ensemble at that index is read, preprocessed at one isovalue (preprocessEnsemble: cache,
+// meshes, similarity, clustering) and its clusters matched to the previous step's, so that a
+// group of members keeps its identity, and so its colour, from step to step (METHODS.md
+// section 8). Shared by `ensil preprocess --times`, the benchmark and the workbench's
+// cluster-over-time strip (which calls matchStepIdentities for each new step). Any thread.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "app/headless/preprocess_run.h"
+#include "data/ensemble_reader.h"
+#include "data/job.h"
+#include "preprocessing/clustering.h"
+
+namespace ensil::app {
+
+// Time indices first..last, both included.
+struct StepRange {
+    std::size_t first = 0;
+    std::size_t last = 0;
+    [[nodiscard]] std::size_t count() const { return last - first + 1; }
+    bool operator==(const StepRange&) const = default;
+};
+
+// "all" or "A:B" (A and B included, 0-based, A <= B) against `steps` steps. nullopt with
+// `problem` set ("--times 2:7 is refused: ... has 4 time steps, 0 to 3") otherwise; `what`
+// names the data in that message.
+std::optional<StepRange> parseStepRange(const std::string& text, std::size_t steps,
+                                        const std::string& what, std::string& problem);
+
+// One cluster identity per cluster label (0..k-1) of `labels`, matched to the identities the
+// same members had at the previous step (`previous`: one per member, -1 for a member that had
+// none): the matching of a new tree of the same members (prep::matchIdentities; the largest
+// total overlap keeps its identity, so a group followed by most of its members keeps its
+// colour). With no previous identity at all (the first step) the identities come from the tree
+// alone (prep::identitiesFromTree), as `ensil preprocess` gives them.
+std::vector<int> matchStepIdentities(const prep::MergeTree& tree, int k,
+                                     const std::vector<int>& labels,
+                                     const std::vector<int>& previous);
+
+// Each of `members`' previous identity, by name, from the previous step's members and their
+// identities; -1 for a member the previous step did not have (no data there).
+std::vector<int> previousIdentitiesByName(const std::vector<std::string>& previousMembers,
+                                          const std::vector<int>& previousIdentities,
+                                          const std::vector<std::string>& members);
+
+struct TimeSeriesRequest {
+    data::DataSelection selection;  // its timeIndex is set to each step in turn
+    StepRange steps;
+    // isovalue: none means the first step's default, kept for every step (a surface keeps its
+    // meaning over time). sourceKey is each step's data::sourceIdentity.
+    PreprocessRequest preprocess;
+};
+
+struct TimeStepResult {
+    std::size_t index = 0;  // the time index
+    std::string time;       // its label (TimeSteps), ISO 8601 where the file dates it
+    // The step's results; colors are those of the matched identities.
+    PreprocessResult result;
+    std::vector<int> identities;        // per cluster label
+    std::vector<int> memberIdentities;  // per member of result.ensemble
+};
+
+// Called after each step is done, with it, before the next is read.
+using StepDone = std::function<void(const TimeStepResult&)>;
+
+// Throws PreprocessRefused (as preprocessEnsemble, naming the step), data::Error, Cancelled.
+// `progress` runs from 0 to 1 over all steps.
+std::vector<TimeStepResult> preprocessTimeSeries(const TimeSeriesRequest& request,
+                                                 const PreprocessNotice& notice,
+                                                 const std::stop_token& stop = {},
+                                                 const data::Progress& progress = {},
+                                                 const StepDone& stepDone = {});
+
+// "#rrggbb" of a cluster identity (gl::clusterColor), as preprocess and the workbench draw it.
+std::string identityColorName(int identity);
+
+}  // namespace ensil::app
