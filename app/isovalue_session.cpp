@@ -32,6 +32,7 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_ensemble = std::move(ensemble);
     m_moments = std::move(moments);
     m_sourceKey = std::move(sourceKey);
+    m_kept.clear();  // other data
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);
     // The members are known now; their figures and clusters come with the first isovalue.
@@ -62,10 +63,25 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     const std::string cacheDirectory = m_cacheDirectory.toStdString();
     const prep::Linkage linkage = m_linkage;
     emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
+    // A result kept from before (a time step or isovalue visited again) is shown as it was,
+    // through the same job so that a newer request still drops it.
+    const std::string key = sourceKey + "; iso=" + std::to_string(isovalue) +
+                            "; exaggeration=" + std::to_string(exaggeration) +
+                            "; linkage=" + std::to_string(static_cast<int>(linkage));
+    std::shared_ptr<const IsovalueResult> kept;
+    for (const auto& [keptKey, result] : m_kept) {
+        if (keptKey == key) kept = result;
+    }
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) {
             QElapsedTimer timer;
             timer.start();
+            if (kept) {
+                IsovalueResult r = *kept;
+                r.keptInMemory = true;
+                r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+                return r;
+            }
             IsovalueJobInput input;
             input.ensemble = ensemble.get();
             input.moments = moments.get();
@@ -91,7 +107,15 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
             return r;
         },
-        [this, isovalue](IsovalueResult r) { show(std::move(r), isovalue); },
+        [this, isovalue, key](IsovalueResult r) {
+            if (!r.keptInMemory) {
+                // The most recent first; the oldest go beyond kKeptResults.
+                std::erase_if(m_kept, [&key](const auto& entry) { return entry.first == key; });
+                m_kept.emplace(m_kept.begin(), key, std::make_shared<const IsovalueResult>(r));
+                if (m_kept.size() > kKeptResults) m_kept.resize(kKeptResults);
+            }
+            show(std::move(r), isovalue);
+        },
         [this](const std::exception_ptr& error, bool cancelled) {
             if (cancelled || !error) {
                 emit failed(tr("Isosurfaces cancelled"));
@@ -128,7 +152,9 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
                       .arg(m_result->triangles)
                       .arg(m_result->meshes->members.size())
                       .arg(m_result->seconds, 0, 'f', 2)
-                      .arg(m_result->fromCache ? tr(" (from the cache)") : QString())
+                      .arg(m_result->keptInMemory ? tr(" (kept in memory)")
+                           : m_result->fromCache  ? tr(" (from the cache)")
+                                                  : QString())
                       .arg(warning.empty() ? QString()
                                            : tr(". Note: %1").arg(QString::fromStdString(warning))));
 }

@@ -11,6 +11,8 @@
 #include <QObject>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/background_job.h"
 #include "data/ensemble.h"
@@ -42,6 +44,7 @@ struct IsovalueResult {
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;
+    bool keptInMemory = false;  // shown again as built before (IsovalueSession::kKeptResults)
 };
 
 class IsovalueSession : public QObject {
@@ -72,6 +75,10 @@ public:
     [[nodiscard]] std::vector<int> labels() const;
     [[nodiscard]] bool isRunning() const { return m_job.isRunning(); }
 
+    // The last results built, kept whole (meshes, distances, clusters, summaries) so that a
+    // time step or isovalue visited again is shown without rebuilding: a few MiB each.
+    static constexpr std::size_t kKeptResults = 24;
+
 signals:
     void started(const QString& what);
     void progressed(double fraction);
@@ -80,6 +87,7 @@ signals:
 
 private:
     void show(IsovalueResult result, float isovalue);
+    std::vector<std::pair<std::string, std::shared_ptr<const IsovalueResult>>> m_kept;
     [[nodiscard]] QStringList memberNames() const;
 
     ui::SilhouetteView* m_view;

@@ -169,6 +169,21 @@ void ClusterTimeline::paintEvent(QPaintEvent* /*event*/) {
         }
     }
     const QFontMetricsF metrics(font());
+    // The dates under the columns: without the year when they share it, and every k-th one
+    // where they would touch (the first, the last and the one on screen always).
+    bool oneYear = true;
+    for (const QString& l : m_labels) oneYear = oneYear && l.left(5) == m_labels.front().left(5);
+    const auto shortLabel = [&](const QString& l) {
+        return oneYear && l.size() > 5 && l[4] == QLatin1Char('-') ? l.mid(5) : l;
+    };
+    QFont bold = font();
+    bold.setBold(true);
+    double widest = 0.0;
+    for (const QString& l : m_labels) {
+        widest = std::max(widest, QFontMetricsF(bold).horizontalAdvance(shortLabel(l)));
+    }
+    const double spacing = columnX(1) - columnX(0);
+    const int labelEvery = std::max(1, static_cast<int>(std::ceil((widest + 12.0) / spacing)));
     for (int s = 0; s < steps; ++s) {
         const std::vector<int>& ids = m_identities[static_cast<std::size_t>(s)];
         std::vector<int> clusters(ids.begin(), ids.end());
@@ -184,19 +199,13 @@ void ClusterTimeline::paintEvent(QPaintEvent* /*event*/) {
             painter.setBrush(colourOf(identity));
             painter.drawRoundedRect(barRect(s, identity), 2.0, 2.0);
         }
-        // The step's date under its column, the one on screen in bold; labels that would
-        // overlap their neighbour are left out (the ends always kept).
+        if (s != m_current && s % labelEvery != 0 && s != steps - 1) continue;
         QFont f = font();
         f.setBold(s == m_current);
         painter.setFont(f);
         painter.setPen(palette().color(s == m_current ? QPalette::Text : QPalette::PlaceholderText));
-        const QString label = m_labels[s];
+        const QString label = shortLabel(m_labels[s]);
         const double w = QFontMetricsF(f).horizontalAdvance(label);
-        const double spacing = steps > 1 ? columnX(1) - columnX(0) : width();
-        if (w + 6 > spacing && s != 0 && s != steps - 1 && s != m_current &&
-            s % std::max(1, static_cast<int>(std::ceil((w + 6) / spacing))) != 0) {
-            continue;
-        }
         const double x = std::clamp(columnX(s) - w / 2, 0.0, width() - w);
         painter.drawText(QPointF(x, height() - kMargin / 2 - metrics.descent()), label);
     }

@@ -87,3 +87,51 @@ TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilT
     ASSERT_TRUE(stepShown(window, 0));
     EXPECT_EQ(window.overview()->ensemble->members[0].values[0], firstValue);
 }
+
+TEST(MainWindowTime, PlayingThroughEra5ShowsEveryStepOnceAndFillsTheStrip) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1400, 900}));
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "z";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(60000));
+    ui::TimeBar& bar = *window.timeBar();
+    // Each step shown is saved as the workbench shows it (for the eye; see the closing note).
+    std::vector<int> shown;
+    QObject::connect(window.isovalueSession(), &app::IsovalueSession::finished, &window, [&] {
+        shown.push_back(bar.shownStep());
+        window.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_time_step_%1.png")
+                               .arg(bar.shownStep()));
+    });
+    bar.setLoop(false);
+    bar.setStepsPerSecond(20.0);
+    bar.play();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !bar.isPlaying(); }, 120000));
+    ASSERT_TRUE(stepShown(window, 3));
+    EXPECT_EQ(shown, (std::vector<int>{1, 2, 3})) << "each step once, in order, none skipped";
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    for (int s = 0; s < 4; ++s) EXPECT_EQ(strip.stepClusters(s).size(), 10u) << "step " << s;
+}
+
+TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(60000));
+    const auto first = window.view()->renderer().meshes();
+    window.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(window, 1));
+    EXPECT_FALSE(window.isovalueSession()->result()->keptInMemory);
+    window.timeBar()->step(-1);
+    ASSERT_TRUE(stepShown(window, 0));
+    EXPECT_TRUE(window.isovalueSession()->result()->keptInMemory);
+    EXPECT_EQ(window.view()->renderer().meshes(), first) << "the very surfaces of before";
+}
