@@ -28,10 +28,7 @@ QStringList IsovalueSession::memberNames() const {
 void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey) {
-    m_job.cancel();
-    m_ensemble = std::move(ensemble);
-    m_moments = std::move(moments);
-    m_sourceKey = std::move(sourceKey);
+    setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey));
     m_kept.clear();  // other data
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);

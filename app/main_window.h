@@ -158,6 +158,8 @@ private:
     // (read in the background, the last step kept on screen until this one is built), the
     // step shown, and the steps read ahead or visited, kept within a memory budget.
     void createTimeBar();
+    // A step's ensemble read and its overview built, on a worker.
+    static BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection);
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     void goToTimeStep(std::size_t step);
     void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);

@@ -32,6 +32,17 @@ std::size_t timeStepBudget() {
 
 }  // namespace
 
+BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(
+    const data::DataSelection& selection) {
+    return [selection](const std::stop_token& stop, const data::Progress& progress) {
+        return loadOverview(
+            [selection](const std::stop_token& s, const data::Progress& p) {
+                return data::openEnsemble(selection, s, p);
+            },
+            [selection] { return data::sourceIdentity(selection); }, stop, progress);
+    };
+}
+
 void MainWindow::createTimeBar() {
     m_timeBar = new ui::TimeBar(this);
     addToolBar(Qt::BottomToolBarArea, m_timeBar);
@@ -96,13 +107,7 @@ void MainWindow::goToTimeStep(std::size_t step) {
     setBusy(tr("Reading time step %1...").arg(step + 1));
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
-        [selection](const std::stop_token& stop, const data::Progress& progress) {
-            return loadOverview(
-                [selection](const std::stop_token& s, const data::Progress& p) {
-                    return data::openEnsemble(selection, s, p);
-                },
-                [selection] { return data::sourceIdentity(selection); }, stop, progress);
-        },
+        readingStep(selection),
         [this, step](EnsembleOverview overview) {
             showTimeStep(std::make_unique<EnsembleOverview>(std::move(overview)), step);
         },
@@ -176,13 +181,7 @@ void MainWindow::readAhead() {
     m_readingAhead = next;
     const data::DataSelection selection = timeStepSelection(next);
     m_readAhead.start(
-        [selection](const std::stop_token& stop, const data::Progress& progress) {
-            return loadOverview(
-                [selection](const std::stop_token& s, const data::Progress& p) {
-                    return data::openEnsemble(selection, s, p);
-                },
-                [selection] { return data::sourceIdentity(selection); }, stop, progress);
-        },
+        readingStep(selection),
         [this, next](EnsembleOverview overview) {
             auto read = std::make_unique<EnsembleOverview>(std::move(overview));
             // Asked for while it was being read: shown now.

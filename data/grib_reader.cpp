@@ -129,17 +129,7 @@ Ensemble GribReader::read(const DataSelection& selection, const std::stop_token&
     checkMemoryFor(d.bytes(), "'" + d.variable + "' (" + std::to_string(d.members) +
                                   " members of " +
                                   shapeText(d.grid.nx(), d.grid.ny(), d.grid.nz()) + " points)");
-    Ensemble e;
-    e.variable = d.variable;
-    e.longName = d.longName;
-    e.units = d.units;
-    e.memberDimension = d.memberDimension;
-    e.source = sourceOf(selection.paths);
-    e.grid = d.grid;
-    e.fixedDimensions = d.fixedDimensions;
-    e.timeSteps = d.timeSteps;
-    e.warnings = d.warnings;
-    e.members.resize(d.members);
+    Ensemble e = ensembleDescribedBy(d, selection.paths);
     const std::size_t layer = d.grid.nx() * d.grid.ny();
     std::size_t total = 0, done = 0;
     for (const GribPlan& plan : opened.plans) {

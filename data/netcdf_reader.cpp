@@ -246,17 +246,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
 Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_token& stop,
                             const Progress& progress) const {
     const EnsembleDescription description = describe(selection);
-    Ensemble e;
-    e.variable = description.variable;
-    e.longName = description.longName;
-    e.units = description.units;
-    e.memberDimension = description.memberDimension;
-    e.source = sourceOf(selection.paths);
-    e.grid = description.grid;
-    e.gridMapping = description.gridMapping;
-    e.fixedDimensions = description.fixedDimensions;
-    e.timeSteps = description.timeSteps;
-    e.members.resize(description.members);
+    Ensemble e = ensembleDescribedBy(description, selection.paths);
     std::size_t next = 0;
     for (const std::string& path : selection.paths) {
         const std::lock_guard lock(netcdfLibraryMutex());

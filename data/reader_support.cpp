@@ -68,6 +68,22 @@ std::string sourceOf(const std::vector<std::string>& paths) {
     return std::to_string(paths.size()) + " files in " + folder;
 }
 
+Ensemble ensembleDescribedBy(const EnsembleDescription& d, const std::vector<std::string>& paths) {
+    Ensemble e;
+    e.variable = d.variable;
+    e.longName = d.longName;
+    e.units = d.units;
+    e.memberDimension = d.memberDimension;
+    e.source = sourceOf(paths);
+    e.grid = d.grid;
+    e.gridMapping = d.gridMapping;
+    e.fixedDimensions = d.fixedDimensions;
+    e.timeSteps = d.timeSteps;
+    e.warnings = d.warnings;
+    e.members.resize(d.members);
+    return e;
+}
+
 std::string shapeText(std::size_t nx, std::size_t ny, std::size_t nz) {
     return std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz);
 }

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "data/ensemble_reader.h"
 #include "data/grid.h"
 
 namespace ensil::data {
@@ -27,6 +28,12 @@ std::vector<std::string> memberNamesFromPaths(const std::vector<std::string>& pa
 
 // The path of a single file, or "N files in DIR" with DIR the folder of the first file.
 std::string sourceOf(const std::vector<std::string>& paths);
+
+// An ensemble holding what its description says (variable, units, grid, map projection, fixed
+// dimensions, time steps, warnings, where it came from) and room for its members, for a
+// reader to fill.
+Ensemble ensembleDescribedBy(const EnsembleDescription& description,
+                             const std::vector<std::string>& paths);
 
 // "68 x 68 x 1": sizes along x, y, z.
 std::string shapeText(std::size_t nx, std::size_t ny, std::size_t nz);

@@ -27,18 +27,22 @@ bool stepShown(app::MainWindow& window, int step) {
                                         !window.isovalueSession()->isRunning(); },
                            60000);
 }
+// Shows the workbench and opens ERA5's variable, waiting for its first surfaces.
+bool openEra5(app::MainWindow& window, QSize size, const char* variable) {
+    if (!test::showWorkbench(window, size)) return false;
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = variable;
+    window.openFiles(selection);
+    return built.wait(60000);
+}
 }  // namespace
 
 TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilTheNextIsBuilt) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    data::DataSelection selection;
-    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
-    selection.variable = "t";
-    window.openFiles(selection);
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
     ui::TimeBar& bar = *window.timeBar();
     ASSERT_EQ(bar.stepCount(), 4);
     EXPECT_EQ(bar.shownStep(), 0);
@@ -91,13 +95,7 @@ TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilT
 TEST(MainWindowTime, PlayingThroughEra5ShowsEveryStepOnceAndFillsTheStrip) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    ASSERT_TRUE(test::showWorkbench(window, {1400, 900}));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    data::DataSelection selection;
-    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
-    selection.variable = "z";
-    window.openFiles(selection);
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(openEra5(window, {1400, 900}, "z"));
     ui::TimeBar& bar = *window.timeBar();
     // Each step shown is saved as the workbench shows it (for the eye; see the closing note).
     std::vector<int> shown;
@@ -119,13 +117,7 @@ TEST(MainWindowTime, PlayingThroughEra5ShowsEveryStepOnceAndFillsTheStrip) {
 TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    data::DataSelection selection;
-    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
-    selection.variable = "t";
-    window.openFiles(selection);
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
     const auto first = window.view()->renderer().meshes();
     window.timeBar()->step(1);
     ASSERT_TRUE(stepShown(window, 1));
