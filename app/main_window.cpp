@@ -437,6 +437,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     showFloor(m_model->state().render);
     m_lastHoveredMember = -1;
     showSection();
+    showSpread();
     renderer.setMapLines(m_overview->mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));

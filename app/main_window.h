@@ -141,6 +141,8 @@ private:
     // The field the cutting plane's cut face shows (main_window_section.cpp): given to the
     // renderer when the field, its member or its isovalue changes.
     void showSection();
+    // The members' spread the context surface may be coloured by, for the data shown.
+    void showSpread();
     // The screenshot dialog's first suggestion: the picture's facts as a file name.
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.

@@ -10,6 +10,15 @@
 
 namespace ensil::app {
 
+void MainWindow::showSpread() {
+    if (!m_overview) return;
+    SectionSources sources;
+    sources.ensemble = m_overview->ensemble.get();
+    sources.stddev = m_overview->columnMaxima.stddev.get();
+    m_view->renderer().setSpreadVolume(
+        sectionVolumeFor(sources, gl::SectionField::StandardDeviation));
+}
+
 void MainWindow::showSection() {
     gl::Renderer& renderer = m_view->renderer();
     const gl::SectionField field = m_model->state().render.plane.fill;

@@ -155,6 +155,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     showFloor(s.render);
     m_shownSection = {};  // the field is this step's
     showSection();
+    showSpread();
     m_info->showFacts(ensembleFacts(*m_overview));
     // The last step's surfaces, figures and clusters stay until this step's are built.
     m_session->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);

@@ -75,7 +75,7 @@ const session::SettingOptions& sceneOptions() {
         "axis_labels", "legend",          "plane_thickness", "coastlines",
         "borders",     "graticule",       "mean_opacity",    "title",
         "floor",       "floor_level",     "rims",            "context",
-        "band",        "section"};
+        "band",        "section",         "context_spread"};
     return options;
 }
 

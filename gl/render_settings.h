@@ -71,6 +71,9 @@ struct RenderSettings {
     float surfaceAlpha = 0.2F;  // for RenderMode::Surfaces
     bool showMean = true;       // the context surface (below), gray
     ContextSurface context = ContextSurface::Mean;
+    // The context surface coloured by the members' standard deviation where it lies, with a
+    // colour bar (Renderer::setSpreadVolume), instead of gray.
+    bool contextBySpread = false;
     // The contour boxplot's 50 % band as a translucent envelope, outliers dashed.
     bool showBand = false;
     // The mean's opacity: below 1 it is a translucent context surface that never hides the

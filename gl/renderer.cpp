@@ -95,10 +95,12 @@ void Renderer::initialize() {
     f.glGenTextures(1, &gpu->axisTables);
     f.glGenTextures(1, &gpu->sectionTexture);
     f.glGenTextures(1, &gpu->sectionIndexTables);
+    f.glGenTextures(1, &gpu->spreadTexture);
     f.glGenVertexArrays(1, &gpu->emptyVao);
     m_gpu = std::move(gpu);
     m_floorDirty = true;
     m_sectionDirty = true;
+    m_spreadDirty = true;
     m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;
@@ -117,6 +119,7 @@ void Renderer::releaseGpuResources() {
     f.glDeleteTextures(1, &m_gpu->axisTables);
     f.glDeleteTextures(1, &m_gpu->sectionTexture);
     f.glDeleteTextures(1, &m_gpu->sectionIndexTables);
+    f.glDeleteTextures(1, &m_gpu->spreadTexture);
     f.glDeleteVertexArrays(1, &m_gpu->emptyVao);
     m_gpu->meshes.release(f);
     m_gpu->targets.release(f);
@@ -172,6 +175,14 @@ ViewOverlay Renderer::overlay(int width, int height) const {
         !m_scene.floor.caption.isEmpty()) {
         in.colourScales.push_back(
             ColourScale{m_scene.floor.caption, m_scene.floor.minimum, m_scene.floor.maximum});
+    }
+    if (m_scene.settings.showLegend && contextColouredBySpread() && in.showMean) {
+        in.colourScales.push_back(ColourScale{
+            QStringLiteral("context: ") + m_scene.spread.quantity +
+                (m_scene.spread.units.isEmpty() ? QString()
+                                                : QStringLiteral(" [") + m_scene.spread.units +
+                                                      QStringLiteral("]")),
+            m_scene.spread.minimum, m_scene.spread.maximum});
     }
     if (m_scene.settings.showLegend && sectionShown() && !m_scene.section.quantity.isEmpty()) {
         in.colourScales.push_back(ColourScale{m_scene.section.caption(), m_scene.section.minimum,
@@ -359,6 +370,10 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     if (m_scene.hasGrid) {
         if (m_floorDirty) uploadFloorMap();
         if (m_sectionDirty) uploadSectionVolume();
+        if (m_spreadDirty) {
+            m_spreadDirty = false;
+            m_gpu->spreadUploaded = uploadFieldVolume(m_gpu->spreadTexture, m_scene.spread);
+        }
         if (m_mapLinesDirty) uploadMapLines();
         if (m_axisTablesDirty) uploadAxisTables();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);

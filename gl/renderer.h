@@ -164,6 +164,10 @@ public:
     [[nodiscard]] const SectionVolume& sectionVolume() const { return m_scene.section; }
     // Whether the cut face is filled with the section volume in the next frame.
     [[nodiscard]] bool sectionShown() const;
+    // The members' standard deviation, which the context surface is coloured by when
+    // RenderSettings::contextBySpread.
+    void setSpreadVolume(SectionVolume volume);
+    [[nodiscard]] bool contextColouredBySpread() const;
     // The section volume's value at a display-space point (trilinear, NaN where missing or
     // when no section is shown): what the cut face shows there.
     [[nodiscard]] float sectionValueAt(const glm::vec3& display) const;
@@ -295,6 +299,12 @@ private:
     // so that their curves on the plane are drawn over it.
     void uploadSectionVolume();
     void uploadSectionIndexTables();
+    // Uploads a field to a 3D texture normalised to its range; false when it does not fit the
+    // grid. And the uniforms of gl/shaders/field_lookup.glsl, the volume and the index tables
+    // bound to these texture units.
+    bool uploadFieldVolume(unsigned texture, const SectionVolume& volume);
+    void setFieldUniforms(QOpenGLShaderProgram& program, unsigned texture, int volumeUnit,
+                          int tablesUnit);
     void drawSection(const glm::mat4& viewProjection);
     void drawMeshes(const glm::mat4& viewProjection, int width, int height);
     void present(unsigned framebuffer, int width, int height);
@@ -307,6 +317,7 @@ private:
         Camera camera;
         FloorMap floor;
         SectionVolume section;
+        SectionVolume spread;
         std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
         std::shared_ptr<const data::MeshSet> meshes;
         std::vector<MemberAppearance> appearance;
@@ -322,6 +333,7 @@ private:
     // What has changed in the scene since it was last uploaded.
     bool m_floorDirty = false;
     bool m_sectionDirty = false;
+    bool m_spreadDirty = false;
     bool m_mapLinesDirty = false;
     bool m_axisTablesDirty = false;
     bool m_meshesDirty = false;

@@ -43,6 +43,9 @@ struct Renderer::Gpu {
     GLuint sectionTexture = 0;
     GLuint sectionIndexTables = 0;
     bool sectionUploaded = false;
+    // The members' standard deviation, for the context surface's colour (same tables).
+    GLuint spreadTexture = 0;
+    bool spreadUploaded = false;
     GLuint axisTables = 0;  // row a: the display coordinate of every grid index along axis a
     glm::ivec3 axisSize{0};
     GpuMeshCache meshes;

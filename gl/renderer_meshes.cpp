@@ -145,6 +145,9 @@ void Renderer::configureSurfaceProgram(QOpenGLShaderProgram& program,
     setPlaneUniforms(program);
     program.setUniformValue("u_planeEpsilon", m_scene.settings.plane.thickness);
     setAxisTableUniforms(program);
+    // The spread the context surface may be coloured by (units 0 and 1 are taken).
+    program.setUniformValue("u_colourByField", false);
+    setFieldUniforms(program, m_gpu->spreadTexture, 2, 3);
 }
 
 void Renderer::setAxisTableUniforms(QOpenGLShaderProgram& program) {
@@ -319,7 +322,10 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
         f.glPolygonOffset(1.0F, 2.0F);
         setMember(0, 0, meanTranslucent ? kSurfaces : kSolid, kMeanSurfaceColor);
         program->setUniformValue("u_surfaceAlpha", m_scene.settings.meanOpacity);
+        program->setUniformValue("u_colourByField",
+                                 contextColouredBySpread() && m_gpu->spreadUploaded);
         drawMesh(f, *program, contextMesh());
+        program->setUniformValue("u_colourByField", false);
         program->setUniformValue("u_surfaceAlpha", m_scene.settings.surfaceAlpha);
         f.glDisable(GL_POLYGON_OFFSET_FILL);
     }

@@ -1,4 +1,5 @@
-// The cutting plane's cut face filled with a field (CuttingPlane::fill, METHODS.md section 18).
+// The cutting plane's cut face filled with a field (CuttingPlane::fill, METHODS.md section 18),
+// and the 3D fields behind it and behind the context surface's colour by the spread.
 // The field lives on the GPU as a 3D texture of its grid values. Each fragment of the face
 // finds its grid index through per-axis tables of the inverse of the display mapping, which is
 // separable (data::DisplayFrame), and reads the texture trilinearly between grid points: the
@@ -39,15 +40,22 @@ float Renderer::sectionValueAt(const glm::vec3& display) const {
                                  m_scene.frame.displayToIndex(display));
 }
 
-void Renderer::uploadSectionVolume() {
-    m_sectionDirty = false;
-    m_gpu->sectionUploaded = false;
+void Renderer::setSpreadVolume(SectionVolume volume) {
+    m_scene.spread = std::move(volume);
+    m_spreadDirty = true;
+}
+
+bool Renderer::contextColouredBySpread() const {
+    return m_scene.settings.contextBySpread && m_scene.hasGrid && m_scene.grid.pointCount() > 0 &&
+           m_scene.spread.values.size() == m_scene.grid.pointCount();
+}
+
+bool Renderer::uploadFieldVolume(unsigned texture, const SectionVolume& volume) {
     if (!m_scene.hasGrid || m_scene.grid.pointCount() == 0 ||
-        m_scene.section.values.size() != m_scene.grid.pointCount()) {
-        return;
+        volume.values.size() != m_scene.grid.pointCount()) {
+        return false;
     }
     GlFunctions& f = *m_gpu->f;
-    const SectionVolume& volume = m_scene.section;
     const float span = volume.maximum - volume.minimum;
     std::vector<float> normalised(volume.values.size());
     for (std::size_t i = 0; i < normalised.size(); ++i) {
@@ -55,7 +63,7 @@ void Renderer::uploadSectionVolume() {
         normalised[i] =
             std::isnan(v) ? -1.0F : (span > 0.0F ? (v - volume.minimum) / span : 0.5F);
     }
-    f.glBindTexture(GL_TEXTURE_3D, m_gpu->sectionTexture);
+    f.glBindTexture(GL_TEXTURE_3D, texture);
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     f.glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, static_cast<GLsizei>(m_scene.grid.nx()),
                    static_cast<GLsizei>(m_scene.grid.ny()), static_cast<GLsizei>(m_scene.grid.nz()),
@@ -66,7 +74,34 @@ void Renderer::uploadSectionVolume() {
         f.glTexParameteri(GL_TEXTURE_3D, wrap, GL_CLAMP_TO_EDGE);
     }
     f.glBindTexture(GL_TEXTURE_3D, 0);
-    m_gpu->sectionUploaded = true;
+    return true;
+}
+
+void Renderer::uploadSectionVolume() {
+    m_sectionDirty = false;
+    m_gpu->sectionUploaded = uploadFieldVolume(m_gpu->sectionTexture, m_scene.section);
+}
+
+void Renderer::setFieldUniforms(QOpenGLShaderProgram& program, unsigned texture, int volumeUnit,
+                                int tablesUnit) {
+    GlFunctions& f = *m_gpu->f;
+    const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
+    program.setUniformValue("u_fieldBoxMin", lo.x, lo.y, lo.z);
+    program.setUniformValue("u_fieldBoxMax", hi.x, hi.y, hi.z);
+    program.setUniformValue("u_fieldGridSize", static_cast<float>(m_scene.grid.nx()),
+                            static_cast<float>(m_scene.grid.ny()),
+                            static_cast<float>(m_scene.grid.nz()));
+    program.setUniformValue("u_fieldIndexSamples", kSectionIndexSamples);
+    program.setUniformValue("u_fieldVolume", volumeUnit);
+    program.setUniformValue("u_fieldIndexTables", tablesUnit);
+    f.glUniform3fv(program.uniformLocation("u_viridis"),
+                   static_cast<GLsizei>(kViridisCoefficients.size()),
+                   glm::value_ptr(kViridisCoefficients.front()));
+    f.glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(volumeUnit));
+    f.glBindTexture(GL_TEXTURE_3D, texture);
+    f.glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(tablesUnit));
+    f.glBindTexture(GL_TEXTURE_2D, m_gpu->sectionIndexTables);
+    f.glActiveTexture(GL_TEXTURE0);
 }
 
 void Renderer::uploadSectionIndexTables() {
@@ -109,23 +144,7 @@ void Renderer::drawSection(const glm::mat4& viewProjection) {
     program.bind();
     f.glUniformMatrix4fv(program.uniformLocation("u_viewProjection"), 1, GL_FALSE,
                          glm::value_ptr(viewProjection));
-    const glm::vec3 lo = m_scene.frame.boxMin(), hi = m_scene.frame.boxMax();
-    program.setUniformValue("u_boxMin", lo.x, lo.y, lo.z);
-    program.setUniformValue("u_boxMax", hi.x, hi.y, hi.z);
-    program.setUniformValue("u_gridSize", static_cast<float>(m_scene.grid.nx()),
-                            static_cast<float>(m_scene.grid.ny()),
-                            static_cast<float>(m_scene.grid.nz()));
-    program.setUniformValue("u_indexSamples", kSectionIndexSamples);
-    program.setUniformValue("u_volume", 0);
-    program.setUniformValue("u_indexTables", 1);
-    f.glUniform3fv(program.uniformLocation("u_viridis"),
-                   static_cast<GLsizei>(kViridisCoefficients.size()),
-                   glm::value_ptr(kViridisCoefficients.front()));
-    f.glActiveTexture(GL_TEXTURE0);
-    f.glBindTexture(GL_TEXTURE_3D, m_gpu->sectionTexture);
-    f.glActiveTexture(GL_TEXTURE1);
-    f.glBindTexture(GL_TEXTURE_2D, m_gpu->sectionIndexTables);
-    f.glActiveTexture(GL_TEXTURE0);
+    setFieldUniforms(program, m_gpu->sectionTexture, 0, 1);
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthFunc(GL_LEQUAL);
     f.glDisable(GL_BLEND);

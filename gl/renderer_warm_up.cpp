@@ -41,6 +41,7 @@ void Renderer::warmUp() {
                        data::makeUniformAxis("z", "", 0, 1, 2)));
     setFloorMap(FloorMap::spanning({0.0F, 1.0F, 2.0F, 3.0F}));
     setSectionVolume({std::vector<float>(8, 0.5F), 0.0F, 1.0F, {}, {}});
+    setSpreadVolume({std::vector<float>(8, 0.5F), 0.0F, 1.0F, {}, {}});
     setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         std::vector<geo::MapLine>{{geo::MapLineKind::Coastline, {{0.1, 0.1}, {0.9, 0.9}}, {}}}));
     auto set = std::make_shared<data::MeshSet>();
@@ -56,6 +57,7 @@ void Renderer::warmUp() {
             m_scene.settings.removal = mode == RenderMode::ShadedSilhouettes;
             m_scene.settings.plane.enabled = mode == RenderMode::Spaghetti;
             m_scene.settings.plane.fill = SectionField::Mean;
+            m_scene.settings.contextBySpread = mode == RenderMode::Surfaces;
             render(target.handle(), 8, 8);
             (void)pick(4, 4);
         }
@@ -64,6 +66,7 @@ void Renderer::warmUp() {
     m_scene = std::move(saved);
     m_floorDirty = true;
     m_sectionDirty = true;
+    m_spreadDirty = true;
     m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;

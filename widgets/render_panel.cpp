@@ -37,6 +37,7 @@ RenderPanel::RenderPanel(QWidget* parent)
       m_meanOpacity(new QDoubleSpinBox(this)),
       m_context(new QComboBox(this)),
       m_band(new QCheckBox(tr("Contour boxplot: 50 % band, outliers dashed"), this)),
+      m_contextSpread(new QCheckBox(tr("Colour the context by the spread"), this)),
       m_axes(new QCheckBox(tr("Axis labels"), this)),
       m_legend(new QCheckBox(tr("Cluster legend"), this)),
       m_rims(new QCheckBox(tr("Rims where surfaces meet the box"), this)),
@@ -61,6 +62,7 @@ RenderPanel::RenderPanel(QWidget* parent)
              {m_meanOpacity, "meanOpacity"},
              {m_context, "context"},
              {m_band, "band"},
+             {m_contextSpread, "contextSpread"},
              {m_axes, "axes"},
              {m_legend, "legend"},
              {m_rims, "rims"},
@@ -98,6 +100,8 @@ RenderPanel::RenderPanel(QWidget* parent)
                          tr("Half the members exceed")});
     m_context->setToolTip(settingHelp("context"));
     form->addRow(tr("Context"), m_context);
+    m_contextSpread->setToolTip(settingHelp("context_spread"));
+    form->addRow(m_contextSpread);
     m_band->setToolTip(settingHelp("band"));
     form->addRow(m_band);
 
@@ -168,6 +172,7 @@ RenderPanel::RenderPanel(QWidget* parent)
     connect(m_legend, &QCheckBox::toggled, this, edited);
     connect(m_context, &QComboBox::currentIndexChanged, this, edited);
     connect(m_band, &QCheckBox::toggled, this, edited);
+    connect(m_contextSpread, &QCheckBox::toggled, this, edited);
     connect(m_rims, &QCheckBox::toggled, this, edited);
     for (QCheckBox* box : {m_coastlines, m_borders, m_graticule}) {
         connect(box, &QCheckBox::toggled, this, edited);
@@ -203,7 +208,8 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
         b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity), b15(m_floor),
-        b16(m_floorLevel), b17(m_rims), b18(m_context), b19(m_band);
+        b16(m_floorLevel), b17(m_rims), b18(m_context), b19(m_band),
+        b20(m_contextSpread);
     m_floor->setCurrentIndex(static_cast<int>(settings.floor));
     m_floorLevel->setValue(settings.floorLevel);
     m_meanOpacity->setValue(settings.meanOpacity);
@@ -215,6 +221,7 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     m_rims->setChecked(settings.showRims);
     m_context->setCurrentIndex(static_cast<int>(settings.context));
     m_band->setChecked(settings.showBand);
+    m_contextSpread->setChecked(settings.contextBySpread);
     m_mode->setCurrentIndex(static_cast<int>(settings.mode));
     m_thickness->setValue(settings.thickness);
     m_opacity->setValue(settings.surfaceAlpha);
@@ -242,6 +249,7 @@ gl::RenderSettings RenderPanel::applyTo(gl::RenderSettings settings) const {
     settings.showRims = m_rims->isChecked();
     settings.context = static_cast<gl::ContextSurface>(m_context->currentIndex());
     settings.showBand = m_band->isChecked();
+    settings.contextBySpread = m_contextSpread->isChecked();
     settings.showCoastlines = m_coastlines->isChecked();
     settings.showBorders = m_borders->isChecked();
     settings.showGraticule = m_graticule->isChecked();

@@ -63,6 +63,7 @@ private:
     QDoubleSpinBox* m_meanOpacity;
     QComboBox* m_context;
     QCheckBox* m_band;
+    QCheckBox* m_contextSpread;
     QCheckBox* m_axes;
     QCheckBox* m_legend;
     QCheckBox* m_rims;

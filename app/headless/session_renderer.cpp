@@ -95,6 +95,7 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     // No hover in a picture: the first selected member.
     section.member = state.selection.empty() ? -1 : state.selection.front();
     renderer.setSectionVolume(sectionVolumeFor(section, state.render.plane.fill));
+    renderer.setSpreadVolume(sectionVolumeFor(section, gl::SectionField::StandardDeviation));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;

@@ -33,6 +33,8 @@ uniform bool u_pick;
 uniform int u_pickId;          // 0 = nothing pickable (the mean), else member + 1
 uniform bool u_emphasis;       // a selected member drawn as a surface: a thicker, opaque rim
 uniform bool u_dashed;         // an outlier of the contour boxplot: silhouettes dashed
+uniform bool u_colourByField;  // the context surface coloured by a field (the spread)
+#include "field_lookup.glsl"
 
 layout(location = 0) out vec4 o_color;   // opaque colour, OIT accumulation, or the pick id
 layout(location = 1) out float o_reveal; // OIT revealage
@@ -153,15 +155,17 @@ void main() {
     float rimWidth = clamp(fwidth(rim), 1e-4, kWidestFilter);
     vec2 planeGradient = vec2(dFdx(behindPlane), dFdy(behindPlane));
     if (u_planeEnabled && side > 0.0) discard;
+    // The context surface may take its colour from a field (the members' spread) here.
+    vec3 base = u_colourByField && !u_pick ? fieldColourAt(v_in.position) : u_color;
     if (u_mode == 3) {
-        writeOpaque(lit(u_color, v, n), 1.0);
+        writeOpaque(lit(base, v, n), 1.0);
         return;
     }
     float curve = coverage(plane, planeWidth);
     if (u_mode == 2) {
         // A surface; an emphasised (selected) one has a full-opacity silhouette rim, thicker
         // than the others'; the intersection curve lies over both.
-        vec3 colour = lit(u_color, v, n);
+        vec3 colour = lit(base, v, n);
         float alpha = u_surfaceAlpha * removalFactor();
         float edge = u_emphasis ? coverage(rim, rimWidth) : 0.0;
         colour = mix(colour, u_color, edge);

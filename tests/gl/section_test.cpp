@@ -163,3 +163,47 @@ TEST_F(SectionTest, TheSectionsColourBarIsListedAfterTheFloors) {
     EXPECT_EQ(overlay.colourScales[1].caption, QStringLiteral("section: mean f [K]"));
     EXPECT_EQ(overlay.colourScales[1].maximum, kLargest);
 }
+
+TEST_F(SectionTest, TheContextSurfaceTakesTheColourOfTheSpreadWhereItLies) {
+    // One sphere; its mean (itself) drawn solid as the context, the member hidden. The spread
+    // rises with height: 0 at the bottom of the box, 31 at its top.
+    const data::Ensemble e = spheres({{15.5F, 15.5F, 15.5F}});
+    show(e, {kOrange});
+    m_renderer.setAppearance({{kOrange, false, false}});
+    m_renderer.settings().showMean = true;
+    m_renderer.settings().meanOpacity = 1.0F;
+    gl::SectionVolume spread;
+    spread.values.resize(e.grid.pointCount());
+    for (std::size_t k = 0; k < 32; ++k) {
+        for (std::size_t j = 0; j < 32; ++j) {
+            for (std::size_t i = 0; i < 32; ++i) {
+                spread.values[e.grid.index(i, j, k)] = static_cast<float>(k);
+            }
+        }
+    }
+    spread.maximum = 31.0F;
+    spread.quantity = QStringLiteral("standard deviation of f");
+    spread.units = QStringLiteral("K");
+    m_renderer.setSpreadVolume(spread);
+    // Points on the sphere's side facing the camera, high and low.
+    const float side = std::sqrt(64.0F - 36.0F);
+    const QPoint high = project(display({15.5F, 15.5F - side, 21.5F}));
+    const QPoint low = project(display({15.5F, 15.5F - side, 9.5F}));
+    const QImage gray = draw();
+    const QColor g = gray.pixelColor(high);
+    EXPECT_LE(std::max({std::abs(g.red() - g.green()), std::abs(g.green() - g.blue())}), 8)
+        << "without it, gray";
+    EXPECT_EQ(m_renderer.overlay(kWidth, kHeight).colourScales.size(), 0u);
+
+    m_renderer.settings().contextBySpread = true;
+    const QImage coloured = draw();
+    // High up the spread is large (viridis' yellow-green end: more green than blue), low down
+    // it is small (its purple-blue end: more blue than green).
+    const QColor top = coloured.pixelColor(high), bottom = coloured.pixelColor(low);
+    EXPECT_GT(top.green(), top.blue() + 30) << top.name().toStdString();
+    EXPECT_GT(bottom.blue(), bottom.green() + 30) << bottom.name().toStdString();
+    const gl::ViewOverlay overlay = m_renderer.overlay(kWidth, kHeight);
+    ASSERT_EQ(overlay.colourScales.size(), 1u);
+    EXPECT_EQ(overlay.colourScales[0].caption,
+              QStringLiteral("context: standard deviation of f [K]"));
+}

@@ -27,7 +27,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 30> kSettings{{
+const std::array<Setting, 31> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -87,6 +87,22 @@ const std::array<Setting, 30> kSettings{{
      0, 2, 0, 1, kContextSurfaces,
      [](const SessionState& s) { return static_cast<double>(s.render.context); },
      [](SessionState& s, double v) { s.render.context = static_cast<gl::ContextSurface>(v); }},
+    {"context_spread",
+     SettingKind::Flag,
+     "rendering.context_spread",
+     "context-spread",
+     "rendering/contextSpread",
+     "Colour the context by the spread",
+     "",
+     "The context surface coloured by the members' standard deviation where it lies, with a "
+     "colour bar, instead of gray",
+     0,
+     1,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return s.render.contextBySpread ? 1.0 : 0.0; },
+     [](SessionState& s, double v) { s.render.contextBySpread = v != 0.0; }},
     {"band",
      SettingKind::Flag,
      "rendering.band",
