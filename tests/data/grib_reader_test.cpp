@@ -10,6 +10,7 @@
 #include <random>
 
 #include "data/ensemble_reader.h"
+#include "tests/data/reader_test_helpers.h"
 #include "data/error.h"
 #include "tests/data/grib_test_file.h"
 #include "tests/support/temp_dir.h"
@@ -29,16 +30,6 @@ data::DataSelection select(const std::string& path, const std::string& variable 
     s.variable = variable;
     s.timeIndex = timeIndex;
     return s;
-}
-
-data::Error errorOf(const data::DataSelection& s) {
-    try {
-        (void)data::openEnsemble(s);
-    } catch (const data::Error& e) {
-        return e;
-    }
-    ADD_FAILURE() << "no error for " << s.paths.front();
-    return data::Error(data::ErrorKind::InvalidArgument, "");
 }
 
 bool mentions(const std::exception& e, const std::string& text) {
@@ -362,7 +353,7 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     EXPECT_TRUE(early.warnings.front().find(offset7) != std::string::npos)
         << early.warnings.front();
     EXPECT_TRUE(early.warnings.front().find(cut) != std::string::npos) << early.warnings.front();
-    const data::Error late = errorOf(select(cut, "t", 1));
+    const data::Error late = test::errorOpening(select(cut, "t", 1));
     EXPECT_EQ(late.kind(), data::ErrorKind::CorruptFile);
     EXPECT_TRUE(mentions(late, offset7)) << late.what();
     EXPECT_TRUE(mentions(late, "member 1 at 850 hPa")) << late.what();
@@ -380,7 +371,7 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
         << later.warnings.front();
     EXPECT_TRUE(later.warnings.front().find("bytes long, but the file ends") != std::string::npos)
         << later.warnings.front();
-    EXPECT_EQ(errorOf(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
+    EXPECT_EQ(test::errorOpening(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
 
     // A length shorter than GRIB's own first sections (ecCodes would copy them past the end of
     // the buffer it allocates) is skipped too: the fifth message, time 1.
@@ -437,7 +428,7 @@ TEST(GribReader, ReducedGaussianAndSphericalHarmonicsAreRefusedWithARegridComman
             }
         }
         const std::string path = writeGrib(dir.file(sample + ".grib2"), fields);
-        const data::Error e = errorOf(select(path));
+        const data::Error e = test::errorOpening(select(path));
         EXPECT_EQ(e.kind(), data::ErrorKind::UnsupportedFormat) << e.what();
         EXPECT_TRUE(mentions(e, command + " " + path)) << e.what();
     }
@@ -483,7 +474,7 @@ TEST(GribReader, WindSpeedFromUAndVOnTheirCommonLevels) {
         1e-3);
 
     const std::string apart = write("apart.grib2", {850, 700}, {500, 300});
-    const data::Error error = errorOf(select(apart, "wind_speed"));
+    const data::Error error = test::errorOpening(select(apart, "wind_speed"));
     EXPECT_EQ(error.kind(), data::ErrorKind::NotThreeDimensional);
     EXPECT_TRUE(mentions(error, "at least two common levels")) << error.what();
     EXPECT_TRUE(mentions(error, "700 hPa")) << error.what();
@@ -508,7 +499,7 @@ TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
         }
     }
     const std::string path = writeGrib(dir.file("forecast.grib2"), fields);
-    const data::Error alone = errorOf(select(path));
+    const data::Error alone = test::errorOpening(select(path));
     EXPECT_EQ(alone.kind(), data::ErrorKind::MemberDimensionNotFound) << alone.what();
     EXPECT_EQ(alone.choices(), std::vector<std::string>{"time"});
 
@@ -525,7 +516,7 @@ TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
         1e-3);
 
     // Three times: index 3 is past their end.
-    const data::Error past = errorOf(select(path, "t", 3));
+    const data::Error past = test::errorOpening(select(path, "t", 3));
     EXPECT_EQ(past.kind(), data::ErrorKind::InvalidArgument);
     EXPECT_TRUE(mentions(past, "dimension 'time'")) << past.what();
 }

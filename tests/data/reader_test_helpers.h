@@ -19,6 +19,17 @@ inline data::DataSelection selection(std::vector<std::string> paths, std::string
     return s;
 }
 
+// The error openEnsemble throws for the selection; a test failure when it opens without one.
+inline data::Error errorOpening(const data::DataSelection& s) {
+    try {
+        (void)data::openEnsemble(s);
+    } catch (const data::Error& e) {
+        return e;
+    }
+    ADD_FAILURE() << "no error for " << s.paths.front();
+    return data::Error(data::ErrorKind::InvalidArgument, "");
+}
+
 // The error a reader throws for the selection; a test failure when it reads without one.
 template <typename Reader>
 data::Error errorFrom(const data::DataSelection& chosen) {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "data/ensemble_reader.h"
+#include "tests/data/reader_test_helpers.h"
 #include "data/error.h"
 
 using namespace ensil;
@@ -24,15 +25,6 @@ float rawValue(const std::string& path, const char* var, std::vector<std::size_t
     return value;
 }
 
-data::Error errorOf(const data::DataSelection& s) {
-    try {
-        (void)data::openEnsemble(s);
-    } catch (const data::Error& e) {
-        return e;
-    }
-    ADD_FAILURE() << "no error for " << s.paths.front();
-    return data::Error(data::ErrorKind::InvalidArgument, "");
-}
 }  // namespace
 
 TEST(RealFiles, Era5EdaIsATenMemberEnsembleAlongNumber) {
@@ -74,7 +66,7 @@ TEST(RealFiles, Era5InNetcdfAndGribHasTheSameFourDatedSteps) {
 
 TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
     const std::string path = shared("eraint_uvz.nc");
-    EXPECT_EQ(errorOf({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
+    EXPECT_EQ(test::errorOpening({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
     const data::DataSelection u{.paths = {path}, .variable = "u", .memberDimension = "month"};
     const data::Ensemble eu = data::openEnsemble(u);
     ASSERT_EQ(eu.memberCount(), 2u);
@@ -99,7 +91,7 @@ TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
 }
 
 TEST(RealFiles, GloSea4HasNoVerticalAxisAndSaysSo) {
-    const data::Error e = errorOf({.paths = {shared("glosea4_surface_temperature_ensemble.nc")}});
+    const data::Error e = test::errorOpening({.paths = {shared("glosea4_surface_temperature_ensemble.nc")}});
     EXPECT_EQ(e.kind(), data::ErrorKind::NotThreeDimensional);
     const std::string m = e.what();
     EXPECT_NE(m.find("surface_temperature"), std::string::npos) << m;
@@ -121,7 +113,7 @@ TEST(RealFiles, UkHiresTimeStandsInForMembersOnHybridHeights) {
 
 TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
     const std::string path = shared("contour.cdf");
-    const data::Error e = errorOf({.paths = {path}});
+    const data::Error e = test::errorOpening({.paths = {path}});
     EXPECT_EQ(e.kind(), data::ErrorKind::MemberDimensionNotFound);
     EXPECT_NE(std::string(e.what()).find("--member-dim frtime"), std::string::npos) << e.what();
 
