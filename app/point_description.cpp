@@ -68,7 +68,7 @@ QString describePoint(const PointContext& c, const gl::PickResult& hit) {
     if (hit.section && c.section != nullptr &&
         c.section->values.size() == e.grid.pointCount()) {
         const glm::dvec3 index = c.frame->displayToIndex(*hit.section);
-        const float v = data::sampleTrilinear(e.grid, c.section->values, index);
+        const float v = gl::sectionValueAt(*c.section, e.grid, *c.frame, *hit.section);
         return QStringLiteral("%1 \u00b7 %2 \u00b7 %3 %4")
             .arg(place(c, index), level(e.grid.z(), index.z), c.section->quantity,
                  value(v, c.section->units.toStdString()));

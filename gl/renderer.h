@@ -82,6 +82,11 @@ struct SectionVolume {
     }
 };
 
+// The volume's value at a display-space point of this grid and frame (trilinear, NaN where
+// missing or when the volume does not fit the grid): what the filled cut face shows there.
+float sectionValueAt(const SectionVolume& volume, const data::Grid& grid,
+                     const data::DisplayFrame& frame, const glm::vec3& display);
+
 class Renderer {
 public:
     Renderer();

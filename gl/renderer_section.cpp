@@ -34,10 +34,15 @@ bool Renderer::sectionShown() const {
            m_scene.section.values.size() == m_scene.grid.pointCount();
 }
 
+float sectionValueAt(const SectionVolume& volume, const data::Grid& grid,
+                     const data::DisplayFrame& frame, const glm::vec3& display) {
+    if (volume.values.size() != grid.pointCount()) return std::numeric_limits<float>::quiet_NaN();
+    return data::sampleTrilinear(grid, volume.values, frame.displayToIndex(display));
+}
+
 float Renderer::sectionValueAt(const glm::vec3& display) const {
     if (!sectionShown()) return std::numeric_limits<float>::quiet_NaN();
-    return data::sampleTrilinear(m_scene.grid, m_scene.section.values,
-                                 m_scene.frame.displayToIndex(display));
+    return gl::sectionValueAt(m_scene.section, m_scene.grid, m_scene.frame, display);
 }
 
 void Renderer::setSpreadVolume(SectionVolume volume) {
