@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "app/headless/isovalue_job.h"
+#include "preprocessing/preview_meshes.h"
 #include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
 
@@ -45,6 +46,7 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey) {
     m_job.cancel();
+    forgetPreviews();
     m_ensemble = std::move(ensemble);
     m_moments = std::move(moments);
     m_sourceKey = std::move(sourceKey);
@@ -60,15 +62,17 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     const std::string cacheDirectory = m_cacheDirectory.toStdString();
     const prep::Linkage linkage = m_linkage;
     emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
+    // The full surfaces take over from a preview: none is built or waits any more.
+    m_previewJob.cancel();
+    m_pendingPreview.reset();
     // A result kept from before (a time step or isovalue visited again) is shown as it was,
     // through the same job so that a newer request still drops it.
-    const std::string key = sourceKey + "; iso=" + std::to_string(isovalue) +
-                            "; exaggeration=" + std::to_string(exaggeration) +
-                            "; linkage=" + std::to_string(static_cast<int>(linkage));
+    const std::string key = resultKey(isovalue, exaggeration);
     std::shared_ptr<const IsovalueResult> kept;
     for (const auto& [keptKey, result] : m_kept) {
         if (keptKey == key) kept = result;
     }
+    m_buildInFlight = true;
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) {
             QElapsedTimer timer;
@@ -105,6 +109,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             return r;
         },
         [this, isovalue, key](IsovalueResult r) {
+            m_buildInFlight = false;
             if (!r.keptInMemory) {
                 // The most recent first; the oldest go beyond kKeptResults.
                 std::erase_if(m_kept, [&key](const auto& entry) { return entry.first == key; });
@@ -114,6 +119,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             show(std::move(r), isovalue);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
+            m_buildInFlight = false;
             if (cancelled || !error) {
                 emit failed(tr("Isosurfaces cancelled"));
                 return;
@@ -131,7 +137,8 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
 
 void IsovalueSession::show(IsovalueResult result, float isovalue) {
     m_result = std::make_unique<IsovalueResult>(std::move(result));
-    m_view->renderer().setMeshes(m_result->meshes);
+    // While the user scrubs, the view follows the pointer; endPreview shows these after.
+    if (!m_previewing) m_view->renderer().setMeshes(m_result->meshes);
     // Same names: the selection keeps what the user selected and hid.
     ui::MemberFigures figures;
     figures.names = memberNames();
@@ -152,8 +159,108 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
                       .arg(m_result->keptInMemory ? tr(" (kept in memory)")
                            : m_result->fromCache  ? tr(" (from the cache)")
                                                   : QString())
-                      .arg(warning.empty() ? QString()
-                                           : tr(". Note: %1").arg(QString::fromStdString(warning))));
+                      .arg(warning.empty()
+                               ? QString()
+                               : tr(". Note: %1").arg(QString::fromStdString(warning))));
+}
+
+std::string IsovalueSession::resultKey(float isovalue, float exaggeration) const {
+    return m_sourceKey + "; iso=" + std::to_string(isovalue) +
+           "; exaggeration=" + std::to_string(exaggeration) +
+           "; linkage=" + std::to_string(static_cast<int>(m_linkage));
+}
+
+void IsovalueSession::forgetPreviews() {
+    m_previewJob.cancel();
+    m_pendingPreview.reset();
+    m_keptPreviews.clear();
+    m_previewsBuilt = 0;
+}
+
+void IsovalueSession::previewIsovalue(float isovalue, float exaggeration) {
+    if (!m_ensemble || !m_moments) return;
+    if (!m_previewing) {
+        m_previewing = true;
+        m_view->beginInteraction();  // frames at the resolution motion gets, see SilhouetteView
+    }
+    if (m_previewInFlight) {
+        // The newest value replaces the one waiting: values the pointer passed are dropped.
+        m_pendingPreview = PreviewRequest{isovalue, exaggeration};
+        return;
+    }
+    startPreview(isovalue, exaggeration);
+}
+
+void IsovalueSession::startPreview(float isovalue, float exaggeration) {
+    const std::string key = resultKey(isovalue, exaggeration);
+    // Shown before, in full or as a preview: at once, from memory.
+    for (const auto& [keptKey, result] : m_kept) {
+        if (keptKey == key) return showPreview(result->meshes, isovalue, 0.0);
+    }
+    for (const auto& [keptKey, meshes] : m_keptPreviews) {
+        if (keptKey == key) return showPreview(meshes, isovalue, 0.0);
+    }
+    const auto ensemble = m_ensemble;
+    const auto moments = m_moments;
+    // The median and outliers stay marked as the full result last said.
+    const int median = m_result && m_result->meshes ? m_result->meshes->median : -1;
+    const std::vector<int> outliers =
+        m_result && m_result->meshes ? m_result->meshes->outliers : std::vector<int>{};
+    m_previewInFlight = true;
+    m_previewJob.start(
+        [=](const std::stop_token& stop, const data::Progress&) {
+            QElapsedTimer timer;
+            timer.start();
+            auto meshes = std::make_shared<prep::IsovalueMeshes>(prep::buildPreviewMeshes(
+                *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration), isovalue, {},
+                stop));
+            meshes->median = median;
+            meshes->outliers = outliers;
+            return BuiltPreview{std::move(meshes),
+                                static_cast<double>(timer.nsecsElapsed()) * 1e-9};
+        },
+        [this, key, isovalue](BuiltPreview built) {
+            m_previewInFlight = false;
+            ++m_previewsBuilt;
+            m_keptPreviews.emplace(m_keptPreviews.begin(), key, built.meshes);
+            if (m_keptPreviews.size() > kKeptPreviews) m_keptPreviews.resize(kKeptPreviews);
+            showPreview(std::move(built.meshes), isovalue, built.seconds);
+        },
+        // A preview overtaken by the full surfaces or a new ensemble is dropped; one that
+        // fails says nothing (the full build on release reports the same problem).
+        [this](const std::exception_ptr&, bool) {
+            m_previewInFlight = false;
+            startWaitingPreview();
+        });
+}
+
+void IsovalueSession::showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue,
+                                  double seconds) {
+    if (!m_previewing) return;  // the scrub ended while it was built
+    m_view->renderer().setMeshes(std::move(meshes));
+    m_view->update();
+    emit previewShown(isovalue, seconds);
+    startWaitingPreview();
+}
+
+void IsovalueSession::startWaitingPreview() {
+    if (!m_pendingPreview || !m_previewing) return;
+    const PreviewRequest next = *m_pendingPreview;
+    m_pendingPreview.reset();
+    startPreview(next.isovalue, next.verticalExaggeration);
+}
+
+void IsovalueSession::endPreview() {
+    if (!m_previewing) return;
+    m_previewing = false;
+    m_previewJob.cancel();
+    m_pendingPreview.reset();
+    m_view->endInteraction();
+    // Released where it started: the full surfaces of that value come back.
+    if (!m_buildInFlight && m_result) {
+        m_view->renderer().setMeshes(m_result->meshes);
+        m_view->update();
+    }
 }
 
 std::vector<int> IsovalueSession::labels() const { return m_selection->labels(); }

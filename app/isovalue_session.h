@@ -5,11 +5,17 @@
 // figures and the merge tree to the shared MemberSelection (which colours the view and feeds
 // the panels; see MainWindow). The previous isovalue stays on screen until the new one is
 // ready; a newer request drops an older result. The number of clusters and the linkage change
-// at once from the kept distances. GUI thread only.
+// at once from the kept distances.
+// While the isovalue is scrubbed (the slider dragged), previewIsovalue shows reduced-detail
+// surfaces (preprocessing/preview_meshes.h) for the value under the pointer: one preview is
+// built at a time and at most one value waits, the newest, so the view follows the pointer
+// and never lags behind a queue; the members keep their cluster colours meanwhile. The full
+// result of the value released replaces the preview. GUI thread only.
 #pragma once
 
 #include <QObject>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,7 +45,7 @@ struct IsovalueResult {
     std::vector<double> depth;
     int medianMember = -1;
     std::vector<int> outliers;
-    std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
+    std::vector<float> exceedanceColumnMaximum;           // for the floor: max over z of P(f > c)
     std::shared_ptr<const data::FieldValues> exceedance;  // P(f > c), for a section
     std::size_t triangles = 0;
     double seconds = 0.0;
@@ -71,6 +77,18 @@ public:
     [[nodiscard]] prep::Linkage linkage() const { return m_linkage; }
     void cancel() { m_job.cancel(); }
 
+    // Shows this isovalue's preview surfaces as soon as they can be built (see above).
+    void previewIsovalue(float isovalue, float verticalExaggeration);
+    // The scrub is over: a waiting value is dropped. The preview stays on screen while the
+    // released value's full surfaces are built (setIsovalue, called before this), else the
+    // full surfaces shown before come back.
+    void endPreview();
+    // 0 or 1: the value waiting for the preview being built.
+    [[nodiscard]] int pendingPreviews() const { return m_pendingPreview ? 1 : 0; }
+    [[nodiscard]] bool isPreviewing() const { return m_previewing; }
+    // Previews built since the ensemble was set (not those shown again from memory).
+    [[nodiscard]] int previewsBuilt() const { return m_previewsBuilt; }
+
     [[nodiscard]] const IsovalueResult* result() const { return m_result.get(); }
     [[nodiscard]] std::vector<int> labels() const;
     [[nodiscard]] bool isRunning() const { return m_job.isRunning(); }
@@ -78,15 +96,24 @@ public:
     // The last results built, kept whole (meshes, distances, clusters, summaries) so that a
     // time step or isovalue visited again is shown without rebuilding: a few MiB each.
     static constexpr std::size_t kKeptResults = 24;
+    // Previews kept for a scrub back over the same values: about 0.5 MiB each.
+    static constexpr std::size_t kKeptPreviews = 32;
 
 signals:
     void started(const QString& what);
     void progressed(double fraction);
     void finished(const QString& summary);
     void failed(const QString& message);
+    // A preview is on screen (handed to the view, which repaints); seconds to build it.
+    void previewShown(float isovalue, double seconds);
 
 private:
     void show(IsovalueResult result, float isovalue);
+    void startPreview(float isovalue, float verticalExaggeration);
+    void startWaitingPreview();
+    void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
+    [[nodiscard]] std::string resultKey(float isovalue, float verticalExaggeration) const;
+    void forgetPreviews();
     std::vector<std::pair<std::string, std::shared_ptr<const IsovalueResult>>> m_kept;
     [[nodiscard]] QStringList memberNames() const;
 
@@ -99,6 +126,24 @@ private:
     std::unique_ptr<IsovalueResult> m_result;
     prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};
+
+    struct PreviewRequest {
+        float isovalue = 0.0F;
+        float verticalExaggeration = 1.0F;
+    };
+    struct BuiltPreview {
+        std::shared_ptr<const data::MeshSet> meshes;
+        double seconds = 0.0;
+    };
+    BackgroundJob<BuiltPreview> m_previewJob{this};
+    std::optional<PreviewRequest> m_pendingPreview;
+    bool m_previewing = false;
+    // A preview job started and not yet handed back (done or dropped): until then new values
+    // wait. BackgroundJob::isRunning turns false before its result reaches the GUI thread.
+    bool m_previewInFlight = false;
+    bool m_buildInFlight = false;  // the same for the full surfaces' job
+    int m_previewsBuilt = 0;
+    std::vector<std::pair<std::string, std::shared_ptr<const data::MeshSet>>> m_keptPreviews;
 };
 
 }  // namespace ensil::app

@@ -53,6 +53,25 @@ void MainWindow::bindSession() {
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, [this](double v) {
         m_model->update([v](session::SessionState& s) { s.isovalue = static_cast<float>(v); });
     });
+    // Scrubbing previews without touching the session: only the released value is a change
+    // (saved, undoable); the preview is the view following the pointer.
+    connect(m_toolbar, &ui::RenderToolbar::isovalueScrubbed, this, [this](double v) {
+        if (!m_overview) return;
+        m_session->previewIsovalue(static_cast<float>(v), m_model->state().verticalExaggeration);
+    });
+    connect(m_toolbar, &ui::RenderToolbar::isovalueScrubEnded, this, [this] {
+        m_session->endPreview();
+        // The title names the value committed (the preview's may have been a dropped one).
+        const std::optional<float> committed = m_model->state().isovalue;
+        if (!m_overview || !committed) return;
+        m_view->renderer().setTitle(
+            QString::fromStdString(pictureTitle(*m_overview->ensemble, *committed)));
+    });
+    connect(m_session, &IsovalueSession::previewShown, this, [this](float isovalue) {
+        if (!m_overview) return;
+        m_view->renderer().setTitle(
+            QString::fromStdString(pictureTitle(*m_overview->ensemble, isovalue)));
+    });
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this,
             [this](int k) { m_model->update([k](session::SessionState& s) { s.clusters = k; }); });
     connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, [this](prep::Linkage l) {

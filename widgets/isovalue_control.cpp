@@ -2,6 +2,7 @@
 
 #include <QBoxLayout>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <algorithm>
@@ -25,7 +26,9 @@ IsovalueControl::IsovalueControl(QWidget* parent)
     m_slider->setRange(0, kSliderSteps);
     m_slider->setSingleStep(kSingleStepTicks);
     m_slider->setPageStep(kPageStepTicks);
-    m_slider->setToolTip(tr("Drag to choose the isovalue; the surfaces are built on release"));
+    m_slider->setToolTip(
+        tr("Drag to choose the isovalue: the surfaces follow at reduced detail, in full on "
+           "release"));
     // The spin box hands on a value when the user commits it (Enter, focus out, a step), not
     // on every keystroke.
     m_spin->setKeyboardTracking(false);
@@ -44,18 +47,26 @@ IsovalueControl::IsovalueControl(QWidget* parent)
     row->addWidget(m_spin);
     setFocusProxy(m_slider);
     setEnabled(false);
+    m_slider->installEventFilter(this);
+    m_spin->installEventFilter(this);
+    m_wheelSettle.setSingleShot(true);
+    m_wheelSettle.setInterval(kWheelSettleMs);
+    connect(&m_wheelSettle, &QTimer::timeout, this, [this] {
+        m_wheeling = false;
+        endScrub(value());
+    });
 
     connect(m_slider, &QSlider::valueChanged, this, &IsovalueControl::onSliderMoved);
     connect(m_slider, &QSlider::sliderReleased, this,
-            [this] { commit(valueAtSliderPosition(m_slider->value())); });
+            [this] { endScrub(valueAtSliderPosition(m_slider->value())); });
     connect(m_spin, &QDoubleSpinBox::valueChanged, this, &IsovalueControl::onSpinCommitted);
     connect(m_spin, &QDoubleSpinBox::editingFinished, this,
             [this] { onSpinCommitted(m_spin->value()); });
     connect(m_strip, &HistogramStrip::valuePreviewed, this, [this](double v) {
         m_slider->setFocus(Qt::MouseFocusReason);  // so PageUp/PageDown work after a click
-        showValue(v);
+        scrub(v);
     });
-    connect(m_strip, &HistogramStrip::valuePicked, this, &IsovalueControl::commit);
+    connect(m_strip, &HistogramStrip::valuePicked, this, &IsovalueControl::endScrub);
 }
 
 void IsovalueControl::setRange(double minimum, double maximum, double value, const QString& units) {
@@ -101,14 +112,44 @@ int IsovalueControl::sliderPositionOf(double value) const {
 }
 
 void IsovalueControl::onSliderMoved(int position) {
-    showValue(valueAtSliderPosition(position));
-    // A drag commits on release; a step by key, wheel or click on the groove commits now.
-    if (!m_slider->isSliderDown()) commit(valueAtSliderPosition(position));
+    const double v = valueAtSliderPosition(position);
+    // A drag or the wheel previews, committing on release or a pause; a step by key or a click
+    // on the groove commits now.
+    if (m_slider->isSliderDown() || m_wheeling) {
+        scrub(v);
+    } else {
+        showValue(v);
+        commit(v);
+    }
 }
 
 void IsovalueControl::onSpinCommitted(double value) {
+    if (m_wheeling) return scrub(value);
     showValue(value);
     commit(value);
+}
+
+bool IsovalueControl::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Wheel && isEnabled()) {
+        // The steps this wheel event makes (valueChanged, just after) preview; the pause
+        // after the last one commits.
+        m_wheeling = true;
+        m_wheelSettle.start();
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void IsovalueControl::scrub(double value) {
+    showValue(value);
+    m_scrubbing = true;
+    emit isovalueScrubbed(m_spin->value());
+}
+
+void IsovalueControl::endScrub(double value) {
+    commit(value);
+    if (!m_scrubbing) return;
+    m_scrubbing = false;
+    emit scrubEnded();
 }
 
 void IsovalueControl::showValue(double value) {

@@ -2,11 +2,14 @@
 // isovalue marked, a slider over [minimum, maximum] and a spin box (decimals suited to the
 // range, units suffix), kept in step. isovalueChanged is emitted once per commit (slider
 // release, a slider or spin-box step, Enter or focus leaving the spin box, release on the
-// strip), never per dragged pixel, because each commit restarts preprocessing; while dragging,
-// all three show the value under the mouse. PageUp/PageDown step by a tenth of the range.
-// GUI thread only.
+// strip, a pause in turning the wheel), never per dragged pixel, because each commit restarts
+// the full preprocessing. While dragging (or turning the wheel over the slider or spin box),
+// all three show the value under the pointer and isovalueScrubbed hands it on for a quick
+// preview; scrubEnded follows the commit that ends it. PageUp/PageDown step by a tenth of the
+// range. GUI thread only.
 #pragma once
 
+#include <QTimer>
 #include <QWidget>
 #include <cstdint>
 #include <vector>
@@ -43,8 +46,18 @@ public:
     [[nodiscard]] QSlider* slider() const { return m_slider; }
     [[nodiscard]] HistogramStrip* histogram() const { return m_strip; }
 
+    // Quiet time after the last wheel step before its value is committed.
+    static constexpr int kWheelSettleMs = 300;
+
 signals:
     void isovalueChanged(double value);
+    // The value under the pointer while it moves (not committed): for a preview.
+    void isovalueScrubbed(double value);
+    // The scrub is over; emitted after the isovalueChanged of the value released, if any.
+    void scrubEnded();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void onSliderMoved(int position);
@@ -52,6 +65,8 @@ private:
     // Shows `value` in the strip, slider and spin box without committing it.
     void showValue(double value);
     void commit(double value);
+    void scrub(double value);
+    void endScrub(double value);
 
     HistogramStrip* m_strip;
     QSlider* m_slider;
@@ -59,6 +74,9 @@ private:
     double m_minimum = 0.0;
     double m_maximum = 1.0;
     double m_committed = 0.0;  // the last value handed on, so a commit is not repeated
+    bool m_scrubbing = false;
+    bool m_wheeling = false;  // wheel steps preview; the pause after them commits
+    QTimer m_wheelSettle;
 };
 
 }  // namespace ensil::ui

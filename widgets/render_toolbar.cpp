@@ -27,6 +27,8 @@ RenderToolbar::RenderToolbar(QWidget* parent)
 
     // Preprocessing starts when the user commits a value, not on every keystroke or drag step.
     connect(m_isovalue, &IsovalueControl::isovalueChanged, this, &RenderToolbar::isovalueChanged);
+    connect(m_isovalue, &IsovalueControl::isovalueScrubbed, this, &RenderToolbar::isovalueScrubbed);
+    connect(m_isovalue, &IsovalueControl::scrubEnded, this, &RenderToolbar::isovalueScrubEnded);
     connect(m_clusters, &QSpinBox::valueChanged, this, &RenderToolbar::clusterCountChanged);
 }
 

@@ -33,6 +33,9 @@ public:
 
 signals:
     void isovalueChanged(double value);
+    // While the isovalue is dragged (IsovalueControl): the value under the pointer, then the end.
+    void isovalueScrubbed(double value);
+    void isovalueScrubEnded();
     void clusterCountChanged(int k);
 
 private:

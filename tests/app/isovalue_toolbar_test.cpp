@@ -6,6 +6,7 @@
 #include <QSlider>
 #include <QTest>
 
+#include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/support/scoped_cache_home.h"
@@ -54,4 +55,74 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
     EXPECT_NEAR(second->isovalue, control->value(), 1e-3);
     EXPECT_NEAR(control->value(), 0.5 * (stats.minimum + stats.maximum),
                 (stats.maximum - stats.minimum) / 1000.0);
+}
+
+TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurfacesOfTheRelease) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    window.resize(1000, 700);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    app::IsovalueSession* session = window.isovalueSession();
+    QSignalSpy built(session, &app::IsovalueSession::finished);
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
+    ASSERT_TRUE(loaded.wait(30000));
+    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+    ui::IsovalueControl* control = window.renderToolbar()->isovalueControl();
+    QSignalSpy shown(session, &app::IsovalueSession::previewShown);
+
+    // A drag over twenty values, faster than any preview is built: the first is built, the
+    // newest waits, every value between is dropped.
+    QSlider* slider = control->slider();
+    slider->setSliderDown(true);
+    for (int p = 100; p <= 860; p += 40) {
+        slider->setSliderPosition(p);
+        ASSERT_LE(session->pendingPreviews(), 1) << "at position " << p;
+    }
+    EXPECT_EQ(session->pendingPreviews(), 1);
+    const auto last = static_cast<float>(control->value());
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return !shown.isEmpty() && shown.last().at(0).toFloat() == last; }, 60000));
+    EXPECT_EQ(session->previewsBuilt(), 2) << "the first value and the newest, nothing between";
+    EXPECT_EQ(session->pendingPreviews(), 0);
+    const auto preview = window.view()->renderer().meshes();
+    ASSERT_NE(preview, nullptr);
+    EXPECT_EQ(preview->isovalue, last) << "the view shows the value under the pointer";
+    EXPECT_EQ(built.count(), 1) << "no full build while dragging";
+
+    // Dragging back over a value seen is shown from memory, at once, without a build.
+    const qsizetype before = shown.count();
+    slider->setSliderPosition(100);
+    EXPECT_EQ(shown.count(), before + 1);
+    EXPECT_EQ(window.view()->renderer().meshes()->isovalue, shown.first().at(0).toFloat())
+        << "the first value previewed";
+    EXPECT_EQ(session->previewsBuilt(), 2);
+    slider->setSliderPosition(860);
+
+    // The release builds the full surfaces; the preview stays until they are ready.
+    slider->setSliderDown(false);
+    EXPECT_FALSE(session->isPreviewing());
+    EXPECT_EQ(window.view()->renderer().meshes()->isovalue, last);
+    ASSERT_TRUE(built.wait(60000));
+    const auto final = window.view()->renderer().meshes();
+    EXPECT_EQ(final->isovalue, last);
+    EXPECT_GT(final->gpuBytes(), 0u);
+
+    // The picture is the one of the surfaces built directly for that isovalue, without a scrub.
+    const QSize size(480, 300);
+    const QImage scrubbed = window.view()->renderImage(size);
+    app::IsovalueJobInput input;
+    input.ensemble = window.overview()->ensemble.get();
+    input.moments = window.overview()->moments.get();
+    input.options.isovalue = last;
+    input.verticalExaggeration = window.view()->renderer().frame().verticalExaggeration();
+    const app::IsovalueOutcome direct = app::runIsovalueJob(input);
+    window.view()->renderer().setMeshes(std::make_shared<data::MeshSet>(direct.meshes));
+    const QImage directly = window.view()->renderImage(size);
+    ASSERT_FALSE(scrubbed.isNull());
+    EXPECT_EQ(scrubbed, directly);
+    // And a preview is not: it would have shown the coarser surfaces.
+    window.view()->renderer().setMeshes(preview);
+    EXPECT_NE(window.view()->renderImage(size), directly);
 }

@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
+#include <QWheelEvent>
 #include <cmath>
 
 #include "widgets/histogram_strip.h"
@@ -103,6 +105,58 @@ TEST(IsovalueControl, DraggingTheSliderShowsValuesAndCommitsOnceOnRelease) {
     slider->setSliderDown(false);
     ASSERT_EQ(committed.count(), 2);
     EXPECT_NEAR(committed.back().front().toDouble(), kMax, 0.005);
+}
+
+TEST(IsovalueControl, ADragScrubsEveryValueUnderThePointerThenEndsAfterItsCommit) {
+    IsovalueControl control;
+    control.setRange(kMin, kMax, 10.0, QString());
+    QStringList order;  // the order the signals came in
+    QList<double> scrubbed;
+    QObject::connect(&control, &IsovalueControl::isovalueScrubbed, [&](double v) {
+        scrubbed << v;
+        order << QStringLiteral("scrub");
+    });
+    QObject::connect(&control, &IsovalueControl::isovalueChanged,
+                     [&] { order << QStringLiteral("commit"); });
+    QObject::connect(&control, &IsovalueControl::scrubEnded,
+                     [&] { order << QStringLiteral("end"); });
+    QSlider* slider = control.slider();
+    slider->setSliderDown(true);
+    for (int p = 100; p <= 400; p += 100) slider->setSliderPosition(p);
+    ASSERT_EQ(scrubbed.size(), 4);
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_NEAR(scrubbed[i], control.valueAtSliderPosition(100 * (i + 1)), 0.005);
+    }
+    slider->setSliderDown(false);
+    // The session starts the released value's full build before it hears the scrub is over.
+    EXPECT_EQ(order.mid(4), (QStringList{QStringLiteral("commit"), QStringLiteral("end")}));
+
+    // A step by key is no scrub.
+    order.clear();
+    slider->triggerAction(QAbstractSlider::SliderSingleStepAdd);
+    EXPECT_EQ(order, QStringList{QStringLiteral("commit")});
+}
+
+TEST(IsovalueControl, TurningTheWheelScrubsAndCommitsOnceWhenItPauses) {
+    IsovalueControl control;
+    control.setRange(0.0, 100.0, 50.0, QString());
+    control.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&control));
+    QSignalSpy scrubbed(&control, &IsovalueControl::isovalueScrubbed);
+    QSignalSpy committed(&control, &IsovalueControl::isovalueChanged);
+    QSignalSpy ended(&control, &IsovalueControl::scrubEnded);
+    QDoubleSpinBox* spin = control.spinBox();
+    const QPoint centre = spin->rect().center();
+    for (int turn = 0; turn < 5; ++turn) {
+        QWheelEvent wheel(centre, spin->mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(spin, &wheel);
+    }
+    EXPECT_EQ(scrubbed.count(), 5) << "each wheel step previews";
+    EXPECT_EQ(committed.count(), 0) << "no rebuild per wheel step";
+    ASSERT_TRUE(ended.wait(5000));
+    ASSERT_EQ(committed.count(), 1);
+    EXPECT_NEAR(committed.front().front().toDouble(), 55.0, 1e-9) << "five steps of 1 % of 100";
 }
 
 TEST(IsovalueControl, DraggingOnTheHistogramCommitsOnceOnRelease) {
