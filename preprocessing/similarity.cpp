@@ -176,6 +176,28 @@ void DistanceSums::merge(const DistanceSums& other) {
     for (std::size_t k = 0; k < m_sums.size(); ++k) m_sums[k] += other.m_sums[k];
 }
 
+DistanceSums DistanceSums::subset(std::span<const std::size_t> keep) const {
+    DistanceSums out(keep.size(), m_isovalue);
+    const std::size_t n = m_members, k = keep.size();
+    for (std::size_t a = 0; a < k; ++a) {
+        if (keep[a] >= n) {
+            throw data::Error(data::ErrorKind::InvalidArgument,
+                              "member " + std::to_string(keep[a]) + " is not among the " +
+                                  std::to_string(n) + " of the distance sums");
+        }
+    }
+    // Column-major n x n matrices one after another, as PairSumsView reads them.
+    for (std::size_t matrix = 0; matrix < 3; ++matrix) {
+        const double* from = m_sums.data() + matrix * n * n;
+        double* to = out.m_sums.data() + matrix * k * k;
+        for (std::size_t b = 0; b < k; ++b) {
+            for (std::size_t a = 0; a < k; ++a) to[a + b * k] = from[keep[a] + keep[b] * n];
+        }
+    }
+    out.m_sums.back() = points();
+    return out;
+}
+
 DistanceMatrix DistanceSums::finish() const {
     const std::size_t n = m_members;
     DistanceMatrix result;

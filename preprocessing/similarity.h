@@ -53,6 +53,10 @@ public:
     // Adds another part's sums (made for the same members and isovalue, over other points).
     // Throws data::Error(InvalidArgument) otherwise.
     void merge(const DistanceSums& other);
+    // The sums of the members `keep` (indices, increasing) alone, as if only they had been
+    // added: a member found to have no data after its points were added is left out this way.
+    // Throws data::Error(InvalidArgument) for an index out of range.
+    [[nodiscard]] DistanceSums subset(std::span<const std::size_t> keep) const;
     // The sums as one array of doubles, laid out alike for the same member count: adding two
     // such arrays element by element is merge(), so an MPI_SUM reduction of them combines ranks.
     [[nodiscard]] std::span<double> raw() { return m_sums; }

@@ -162,3 +162,17 @@ TEST(DistanceSums, NoPointsAddedCannotBeMeasured) {
     const prep::DistanceSums sums(2, 1.0F);
     EXPECT_THROW((void)sums.finish(), data::Error);
 }
+
+TEST(DistanceSums, ASubsetOfTheMembersIsTheirOwnSums) {
+    // Members 1 and 3 left out after their points were added: the rest's matrix equals the one
+    // computed without them.
+    const data::Ensemble e = randomEnsemble();
+    prep::DistanceSums all(e.memberCount(), 25.0F);
+    all.add(pointsOf(e, 0, e.grid.pointCount()));
+    const std::vector<std::size_t> keep{0, 2, 4, 5};
+    data::Ensemble fewer = e;
+    fewer.members = {e.members[0], e.members[2], e.members[4], e.members[5]};
+    expectSameMatrix(all.subset(keep).finish(), prep::computeDistanceMatrix(fewer, 25.0F), 1e-12);
+    const std::vector<std::size_t> beyond{0, 6};
+    EXPECT_THROW((void)all.subset(beyond), data::Error);
+}

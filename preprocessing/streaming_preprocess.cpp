@@ -1,0 +1,253 @@
+#include "preprocessing/streaming_preprocess.h"
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+#include "data/display_frame.h"
+#include "data/ensemble_part.h"
+#include "data/error.h"
+#include "data/reader_support.h"
+#include "preprocessing/member_summaries.h"
+#include "preprocessing/vertex_attributes.h"
+
+namespace ensil::prep {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+constexpr std::size_t kMiB = std::size_t{1} << 20;
+
+std::string mib(std::size_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f MiB",
+                  std::ceil(static_cast<double>(bytes) / static_cast<double>(kMiB)));
+    return text;
+}
+
+// Bytes a layer of the slab pass costs: every member's values, and the moments' double sums,
+// counts and float results for the layer (computeEnsembleMoments), and a member's scratch of
+// doubles in the reader (packed integers are unpacked through one).
+std::size_t bytesPerLayer(std::size_t layerPoints, std::size_t members) {
+    return layerPoints * (4 * members + 40);
+}
+
+// Bytes one member costs while it is meshed: its values, distancesToField's square roots of the
+// mean (doubles), and the meshes on their way through marching cubes, decimation and packing,
+// taken as 16 bytes a grid point (a dense isosurface of the demo makes a few; a noisy field more).
+std::size_t bytesPerMember(std::size_t points) { return points * (4 + 8 + 16); }
+
+std::string shapeTextOf(const data::Grid& grid) {
+    return data::shapeText(grid.nx(), grid.ny(), grid.nz());
+}
+
+}  // namespace
+
+StreamingPlan planStreaming(const data::EnsembleDescription& d, std::size_t memoryLimit,
+                            std::size_t threads) {
+    const std::size_t layer = d.grid.nx() * d.grid.ny();
+    const std::size_t nz = d.grid.nz();
+    const std::size_t points = layer * nz;
+    const std::size_t n = d.members;
+    StreamingPlan plan;
+    plan.memoryLimit = memoryLimit;
+    // Kept for the whole run: the moments (mean and variance, floats, whole grid) and the
+    // distance sums with the blocks they are added through (three of about 4 MiB).
+    plan.resultBytes = 8 * points + 24 * n * n + 12 * kMiB;
+    plan.memberBytes = bytesPerMember(points);
+    const std::size_t perLayer = bytesPerLayer(layer, n);
+    const std::size_t least = plan.resultBytes + std::max(2 * perLayer, plan.memberBytes);
+    if (memoryLimit < least) {
+        throw data::Error(data::ErrorKind::OutOfMemory,
+                          "a memory limit of " + mib(memoryLimit) + " is too small for '" +
+                              d.variable + "' (" + std::to_string(n) + " members of " +
+                              shapeTextOf(d.grid) + " points): streaming needs at least " +
+                              mib(least) +
+                              " (the moments of the whole grid, two layers of every member, or "
+                              "one member while it is meshed); give --memory-limit " +
+                              mib(least) + " or more");
+    }
+    const std::size_t room = memoryLimit - plan.resultBytes;
+    const std::size_t layers = std::min(nz, room / perLayer);
+    // As few slabs as the budget allows, their thicknesses as even as can be, none under 2
+    // layers (a grid's least).
+    std::size_t count = (nz + layers - 1) / layers;
+    count = std::max<std::size_t>(1, std::min(count, nz / 2));
+    const std::size_t base = nz / count, extra = nz % count;
+    std::size_t first = 0, thickest = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        const std::size_t thickness = base + (s < extra ? 1 : 0);
+        plan.slabs.push_back({0, n, first, thickness});
+        first += thickness;
+        thickest = std::max(thickest, thickness);
+    }
+    plan.slabBytes = thickest * perLayer;
+    plan.membersAtOnce =
+        std::clamp<std::size_t>(room / plan.memberBytes, 1, std::max<std::size_t>(1, threads));
+    return plan;
+}
+
+SlabSums emptySlabSums(const data::EnsembleDescription& d, float isovalue) {
+    SlabSums sums;
+    const std::size_t points = d.grid.pointCount();
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    sums.moments.mean.name = "mean";
+    sums.moments.mean.values.assign(points, kNaN);
+    sums.moments.variance.assign(points, kNaN);
+    sums.distances = DistanceSums(d.members, isovalue);
+    sums.validValues.assign(d.members, 0.0);
+    return sums;
+}
+
+void addSlab(SlabSums& sums, const data::DataSelection& selection,
+             const data::EnsembleDescription& description, const data::EnsemblePart& slab,
+             const std::stop_token& stop) {
+    const data::Ensemble part = data::openEnsemblePart(selection, description, slab, stop);
+    // The moments are per point: the slab's are the whole grid's over its layers.
+    const EnsembleMoments moments = computeEnsembleMoments(part, stop);
+    const std::size_t offset = slab.firstLayer * description.grid.nx() * description.grid.ny();
+    std::copy(moments.mean.values.begin(), moments.mean.values.end(),
+              sums.moments.mean.values.begin() + static_cast<std::ptrdiff_t>(offset));
+    std::copy(moments.variance.begin(), moments.variance.end(),
+              sums.moments.variance.begin() + static_cast<std::ptrdiff_t>(offset));
+    std::vector<std::span<const float>> values;
+    values.reserve(part.memberCount());
+    for (std::size_t m = 0; m < part.memberCount(); ++m) {
+        const data::FieldValues& v = part.members[m].values;
+        values.emplace_back(v.data(), v.size());
+        std::size_t valid = 0;
+        float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+        for (const float x : v) {
+            const bool ok = x == x;  // openEnsemblePart made infinities NaN
+            valid += ok ? 1 : 0;
+            lo = ok ? std::min(lo, x) : lo;
+            hi = ok ? std::max(hi, x) : hi;
+        }
+        sums.validValues[slab.firstMember + m] += static_cast<double>(valid);
+        sums.minimum = std::min(sums.minimum, static_cast<double>(lo));
+        sums.maximum = std::max(sums.maximum, static_cast<double>(hi));
+    }
+    sums.distances.add(values, stop);
+    sums.infiniteValues += static_cast<double>(part.infiniteValues);
+}
+
+MemberResult meshMember(const data::DataSelection& selection,
+                        const data::EnsembleDescription& description, std::size_t member,
+                        const EnsembleMoments& moments, const AxisTables& axes,
+                        const PipelineOptions& options, const std::stop_token& stop) {
+    const data::Ensemble one =
+        data::openEnsemblePart(selection, description, {member, 1, 0, description.grid.nz()}, stop);
+    MemberResult r;
+    r.meshed = meshField(one.grid, one.members.front().values, options.isovalue, axes, &moments,
+                         options, stop);
+    const data::FieldValues& mean = moments.mean.values;
+    r.distanceToMean =
+        distancesToField(one, {mean.data(), mean.size()}, options.isovalue, stop).front();
+    return r;
+}
+
+StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
+                                  const data::EnsembleDescription& d, const StreamingPlan& plan,
+                                  const PipelineOptions& options, float verticalExaggeration,
+                                  const RangeCheck& checkRange, const std::stop_token& stop,
+                                  const data::Progress& progress) {
+    StreamedEnsemble out;
+    out.plan = plan;
+    const float iso = options.isovalue;
+
+    // Pass 1: slabs of every member.
+    auto start = Clock::now();
+    SlabSums sums = emptySlabSums(d, iso);
+    for (std::size_t s = 0; s < plan.slabs.size(); ++s) {
+        addSlab(sums, selection, d, plan.slabs[s], stop);
+        data::report(progress,
+                     0.4 * static_cast<double>(s + 1) / static_cast<double>(plan.slabs.size()));
+    }
+    out.slabSeconds = since(start);
+    std::vector<std::size_t> keep;
+    for (std::size_t m = 0; m < d.members; ++m) {
+        (sums.validValues[m] > 0.0 ? keep : out.membersWithoutData).push_back(m);
+    }
+    if (keep.empty()) {
+        throw data::Error(data::ErrorKind::AllValuesMissing,
+                          "every value of '" + d.variable + "' in " +
+                              data::sourceOf(selection.paths) +
+                              " is missing (fill value or outside valid_range): there is "
+                              "nothing to draw");
+    }
+    for (const std::size_t m : keep) out.memberNames.push_back(d.memberNames.at(m));
+    out.minimum = sums.minimum;
+    out.maximum = sums.maximum;
+    out.infiniteValues = sums.infiniteValues;
+    if (checkRange) checkRange(out.minimum, out.maximum);
+    out.distances =
+        (keep.size() == d.members ? sums.distances : sums.distances.subset(keep)).finish();
+
+    // Pass 2: each kept member whole, and the mean member, a few at a time.
+    start = Clock::now();
+    const AxisTables axes = axisTables(data::DisplayFrame(d.grid, verticalExaggeration));
+    const std::size_t k = keep.size();
+    out.meshes.isovalue = iso;
+    out.meshes.members.resize(k);
+    out.distancesToMean.assign(k, 0.0);
+    std::vector<FieldMeshStats> stats(k + 1);
+    std::atomic<std::size_t> done{0};
+    std::mutex reportMutex;
+    tbb::task_arena arena(static_cast<int>(plan.membersAtOnce));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, k + 1, [&](std::size_t i) {
+            if (stop.stop_requested()) return;
+            // Isolated: a thread waiting inside marching cubes' own parallel loop must not start
+            // another member, or more members than the budget allows would be in memory.
+            tbb::this_task_arena::isolate([&] {
+                if (i < k) {
+                    MemberResult r =
+                        meshMember(selection, d, keep[i], sums.moments, axes, options, stop);
+                    out.meshes.members[i] = std::move(r.meshed.mesh);
+                    stats[i] = r.meshed.stats;
+                    out.distancesToMean[i] = r.distanceToMean;
+                } else {
+                    // The mean has no outlyingness of its own, as in buildIsovalueMeshes.
+                    MeshedField m = meshField(d.grid, sums.moments.mean.values, iso, axes, nullptr,
+                                              options, stop);
+                    out.meshes.mean = std::move(m.mesh);
+                    stats[i] = m.stats;
+                }
+            });
+            const std::size_t finished = ++done;
+            const std::lock_guard lock(reportMutex);
+            data::report(progress,
+                         0.4 + 0.6 * static_cast<double>(finished) / static_cast<double>(k + 1));
+        });
+    });
+    data::throwIfStopped(stop);
+    out.memberSeconds = since(start);
+    StageSeconds busy;
+    for (const FieldMeshStats& s : stats) {
+        busy.meshes += s.seconds.meshes;
+        busy.decimation += s.seconds.decimation;
+        busy.attributes += s.seconds.attributes;
+        out.meshes.trianglesExtracted += s.extracted;
+        out.meshes.triangles += s.triangles;
+        out.meshes.vertices += s.vertices;
+        out.meshes.worstErrorCells = std::max(out.meshes.worstErrorCells, s.error);
+    }
+    const double total = busy.meshes + busy.decimation + busy.attributes;
+    if (total > 0.0) {
+        const double wall = out.memberSeconds;
+        out.meshes.seconds = {wall * busy.meshes / total, wall * busy.decimation / total,
+                              wall * busy.attributes / total};
+    }
+    return out;
+}
+
+}  // namespace ensil::prep
