@@ -62,7 +62,8 @@ StreamingPlan planStreaming(const data::EnsembleDescription& d, std::size_t memo
     plan.memoryLimit = memoryLimit;
     // Kept for the whole run: the moments (mean and variance, floats, whole grid) and the
     // distance sums with the blocks they are added through (three of about 4 MiB).
-    plan.resultBytes = 8 * points + 24 * n * n + 12 * kMiB;
+    // (twice: the total and the slab's own, merged in slab order).
+    plan.resultBytes = 8 * points + 48 * n * n + 12 * kMiB;
     plan.memberBytes = bytesPerMember(points);
     const std::size_t perLayer = bytesPerLayer(layer, n);
     const std::size_t least = plan.resultBytes + std::max(2 * perLayer, plan.memberBytes);
@@ -78,22 +79,29 @@ StreamingPlan planStreaming(const data::EnsembleDescription& d, std::size_t memo
     }
     const std::size_t room = memoryLimit - plan.resultBytes;
     const std::size_t layers = std::min(nz, room / perLayer);
-    // As few slabs as the budget allows, their thicknesses as even as can be, none under 2
-    // layers (a grid's least).
-    std::size_t count = (nz + layers - 1) / layers;
-    count = std::max<std::size_t>(1, std::min(count, nz / 2));
-    const std::size_t base = nz / count, extra = nz % count;
-    std::size_t first = 0, thickest = 0;
-    for (std::size_t s = 0; s < count; ++s) {
-        const std::size_t thickness = base + (s < extra ? 1 : 0);
-        plan.slabs.push_back({0, n, first, thickness});
-        first += thickness;
-        thickest = std::max(thickest, thickness);
-    }
+    // As few slabs as the budget allows.
+    plan.slabs = evenSlabs(d, (nz + layers - 1) / layers);
+    std::size_t thickest = 0;
+    for (const data::EnsemblePart& slab : plan.slabs)
+        thickest = std::max(thickest, slab.layerCount);
     plan.slabBytes = thickest * perLayer;
     plan.membersAtOnce =
         std::clamp<std::size_t>(room / plan.memberBytes, 1, std::max<std::size_t>(1, threads));
     return plan;
+}
+
+std::vector<data::EnsemblePart> evenSlabs(const data::EnsembleDescription& d, std::size_t count) {
+    const std::size_t nz = d.grid.nz();
+    count = std::max<std::size_t>(1, std::min(count, nz / 2));
+    const std::size_t base = nz / count, extra = nz % count;
+    std::vector<data::EnsemblePart> slabs;
+    std::size_t first = 0;
+    for (std::size_t s = 0; s < count; ++s) {
+        const std::size_t thickness = base + (s < extra ? 1 : 0);
+        slabs.push_back({0, d.members, first, thickness});
+        first += thickness;
+    }
+    return slabs;
 }
 
 SlabSums emptySlabSums(const data::EnsembleDescription& d, float isovalue) {
@@ -108,9 +116,9 @@ SlabSums emptySlabSums(const data::EnsembleDescription& d, float isovalue) {
     return sums;
 }
 
-void addSlab(SlabSums& sums, const data::DataSelection& selection,
-             const data::EnsembleDescription& description, const data::EnsemblePart& slab,
-             const std::stop_token& stop) {
+DistanceSums addSlab(SlabSums& sums, const data::DataSelection& selection,
+                     const data::EnsembleDescription& description, const data::EnsemblePart& slab,
+                     const std::stop_token& stop) {
     const data::Ensemble part = data::openEnsemblePart(selection, description, slab, stop);
     // The moments are per point: the slab's are the whole grid's over its layers.
     const EnsembleMoments moments = computeEnsembleMoments(part, stop);
@@ -136,8 +144,10 @@ void addSlab(SlabSums& sums, const data::DataSelection& selection,
         sums.minimum = std::min(sums.minimum, static_cast<double>(lo));
         sums.maximum = std::max(sums.maximum, static_cast<double>(hi));
     }
-    sums.distances.add(values, stop);
+    DistanceSums distances(description.members, sums.distances.isovalue());
+    distances.add(values, stop);
     sums.infiniteValues += static_cast<double>(part.infiniteValues);
+    return distances;
 }
 
 MemberResult meshMember(const data::DataSelection& selection,
@@ -155,24 +165,62 @@ MemberResult meshMember(const data::DataSelection& selection,
     return r;
 }
 
-StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
-                                  const data::EnsembleDescription& d, const StreamingPlan& plan,
-                                  const PipelineOptions& options, float verticalExaggeration,
-                                  const RangeCheck& checkRange, const std::stop_token& stop,
-                                  const data::Progress& progress) {
-    StreamedEnsemble out;
-    out.plan = plan;
-    const float iso = options.isovalue;
+std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
+                                      const data::EnsembleDescription& d,
+                                      const std::vector<std::size_t>& members,
+                                      const EnsembleMoments& moments, const AxisTables& axes,
+                                      const PipelineOptions& options, std::size_t atOnce,
+                                      const std::stop_token& stop, const data::Progress& progress) {
+    std::vector<MemberResult> results(members.size());
+    std::atomic<std::size_t> done{0};
+    std::mutex reportMutex;
+    tbb::task_arena arena(static_cast<int>(std::max<std::size_t>(1, atOnce)));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
+            if (stop.stop_requested()) return;
+            // Isolated: a thread waiting inside marching cubes' own parallel loop must not start
+            // another member, or more members than the budget allows would be in memory.
+            tbb::this_task_arena::isolate([&] {
+                if (members[i] == kMeanMember) {
+                    // The mean has no outlyingness of its own, as in buildIsovalueMeshes.
+                    results[i].meshed = meshField(d.grid, moments.mean.values, options.isovalue,
+                                                  axes, nullptr, options, stop);
+                } else {
+                    results[i] = meshMember(selection, d, members[i], moments, axes, options, stop);
+                }
+            });
+            const std::size_t finished = ++done;
+            const std::lock_guard lock(reportMutex);
+            data::report(progress,
+                         static_cast<double>(finished) / static_cast<double>(members.size()));
+        });
+    });
+    data::throwIfStopped(stop);
+    return results;
+}
 
-    // Pass 1: slabs of every member.
-    auto start = Clock::now();
-    SlabSums sums = emptySlabSums(d, iso);
-    for (std::size_t s = 0; s < plan.slabs.size(); ++s) {
-        addSlab(sums, selection, d, plan.slabs[s], stop);
-        data::report(progress,
-                     0.4 * static_cast<double>(s + 1) / static_cast<double>(plan.slabs.size()));
+void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
+                     double wallSeconds) {
+    StageSeconds busy;
+    for (const FieldMeshStats& s : stats) {
+        busy.meshes += s.seconds.meshes;
+        busy.decimation += s.seconds.decimation;
+        busy.attributes += s.seconds.attributes;
+        meshes.trianglesExtracted += s.extracted;
+        meshes.triangles += s.triangles;
+        meshes.vertices += s.vertices;
+        meshes.worstErrorCells = std::max(meshes.worstErrorCells, s.error);
     }
-    out.slabSeconds = since(start);
+    const double total = busy.meshes + busy.decimation + busy.attributes;
+    if (total > 0.0) {
+        meshes.seconds = {wallSeconds * busy.meshes / total, wallSeconds * busy.decimation / total,
+                          wallSeconds * busy.attributes / total};
+    }
+}
+
+std::vector<std::size_t> concludeSlabs(const SlabSums& sums, const data::DataSelection& selection,
+                                       const data::EnsembleDescription& d,
+                                       const RangeCheck& checkRange, StreamedEnsemble& out) {
     std::vector<std::size_t> keep;
     for (std::size_t m = 0; m < d.members; ++m) {
         (sums.validValues[m] > 0.0 ? keep : out.membersWithoutData).push_back(m);
@@ -191,62 +239,58 @@ StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
     if (checkRange) checkRange(out.minimum, out.maximum);
     out.distances =
         (keep.size() == d.members ? sums.distances : sums.distances.subset(keep)).finish();
+    return keep;
+}
+
+void collectMembers(StreamedEnsemble& out, std::vector<MemberResult>&& results,
+                    double wallSeconds) {
+    const std::size_t k = results.size() - 1;
+    out.meshes.members.resize(k);
+    out.distancesToMean.assign(k, 0.0);
+    std::vector<FieldMeshStats> stats;
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        stats.push_back(results[i].meshed.stats);
+        if (i < k) {
+            out.meshes.members[i] = std::move(results[i].meshed.mesh);
+            out.distancesToMean[i] = results[i].distanceToMean;
+        } else {
+            out.meshes.mean = std::move(results[i].meshed.mesh);
+        }
+    }
+    out.memberSeconds = wallSeconds;
+    summariseMeshes(out.meshes, stats, wallSeconds);
+}
+
+StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
+                                  const data::EnsembleDescription& d, const StreamingPlan& plan,
+                                  const PipelineOptions& options, float verticalExaggeration,
+                                  const RangeCheck& checkRange, const std::stop_token& stop,
+                                  const data::Progress& progress) {
+    StreamedEnsemble out;
+    out.plan = plan;
+    const float iso = options.isovalue;
+    out.meshes.isovalue = iso;
+
+    // Pass 1: slabs of every member.
+    auto start = Clock::now();
+    SlabSums sums = emptySlabSums(d, iso);
+    for (std::size_t s = 0; s < plan.slabs.size(); ++s) {
+        sums.distances.merge(addSlab(sums, selection, d, plan.slabs[s], stop));
+        data::report(progress,
+                     0.4 * static_cast<double>(s + 1) / static_cast<double>(plan.slabs.size()));
+    }
+    out.slabSeconds = since(start);
+    const std::vector<std::size_t> keep = concludeSlabs(sums, selection, d, checkRange, out);
 
     // Pass 2: each kept member whole, and the mean member, a few at a time.
     start = Clock::now();
     const AxisTables axes = axisTables(data::DisplayFrame(d.grid, verticalExaggeration));
-    const std::size_t k = keep.size();
-    out.meshes.isovalue = iso;
-    out.meshes.members.resize(k);
-    out.distancesToMean.assign(k, 0.0);
-    std::vector<FieldMeshStats> stats(k + 1);
-    std::atomic<std::size_t> done{0};
-    std::mutex reportMutex;
-    tbb::task_arena arena(static_cast<int>(plan.membersAtOnce));
-    arena.execute([&] {
-        tbb::parallel_for(std::size_t{0}, k + 1, [&](std::size_t i) {
-            if (stop.stop_requested()) return;
-            // Isolated: a thread waiting inside marching cubes' own parallel loop must not start
-            // another member, or more members than the budget allows would be in memory.
-            tbb::this_task_arena::isolate([&] {
-                if (i < k) {
-                    MemberResult r =
-                        meshMember(selection, d, keep[i], sums.moments, axes, options, stop);
-                    out.meshes.members[i] = std::move(r.meshed.mesh);
-                    stats[i] = r.meshed.stats;
-                    out.distancesToMean[i] = r.distanceToMean;
-                } else {
-                    // The mean has no outlyingness of its own, as in buildIsovalueMeshes.
-                    MeshedField m = meshField(d.grid, sums.moments.mean.values, iso, axes, nullptr,
-                                              options, stop);
-                    out.meshes.mean = std::move(m.mesh);
-                    stats[i] = m.stats;
-                }
-            });
-            const std::size_t finished = ++done;
-            const std::lock_guard lock(reportMutex);
-            data::report(progress,
-                         0.4 + 0.6 * static_cast<double>(finished) / static_cast<double>(k + 1));
-        });
-    });
-    data::throwIfStopped(stop);
-    out.memberSeconds = since(start);
-    StageSeconds busy;
-    for (const FieldMeshStats& s : stats) {
-        busy.meshes += s.seconds.meshes;
-        busy.decimation += s.seconds.decimation;
-        busy.attributes += s.seconds.attributes;
-        out.meshes.trianglesExtracted += s.extracted;
-        out.meshes.triangles += s.triangles;
-        out.meshes.vertices += s.vertices;
-        out.meshes.worstErrorCells = std::max(out.meshes.worstErrorCells, s.error);
-    }
-    const double total = busy.meshes + busy.decimation + busy.attributes;
-    if (total > 0.0) {
-        const double wall = out.memberSeconds;
-        out.meshes.seconds = {wall * busy.meshes / total, wall * busy.decimation / total,
-                              wall * busy.attributes / total};
-    }
+    std::vector<std::size_t> fields = keep;
+    fields.push_back(kMeanMember);
+    std::vector<MemberResult> results =
+        meshMembers(selection, d, fields, sums.moments, axes, options, plan.membersAtOnce, stop,
+                    [&](double f) { data::report(progress, 0.4 + 0.6 * f); });
+    collectMembers(out, std::move(results), since(start));
     return out;
 }
 

@@ -65,10 +65,19 @@ struct SlabSums {
 // Empty sums for the ensemble `description` says, at the isovalue.
 SlabSums emptySlabSums(const data::EnsembleDescription& description, float isovalue);
 
-// Reads the slab (every member over its layers) and adds it. Throws data::Error, Cancelled.
-void addSlab(SlabSums& sums, const data::DataSelection& selection,
-             const data::EnsembleDescription& description, const data::EnsemblePart& slab,
-             const std::stop_token& stop = {});
+// Reads the slab (every member over its layers) and adds its moments, range and counts to
+// `sums`; returns its distance sums, which the caller merges in slab order (DistanceSums::merge),
+// so the total is the same bit for bit however the slabs are shared out (among MPI ranks too).
+// Throws data::Error, Cancelled.
+[[nodiscard]] DistanceSums addSlab(SlabSums& sums, const data::DataSelection& selection,
+                                   const data::EnsembleDescription& description,
+                                   const data::EnsemblePart& slab,
+                                   const std::stop_token& stop = {});
+
+// `count` slabs of every member, covering the grid's layers in order, as even as can be and at
+// least 2 layers each (fewer slabs when there are not 2 layers for each).
+std::vector<data::EnsemblePart> evenSlabs(const data::EnsembleDescription& description,
+                                          std::size_t count);
 
 // One member's results from pass 2.
 struct MemberResult {
@@ -83,6 +92,25 @@ MemberResult meshMember(const data::DataSelection& selection,
                         const EnsembleMoments& moments, const AxisTables& axes,
                         const PipelineOptions& options, const std::stop_token& stop = {});
 
+// Stands for the mean member in meshMembers' list.
+inline constexpr std::size_t kMeanMember = static_cast<std::size_t>(-1);
+
+// Pass 2 for the listed members (indices among the description's members, kMeanMember for the
+// mean member, meshed from moments.mean without outlyingness), `atOnce` at a time, each thread
+// holding one member at most. Results in list order. Throws data::Error, Cancelled.
+std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
+                                      const data::EnsembleDescription& description,
+                                      const std::vector<std::size_t>& members,
+                                      const EnsembleMoments& moments, const AxisTables& axes,
+                                      const PipelineOptions& options, std::size_t atOnce,
+                                      const std::stop_token& stop = {},
+                                      const data::Progress& progress = {});
+
+// The meshes' totals (triangles, vertices, worst error) and each stage's share of `wallSeconds`
+// from the members' statistics.
+void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
+                     double wallSeconds);
+
 struct StreamedEnsemble {
     StreamingPlan plan;
     std::vector<std::size_t> membersWithoutData;  // indices among the description's members
@@ -95,9 +123,20 @@ struct StreamedEnsemble {
     double slabSeconds = 0.0, memberSeconds = 0.0;
 };
 
+// After pass 1 (sums over every slab): the members without data, the kept members' names,
+// the range (given to checkRange) and the distances between the kept members, into `out`.
+// Returns the kept members' indices. Throws data::Error(AllValuesMissing) when no member has
+// data, and what checkRange throws.
+using RangeCheck = std::function<void(double minimum, double maximum)>;
+std::vector<std::size_t> concludeSlabs(const SlabSums& sums, const data::DataSelection& selection,
+                                       const data::EnsembleDescription& description,
+                                       const RangeCheck& checkRange, StreamedEnsemble& out);
+
+// After pass 2: meshMembers' results for the kept members and, last, the mean, into `out`.
+void collectMembers(StreamedEnsemble& out, std::vector<MemberResult>&& results, double wallSeconds);
+
 // Called between the passes with the valid values' range, so a caller can refuse an isovalue
 // outside it (by throwing) before any member is meshed.
-using RangeCheck = std::function<void(double minimum, double maximum)>;
 
 // Both passes on one machine. Throws data::Error (AllValuesMissing when no member has data),
 // data::Cancelled, and whatever `checkRange` throws.
