@@ -3,11 +3,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <bit>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 #if defined(__SSE2__)
@@ -23,9 +25,9 @@ namespace {
 // turns each grid row (fixed j, k) into two bit sets, "inside" (f > mu) and "valid" (not NaN);
 // everything after that is 64 points per word. Crossing edges and the cells that make
 // triangles are found by bitwise operations on neighbouring rows, so the (mostly empty) rest
-// of the grid costs a few instructions per 64 points, and no grid-sized index arrays are
-// needed: a vertex's id is its row's first id plus the rank of its edge among the row's
-// crossings (a popcount).
+// of the grid costs a few instructions per 64 points. No grid-sized index arrays are needed:
+// a row's vertices are numbered from its offset in crossing order, and the triangles of a cell
+// row look their vertices up in the ids of its four point rows only.
 using Word = std::uint64_t;
 constexpr std::size_t kBits = 64;
 
@@ -33,22 +35,41 @@ struct Bits {
     std::size_t nx, ny, nz, words, rows;
     std::vector<Word> inside, valid;
     std::array<std::vector<Word>, 3> cross;  // by axis: bit i = the edge from point i crosses
-    // Per row and axis: the local id (within the row) of the first crossing in each word.
-    // A row's vertices are its x crossings, then its y crossings, then its z crossings.
-    std::array<std::vector<std::uint32_t>, 3> firstInWord;
+    // A row's vertices are its x crossings, then its y crossings, then its z crossings: per
+    // row, where each axis's start within the row's vertices.
+    std::vector<std::array<std::uint32_t, 3>> axisStart;
     std::vector<std::uint32_t> rowVertices, rowTriangles;  // counts, then offsets
+    // The cells that make triangles, found once: per z-layer, (i << 8 | case) in row order, and
+    // per row where its cells start in its layer's list.
+    std::vector<std::vector<std::uint32_t>> layerCells;
+    std::vector<std::uint32_t> rowCellsBegin;
 
     Bits(std::size_t x, std::size_t y, std::size_t z)
         : nx(x), ny(y), nz(z), words((x + kBits - 1) / kBits), rows(y * z) {
         inside.assign(rows * words, 0);
         valid.assign(rows * words, 0);
         for (auto& c : cross) c.assign(rows * words, 0);
-        for (auto& f : firstInWord) f.assign(rows * words, 0);
+        axisStart.assign(rows, {});
         rowVertices.assign(rows + 1, 0);
         rowTriangles.assign(rows + 1, 0);
+        layerCells.resize(z);
+        rowCellsBegin.assign(rows + 1, 0);
     }
     [[nodiscard]] std::size_t row(std::size_t j, std::size_t k) const { return j + ny * k; }
 };
+
+// Set bits in a word. Without -mpopcnt (x86-64's baseline has no POPCNT) std::popcount becomes
+// a call into libgcc, which costs more than this branch-free sum of bit fields.
+int countBits(Word x) {
+#if defined(__POPCNT__)
+    return std::popcount(x);
+#else
+    x -= (x >> 1) & 0x5555555555555555U;
+    x = (x & 0x3333333333333333U) + ((x >> 2) & 0x3333333333333333U);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fU;
+    return static_cast<int>((x * 0x0101010101010101U) >> 56);
+#endif
+}
 
 // Bits i and i + 1 of a bit row (bit i in bit 0); i + 1 must be a point of the row.
 Word pairAt(const Word* row, std::size_t i) {
@@ -88,19 +109,25 @@ void classifyRow(const float* f, std::size_t nx, float iso, Word* inside, Word* 
     }
 }
 
-// How many triangles each case makes.
-const std::array<std::uint8_t, 256>& triangleCounts() {
-    static const std::array<std::uint8_t, 256> counts = [] {
-        std::array<std::uint8_t, 256> c{};
+// Per case: how many triangles it makes and which of the 12 edges they use.
+struct CaseInfo {
+    std::uint8_t triangles = 0;
+    std::uint16_t edges = 0;
+};
+const std::array<CaseInfo, 256>& caseInfo() {
+    static const std::array<CaseInfo, 256> info = [] {
+        std::array<CaseInfo, 256> c{};
         const auto& table = mc::caseTable();
         for (std::size_t m = 0; m < 256; ++m) {
             std::size_t n = 0;
-            while (table.triangles[m][n] >= 0) ++n;
-            c[m] = static_cast<std::uint8_t>(n / 3);
+            for (; table.triangles[m][n] >= 0; ++n) {
+                c[m].edges |= static_cast<std::uint16_t>(1U << table.triangles[m][n]);
+            }
+            c[m].triangles = static_cast<std::uint8_t>(n / 3);
         }
         return c;
     }();
-    return counts;
+    return info;
 }
 
 // Per cell edge: its axis, the x offset of its lower point and the offset of that point's row.
@@ -189,8 +216,9 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
 
     // 2. Crossing edges and triangle counts per row. An edge crosses when its ends differ in
     // "inside" and both are valid (so an edge touching NaN never crosses).
-    const auto& counts = triangleCounts();
+    const auto& cases = caseInfo();
     forEachLayer(nz, stop, [&](std::size_t k) {
+        std::vector<std::uint32_t>& cells = b.layerCells[k];
         for (std::size_t j = 0; j < ny; ++j) {
             const std::size_t r = b.row(j, k);
             const Word* in = &b.inside[r * W];
@@ -206,16 +234,19 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                     } else if (hasNext) {
                         c = (in[w] ^ b.inside[other * W + w]) & ok[w] & b.valid[other * W + w];
                     }
+                    if (w == 0) b.axisStart[r][a] = local;
                     b.cross[a][r * W + w] = c;
-                    b.firstInWord[a][r * W + w] = local;
-                    local += static_cast<std::uint32_t>(std::popcount(c));
+                    local += static_cast<std::uint32_t>(countBits(c));
                 }
             }
             b.rowVertices[r + 1] = local;
+            b.rowCellsBegin[r] = static_cast<std::uint32_t>(cells.size());
             if (j + 1 < ny && k + 1 < nz) {
                 std::uint32_t triangles = 0;
-                forEachActiveCell(
-                    b, j, k, [&](std::size_t, std::size_t mask) { triangles += counts[mask]; });
+                forEachActiveCell(b, j, k, [&](std::size_t i, std::size_t mask) {
+                    triangles += cases[mask].triangles;
+                    cells.push_back(static_cast<std::uint32_t>(i << 8 | mask));
+                });
                 b.rowTriangles[r + 1] = triangles;
             }
         }
@@ -226,12 +257,17 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
     mesh.indices.resize(3 * static_cast<std::size_t>(b.rowTriangles.back()));
     data::report(progress, 0.5);
 
-    // The vertex on edge `axis` from point i of row r.
-    const auto vertexId = [&](std::size_t axis, std::size_t r, std::size_t i) {
-        const std::size_t at = r * W + i / kBits;
-        const Word below = b.cross[axis][at] & ((Word{1} << (i % kBits)) - 1);
-        return b.rowVertices[r] + b.firstInWord[axis][at] +
-               static_cast<std::uint32_t>(std::popcount(below));
+    // Writes the vertex ids of row r's crossing edges into ids[axis * nx + i] (the other
+    // entries are never read: only crossing edges carry vertices).
+    const auto rowIds = [&](std::size_t r, std::uint32_t* ids) {
+        for (std::size_t a = 0; a < 3; ++a) {
+            std::uint32_t id = b.rowVertices[r] + b.axisStart[r][a];
+            for (std::size_t w = 0; w < W; ++w) {
+                for (Word c = b.cross[a][r * W + w]; c != 0; c &= c - 1) {
+                    ids[a * nx + w * kBits + static_cast<std::size_t>(std::countr_zero(c))] = id++;
+                }
+            }
+        }
     };
 
     // 3. Vertices (linear interpolation along the edge, from its lower point, so a vertex on a
@@ -241,6 +277,15 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
     const auto& refs = edgeRefs();
     const std::array<std::size_t, 3> step{1, nx, nxy};
     forEachLayer(nz, stop, [&](std::size_t k) {
+        // Vertex ids of the cell row's four point rows, by (dy, dz): rows j and j + 1 of layers
+        // k and k + 1; as j advances, the rows j + 1 become the rows j.
+        std::vector<std::uint32_t> scratch(k + 1 < nz ? 4 * 3 * nx : 0);
+        std::array<std::uint32_t*, 4> rowsOf{};
+        for (std::size_t s = 0; s < 4 && !scratch.empty(); ++s) rowsOf[s] = &scratch[s * 3 * nx];
+        if (!scratch.empty()) {
+            rowIds(b.row(0, k), rowsOf[0]);
+            rowIds(b.row(0, k + 1), rowsOf[2]);
+        }
         for (std::size_t j = 0; j < ny; ++j) {
             const std::size_t r = b.row(j, k);
             std::size_t id = b.rowVertices[r];
@@ -259,13 +304,25 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                 }
             }
             if (j + 1 >= ny || k + 1 >= nz) continue;
+            rowIds(b.row(j + 1, k), rowsOf[1]);
+            rowIds(b.row(j + 1, k + 1), rowsOf[3]);
             std::uint32_t* out = &mesh.indices[3 * static_cast<std::size_t>(b.rowTriangles[r])];
-            forEachActiveCell(b, j, k, [&](std::size_t i, std::size_t mask) {
-                for (const std::int8_t* e = table.triangles[mask].data(); *e >= 0; ++e) {
-                    const EdgeRef& ref = refs[static_cast<std::size_t>(*e)];
-                    *out++ = vertexId(ref.axis, b.row(j + ref.dy, k + ref.dz), i + ref.dx);
+            const std::vector<std::uint32_t>& cells = b.layerCells[k];
+            std::array<std::uint32_t, 12> ids{};  // this cell's vertex per edge
+            for (std::size_t c = b.rowCellsBegin[r]; c < b.rowCellsBegin[r + 1]; ++c) {
+                const std::size_t i = cells[c] >> 8, mask = cells[c] & 0xFFU;
+                // Each edge's id once per cell, though several triangles may use it.
+                for (unsigned used = cases[mask].edges; used != 0; used &= used - 1) {
+                    const auto e = static_cast<std::size_t>(std::countr_zero(used));
+                    const EdgeRef& ref = refs[e];
+                    ids[e] = rowsOf[ref.dy + 2 * ref.dz][ref.axis * nx + i + ref.dx];
                 }
-            });
+                for (const std::int8_t* e = table.triangles[mask].data(); *e >= 0; ++e) {
+                    *out++ = ids[static_cast<std::size_t>(*e)];
+                }
+            }
+            std::swap(rowsOf[0], rowsOf[1]);
+            std::swap(rowsOf[2], rowsOf[3]);
         }
     });
     data::report(progress, 1.0);
