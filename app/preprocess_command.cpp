@@ -13,6 +13,9 @@
 #include "app/headless/isovalue_job.h"
 #include "app/headless/preprocess_run.h"
 #include "app/headless/streaming_run.h"
+#ifdef ENSIL_WITH_MPI
+#include "app/preprocess_mpi.h"
+#endif
 #include "app/headless/time_series.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
@@ -382,6 +385,33 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          ? parser.value(o.cacheDir).toStdString()
                                          : defaultMeshCacheDirectory();
         }
+        const auto printResult = [&](Result& r) {
+            r.seconds["total"] = seconds(total);
+            if (parser.isSet(o.json)) {
+                out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
+            } else {
+                printText(out, r);
+            }
+        };
+#ifdef ENSIL_WITH_MPI
+        if (runningUnderMpi()) {
+            if (parser.isSet(o.times) || parser.isSet(o.demo)) {
+                err << "ensil preprocess: --times and --demo are refused under mpirun: it "
+                       "preprocesses one ensemble read from NetCDF files\n";
+                return 2;
+            }
+            return runDistributedPreprocess(
+                *selection, request, memoryLimit,
+                [&](PreprocessResult&& result) {
+                    Result r;
+                    static_cast<PreprocessResult&>(r) = std::move(result);
+                    r.cache =
+                        request.cacheDirectory ? QStringLiteral("stored") : QStringLiteral("off");
+                    printResult(r);
+                },
+                err);
+        }
+#endif
         if (parser.isSet(o.times)) {
             return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
                                  out, err);
@@ -400,12 +430,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                 static_cast<PreprocessResult&>(r) =
                     preprocessStreaming(*selection, description, request, limit, notice);
                 r.cache = request.cacheDirectory ? QStringLiteral("stored") : QStringLiteral("off");
-                r.seconds["total"] = seconds(total);
-                if (parser.isSet(o.json)) {
-                    out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
-                } else {
-                    printText(out, r);
-                }
+                printResult(r);
                 return 0;
             }
         }
@@ -424,12 +449,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         r.cache = !request.cacheDirectory ? QStringLiteral("off")
                   : r.fromCache           ? QStringLiteral("hit")
                                           : QStringLiteral("miss");
-        r.seconds["total"] = seconds(total);
-        if (parser.isSet(o.json)) {
-            out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
-        } else {
-            printText(out, r);
-        }
+        printResult(r);
         return 0;
     } catch (const PreprocessRefused& e) {
         err << "ensil preprocess: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 #include "preprocessing/streaming_preprocess.h"
 
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -54,6 +55,8 @@ std::string shapeTextOf(const data::Grid& grid) {
 
 StreamingPlan planStreaming(const data::EnsembleDescription& d, std::size_t memoryLimit,
                             std::size_t threads) {
+    // oneTBB's count follows the process's CPU affinity (mpirun binds each rank to its cores).
+    if (threads == 0) threads = static_cast<std::size_t>(tbb::info::default_concurrency());
     const std::size_t layer = d.grid.nx() * d.grid.ny();
     const std::size_t nz = d.grid.nz();
     const std::size_t points = layer * nz;

@@ -44,9 +44,9 @@ struct StreamingPlan {
 };
 
 // The plan for `description` within `memoryLimit` bytes, with at most `threads` members meshed
-// at once. Slabs are as thick as the budget allows and as even as can be, at least 2 layers
-// each (a grid's least; so with room for only 2 layers and an odd count of them one slab has
-// 3, a layer over the budget). Throws
+// at once (0: as many as oneTBB runs threads in this process). Slabs are as thick as the budget
+// allows and as even as can be, at least 2 layers each (a grid's least; so with room for only 2
+// layers and an odd count of them one slab has 3, a layer over the budget). Throws
 // data::Error(OutOfMemory) saying the smallest limit that would do, when even 2 layers of every
 // member or one member's meshing do not fit.
 StreamingPlan planStreaming(const data::EnsembleDescription& description, std::size_t memoryLimit,

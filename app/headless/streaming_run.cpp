@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <thread>
 
 #include "data/error.h"
 #include "data/reader_support.h"
@@ -80,27 +79,50 @@ PreprocessResult preprocessStreaming(const data::DataSelection& selection,
                                      const PreprocessRequest& request, std::size_t memoryLimit,
                                      const PreprocessNotice& notice, const std::stop_token& stop,
                                      const data::Progress& progress) {
+    StreamBackend here;
+    here.run = [&](const prep::StreamingPlan& plan, const prep::PipelineOptions& options,
+                   const prep::RangeCheck& checkRange) {
+        return std::optional<prep::StreamedEnsemble>(
+            prep::streamPreprocess(selection, d, plan, options, 1.0F, checkRange, stop, progress));
+    };
+    return *preprocessStreamingWith(selection, d, request, memoryLimit, notice, here, stop,
+                                    progress);
+}
+
+std::optional<PreprocessResult> preprocessStreamingWith(
+    const data::DataSelection& selection, const data::EnsembleDescription& d,
+    const PreprocessRequest& request, std::size_t memoryLimit, const PreprocessNotice& notice,
+    const StreamBackend& backend, const std::stop_token& stop, const data::Progress& progress) {
+    (void)progress;
     if (!request.isovalue) {
         throw PreprocessRefused("'" + d.variable +
                                     "' is preprocessed in slabs, and then --iso is needed: the "
                                     "default isovalue is chosen from every value at once",
                                 2);
     }
-    const unsigned threads = std::max(1U, std::thread::hardware_concurrency());
-    const prep::StreamingPlan plan = prep::planStreaming(d, memoryLimit, threads);
+    prep::StreamingPlan plan = prep::planStreaming(d, memoryLimit, 0);
+    if (backend.refinePlan) plan = backend.refinePlan(plan);
     PreprocessResult r;
     r.streaming = plan;
     std::size_t thickest = 0;
     for (const data::EnsemblePart& slab : plan.slabs)
         thickest = std::max(thickest, slab.layerCount);
-    notice("note", "'" + d.variable + "' (" + gib(static_cast<double>(d.bytes())) +
-                       " of values) would take more than the memory limit of " +
-                       gib(static_cast<double>(memoryLimit)) +
-                       " in memory: it is preprocessed in " + std::to_string(plan.slabs.size()) +
-                       (plan.slabs.size() == 1 ? " slab" : " slabs") + " of up to " +
-                       std::to_string(thickest) + " layers, " + std::to_string(plan.membersAtOnce) +
-                       (plan.membersAtOnce == 1 ? " member" : " members") +
-                       " meshed at a time, without the contour boxplot");
+    const std::string how =
+        std::to_string(plan.slabs.size()) + (plan.slabs.size() == 1 ? " slab" : " slabs") +
+        " of up to " + std::to_string(thickest) + " layers, " + std::to_string(plan.membersAtOnce) +
+        (plan.membersAtOnce == 1 ? " member" : " members") + " meshed at a time";
+    if (backend.where.empty()) {
+        notice("note", "'" + d.variable + "' (" + gib(static_cast<double>(d.bytes())) +
+                           " of values) would take more than the memory limit of " +
+                           gib(static_cast<double>(memoryLimit)) +
+                           " in memory: it is preprocessed in " + how +
+                           ", without the contour boxplot");
+    } else {
+        notice("note", "'" + d.variable + "' (" + gib(static_cast<double>(d.bytes())) +
+                           " of values) is preprocessed " + backend.where + ": " + how +
+                           " on each within its memory limit of " +
+                           gib(static_cast<double>(memoryLimit)) + ", without the contour boxplot");
+    }
     if (const auto note = data::fewLevelsWarning(d.grid)) notice("note", *note);
     for (const std::string& note : d.warnings) notice("warning", note);
     prep::PipelineOptions options;
@@ -108,12 +130,12 @@ PreprocessResult preprocessStreaming(const data::DataSelection& selection,
     options.decimate = request.decimate;
     options.maxErrorCells = static_cast<float>(request.errorCells);
     const auto start = std::chrono::steady_clock::now();
-    prep::StreamedEnsemble streamed = prep::streamPreprocess(
-        selection, d, plan, options, 1.0F,
-        [&](double minimum, double maximum) {
+    std::optional<prep::StreamedEnsemble> ran =
+        backend.run(plan, options, [&](double minimum, double maximum) {
             checkIsovalueRange(*request.isovalue, minimum, maximum, d.variable, d.units);
-        },
-        stop, progress);
+        });
+    if (!ran) return std::nullopt;
+    prep::StreamedEnsemble& streamed = *ran;
     // The ensemble as the results describe it: names, grid, variable; no values.
     auto ensemble = std::make_shared<data::Ensemble>(data::ensembleDescribedBy(d, selection.paths));
     ensemble->infiniteValues = static_cast<std::size_t>(streamed.infiniteValues);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -28,6 +29,24 @@ std::optional<std::size_t> parseMemorySize(const std::string& text, std::string&
 
 // True when the selection's format can be read in slabs (NetCDF).
 bool canStream(const data::DataSelection& selection);
+
+// Where the two passes run: here (the default), or spread over the ranks of an MPI job
+// (mpi/distributed_preprocess.h, whose `run` returns nothing on the ranks but 0).
+struct StreamBackend {
+    std::function<prep::StreamingPlan(const prep::StreamingPlan&)> refinePlan;  // may be empty
+    std::function<std::optional<prep::StreamedEnsemble>(
+        const prep::StreamingPlan&, const prep::PipelineOptions&, const prep::RangeCheck&)>
+        run;
+    std::string where;  // said in the note: "on 4 MPI ranks"; empty for here
+};
+
+// preprocessStreaming with the passes run by `backend`; nothing where the backend gives
+// nothing (the ranks but 0), which then store no cache and say nothing after the plan.
+std::optional<PreprocessResult> preprocessStreamingWith(
+    const data::DataSelection& selection, const data::EnsembleDescription& description,
+    const PreprocessRequest& request, std::size_t memoryLimit, const PreprocessNotice& notice,
+    const StreamBackend& backend, const std::stop_token& stop = {},
+    const data::Progress& progress = {});
 
 // Throws PreprocessRefused (exit status 2 without request.isovalue: the default isovalue needs
 // every value at once), data::Error (OutOfMemory when even the least streaming plan does not
