@@ -9,6 +9,7 @@
 
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
+#include "preprocessing/similarity.h"
 
 namespace ensil::app {
 namespace {
@@ -80,6 +81,30 @@ std::vector<int> previousIdentitiesByName(const std::vector<std::string>& previo
         result.push_back(at == byName.end() ? -1 : at->second);
     }
     return result;
+}
+
+StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::stop_token& stop,
+                             const data::Progress& progress) {
+    data::Ensemble ensemble = data::openEnsemble(
+        request.selection, stop, [&](double f) { data::report(progress, 0.5 * f); });
+    data::leaveOutMembersWithoutData(ensemble);
+    const prep::DistanceMatrix distances = prep::computeDistanceMatrix(
+        ensemble, request.isovalue, stop, [&](double f) { data::report(progress, 0.5 + 0.5 * f); });
+    const prep::MergeTree tree = prep::clusterMembers(distances, request.linkage, stop);
+    const int k = std::clamp(request.k, 1, static_cast<int>(ensemble.memberCount()));
+    const std::vector<int> labels = prep::clusterLabels(tree, k);
+    StepClusters step;
+    // Named as the workbench names them ("member 3" for one the file leaves unnamed).
+    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
+        const std::string& name = ensemble.members[m].name;
+        step.members.push_back(name.empty() ? "member " + std::to_string(m + 1) : name);
+    }
+    const std::vector<int> previous =
+        previousIdentitiesByName(request.previousMembers, request.previousIdentities, step.members);
+    step.memberIdentities =
+        prep::memberIdentities(labels, matchStepIdentities(tree, k, labels, previous));
+    data::report(progress, 1.0);
+    return step;
 }
 
 std::string identityColorName(int identity) {

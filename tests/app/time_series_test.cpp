@@ -213,9 +213,9 @@ TEST(GenerateTimes, ADemoOverTimeIsDatedAndItsClustersSplitAndMerge) {
 TEST(RenderTimes, OnePicturePerStepNamedByItsTimeIndexAndTitledWithItsTime) {
     test::TempDir dir;
     const QString pattern = QString::fromStdString(dir.file("frame_%03d.png"));
-    const test::EnsilRun run =
-        test::runEnsil({"render", kEra5, "--var", "t", "--iso", "260", "--times", "1:2", "--out",
-                        pattern, "--size", "320x200", "--frames", "1", "--no-cache"});
+    const test::EnsilRun run = test::runEnsil(
+        {"render", kEra5, "--var", "t", "--iso", "260", "--times", "1:2", "--out", pattern,
+         "--size", "320x200", "--frames", "1", "--no-cache", "--floor", "none"});
     ASSERT_EQ(run.code, 0) << run.err.toStdString();
     const QImage a(QString::fromStdString(dir.file("frame_001.png")));
     const QImage b(QString::fromStdString(dir.file("frame_002.png")));
@@ -224,11 +224,12 @@ TEST(RenderTimes, OnePicturePerStepNamedByItsTimeIndexAndTitledWithItsTime) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("frame_000.png")));
     EXPECT_EQ(a.size(), QSize(320, 200));
     EXPECT_NE(a, b) << "the steps' surfaces differ";
-    // The first frame is the picture of its step alone.
+    // The first frame is the picture of its step alone (but for a floor, whose colours span
+    // all the steps: TheFloorHasOneColourScaleOverAllTheSteps).
     const QString single = QString::fromStdString(dir.file("single.png"));
-    const test::EnsilRun alone =
-        test::runEnsil({"render", kEra5, "--var", "t", "--iso", "260", "--time-index", "1", "--out",
-                        single, "--size", "320x200", "--frames", "1", "--no-cache"});
+    const test::EnsilRun alone = test::runEnsil(
+        {"render", kEra5, "--var", "t", "--iso", "260", "--time-index", "1", "--out", single,
+         "--size", "320x200", "--frames", "1", "--no-cache", "--floor", "none"});
     ASSERT_EQ(alone.code, 0) << alone.err.toStdString();
     EXPECT_EQ(a, QImage(single)) << "frame_001.png is time index 1";
     EXPECT_TRUE(run.out.contains("time index 2")) << run.out.toStdString();
@@ -287,3 +288,49 @@ TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps
                  data::Cancelled);
     EXPECT_EQ(done, 2u);
 }
+
+// The workbench's strip clusters the steps not visited without their surfaces: the same
+// clusters and identities as preprocessing each step, matched to the step before.
+TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessing) {
+    app::TimeSeriesRequest request;
+    request.selection = {.paths = {kEra5.toStdString()}, .variable = "t"};
+    request.steps = {0, 3};
+    // The workbench's defaults: its isovalue and 5 clusters, where the groups of step 1 on
+    // take other identities than their tree alone would give them.
+    request.preprocess.clusters = 5;
+    const auto steps =
+        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+    ASSERT_EQ(steps.size(), 4u);
+    bool someoneMoved = false;
+    bool alone = false;  // a step whose tree alone would give other identities
+    for (std::size_t s = 1; s < steps.size(); ++s) {
+        app::StepClusteringRequest one;
+        one.selection = request.selection;
+        one.selection.timeIndex = s;
+        one.isovalue = steps[0].result.meshes.isovalue;
+        one.k = 5;
+        for (const data::Member& m : steps[s - 1].result.ensemble->members) {
+            one.previousMembers.push_back(m.name);
+        }
+        one.previousIdentities = steps[s - 1].memberIdentities;
+        const app::StepClusters clusters = app::clusterTimeStep(one, {});
+        ASSERT_EQ(clusters.members.size(), 10u);
+        EXPECT_EQ(clusters.members.front(), "member 0");
+        EXPECT_EQ(clusters.memberIdentities, steps[s].memberIdentities) << "step " << s;
+        const prep::MergeTree& tree = steps[s].result.tree;
+        alone = alone ||
+                prep::memberIdentities(steps[s].result.labels, prep::identitiesFromTree(tree, 5)) !=
+                    steps[s].memberIdentities;
+        someoneMoved = someoneMoved || clusters.memberIdentities != steps[s - 1].memberIdentities;
+    }
+    EXPECT_TRUE(someoneMoved) << "ERA5's members change group over its steps";
+    EXPECT_TRUE(alone) << "the matching to the step before must matter here";
+
+    std::stop_source stop;
+    stop.request_stop();
+    app::StepClusteringRequest stopped;
+    stopped.selection = request.selection;
+    stopped.isovalue = 260.0F;
+    EXPECT_THROW((void)app::clusterTimeStep(stopped, stop.get_token()), data::Cancelled);
+}
+
