@@ -7,8 +7,10 @@
 #include <mutex>
 #include <set>
 
+#include "app/headless/floor_map.h"
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
+#include "preprocessing/ensemble_moments.h"
 #include "preprocessing/similarity.h"
 
 namespace ensil::app {
@@ -105,6 +107,32 @@ StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::st
         prep::memberIdentities(labels, matchStepIdentities(tree, k, labels, previous));
     data::report(progress, 1.0);
     return step;
+}
+
+std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelection& selection,
+                                                           const StepRange& steps,
+                                                           const gl::RenderSettings& settings,
+                                                           const std::stop_token& stop) {
+    if (steps.count() < 2 || settings.floor == gl::FloorContent::None ||
+        settings.floor == gl::FloorContent::ProbabilityMaximum) {
+        return std::nullopt;
+    }
+    std::optional<std::pair<float, float>> scale;
+    for (std::size_t t = steps.first; t <= steps.last; ++t) {
+        data::DataSelection step = selection;
+        step.timeIndex = t;
+        std::vector<std::string> withoutData;
+        const auto ensemble = withoutMembersWithoutData(
+            std::make_shared<const data::Ensemble>(data::openEnsemble(step, stop)), withoutData);
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(*ensemble, stop);
+        const ColumnMaxima maxima = computeColumnMaxima(*ensemble, moments.mean, stop);
+        const gl::FloorMap floor = floorMapFor(*ensemble, moments.mean, maxima, settings);
+        if (floor.values.empty()) continue;
+        scale = scale ? std::pair{std::min(scale->first, floor.minimum),
+                                  std::max(scale->second, floor.maximum)}
+                      : std::pair{floor.minimum, floor.maximum};
+    }
+    return scale;
 }
 
 std::string identityColorName(int identity) {

@@ -18,6 +18,7 @@
 #include "app/headless/preprocess_run.h"
 #include "data/ensemble_reader.h"
 #include "data/job.h"
+#include "gl/render_settings.h"
 #include "preprocessing/clustering.h"
 
 namespace ensil::app {
@@ -104,6 +105,16 @@ struct StepClusters {
 // Throws data::Error, data::Cancelled.
 StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::stop_token& stop,
                              const data::Progress& progress = {});
+
+// One colour scale for the floor over the steps of a range (ensil render --times), so that a
+// colour means the same value in every frame: the smallest and largest value any step's floor
+// shows (each step read, its members without data left out, its mean and column maxima made as
+// renderEnsemble makes them). nullopt for a floor whose scale is fixed already (none, or a
+// probability's 0 to 1) and for a single step. Throws data::Error, data::Cancelled.
+std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelection& selection,
+                                                           const StepRange& steps,
+                                                           const gl::RenderSettings& settings,
+                                                           const std::stop_token& stop = {});
 
 // "#rrggbb" of a cluster identity (gl::clusterColor), as preprocess and the workbench draw it.
 std::string identityColorName(int identity);

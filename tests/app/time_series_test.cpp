@@ -12,9 +12,11 @@
 #include <filesystem>
 #include <stop_token>
 
+#include "app/headless/floor_map.h"
 #include "app/headless/picture_title.h"
 #include "data/ensemble_reader.h"
 #include "preprocessing/cluster_identity.h"
+#include "preprocessing/ensemble_moments.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/temp_dir.h"
 
@@ -334,3 +336,70 @@ TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessin
     EXPECT_THROW((void)app::clusterTimeStep(stopped, stop.get_token()), data::Cancelled);
 }
 
+// ensil render --times with a floor: one colour scale over all the frames, spanning every
+// step's floor values, said in the colour bar; a frame then differs from its step drawn alone
+// (whose floor spans only its own values), but not where the floor is not drawn.
+TEST(RenderTimes, TheFloorHasOneColourScaleOverAllTheSteps) {
+    const data::DataSelection era5{.paths = {kEra5.toStdString()}, .variable = "t"};
+    gl::RenderSettings settings;
+    settings.floor = gl::FloorContent::ColumnMaximum;
+    const auto scale = app::floorScaleOverSteps(era5, {0, 3}, settings);
+    ASSERT_TRUE(scale.has_value());
+    bool wider = false;
+    std::size_t narrower = 0;  // a step whose own floor spans less than the scale
+    for (std::size_t t = 0; t < 4; ++t) {
+        data::DataSelection one = era5;
+        one.timeIndex = t;
+        const data::Ensemble e = data::openEnsemble(one);
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(e);
+        const gl::FloorMap own =
+            app::floorMapFor(e, moments.mean, app::computeColumnMaxima(e, moments.mean), settings);
+        EXPECT_LE(scale->first, own.minimum) << "step " << t;
+        EXPECT_GE(scale->second, own.maximum) << "step " << t;
+        if (scale->first < own.minimum || scale->second > own.maximum) {
+            wider = true;
+            narrower = t;
+        }
+    }
+    EXPECT_TRUE(wider) << "ERA5's steps differ: some step's own range is narrower";
+    EXPECT_FALSE(app::floorScaleOverSteps(era5, {1, 1}, settings)) << "one step: its own";
+    settings.floor = gl::FloorContent::ProbabilityMaximum;
+    EXPECT_FALSE(app::floorScaleOverSteps(era5, {0, 3}, settings)) << "0 to 1 already";
+
+    test::TempDir dir;
+    const QString pattern = QString::fromStdString(dir.file("frame_%d.png"));
+    // One cluster: the surfaces' colours cannot differ between a frame and its step alone.
+    const QStringList common{"--var",          "t",          "--iso",     "260",    "--floor",
+                             "column-maximum", "--clusters", "1",         "--size", "320x200",
+                             "--frames",       "1",          "--no-cache"};
+    const test::EnsilRun run =
+        test::runEnsil(QStringList{"render", kEra5, "--times", "0:3", "--out", pattern} + common);
+    ASSERT_EQ(run.code, 0) << run.err.toStdString();
+    EXPECT_TRUE(run.out.contains("one scale for all 4 steps")) << run.out.toStdString();
+    const QString single = QString::fromStdString(dir.file("single.png"));
+    const QString step = QString::number(narrower);
+    const test::EnsilRun alone = test::runEnsil(
+        QStringList{"render", kEra5, "--times", step + ":" + step, "--out", single} + common);
+    ASSERT_EQ(alone.code, 0) << alone.err.toStdString();
+    EXPECT_FALSE(alone.out.contains("one scale")) << alone.out.toStdString();
+    const QImage inSeries(QString::fromStdString(dir.file("frame_" + step.toStdString() + ".png")));
+    ASSERT_FALSE(inSeries.isNull());
+    EXPECT_NE(inSeries, QImage(single))
+        << "the floor of step " << narrower << " takes the colours of the scale over all steps";
+    // Without a floor the frame is the step alone: only the floor's colours changed.
+    const QString noFloor = QString::fromStdString(dir.file("plain_%d.png"));
+    QStringList plain = common;
+    plain[plain.indexOf("column-maximum")] = QStringLiteral("none");
+    ASSERT_EQ(
+        test::runEnsil(QStringList{"render", kEra5, "--times", "0:3", "--out", noFloor} + plain)
+            .code,
+        0);
+    const QString plainAlone = QString::fromStdString(dir.file("plain_alone.png"));
+    ASSERT_EQ(
+        test::runEnsil(
+            QStringList{"render", kEra5, "--times", step + ":" + step, "--out", plainAlone} + plain)
+            .code,
+        0);
+    EXPECT_EQ(QImage(QString::fromStdString(dir.file("plain_" + step.toStdString() + ".png"))),
+              QImage(plainAlone));
+}
