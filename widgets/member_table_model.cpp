@@ -104,8 +104,7 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
     const int m = index.row();
     // The hovered row's tint spans the columns of the steps too.
     if (index.column() >= ColumnCount && role != Qt::BackgroundRole) {
-        return m_steps.data(index.column() - ColumnCount, m, m_selection->name(m), role,
-                            SortRole);
+        return m_steps.data(index.column() - ColumnCount, m, m_selection->name(m), role, SortRole);
     }
     const auto column = static_cast<Column>(index.column());
     if (role == Qt::DisplayRole || role == SortRole) {

@@ -1,13 +1,13 @@
 #include "widgets/member_table_panel.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QTableView>
 #include <QToolButton>
-#include <QHBoxLayout>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <vector>
@@ -73,11 +73,11 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
 
     m_stepsButton->setText(tr("Per Step"));
     m_stepsButton->setCheckable(true);
-    m_stepsButton->setToolTip(tr("Show each member's cluster at every time step as a column "
-                                 "(bold: the member moved to another cluster there)"));
+    m_stepsButton->setToolTip(
+        tr("Show each member's cluster at every time step as a column "
+           "(bold: the member moved to another cluster there)"));
     m_stepsButton->setVisible(false);  // for data with time steps
-    connect(m_stepsButton, &QToolButton::toggled, m_model,
-            &MemberTableModel::setStepColumnsShown);
+    connect(m_stepsButton, &QToolButton::toggled, m_model, &MemberTableModel::setStepColumnsShown);
     connect(m_model, &MemberTableModel::stepsChanged, this,
             [this](int count) { m_stepsButton->setVisible(count > 1); });
 
@@ -105,7 +105,8 @@ void MemberTablePanel::fitColumns() {
     const int columns = m_model->columnCount();
     std::vector<int> plain(static_cast<std::size_t>(columns));
     header->setSortIndicatorShown(false);
-    for (int c = 0; c < columns; ++c) plain.at(static_cast<std::size_t>(c)) = header->sectionSizeHint(c);
+    for (int c = 0; c < columns; ++c)
+        plain.at(static_cast<std::size_t>(c)) = header->sectionSizeHint(c);
     header->setSortIndicatorShown(true);
     for (int c = 0; c < columns; ++c) {
         if (c == MemberTableModel::Name) continue;

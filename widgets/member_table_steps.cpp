@@ -45,8 +45,8 @@ QString MemberTableSteps::shortLabel(int step) const {
     const QString& label = m_labels[step];
     bool oneYear = true;
     for (const QString& l : m_labels) oneYear = oneYear && l.left(5) == m_labels.front().left(5);
-    QString text = oneYear && label.size() > 5 && label[4] == QLatin1Char('-') ? label.mid(5)
-                                                                               : label;
+    QString text =
+        oneYear && label.size() > 5 && label[4] == QLatin1Char('-') ? label.mid(5) : label;
     return text.replace(QLatin1Char('T'), QLatin1Char(' '));
 }
 
@@ -68,8 +68,10 @@ QVariant MemberTableSteps::data(int step, int member, const QString& memberName,
         if (m_identities[static_cast<std::size_t>(step)].empty()) {
             return QObject::tr("%1: not clustered yet").arg(m_labels[step]);
         }
-        if (identity < 0) return QObject::tr("%1 at %2: no cluster").arg(memberName, m_labels[step]);
-        QString tip = QObject::tr("%1 at %2: cluster %3").arg(memberName, m_labels[step]).arg(identity + 1);
+        if (identity < 0)
+            return QObject::tr("%1 at %2: no cluster").arg(memberName, m_labels[step]);
+        QString tip =
+            QObject::tr("%1 at %2: cluster %3").arg(memberName, m_labels[step]).arg(identity + 1);
         if (movedAt(step, member)) tip += QObject::tr(" (moved here from another cluster)");
         return tip;
     }
@@ -80,9 +82,10 @@ QVariant MemberTableSteps::headerData(int step, int role) const {
     if (step < 0 || step >= stepCount()) return {};
     if (role == Qt::DisplayRole) return shortLabel(step);
     if (role == Qt::ToolTipRole) {
-        return QObject::tr("Each member's cluster at %1, numbered and coloured as in the "
-                           "Clusters over Time strip; bold: it moved there from another "
-                           "cluster; empty: this step is not clustered yet")
+        return QObject::tr(
+                   "Each member's cluster at %1, numbered and coloured as in the "
+                   "Clusters over Time strip; bold: it moved there from another "
+                   "cluster; empty: this step is not clustered yet")
             .arg(m_labels[step]);
     }
     if (role == Qt::FontRole && step == m_current) {

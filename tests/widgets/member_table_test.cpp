@@ -10,8 +10,8 @@
 #include <QToolButton>
 #include <cmath>
 
-#include "panel_fixtures.h"
 #include "gl/palette.h"
+#include "panel_fixtures.h"
 #include "widgets/csv_export.h"
 #include "widgets/member_filter_proxy.h"
 #include "widgets/member_selection.h"
