@@ -279,7 +279,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
     forEachLayer(nz, stop, [&](std::size_t k) {
         // Vertex ids of the cell row's four point rows, by (dy, dz): rows j and j + 1 of layers
         // k and k + 1; as j advances, the rows j + 1 become the rows j.
-        std::vector<std::uint32_t> scratch(k + 1 < nz ? 4 * 3 * nx : 0);
+        std::vector<std::uint32_t> scratch(k + 1 < nz ? std::size_t{12} * nx : 0);
         std::array<std::uint32_t*, 4> rowsOf{};
         for (std::size_t s = 0; s < 4 && !scratch.empty(); ++s) rowsOf[s] = &scratch[s * 3 * nx];
         if (!scratch.empty()) {
@@ -318,7 +318,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                     ids[e] = rowsOf[ref.dy + 2 * ref.dz][ref.axis * nx + i + ref.dx];
                 }
                 for (const std::int8_t* e = table.triangles[mask].data(); *e >= 0; ++e) {
-                    *out++ = ids[static_cast<std::size_t>(*e)];
+                    *out++ = ids[static_cast<std::uint8_t>(*e)];
                 }
             }
             std::swap(rowsOf[0], rowsOf[1]);
