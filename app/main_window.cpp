@@ -446,8 +446,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     QStringList times;
     for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
     m_timeBar->setSteps(times, m_requested ? static_cast<int>(m_requested->timeIndex) : 0);
-    m_timeline->setSteps(times);
-    m_timelineClusters = 0;
+    resetStepClusters(times);
     // Time controls only for data with time steps.
     m_timeBar->setVisible(times.size() > 1);
     if (auto* dock = findChild<QDockWidget*>(QStringLiteral("clusterTimelineDock"))) {

@@ -16,6 +16,7 @@
 
 #include "app/background_job.h"
 #include "app/ensemble_overview.h"
+#include "app/headless/time_series.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
@@ -231,9 +232,25 @@ private:
     ui::AnimationBar* m_animation = nullptr;
     ui::TimeBar* m_timeBar = nullptr;
     ui::ClusterTimeline* m_timeline = nullptr;
-    int m_timelineClusters = 0;  // the cluster count the timeline's steps were recorded at
+    // The clusters, isovalue and linkage the strip's steps were clustered at: steps clustered
+    // otherwise are not comparable, and are clustered again.
+    QString m_stripKey;
+    // The time step whose clusters the selection shows: -1 from a step's request until its
+    // surfaces are built (the last step's clusters stay on screen meanwhile).
+    int m_clusteredStep = -1;
+    [[nodiscard]] QString stripKey() const;
     // The clusters of the step on screen go into the timeline (main_window_time.cpp).
     void recordStepClusters();
+    // New steps (new data, or another cluster count): the strip and the member table's
+    // columns per step forget the steps' clusters.
+    void resetStepClusters(const QStringList& labels);
+    // The strip's steps not visited, clustered in the background one at a time (reading the
+    // step, its distances and clusters; no surfaces), nearest to the step shown first, each
+    // matched to its neighbour's identities; paused while a step the user asked for is read
+    // or built; stopped from the strip's button until other data is opened.
+    void fillStepClusters();
+    BackgroundJob<StepClusters> m_stepFill{this};
+    bool m_fillStopped = false;
     // Time steps read (ahead, or visited before) and not on screen, by time index.
     std::map<std::size_t, std::unique_ptr<EnsembleOverview>> m_timeSteps;
     BackgroundJob<EnsembleOverview> m_readAhead{this};

@@ -6,6 +6,7 @@
 // step to step. While playing, the next step is read ahead; steps read are kept within a
 // memory budget, so going back to one costs only its surfaces (from the cache).
 #include <QStatusBar>
+#include <QTimer>
 #include <algorithm>
 
 #include "app/ensemble_facts.h"
@@ -15,6 +16,8 @@
 #include "app/main_window.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/member_selection.h"
+#include "widgets/member_table_model.h"
+#include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
@@ -55,6 +58,7 @@ void MainWindow::createTimeBar() {
     // A step is on screen once its surfaces are: then the bar may go on, and the next is read.
     connect(m_session, &IsovalueSession::finished, this, [this] {
         if (!m_overview || !m_requested) return;
+        m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
         recordStepClusters();
         if (m_timeBar->isPlaying()) readAhead();
@@ -63,30 +67,127 @@ void MainWindow::createTimeBar() {
             &MainWindow::recordStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::membersClicked, m_selection,
             &ui::MemberSelection::click);
+    connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, this, [this] {
+        m_fillStopped = true;
+        m_stepFill.cancel();
+        m_timeline->setFilling(0, 0);
+    });
 }
 
 void MainWindow::recordStepClusters() {
+    // Only the clusters of the step they belong to: while a step is built, the last step's
+    // are still shown (and may change, a new k).
     if (!m_overview || !m_requested || !m_selection->isClustered() ||
-        m_session->isRunning()) {
+        m_session->isRunning() || m_clusteredStep != static_cast<int>(m_requested->timeIndex)) {
         return;
     }
-    // Steps recorded at another cluster count are not comparable: they are built again as
-    // they are visited.
-    if (m_selection->clusterCount() != m_timelineClusters) {
+    // Steps clustered at another cluster count, isovalue or linkage are not comparable: they
+    // are clustered again.
+    if (const QString key = stripKey(); key != m_stripKey) {
         QStringList labels;
         for (const std::string& l : m_overview->ensemble->timeSteps.labels) {
             labels << QString::fromStdString(l);
         }
-        m_timeline->setSteps(labels);
-        m_timelineClusters = m_selection->clusterCount();
+        resetStepClusters(labels);
+        m_stripKey = key;
     }
     std::vector<int> identities(static_cast<std::size_t>(m_selection->memberCount()));
     for (int m = 0; m < m_selection->memberCount(); ++m) {
         identities[static_cast<std::size_t>(m)] = m_selection->identityOf(m_selection->clusterOf(m));
     }
     const int step = static_cast<int>(m_requested->timeIndex);
+    m_memberTable->model()->setStepClusters(step, identities);
+    m_memberTable->model()->setCurrentStep(step);
     m_timeline->setStepClusters(step, std::move(identities));
     m_timeline->setCurrentStep(step);
+    fillStepClusters();
+}
+
+void MainWindow::resetStepClusters(const QStringList& labels) {
+    // The strip and the member table's columns per step show the same steps' clusters.
+    m_stepFill.cancel();  // clustered as the strip was
+    m_timeline->setSteps(labels);
+    m_timeline->setFilling(0, 0);
+    m_memberTable->model()->setSteps(labels);
+    m_stripKey.clear();
+}
+
+QString MainWindow::stripKey() const {
+    const float isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
+    return QStringLiteral("%1 clusters at %2, linkage %3")
+        .arg(m_selection->clusterCount())
+        .arg(static_cast<double>(isovalue), 0, 'g', 9)
+        .arg(static_cast<int>(m_session->linkage()));
+}
+
+void MainWindow::fillStepClusters() {
+    const int n = m_timeBar->stepCount();
+    if (!m_overview || !m_requested || n < 2 || m_fillStopped || m_stripKey.isEmpty()) {
+        m_timeline->setFilling(0, 0);
+        return;
+    }
+    // What the user asked for goes first: the next step waits while one is read or built
+    // (and one under way is cancelled when a step is asked for, goToTimeStep).
+    if (m_stepFill.isRunning() || m_loader.isRunning() || m_readAhead.isRunning() ||
+        m_session->isRunning()) {
+        return;
+    }
+    const auto clustered = [this](int s) { return !m_timeline->stepClusters(s).empty(); };
+    int done = 0;
+    for (int s = 0; s < n; ++s) done += clustered(s) ? 1 : 0;
+    m_timeline->setFilling(done, n);
+    // The nearest step not clustered next to one that is, later steps first: each is matched
+    // to the neighbour between it and the step shown, so identities follow groups outward.
+    const int current = static_cast<int>(m_requested->timeIndex);
+    int step = -1, neighbour = -1;
+    for (int d = 1; d < n && step < 0; ++d) {
+        if (current + d < n && !clustered(current + d) && clustered(current + d - 1)) {
+            step = current + d;
+            neighbour = step - 1;
+        } else if (current - d >= 0 && !clustered(current - d) && clustered(current - d + 1)) {
+            step = current - d;
+            neighbour = step + 1;
+        }
+    }
+    if (step < 0) return;
+    StepClusteringRequest request;
+    request.selection = timeStepSelection(static_cast<std::size_t>(step));
+    request.isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
+    request.k = m_selection->clusterCount();
+    request.linkage = m_session->linkage();
+    for (int m = 0; m < m_selection->memberCount(); ++m) {
+        request.previousMembers.push_back(m_selection->name(m).toStdString());
+    }
+    request.previousIdentities = m_timeline->stepClusters(neighbour);
+    const QString key = m_stripKey;
+    m_stepFill.start(
+        [request](const std::stop_token& stop, const data::Progress& progress) {
+            return clusterTimeStep(request, stop, progress);
+        },
+        [this, step, key](const StepClusters& clusters) {
+            if (key == m_stripKey) {
+                // Onto the members shown, by name (a member without data there has none).
+                std::vector<std::string> shown;
+                for (int m = 0; m < m_selection->memberCount(); ++m) {
+                    shown.push_back(m_selection->name(m).toStdString());
+                }
+                std::vector<int> identities =
+                    previousIdentitiesByName(clusters.members, clusters.memberIdentities, shown);
+                m_memberTable->model()->setStepClusters(step, identities);
+                m_timeline->setStepClusters(step, std::move(identities));
+            }
+            // The next one after the events waiting (a step asked for goes first).
+            QTimer::singleShot(0, this, &MainWindow::fillStepClusters);
+        },
+        [this](const std::exception_ptr& error, bool cancelled) {
+            if (error && !cancelled) {
+                // A step that cannot be read is said when it is visited; the strip stays as is.
+                m_fillStopped = true;
+                m_timeline->setFilling(0, 0);
+                return;
+            }
+            QTimer::singleShot(0, this, &MainWindow::fillStepClusters);
+        });
 }
 
 data::DataSelection MainWindow::timeStepSelection(std::size_t step) const {
@@ -97,6 +198,7 @@ data::DataSelection MainWindow::timeStepSelection(std::size_t step) const {
 
 void MainWindow::goToTimeStep(std::size_t step) {
     if (!m_overview || !m_requested || step == m_requested->timeIndex) return;
+    m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
     if (const auto kept = m_timeSteps.find(step); kept != m_timeSteps.end()) {
         std::unique_ptr<EnsembleOverview> overview = std::move(kept->second);
         m_timeSteps.erase(kept);
@@ -136,6 +238,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     m_timeSteps[left] = std::move(m_overview);
     m_overview = std::move(overview);
     m_requested->timeIndex = step;
+    m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     std::size_t bytes = 0;
     for (const auto& [index, kept] : m_timeSteps) bytes += kept->ensemble->bytes();
     // The steps farthest from the one shown go first.
@@ -192,13 +295,17 @@ void MainWindow::readAhead() {
                 return;
             }
             m_timeSteps[next] = std::move(read);
+            fillStepClusters();
         },
         // Reading ahead is a guess: a failure is said when the step is asked for.
         [](const std::exception_ptr&, bool) {});
 }
 
 void MainWindow::forgetTimeSteps() {
+    m_clusteredStep = -1;  // other data: its clusters come with its first surfaces
     m_readAhead.cancel();
+    m_stepFill.cancel();
+    m_fillStopped = false;  // other data: its strip fills again
     m_timeSteps.clear();
 }
 

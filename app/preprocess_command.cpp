@@ -5,12 +5,17 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "app/data_selection_options.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/preprocess_run.h"
+#include "app/headless/streaming_run.h"
+#ifdef ENSIL_WITH_MPI
+#include "app/preprocess_mpi.h"
+#endif
 #include "app/headless/time_series.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
@@ -49,6 +54,14 @@ struct Options {
                        "to the previous step's so a group keeps its number and colour. --json "
                        "then gives 'steps', one object per step with its 'time'."),
         QStringLiteral("all|A:B")};
+    QCommandLineOption memoryLimit{
+        QStringLiteral("memory-limit"),
+        QStringLiteral("Memory the preprocessing may hold (default: three quarters of what is "
+                       "available now). A NetCDF ensemble that would take more in memory (1.5 "
+                       "times its values) is read in slabs of layers and member by member "
+                       "instead, with the same results but no contour boxplot; --iso is then "
+                       "needed. E.g. 1GiB, 512M."),
+        QStringLiteral("SIZE")};
 };
 
 // Clusters and linkage, with their ranges from the one setting table.
@@ -139,6 +152,19 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     o[QStringLiteral("depth")] = depth;
     o[QStringLiteral("median_member")] = static_cast<qint64>(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
+    // How it was read when it was streamed (null when it was read whole).
+    if (r.streaming) {
+        std::size_t thickest = 0;
+        for (const auto& slab : r.streaming->slabs) thickest = std::max(thickest, slab.layerCount);
+        o[QStringLiteral("streaming")] =
+            QJsonObject{{"memory_limit_bytes", static_cast<qint64>(r.streaming->memoryLimit)},
+                        {"slabs", static_cast<qint64>(r.streaming->slabs.size())},
+                        {"layers_per_slab", static_cast<qint64>(thickest)},
+                        {"members_at_once", static_cast<qint64>(r.streaming->membersAtOnce)},
+                        {"planned_peak_bytes", static_cast<qint64>(r.streaming->peakBytes())}};
+    } else {
+        o[QStringLiteral("streaming")] = QJsonValue();
+    }
     return o;
 }
 
@@ -290,8 +316,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions(
-        {o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json, o.times});
+    parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json,
+                       o.times, o.memoryLimit});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -308,6 +334,18 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
             "--times is refused with --demo: the built-in demo has no time steps; write one "
             "that has with ensil generate --times T --out FILE.nc");
     }
+    if (selection && problem.isEmpty() && parser.isSet(o.memoryLimit) &&
+        (parser.isSet(o.times) || parser.isSet(o.demo))) {
+        problem = QStringLiteral(
+            "--memory-limit is refused with --times and --demo: it applies to one ensemble read "
+            "from files");
+    }
+    std::optional<std::size_t> memoryLimit;
+    if (selection && problem.isEmpty() && parser.isSet(o.memoryLimit)) {
+        std::string why;
+        memoryLimit = parseMemorySize(parser.value(o.memoryLimit).toStdString(), why);
+        if (!memoryLimit) problem = QString::fromStdString(why);
+    }
     // No --iso: the workbench's default for the variable, chosen once the data is read.
     std::optional<double> iso;
     if (problem.isEmpty() && selection && parser.isSet(o.iso)) {
@@ -320,7 +358,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
             ? session::parseBoundedNumber(QStringLiteral("--error"), parser.value(o.error), 0.001,
                                           10.0, false, problem)
             : std::nullopt;
-    if (!selection || !isoOk || !errorCells ||
+    if (!selection || !isoOk || !errorCells || (parser.isSet(o.memoryLimit) && !memoryLimit) ||
         !clusterOptions().applyTo(parser, requested, problem)) {
         err << "ensil preprocess: " << problem << "\n";
         return 2;
@@ -347,9 +385,54 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          ? parser.value(o.cacheDir).toStdString()
                                          : defaultMeshCacheDirectory();
         }
+        const auto printResult = [&](Result& r) {
+            r.seconds["total"] = seconds(total);
+            if (parser.isSet(o.json)) {
+                out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
+            } else {
+                printText(out, r);
+            }
+        };
+#ifdef ENSIL_WITH_MPI
+        if (runningUnderMpi()) {
+            if (parser.isSet(o.times) || parser.isSet(o.demo)) {
+                err << "ensil preprocess: --times and --demo are refused under mpirun: it "
+                       "preprocesses one ensemble read from NetCDF files\n";
+                return 2;
+            }
+            return runDistributedPreprocess(
+                *selection, request, memoryLimit,
+                [&](PreprocessResult&& result) {
+                    Result r;
+                    static_cast<PreprocessResult&>(r) = std::move(result);
+                    r.cache =
+                        request.cacheDirectory ? QStringLiteral("stored") : QStringLiteral("off");
+                    printResult(r);
+                },
+                err);
+        }
+#endif
         if (parser.isSet(o.times)) {
             return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
                                  out, err);
+        }
+        const auto notice = [&](const std::string& kind, const std::string& text) {
+            err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
+                << QString::fromStdString(text) << "\n";
+        };
+        if (!parser.isSet(o.demo)) {
+            // An ensemble larger than the memory budget is read in slabs instead of refused.
+            const std::size_t limit = memoryLimit.value_or(defaultMemoryLimit());
+            const data::EnsembleDescription description = data::describeEnsemble(*selection);
+            if (inMemoryPeakBytes(description) > limit && canStream(*selection)) {
+                request.sourceKey = data::sourceIdentity(*selection);
+                Result r;
+                static_cast<PreprocessResult&>(r) =
+                    preprocessStreaming(*selection, description, request, limit, notice);
+                r.cache = request.cacheDirectory ? QStringLiteral("stored") : QStringLiteral("off");
+                printResult(r);
+                return 0;
+            }
         }
         stage.start();
         auto ensemble = std::make_shared<const data::Ensemble>(
@@ -360,21 +443,13 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                                        " seed=" + std::to_string(demo.seed)
                                                  : data::sourceIdentity(*selection);
         Result r;
-        static_cast<PreprocessResult&>(r) = preprocessEnsemble(
-            std::move(ensemble), request, [&](const std::string& kind, const std::string& text) {
-                err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
-                    << QString::fromStdString(text) << "\n";
-            });
+        static_cast<PreprocessResult&>(r) =
+            preprocessEnsemble(std::move(ensemble), request, notice);
         r.seconds["load"] = loadSeconds;
         r.cache = !request.cacheDirectory ? QStringLiteral("off")
                   : r.fromCache           ? QStringLiteral("hit")
                                           : QStringLiteral("miss");
-        r.seconds["total"] = seconds(total);
-        if (parser.isSet(o.json)) {
-            out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
-        } else {
-            printText(out, r);
-        }
+        printResult(r);
         return 0;
     } catch (const PreprocessRefused& e) {
         err << "ensil preprocess: " << e.what() << "\n";

@@ -191,10 +191,19 @@ bool isFramePattern(const QString& pattern) {
 }
 
 // One picture per step of `range`: the first step's drawn session (isovalue, camera) is the
-// next one's, only the time index changes; each step's clusters are matched to the previous.
+// next one's, only the time index changes; each step's clusters are matched to the previous,
+// and the floor's colours span one scale over all the steps.
 int renderTimes(const session::SessionState& first, RenderRequest request, const StepRange& range,
                 const QString& pattern, QTextStream& out, QTextStream& err) {
     session::SessionState state = first;
+    // One colour scale for the floor over every frame, so that a colour means the same value
+    // in each; the colour bar says so.
+    if (const auto scale = floorScaleOverSteps(first.data, range, first.render)) {
+        request.floorRange = scale;
+        request.floorRangeNote = ", one scale for all " + std::to_string(range.count()) + " steps";
+        out << "floor colours: one scale for all " << range.count() << " steps, " << scale->first
+            << " to " << scale->second << "\n";
+    }
     for (std::size_t t = range.first; t <= range.last; ++t) {
         state.data.timeIndex = t;
         const RenderOutcome result = renderSession(state, request);

@@ -66,6 +66,17 @@ struct EnsembleDescription {
     [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
 };
 
+// A part of an ensemble, for reading it in slabs: the members [firstMember, firstMember +
+// memberCount) and the grid's layers along z [firstLayer, firstLayer + layerCount) (a hyperslab).
+struct EnsemblePart {
+    std::size_t firstMember = 0;
+    std::size_t memberCount = 0;
+    std::size_t firstLayer = 0;
+    std::size_t layerCount = 0;
+
+    bool operator==(const EnsemblePart&) const = default;
+};
+
 class EnsembleReader {
 public:
     virtual ~EnsembleReader() = default;
@@ -78,6 +89,16 @@ public:
     // Reads the values. Throws Error, Cancelled. Values are float, NaN where missing.
     [[nodiscard]] virtual Ensemble read(const DataSelection& selection, const std::stop_token& stop,
                                         const Progress& progress) const = 0;
+    // True when readPart() reads a part without the rest (data/ensemble_part.h).
+    [[nodiscard]] virtual bool readsParts() const { return false; }
+    // Reads only `part` of the ensemble `description` says (describe()'s for this selection):
+    // its members, on the grid cut to its layers. Call it through openEnsemblePart(), which
+    // checks the part first. Throws Error, Cancelled; Error(UnsupportedFormat) where
+    // readsParts() is false (defined in data/ensemble_part.cpp).
+    [[nodiscard]] virtual Ensemble readPart(const DataSelection& selection,
+                                            const EnsembleDescription& description,
+                                            const EnsemblePart& part, const std::stop_token& stop,
+                                            const Progress& progress) const;
 };
 
 // The reader for the selection's files, chosen by their first bytes. Throws Error(FileNotFound)

@@ -106,9 +106,11 @@ std::string getString(codes_handle* h, const char* key) {
     return text.data();
 }
 
-std::string atOffset(const std::string& path, std::size_t number, std::size_t offset) {
-    return "'" + path + "', GRIB message " + std::to_string(number) + " at byte offset " +
-           std::to_string(offset);
+std::string atOffset(const std::string& path, std::size_t number, std::size_t offset,
+                     std::size_t field = 0) {
+    return "'" + path + "', GRIB message " + std::to_string(number) +
+           (field > 0 ? " (its field " + std::to_string(field + 1) + ")" : std::string()) +
+           " at byte offset " + std::to_string(offset);
 }
 
 // Section 0, a GRIB 1 section 1 (28 bytes at least) and "7777" already take 40 bytes; GRIB 2's
@@ -148,6 +150,64 @@ std::optional<std::uint64_t> claimedLength(std::FILE* file, long start) {
     }
     return length;
 }
+
+// How many fields the GRIB 2 message at `start` (`length` bytes, already checked against the
+// file) holds: its data sections (number 7), counted by walking the sections' own lengths, so
+// that the common single-field message costs a few small reads and no second decode. A walk
+// that goes astray (a damaged length) stops there; what ecCodes makes of it decides.
+std::size_t gribFieldCount(std::FILE* file, long start, std::uint64_t length) {
+    std::size_t fields = 0;
+    std::uint64_t at = 16;  // after section 0
+    std::array<unsigned char, 5> head{};
+    while (at + 5 <= length) {
+        if (std::fseek(file, start + static_cast<long>(at), SEEK_SET) != 0 ||
+            std::fread(head.data(), 1, head.size(), file) != head.size()) {
+            break;
+        }
+        if (std::string_view(reinterpret_cast<const char*>(head.data()), 4) == "7777") break;
+        const std::uint64_t section = std::uint64_t{head[0]} << 24 | std::uint64_t{head[1]} << 16 |
+                                      std::uint64_t{head[2]} << 8 | head[3];
+        if (section < 5) break;
+        if (head[4] == 7) ++fields;
+        at += section;
+    }
+    return std::max<std::size_t>(fields, 1);
+}
+
+// The fields of one GRIB 2 message with several, one handle at a time: the message is copied
+// into memory and read with ecCodes's multi-field support, which is switched on only while
+// this object lives, under the ecCodes lock (it is a setting of ecCodes's one context), and
+// only for this message's bytes, so ecCodes never reads past them into the next message.
+class MessageFields {
+public:
+    MessageFields(std::FILE* file, std::size_t offset, std::size_t length)
+        : m_bytes(length, '\0') {
+        if (std::fseek(file, static_cast<long>(offset), SEEK_SET) != 0 ||
+            std::fread(m_bytes.data(), 1, length, file) != length) {
+            return;
+        }
+        m_memory = fmemopen(m_bytes.data(), m_bytes.size(), "rb");
+        if (m_memory != nullptr) codes_grib_multi_support_on(nullptr);
+    }
+    ~MessageFields() {
+        if (m_memory == nullptr) return;
+        codes_grib_multi_support_reset_file(nullptr, m_memory);
+        codes_grib_multi_support_off(nullptr);
+        std::fclose(m_memory);
+    }
+    MessageFields(const MessageFields&) = delete;
+    MessageFields& operator=(const MessageFields&) = delete;
+
+    // The next field's handle; null after the last (or when the message cannot be read).
+    codes_handle* next(int* error) {
+        if (m_memory == nullptr) return nullptr;
+        return codes_handle_new_from_file(nullptr, m_memory, PRODUCT_GRIB, error);
+    }
+
+private:
+    std::string m_bytes;
+    std::FILE* m_memory = nullptr;
+};
 
 GribGrid readGrid(codes_handle* h) {
     GribGrid g;
@@ -225,6 +285,46 @@ std::size_t nearestIndex(const std::vector<double>& list, double value, double t
     return list.size();
 }
 
+// The fields after the first of a GRIB 2 message that holds several, with the first's place
+// in the file (a field is decoded from its message, GribFile::decode). Skipped with a warning
+// like a damaged message when one does not read or packs more values than its grid has.
+void addFurtherFields(std::FILE* file, const GribMessage& first, const std::string& path,
+                      GribInventory& inventory) {
+    if (gribFieldCount(file, static_cast<long>(first.offset), first.length) < 2) return;
+    MessageFields fields(file, first.offset, first.length);
+    int error = CODES_SUCCESS;
+    const Handle skipped(fields.next(&error));  // the first, already read
+    for (std::size_t f = 1;; ++f) {
+        Handle h;
+        try {
+            h.reset(fields.next(&error));
+        } catch (const LibraryAssertion& e) {
+            inventory.warnings.push_back(atOffset(path, first.number, first.offset, f) +
+                                         " is damaged (ecCodes gave up on it: " + e.what() +
+                                         "); ensil skipped it and the fields after it");
+            break;
+        }
+        if (!h) break;
+        GribMessage m = readKeys(h.get(), first.number);
+        m.offset = first.offset;
+        m.length = first.length;
+        m.field = f;
+        const long packed = std::max(getLong(h.get(), "numberOfValues"),
+                                     getLong(h.get(), "numberOfCodedValues"));
+        const std::string where = atOffset(path, m.number, m.offset, f);
+        if (m.validity < 0) {
+            inventory.warnings.push_back(where + " is damaged (its reference date, time or "
+                                                 "forecast step is impossible); ensil skipped it");
+        } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
+            inventory.warnings.push_back(where + " is damaged (it says it packs " +
+                                         std::to_string(packed) + " values, but its grid has " +
+                                         std::to_string(m.values) + " points); ensil skipped it");
+        } else {
+            inventory.messages.push_back(std::move(m));
+        }
+    }
+}
+
 }  // namespace
 
 GribInventory scanGribFile(const std::string& path, const std::stop_token& stop) {
@@ -278,6 +378,8 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
                 continue;
             }
             GribMessage m = readKeys(h.get(), number);
+            m.offset = static_cast<std::size_t>(*start);
+            m.length = static_cast<std::size_t>(*length);
             // ecCodes allocates what a message says it packs when it decodes it: a damaged
             // count would take gigabytes for a grid of a few hundred points.
             const long packed = std::max(getLong(h.get(), "numberOfValues"),
@@ -288,7 +390,9 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
                 skip("it says it packs " + std::to_string(packed) + " values, but its grid has " +
                      std::to_string(m.values) + " points");
             } else {
+                const GribMessage first = m;
                 inventory.messages.push_back(std::move(m));
+                if (first.edition == 2) addFurtherFields(file.get(), first, path, inventory);
             }
         } catch (const LibraryAssertion& e) {
             skip(std::string("ecCodes gave up on it: ") + e.what());
@@ -423,20 +527,26 @@ void GribFile::decode(const GribMessage& message, float* out, std::vector<double
     try {
         decodeLocked(message, out, scratch);
     } catch (const LibraryAssertion& e) {
-        throw Error(ErrorKind::CorruptFile, atOffset(m_path, message.number, message.offset) +
-                                                " is damaged: ecCodes gave up on it (" + e.what() +
-                                                ")");
+        throw Error(ErrorKind::CorruptFile,
+                    atOffset(m_path, message.number, message.offset, message.field) +
+                        " is damaged: ecCodes gave up on it (" + e.what() + ")");
     }
 }
 
 void GribFile::decodeLocked(const GribMessage& message, float* out,
                             std::vector<double>& scratch) const {
-    const std::string where = atOffset(m_path, message.number, message.offset);
+    const std::string where = atOffset(m_path, message.number, message.offset, message.field);
     if (std::fseek(m_file, static_cast<long>(message.offset), SEEK_SET) != 0) {
         throw Error(ErrorKind::CorruptFile, where + " cannot be reached: the file changed");
     }
     int error = CODES_SUCCESS;
-    const Handle h(codes_handle_new_from_file(nullptr, m_file, PRODUCT_GRIB, &error));
+    // A field after the first is read from its message's bytes with multi-field support; the
+    // first (every field of most files) straight from the file, as ecCodes reads it by default.
+    std::optional<MessageFields> fields;
+    if (message.field > 0) fields.emplace(m_file, message.offset, message.length);
+    Handle h(fields ? fields->next(&error)
+                    : codes_handle_new_from_file(nullptr, m_file, PRODUCT_GRIB, &error));
+    for (std::size_t f = 0; fields && h && f < message.field; ++f) h.reset(fields->next(&error));
     if (!h) {
         throw Error(ErrorKind::CorruptFile, where + " no longer reads: " + libraryWords(error) +
                                                 ". Was the file changed while ensil read it?");

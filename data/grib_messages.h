@@ -35,6 +35,11 @@ struct GribGrid {
 struct GribMessage {
     std::size_t offset = 0;  // where it starts in the file, in bytes
     std::size_t number = 0;  // 1 for the file's first message
+    // Which field of its message (0: the first): a GRIB 2 message may repeat its sections 2 to
+    // 7 or 3 to 7 or 4 to 7 to hold several fields (levels, parameters, members), each its own
+    // GribMessage here. length: the whole message's, in bytes (0 where not known).
+    std::size_t field = 0;
+    std::size_t length = 0;
     long edition = 0;
     std::string shortName, name, units;
     long paramId = 0;
@@ -52,7 +57,8 @@ struct GribInventory {
     std::vector<std::string> warnings;
 };
 
-// The headers of every readable message in the file. A damaged message is skipped with a
+// The headers of every readable field in the file: one GribMessage per message, and one per
+// field of a GRIB 2 message holding several. A damaged message is skipped with a
 // warning naming its byte offset. Throws Error(FileNotFound) when the file cannot be opened,
 // Error(CorruptFile) when it holds no readable message, Cancelled when `stop` is requested.
 GribInventory scanGribFile(const std::string& path, const std::stop_token& stop);

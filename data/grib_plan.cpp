@@ -89,7 +89,9 @@ std::vector<T> common(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 std::string messageText(const GribMessage& m) {
-    return "message " + std::to_string(m.number) + " at byte offset " + std::to_string(m.offset);
+    return "message " + std::to_string(m.number) +
+           (m.field > 0 ? " (its field " + std::to_string(m.field + 1) + ")" : std::string()) +
+           " at byte offset " + std::to_string(m.offset);
 }
 
 std::string gridText(const GribGrid& g) {

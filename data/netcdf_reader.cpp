@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "data/cf_conventions.h"
+#include "data/ensemble_part.h"
 #include "data/error.h"
 #include "data/netcdf_file.h"
 #include "data/netcdf_plan.h"
@@ -63,9 +64,11 @@ void unpackInto(const T* raw, std::size_t n, const Unpacking& u, float* out) {
     }
 }
 
-// Reads one member of one component into `out` (sizes[0] * sizes[1] * sizes[2] values, x fastest).
+// Reads one member of one component into `out` (sizes[0] * sizes[1] * sizes[2] values, x fastest),
+// from the layer zStart along z on.
 void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent& c,
-                   std::size_t member, FieldValues& out, std::vector<double>& scratch) {
+                   std::size_t member, FieldValues& out, std::vector<double>& scratch,
+                   std::size_t zStart = 0) {
     const NcVariable& var = *c.variable;
     const std::size_t rank = var.dimIds.size();
     std::vector<std::size_t> start(rank, 0), count(rank, 1);
@@ -80,6 +83,7 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
         if (slot != c.spatialDims.end()) {
             const auto s = static_cast<std::size_t>(slot - c.spatialDims.begin());
             count[d] = c.sizes[s];
+            start[d] = s == 2 ? zStart : 0;
             imap[d] = strides[s];
             order.push_back(static_cast<int>(s));
         } else {
@@ -148,14 +152,27 @@ void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
     }
 }
 
-void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, FieldValues& out) {
+// The component as read over the layers [firstLayer, firstLayer + layers) of the grid: as many
+// layers, one more where it is staggered along z.
+NcComponent componentLayers(const NcPlan& plan, const NcComponent& c, std::size_t layers) {
+    NcComponent part = c;
+    part.sizes[2] = layers + (c.sizes[2] - plan.grid.nz());
+    return part;
+}
+
+// One member over the grid's layers [firstLayer, firstLayer + grid.nz()), `grid` being the plan's
+// grid cut to them (the whole grid for the whole member).
+void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, FieldValues& out,
+                const Grid& grid, std::size_t firstLayer) {
     FieldValues part;
     std::vector<double> scratch;
-    readComponent(file, plan, plan.components.front(), member, out, scratch);
-    destagger(plan.components.front(), plan.grid, out);
+    const NcComponent first = componentLayers(plan, plan.components.front(), grid.nz());
+    readComponent(file, plan, first, member, out, scratch, firstLayer);
+    destagger(first, grid, out);
     if (!plan.derived) return;
-    readComponent(file, plan, plan.components.at(1), member, part, scratch);
-    destagger(plan.components[1], plan.grid, part);
+    const NcComponent second = componentLayers(plan, plan.components.at(1), grid.nz());
+    readComponent(file, plan, second, member, part, scratch, firstLayer);
+    destagger(second, grid, part);
     toWindSpeed(out.data(), part.data(), out.size());
 }
 
@@ -256,9 +273,36 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
             throwIfStopped(stop);
             Member& member = e.members.at(next);
             member.name = description.memberNames.at(next);
-            readMember(file, plan, m, member.values);
+            readMember(file, plan, m, member.values, plan.grid, 0);
             report(progress, static_cast<double>(next + 1) / static_cast<double>(e.members.size()));
         }
+    }
+    return e;
+}
+
+Ensemble NetcdfReader::readPart(const DataSelection& selection,
+                                const EnsembleDescription& description, const EnsemblePart& part,
+                                const std::stop_token& stop, const Progress& progress) const {
+    Ensemble e = ensembleDescribedBy(description, selection.paths);
+    e.grid = gridLayers(description.grid, part.firstLayer, part.layerCount);
+    e.members.resize(part.memberCount);
+    const std::size_t end = part.firstMember + part.memberCount;
+    std::size_t next = 0;  // the ensemble's index of the file's first member
+    for (std::size_t f = 0; f < selection.paths.size() && next < end; ++f) {
+        const std::lock_guard lock(netcdfLibraryMutex());
+        const NetcdfFile file(selection.paths[f]);
+        const NcPlan plan = planVariable(file, selection, selection.paths.size() == 1);
+        const std::size_t inFile = membersIn(file, plan);
+        for (std::size_t m = std::max(part.firstMember, next); m < std::min(end, next + inFile);
+             ++m) {
+            throwIfStopped(stop);
+            Member& member = e.members.at(m - part.firstMember);
+            member.name = description.memberNames.at(m);
+            readMember(file, plan, m - next, member.values, e.grid, part.firstLayer);
+            report(progress, static_cast<double>(m + 1 - part.firstMember) /
+                                 static_cast<double>(part.memberCount));
+        }
+        next += inFile;
     }
     return e;
 }

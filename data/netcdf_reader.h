@@ -19,6 +19,13 @@ public:
     [[nodiscard]] EnsembleDescription describe(const DataSelection& selection) const override;
     [[nodiscard]] Ensemble read(const DataSelection& selection, const std::stop_token& stop,
                                 const Progress& progress) const override;
+    // Hyperslab reads: each member's values over the part's layers only (one more layer where
+    // the variable is staggered along z, averaged away as in read()).
+    [[nodiscard]] bool readsParts() const override { return true; }
+    [[nodiscard]] Ensemble readPart(const DataSelection& selection,
+                                    const EnsembleDescription& description,
+                                    const EnsemblePart& part, const std::stop_token& stop,
+                                    const Progress& progress) const override;
 };
 
 }  // namespace ensil::data

@@ -22,6 +22,8 @@ packages=(
     libeccodes-dev libeccodes-tools
     # the Python module (pybind11) and its tests (pytest, NumPy)
     pybind11-dev python3-dev python3-pytest python3-numpy
+    # `mpirun -np K ensil preprocess` (the mpi/ front end, ENSIL_WITH_MPI; the ci preset needs it)
+    libopenmpi-dev openmpi-bin
     # tests and benchmarks
     libgtest-dev libgmock-dev libbenchmark-dev
     # the libFuzzer targets (tests/fuzz/, the fuzz preset): clang 14 and its libFuzzer runtime

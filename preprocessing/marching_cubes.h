@@ -4,8 +4,12 @@
 // cube face, inside corners (value > isovalue) that touch only diagonally stay separated",
 // which depends only on the face, so neighbouring cells always agree: no cracks, consistent
 // orientation. Cells touching a missing value (NaN) make no triangles.
-// Positions are in index space (see data/triangle_mesh.h). The work is parallel over z-layers
-// (oneTBB), which composes with parallelism over members. Pure function; any thread.
+// Positions are in index space (see data/triangle_mesh.h). One pass over the values turns each
+// grid row into bit sets (inside, valid); crossing edges and the cells that make triangles are
+// then found 64 points at a time, so empty regions cost next to nothing and no grid-sized
+// arrays are allocated. The work is parallel over z-layers (oneTBB), which composes with
+// parallelism over members; the result does not depend on the thread count. Pure function;
+// any thread.
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// Reduced-detail isosurfaces for scrubbing the isovalue (METHODS.md section 20): every member's
+// Reduced-detail isosurfaces for scrubbing the isovalue (METHODS.md section 21): every member's
 // and the mean's surface extracted from the field sampled at every s-th grid point (the last
 // point of each axis always kept, so surfaces still meet the box's faces where the full ones
 // do), coarsely decimated, with the full field's attributes. Built in tens of milliseconds for

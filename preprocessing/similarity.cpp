@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 #include <string>
+#include <type_traits>
 
 #include "data/error.h"
 
@@ -24,28 +26,29 @@ std::size_t blockRows(std::size_t members) {
     return std::clamp<std::size_t>(kBlockBytes / (members * sizeof(double)), 1024, 65536);
 }
 
-// Running sums over the points seen so far, for every pair (i, j). With S_i = M_i s_i the
-// masked square-root distances and M_i the validity masks:
+// The three running sums of DistanceSums, viewed as matrices over its one array. With
+// S_i = M_i s_i the masked square-root distances and M_i the validity masks:
 //   cross(i, j)   = sum_x S_i S_j        (lower triangle only)
 //   squares(i, j) = sum_x S_i^2 M_j      (full matrix; not symmetric)
 //   common(i, j)  = sum_x M_i M_j = m_ij (lower triangle only)
 // so that sum_x M_i M_j (s_i - s_j)^2 = squares(i, j) + squares(j, i) - 2 cross(i, j).
-struct PairSums {
-    Matrix cross;
-    Matrix squares;
-    Matrix common;
+template <typename MatrixType>  // Matrix, or const Matrix to read
+struct PairSumsView {
+    using Map = Eigen::Map<MatrixType>;
+    Map cross, squares, common;
 
-    explicit PairSums(Eigen::Index n)
-        : cross(Matrix::Zero(n, n)), squares(Matrix::Zero(n, n)), common(Matrix::Zero(n, n)) {}
+    PairSumsView(std::conditional_t<std::is_const_v<MatrixType>, const double*, double*> data,
+                 Eigen::Index n)
+        : cross(data, n, n), squares(data + n * n, n, n), common(data + 2 * n * n, n, n) {}
 };
 
 // Fills s and mask (rows x members) with the points [first, first + rows) of every
 // member. Returns whether any of these points is missing in any member.
-bool fillBlock(const data::Ensemble& ensemble, double isovalue, std::size_t first, std::size_t rows,
-               Matrix& s, Matrix& mask) {
+bool fillBlock(std::span<const std::span<const float>> members, double isovalue, std::size_t first,
+               std::size_t rows, Matrix& s, Matrix& mask) {
     bool missing = false;
-    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
-        const float* values = ensemble.members[m].values.data() + first;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        const float* values = members[m].data() + first;
         double* sColumn = s.col(static_cast<Eigen::Index>(m)).data();
         double* maskColumn = mask.col(static_cast<Eigen::Index>(m)).data();
         bool columnMissing = false;
@@ -62,7 +65,8 @@ bool fillBlock(const data::Ensemble& ensemble, double isovalue, std::size_t firs
     return missing;
 }
 
-void accumulateBlock(const Matrix& s, const Matrix& mask, bool missing, PairSums& sums) {
+void accumulateBlock(const Matrix& s, const Matrix& mask, bool missing,
+                     PairSumsView<Matrix>& sums) {
     sums.cross.selfadjointView<Eigen::Lower>().rankUpdate(s.transpose());
     if (missing) {
         const Matrix squared = s.array().square().matrix();
@@ -99,29 +103,6 @@ void placePairsWithoutOverlap(DistanceMatrix& m) {
     }
 }
 
-DistanceMatrix assemble(const PairSums& sums, std::size_t n) {
-    DistanceMatrix result;
-    result.size = n;
-    result.values.assign(n * n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        for (std::size_t j = 0; j < i; ++j) {
-            const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
-            const double count = sums.common(ii, jj);
-            // The expanded form loses the exact zero of identical members to rounding; clamp
-            // the tiny negative values that can result.
-            const double sum = std::max(
-                0.0, sums.squares(ii, jj) + sums.squares(jj, ii) - 2.0 * sums.cross(ii, jj));
-            if (count > 0.0) {
-                result.values[i * n + j] = result.values[j * n + i] = sum / count;
-            } else {
-                result.pairsWithoutOverlap.emplace_back(j, i);
-            }
-        }
-    }
-    placePairsWithoutOverlap(result);
-    return result;
-}
-
 }  // namespace
 
 void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
@@ -145,29 +126,125 @@ void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
     }
 }
 
+DistanceSums::DistanceSums(std::size_t members, float isovalue)
+    : m_members(members), m_isovalue(isovalue), m_sums(3 * members * members + 1, 0.0) {}
+
+void DistanceSums::add(std::span<const std::span<const float>> memberValues,
+                       const std::stop_token& stop) {
+    if (memberValues.size() != m_members) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "the distance sums were made for " + std::to_string(m_members) +
+                              " members but are given " + std::to_string(memberValues.size()));
+    }
+    if (m_members == 0) return;
+    const std::size_t points = memberValues.front().size();
+    for (std::size_t m = 1; m < m_members; ++m) {
+        if (memberValues[m].size() != points) {
+            throw data::Error(
+                data::ErrorKind::InvalidArgument,
+                "member " + std::to_string(m) + " gives " + std::to_string(memberValues[m].size()) +
+                    " values to the distance sums where member 0 gives " + std::to_string(points));
+        }
+    }
+    if (points == 0) return;
+    const auto n = static_cast<Eigen::Index>(m_members);
+    const std::size_t maxRows = std::min(blockRows(m_members), points);
+    Matrix s(static_cast<Eigen::Index>(maxRows), n);
+    Matrix mask(static_cast<Eigen::Index>(maxRows), n);
+    PairSumsView<Matrix> sums(m_sums.data(), n);
+    for (std::size_t first = 0; first < points; first += maxRows) {
+        data::throwIfStopped(stop);
+        const std::size_t rows = std::min(maxRows, points - first);
+        if (rows < maxRows) {  // the last block is shorter
+            s.resize(static_cast<Eigen::Index>(rows), n);
+            mask.resize(static_cast<Eigen::Index>(rows), n);
+        }
+        const bool missing = fillBlock(memberValues, m_isovalue, first, rows, s, mask);
+        accumulateBlock(s, mask, missing, sums);
+    }
+    m_sums.back() += static_cast<double>(points);
+}
+
+void DistanceSums::merge(const DistanceSums& other) {
+    if (other.m_members != m_members || !(other.m_isovalue == m_isovalue)) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "cannot merge distance sums of " + std::to_string(other.m_members) +
+                              " members at isovalue " + std::to_string(other.m_isovalue) +
+                              " into sums of " + std::to_string(m_members) +
+                              " members at isovalue " + std::to_string(m_isovalue));
+    }
+    for (std::size_t k = 0; k < m_sums.size(); ++k) m_sums[k] += other.m_sums[k];
+}
+
+DistanceSums DistanceSums::subset(std::span<const std::size_t> keep) const {
+    DistanceSums out(keep.size(), m_isovalue);
+    const std::size_t n = m_members, k = keep.size();
+    for (std::size_t a = 0; a < k; ++a) {
+        if (keep[a] >= n) {
+            throw data::Error(data::ErrorKind::InvalidArgument,
+                              "member " + std::to_string(keep[a]) + " is not among the " +
+                                  std::to_string(n) + " of the distance sums");
+        }
+    }
+    // Column-major n x n matrices one after another, as PairSumsView reads them.
+    for (std::size_t matrix = 0; matrix < 3; ++matrix) {
+        const double* from = m_sums.data() + matrix * n * n;
+        double* to = out.m_sums.data() + matrix * k * k;
+        for (std::size_t b = 0; b < k; ++b) {
+            for (std::size_t a = 0; a < k; ++a) to[a + b * k] = from[keep[a] + keep[b] * n];
+        }
+    }
+    out.m_sums.back() = points();
+    return out;
+}
+
+DistanceMatrix DistanceSums::finish() const {
+    const std::size_t n = m_members;
+    DistanceMatrix result;
+    result.size = n;
+    result.values.assign(n * n, 0.0);
+    if (n == 0) return result;
+    const PairSumsView<const Matrix> sums(m_sums.data(), static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
+            const double count = sums.common(ii, jj);
+            // The expanded form loses the exact zero of identical members to rounding; clamp
+            // the tiny negative values that can result.
+            const double sum = std::max(
+                0.0, sums.squares(ii, jj) + sums.squares(jj, ii) - 2.0 * sums.cross(ii, jj));
+            if (count > 0.0) {
+                result.values[i * n + j] = result.values[j * n + i] = sum / count;
+            } else {
+                result.pairsWithoutOverlap.emplace_back(j, i);
+            }
+        }
+    }
+    placePairsWithoutOverlap(result);
+    return result;
+}
+
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop, const data::Progress& progress) {
     checkDistanceArguments(ensemble, isovalue, "compare the members");
     const std::size_t n = ensemble.memberCount();
     const std::size_t points = ensemble.grid.pointCount();
-    const std::size_t maxRows = std::min(blockRows(n), points);
-    const auto columns = static_cast<Eigen::Index>(n);
-    Matrix s(static_cast<Eigen::Index>(maxRows), columns);
-    Matrix mask(static_cast<Eigen::Index>(maxRows), columns);
-    PairSums sums(columns);
-    for (std::size_t first = 0; first < points; first += maxRows) {
+    // Added a block at a time, so that progress is reported and the stop token seen between
+    // blocks; the same sums as one add() of every point.
+    const std::size_t step = std::min(blockRows(n), points);
+    DistanceSums sums(n, isovalue);
+    std::vector<std::span<const float>> block(n);
+    for (std::size_t first = 0; first < points; first += step) {
         data::throwIfStopped(stop);
-        const std::size_t rows = std::min(maxRows, points - first);
-        if (rows < maxRows) {  // the last block is shorter
-            s.resize(static_cast<Eigen::Index>(rows), columns);
-            mask.resize(static_cast<Eigen::Index>(rows), columns);
+        const std::size_t rows = std::min(step, points - first);
+        for (std::size_t m = 0; m < n; ++m) {
+            block[m] = std::span<const float>(ensemble.members[m].values.data() + first, rows);
         }
-        const bool missing = fillBlock(ensemble, isovalue, first, rows, s, mask);
-        accumulateBlock(s, mask, missing, sums);
+        sums.add(block, stop);
         data::report(progress, static_cast<double>(first + rows) / static_cast<double>(points));
     }
     data::throwIfStopped(stop);
-    DistanceMatrix result = assemble(sums, n);
+    DistanceMatrix result = sums.finish();
     data::report(progress, 1.0);
     return result;
 }
@@ -189,9 +266,10 @@ std::string pairsWithoutOverlapWarning(const data::Ensemble& ensemble,
     const auto [i, j] = pairs.front();
     char distance[32];
     std::snprintf(distance, sizeof distance, "%.4g", distances.at(i, j));
-    text += "): they cannot be compared, so each such pair is placed as far apart as the farthest "
-            "pair that can be (distance " +
-            std::string(distance) + ")";
+    text +=
+        "): they cannot be compared, so each such pair is placed as far apart as the farthest "
+        "pair that can be (distance " +
+        std::string(distance) + ")";
     return text;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <stop_token>
 #include <string>
 #include <utility>
@@ -25,6 +26,50 @@ struct DistanceMatrix {
     std::vector<std::pair<std::size_t, std::size_t>> pairsWithoutOverlap;
 
     [[nodiscard]] double at(std::size_t i, std::size_t j) const { return values[i * size + j]; }
+};
+
+// The distance matrix's sums over some of the grid points (METHODS.md section 7): for every pair
+// (i, j) the sums of s_i s_j, s_i^2 and s_j^2 and the count m_ij over the points valid in both.
+// Sums over disjoint sets of points add up, so any partition of the grid (blocks in one process,
+// slabs read one after another, ranks of an MPI job) gives the whole grid's matrix: each part
+// adds its points, the parts are merged (merge() here, or a sum-reduction of raw() between
+// processes), and finish() divides. Accumulated in double; not thread-safe (one per thread).
+class DistanceSums {
+public:
+    DistanceSums() = default;
+    DistanceSums(std::size_t members, float isovalue);
+
+    [[nodiscard]] std::size_t members() const { return m_members; }
+    [[nodiscard]] float isovalue() const { return m_isovalue; }
+    // Grid points added so far (over every merged part).
+    [[nodiscard]] double points() const { return m_sums.empty() ? 0.0 : m_sums.back(); }
+
+    // Adds the same `points` consecutive grid points of every member: memberValues[m] holds
+    // member m's values there (NaN or infinite where missing). Throws data::Cancelled between
+    // blocks of about 4 MiB; data::Error(InvalidArgument) when the count of members or of values
+    // differs from what the sums were made for.
+    void add(std::span<const std::span<const float>> memberValues,
+             const std::stop_token& stop = {});
+    // Adds another part's sums (made for the same members and isovalue, over other points).
+    // Throws data::Error(InvalidArgument) otherwise.
+    void merge(const DistanceSums& other);
+    // The sums of the members `keep` (indices, increasing) alone, as if only they had been
+    // added: a member found to have no data after its points were added is left out this way.
+    // Throws data::Error(InvalidArgument) for an index out of range.
+    [[nodiscard]] DistanceSums subset(std::span<const std::size_t> keep) const;
+    // The sums as one array of doubles, laid out alike for the same member count: adding two
+    // such arrays element by element is merge(), so an MPI_SUM reduction of them combines ranks.
+    [[nodiscard]] std::span<double> raw() { return m_sums; }
+    [[nodiscard]] std::span<const double> raw() const { return m_sums; }
+
+    // The distance matrix of the points added, as computeDistanceMatrix describes it. Throws
+    // data::Error(AllValuesMissing) when no two members share a valid point.
+    [[nodiscard]] DistanceMatrix finish() const;
+
+private:
+    std::size_t m_members = 0;
+    float m_isovalue = 0.0F;
+    std::vector<double> m_sums;  // cross, squares, common (n x n each), then the point count
 };
 
 // Distances between all members at the given isovalue. A point counts for a pair when both

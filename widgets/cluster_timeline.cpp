@@ -3,6 +3,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolButton>
 #include <QToolTip>
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,12 @@ QColor colourOf(int identity) {
 }  // namespace
 
 ClusterTimeline::ClusterTimeline(MemberSelection* selection, QWidget* parent)
-    : QWidget(parent), m_selection(selection) {
+    : QWidget(parent), m_selection(selection), m_filling(new QToolButton(this)) {
+    m_filling->setAutoRaise(true);
+    m_filling->setToolTip(tr("The clusters of the steps not visited are computed in the "
+                             "background (no surfaces); click to stop"));
+    m_filling->hide();
+    connect(m_filling, &QToolButton::clicked, this, &ClusterTimeline::stopFillingRequested);
     setObjectName(QStringLiteral("clusterTimeline"));
     setMouseTracking(true);
     setMinimumHeight(110);
@@ -64,6 +70,19 @@ const std::vector<int>& ClusterTimeline::stepClusters(int step) const {
 void ClusterTimeline::setCurrentStep(int step) {
     m_current = step;
     update();
+}
+
+void ClusterTimeline::setFilling(int done, int total) {
+    m_filling->setVisible(total > 0 && done < total);
+    if (!m_filling->isVisible()) return;
+    m_filling->setText(tr("Clustering the other steps: %1 of %2 - stop").arg(done).arg(total));
+    m_filling->adjustSize();
+    m_filling->move(width() - m_filling->width() - 2, 0);
+}
+
+void ClusterTimeline::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    m_filling->move(width() - m_filling->width() - 2, 0);
 }
 
 void ClusterTimeline::layOut() {

@@ -49,7 +49,7 @@ MemberTableModel::MemberTableModel(MemberSelection* selection, QObject* parent)
 
 void MemberTableModel::rowChanged(int row, const QList<int>& roles) {
     if (row < 0 || row >= rowCount()) return;
-    emit dataChanged(index(row, 0), index(row, ColumnCount - 1), roles);
+    emit dataChanged(index(row, 0), index(row, columnCount() - 1), roles);
 }
 
 void MemberTableModel::columnChanged(int column, const QList<int>& roles) {
@@ -62,12 +62,50 @@ int MemberTableModel::rowCount(const QModelIndex& parent) const {
 }
 
 int MemberTableModel::columnCount(const QModelIndex& parent) const {
-    return parent.isValid() ? 0 : ColumnCount;
+    if (parent.isValid()) return 0;
+    return ColumnCount + (m_stepColumnsShown ? m_steps.stepCount() : 0);
+}
+
+void MemberTableModel::setSteps(const QStringList& labels) {
+    if (m_stepColumnsShown) beginResetModel();
+    m_steps.setSteps(labels);
+    if (m_stepColumnsShown) endResetModel();
+    emit stepsChanged(m_steps.stepCount());
+}
+
+void MemberTableModel::setStepClusters(int step, std::vector<int> identities) {
+    if (!m_steps.setStepClusters(step, std::move(identities)) || !m_stepColumnsShown) return;
+    // The step's column, and the next one's bold marks (who moved since this step).
+    for (const int s : {step, step + 1}) {
+        if (s < m_steps.stepCount()) {
+            columnChanged(stepColumn(s), {Qt::DisplayRole, Qt::DecorationRole, Qt::FontRole,
+                                          Qt::ToolTipRole, SortRole});
+        }
+    }
+}
+
+void MemberTableModel::setCurrentStep(int step) {
+    const int before = m_steps.currentStep();
+    m_steps.setCurrentStep(step);
+    if (!m_stepColumnsShown || before == step) return;
+    emit headerDataChanged(Qt::Horizontal, ColumnCount, columnCount() - 1);
+}
+
+void MemberTableModel::setStepColumnsShown(bool shown) {
+    if (shown == m_stepColumnsShown) return;
+    // Columns come and go: a reset, which the panel and its proxy follow like new members.
+    beginResetModel();
+    m_stepColumnsShown = shown;
+    endResetModel();
 }
 
 QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
     const int m = index.row();
+    // The hovered row's tint spans the columns of the steps too.
+    if (index.column() >= ColumnCount && role != Qt::BackgroundRole) {
+        return m_steps.data(index.column() - ColumnCount, m, m_selection->name(m), role, SortRole);
+    }
     const auto column = static_cast<Column>(index.column());
     if (role == Qt::DisplayRole || role == SortRole) {
         const bool sort = role == SortRole;
@@ -153,6 +191,9 @@ QString MemberTableModel::depthToolTip(int m) const {
 }
 
 QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+    if (orientation == Qt::Horizontal && section >= ColumnCount) {
+        return m_steps.headerData(section - ColumnCount, role);
+    }
     if (orientation != Qt::Horizontal || (role != Qt::DisplayRole && role != Qt::ToolTipRole)) {
         return QAbstractTableModel::headerData(section, orientation, role);
     }

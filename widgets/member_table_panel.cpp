@@ -1,14 +1,16 @@
 #include "widgets/member_table_panel.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QItemSelectionModel>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QTableView>
+#include <QToolButton>
 #include <QVBoxLayout>
 #include <algorithm>
-#include <array>
+#include <vector>
 
 #include "widgets/member_filter_proxy.h"
 #include "widgets/member_selection.h"
@@ -22,6 +24,7 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
       m_model(new MemberTableModel(selection, this)),
       m_proxy(new MemberFilterProxy(this)),
       m_filter(new QLineEdit(this)),
+      m_stepsButton(new QToolButton(this)),
       m_table(new QTableView(this)) {
     m_proxy->setSourceModel(m_model);
     m_filter->setPlaceholderText(tr("Filter members by name or #"));
@@ -68,9 +71,22 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     m_table->setMouseTracking(true);
     m_table->viewport()->installEventFilter(this);
 
+    m_stepsButton->setText(tr("Per Step"));
+    m_stepsButton->setCheckable(true);
+    m_stepsButton->setToolTip(
+        tr("Show each member's cluster at every time step as a column "
+           "(bold: the member moved to another cluster there)"));
+    m_stepsButton->setVisible(false);  // for data with time steps
+    connect(m_stepsButton, &QToolButton::toggled, m_model, &MemberTableModel::setStepColumnsShown);
+    connect(m_model, &MemberTableModel::stepsChanged, this,
+            [this](int count) { m_stepsButton->setVisible(count > 1); });
+
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(2, 2, 2, 2);
-    layout->addWidget(m_filter);
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_filter);
+    top->addWidget(m_stepsButton);
+    layout->addLayout(top);
     layout->addWidget(m_table);
 
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &MemberFilterProxy::setFilterText);
@@ -86,13 +102,13 @@ void MemberTablePanel::fitColumns() {
     // some 25 pixels a column, which in a side dock were all the names had left. So the headers
     // are measured without it, and the sorted column alone gets it.
     QHeaderView* header = m_table->horizontalHeader();
-    std::array<int, MemberTableModel::ColumnCount> plain{};
+    const int columns = m_model->columnCount();
+    std::vector<int> plain(static_cast<std::size_t>(columns));
     header->setSortIndicatorShown(false);
-    for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+    for (int c = 0; c < columns; ++c)
         plain.at(static_cast<std::size_t>(c)) = header->sectionSizeHint(c);
-    }
     header->setSortIndicatorShown(true);
-    for (int c = 0; c < MemberTableModel::ColumnCount; ++c) {
+    for (int c = 0; c < columns; ++c) {
         if (c == MemberTableModel::Name) continue;
         int width = c == header->sortIndicatorSection() ? header->sectionSizeHint(c)
                                                         : plain.at(static_cast<std::size_t>(c));

@@ -28,6 +28,39 @@ std::shared_ptr<const data::Ensemble> withoutMembersWithoutData(
     return reduced;
 }
 
+int clustersFor(const PreprocessRequest& request, int members, bool someWithoutData) {
+    if (request.clusters <= members) return request.clusters;
+    // The default asks for more clusters than a small ensemble has.
+    if (!request.clustersGiven) return members;
+    throw PreprocessRefused(
+        "--clusters " + std::to_string(request.clusters) + " is more than the " +
+            std::to_string(members) + " members of this ensemble" +
+            (someWithoutData ? " with data" : "") + "; give at most " + std::to_string(members),
+        2);
+}
+
+void checkIsovalueRange(double iso, double minimum, double maximum, const std::string& variable,
+                        const std::string& units) {
+    if (iso <= minimum || iso >= maximum) {
+        throw PreprocessRefused("isovalue " + number(iso) + " is outside the values of '" +
+                                    variable + "' (" + number(minimum) + " .. " + number(maximum) +
+                                    " " + units +
+                                    "): no member has a surface there. Choose an isovalue "
+                                    "inside that range",
+                                1);
+    }
+}
+
+void labelMembers(PreprocessResult& r) {
+    r.labels = prep::clusterLabels(r.tree, r.k);
+    r.colors.clear();
+    for (const int identity :
+         prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, r.k))) {
+        const glm::vec3 c = gl::clusterColor(identity);
+        r.colors.push_back(QColor::fromRgbF(c.r, c.g, c.b).name().toStdString());
+    }
+}
+
 PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,
                                     const PreprocessRequest& request,
                                     const PreprocessNotice& notice, const std::stop_token& stop,
@@ -42,28 +75,12 @@ PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,
     for (const std::string& name : r.membersWithoutData) {
         notice("warning", data::memberWithoutDataWarning(ensemble, name));
     }
-    const int members = static_cast<int>(ensemble.memberCount());
-    r.k = request.clusters;
-    if (r.k > members && !request.clustersGiven) {
-        r.k = members;  // the default asks for more clusters than a small ensemble has
-    } else if (r.k > members) {
-        throw PreprocessRefused("--clusters " + std::to_string(r.k) + " is more than the " +
-                                    std::to_string(members) + " members of this ensemble" +
-                                    (r.membersWithoutData.empty() ? "" : " with data") +
-                                    "; give at most " + std::to_string(members),
-                                2);
-    }
+    r.k = clustersFor(request, static_cast<int>(ensemble.memberCount()),
+                      !r.membersWithoutData.empty());
     const prep::FieldStatistics stats =
         prep::computeFieldStatistics(ensemble, prep::kIsovalueHistogramBins, stop);
     const double iso = request.isovalue.value_or(prep::defaultIsovalue(ensemble, stats));
-    if (iso <= stats.minimum || iso >= stats.maximum) {
-        throw PreprocessRefused("isovalue " + number(iso) + " is outside the values of '" +
-                                    ensemble.variable + "' (" + number(stats.minimum) + " .. " +
-                                    number(stats.maximum) + " " + ensemble.units +
-                                    "): no member has a surface there. Choose an isovalue "
-                                    "inside that range",
-                                1);
-    }
+    checkIsovalueRange(iso, stats.minimum, stats.maximum, ensemble.variable, ensemble.units);
     IsovalueJobInput job;
     job.ensemble = &ensemble;
     job.options.isovalue = static_cast<float>(iso);
@@ -91,12 +108,7 @@ PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,
         notice("warning", warning);
     }
     r.tree = std::move(outcome.tree);
-    r.labels = prep::clusterLabels(r.tree, r.k);
-    for (const int identity :
-         prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, r.k))) {
-        const glm::vec3 c = gl::clusterColor(identity);
-        r.colors.push_back(QColor::fromRgbF(c.r, c.g, c.b).name().toStdString());
-    }
+    labelMembers(r);
     r.distancesToMean = std::move(outcome.distancesToMean);
     r.meanOutlyingness = std::move(outcome.meanOutlyingness);
     r.boxplot = std::move(outcome.boxplot);

@@ -21,6 +21,7 @@
 #include "preprocessing/inclusion_depth.h"
 #include "preprocessing/isosurface_pipeline.h"
 #include "preprocessing/similarity.h"
+#include "preprocessing/streaming_preprocess.h"
 
 namespace ensil::app {
 
@@ -54,6 +55,10 @@ struct PreprocessResult {
     prep::ContourBoxplot boxplot;
     bool fromCache = false;
     std::map<std::string, double> seconds;  // each stage's
+    // Set when the ensemble was preprocessed in slabs (app/headless/streaming_run.h): the plan
+    // it followed. Then `ensemble` holds the description and member names but no values, and
+    // the contour boxplot (and its context surfaces) is not made.
+    std::optional<prep::StreamingPlan> streaming;
 };
 
 // A request the data cannot answer, with the command's exit status: 2 for a bad option (too
@@ -76,6 +81,16 @@ std::shared_ptr<const data::Ensemble> withoutMembersWithoutData(
 
 // Said along the way: kind is "note" or "warning", text what the command prints after it.
 using PreprocessNotice = std::function<void(const std::string& kind, const std::string& text)>;
+
+// The pieces the in-memory and the streaming runs share (app/headless/streaming_run.h):
+// the clusters asked for, checked against the members with data (a default lowered to them,
+// PreprocessRefused with exit status 2 for a given count above them)...
+int clustersFor(const PreprocessRequest& request, int members, bool someWithoutData);
+// ...the isovalue checked against the values' range (PreprocessRefused, exit status 1)...
+void checkIsovalueRange(double iso, double minimum, double maximum, const std::string& variable,
+                        const std::string& units);
+// ...and each member's cluster and colour from r.tree and r.k.
+void labelMembers(PreprocessResult& r);
 
 // Throws PreprocessRefused, data::Error, data::Cancelled. `progress` and `notice` are called on
 // the calling thread or on the job's workers.

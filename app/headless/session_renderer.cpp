@@ -83,7 +83,13 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     ColumnMaxima maxima = computeColumnMaxima(ensemble, moments.mean);
     maxima.exceedance = outcome.exceedanceColumnMaximum;
     maxima.isovalue = iso;
-    renderer.setFloorMap(floorMapFor(ensemble, moments.mean, maxima, state.render));
+    gl::FloorMap floor = floorMapFor(ensemble, moments.mean, maxima, state.render);
+    if (request.floorRange && !floor.values.empty()) {
+        floor.minimum = request.floorRange->first;
+        floor.maximum = request.floorRange->second;
+        floor.caption += QString::fromStdString(request.floorRangeNote);
+    }
+    renderer.setFloorMap(std::move(floor));
     SectionSources section;
     section.ensemble = &ensemble;
     section.mean = &moments.mean;

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "widgets/session/session_state.h"
 
@@ -30,6 +31,11 @@ struct RenderRequest {
     // groups from frame to frame. Empty: the identities come from the tree alone.
     std::vector<std::string> previousMembers;
     std::vector<int> previousIdentities;
+    // One colour scale for the floor over several pictures (ensil render --times, from
+    // floorScaleOverSteps): the floor's colours span these values, and floorRangeNote is added
+    // to its colour bar's caption. None: the floor spans its own values.
+    std::optional<std::pair<float, float>> floorRange;
+    std::string floorRangeNote;
 };
 
 struct RenderOutcome {

@@ -7,8 +7,11 @@
 #include <mutex>
 #include <set>
 
+#include "app/headless/floor_map.h"
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
+#include "preprocessing/ensemble_moments.h"
+#include "preprocessing/similarity.h"
 
 namespace ensil::app {
 namespace {
@@ -80,6 +83,56 @@ std::vector<int> previousIdentitiesByName(const std::vector<std::string>& previo
         result.push_back(at == byName.end() ? -1 : at->second);
     }
     return result;
+}
+
+StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::stop_token& stop,
+                             const data::Progress& progress) {
+    data::Ensemble ensemble = data::openEnsemble(
+        request.selection, stop, [&](double f) { data::report(progress, 0.5 * f); });
+    data::leaveOutMembersWithoutData(ensemble);
+    const prep::DistanceMatrix distances = prep::computeDistanceMatrix(
+        ensemble, request.isovalue, stop, [&](double f) { data::report(progress, 0.5 + 0.5 * f); });
+    const prep::MergeTree tree = prep::clusterMembers(distances, request.linkage, stop);
+    const int k = std::clamp(request.k, 1, static_cast<int>(ensemble.memberCount()));
+    const std::vector<int> labels = prep::clusterLabels(tree, k);
+    StepClusters step;
+    // Named as the workbench names them ("member 3" for one the file leaves unnamed).
+    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
+        const std::string& name = ensemble.members[m].name;
+        step.members.push_back(name.empty() ? "member " + std::to_string(m + 1) : name);
+    }
+    const std::vector<int> previous =
+        previousIdentitiesByName(request.previousMembers, request.previousIdentities, step.members);
+    step.memberIdentities =
+        prep::memberIdentities(labels, matchStepIdentities(tree, k, labels, previous));
+    data::report(progress, 1.0);
+    return step;
+}
+
+std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelection& selection,
+                                                           const StepRange& steps,
+                                                           const gl::RenderSettings& settings,
+                                                           const std::stop_token& stop) {
+    if (steps.count() < 2 || settings.floor == gl::FloorContent::None ||
+        settings.floor == gl::FloorContent::ProbabilityMaximum) {
+        return std::nullopt;
+    }
+    std::optional<std::pair<float, float>> scale;
+    for (std::size_t t = steps.first; t <= steps.last; ++t) {
+        data::DataSelection step = selection;
+        step.timeIndex = t;
+        std::vector<std::string> withoutData;
+        const auto ensemble = withoutMembersWithoutData(
+            std::make_shared<const data::Ensemble>(data::openEnsemble(step, stop)), withoutData);
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(*ensemble, stop);
+        const ColumnMaxima maxima = computeColumnMaxima(*ensemble, moments.mean, stop);
+        const gl::FloorMap floor = floorMapFor(*ensemble, moments.mean, maxima, settings);
+        if (floor.values.empty()) continue;
+        scale = scale ? std::pair{std::min(scale->first, floor.minimum),
+                                  std::max(scale->second, floor.maximum)}
+                      : std::pair{floor.minimum, floor.maximum};
+    }
+    return scale;
 }
 
 std::string identityColorName(int identity) {

@@ -3,7 +3,8 @@
 // meshes, similarity, clustering) and its clusters matched to the previous step's, so that a
 // group of members keeps its identity, and so its colour, from step to step (METHODS.md
 // section 8). Shared by `ensil preprocess --times`, the benchmark and the workbench's
-// cluster-over-time strip (which calls matchStepIdentities for each new step). Any thread.
+// cluster-over-time strip (which clusters the steps not visited with clusterTimeStep). Any
+// thread.
 #pragma once
 
 #include <cstddef>
@@ -11,11 +12,13 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/headless/preprocess_run.h"
 #include "data/ensemble_reader.h"
 #include "data/job.h"
+#include "gl/render_settings.h"
 #include "preprocessing/clustering.h"
 
 namespace ensil::app {
@@ -77,6 +80,41 @@ std::vector<TimeStepResult> preprocessTimeSeries(const TimeSeriesRequest& reques
                                                  const std::stop_token& stop = {},
                                                  const data::Progress& progress = {},
                                                  const StepDone& stepDone = {});
+
+// One time step's clusters without its surfaces, for the workbench's strip to fill the steps
+// not visited (in the background): the step read at its time index, members without data left
+// out (as the workbench does), the distance matrix at the isovalue, the merge tree with the
+// linkage, its k clusters (k at most the members) and their identities matched to the
+// neighbouring step's by member name (matchStepIdentities), so colours agree with the strip's.
+// No meshes: a fraction of a step's preprocessing.
+struct StepClusteringRequest {
+    data::DataSelection selection;  // at the step's time index
+    float isovalue = 0.0F;
+    int k = 1;
+    prep::Linkage linkage = prep::Linkage::Average;
+    // The neighbouring step's members and their identities (-1: none); empty for none.
+    std::vector<std::string> previousMembers;
+    std::vector<int> previousIdentities;
+};
+
+struct StepClusters {
+    std::vector<std::string> members;   // the step's members with data, by name
+    std::vector<int> memberIdentities;  // per member: its cluster's identity
+};
+
+// Throws data::Error, data::Cancelled.
+StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::stop_token& stop,
+                             const data::Progress& progress = {});
+
+// One colour scale for the floor over the steps of a range (ensil render --times), so that a
+// colour means the same value in every frame: the smallest and largest value any step's floor
+// shows (each step read, its members without data left out, its mean and column maxima made as
+// renderEnsemble makes them). nullopt for a floor whose scale is fixed already (none, or a
+// probability's 0 to 1) and for a single step. Throws data::Error, data::Cancelled.
+std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelection& selection,
+                                                           const StepRange& steps,
+                                                           const gl::RenderSettings& settings,
+                                                           const std::stop_token& stop = {});
 
 // "#rrggbb" of a cluster identity (gl::clusterColor), as preprocess and the workbench draw it.
 std::string identityColorName(int identity);

@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QScrollBar>
 #include <QSignalSpy>
+#include <QTableView>
+#include <QToolButton>
 #include <QTest>
 
+#include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/workbench_helpers.h"
@@ -14,6 +18,8 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/member_selection.h"
+#include "widgets/member_table_model.h"
+#include "widgets/member_table_panel.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 
@@ -27,12 +33,14 @@ bool stepShown(app::MainWindow& window, int step) {
                                         !window.isovalueSession()->isRunning(); },
                            60000);
 }
-// Shows the workbench and opens ERA5's variable, waiting for its first surfaces.
-bool openEra5(app::MainWindow& window, QSize size, const char* variable) {
+// Shows the workbench and opens ERA5's variable (the NetCDF file, or its GRIB twin), waiting
+// for its first surfaces.
+bool openEra5(app::MainWindow& window, QSize size, const char* variable,
+              const char* file = "era5_eda_members.nc") {
     if (!test::showWorkbench(window, size)) return false;
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     data::DataSelection selection;
-    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + file};
     selection.variable = variable;
     window.openFiles(selection);
     return built.wait(60000);
@@ -70,7 +78,6 @@ TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilT
     const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
     EXPECT_EQ(strip.stepClusters(0).size(), 10u);
     EXPECT_EQ(strip.stepClusters(1).size(), 10u);
-    EXPECT_TRUE(strip.stepClusters(2).empty()) << "not visited yet";
     ui::MemberSelection& members = *window.memberSelection();
     for (int m = 0; m < 10; ++m) {
         EXPECT_EQ(strip.stepClusters(1)[static_cast<std::size_t>(m)],
@@ -126,4 +133,66 @@ TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
     ASSERT_TRUE(stepShown(window, 0));
     EXPECT_TRUE(window.isovalueSession()->result()->keptInMemory);
     EXPECT_EQ(window.view()->renderer().meshes(), first) << "the very surfaces of before";
+}
+
+// Waits until the strip holds each of ERA5's four steps' clusters.
+bool stripFilled(const app::MainWindow& window) {
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    return QTest::qWaitFor(
+        [&] {
+            for (int s = 0; s < 4; ++s) {
+                if (strip.stepClusters(s).size() != 10u) return false;
+            }
+            return !strip.fillingButton()->isVisible();
+        },
+        120000);
+}
+
+// Without visiting them, the strip gets every step's clusters (computed in the background,
+// without surfaces), with the identities `ensil preprocess --times all` gives at the same
+// isovalue and k; the member table's columns per step show the same.
+TEST(MainWindowTime, TheStripFillsEveryStepInTheBackgroundAsTheCommandLineClustersThem) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(openEra5(window, {1400, 900}, "t"));
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    ASSERT_TRUE(stripFilled(window)) << "the steps not visited are clustered";
+    EXPECT_EQ(window.timeBar()->shownStep(), 0) << "without leaving the step shown";
+
+    app::TimeSeriesRequest request;
+    request.selection = {.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"},
+                         .variable = "t"};
+    request.steps = {0, 3};
+    request.preprocess.isovalue = *window.captureSession().isovalue;
+    request.preprocess.clusters = window.memberSelection()->clusterCount();
+    const auto steps =
+        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+    ui::MemberTableModel& table = *window.memberTable()->model();
+    window.memberTable()->stepsButton()->click();
+    ASSERT_TRUE(table.stepColumnsShown());
+    for (int s = 0; s < 4; ++s) {
+        EXPECT_EQ(strip.stepClusters(s), steps[static_cast<std::size_t>(s)].memberIdentities)
+            << "step " << s;
+        const QModelIndex cell = table.index(0, ui::MemberTableModel::stepColumn(s));
+        EXPECT_EQ(cell.data().toInt(), strip.stepClusters(s).front() + 1) << "step " << s;
+    }
+    // For the eye: the strip filled and the table's columns per step (see the closing note).
+    QScrollBar* across = window.memberTable()->table()->horizontalScrollBar();
+    across->setValue(across->maximum());
+    window.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_strip_filled.png"));
+
+    // Its GRIB twin is the same data: the same clusters at every step, steps visited or not.
+    app::MainWindow twin;
+    ASSERT_TRUE(openEra5(twin, {1400, 900}, "t", "era5-levels-members.grib"));
+    twin.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(twin, 1));
+    ASSERT_TRUE(stripFilled(twin));
+    const ui::ClusterTimeline& twinStrip = *twin.findChild<ui::ClusterTimeline*>();
+    twin.memberTable()->stepsButton()->click();
+    twin.memberTable()->table()->horizontalScrollBar()->setValue(
+        twin.memberTable()->table()->horizontalScrollBar()->maximum());
+    for (int s = 0; s < 4; ++s) {
+        EXPECT_EQ(twinStrip.stepClusters(s), strip.stepClusters(s)) << "step " << s;
+    }
+    twin.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_grib_strip_step1.png"));
 }

@@ -12,9 +12,11 @@
 #include <filesystem>
 #include <stop_token>
 
+#include "app/headless/floor_map.h"
 #include "app/headless/picture_title.h"
 #include "data/ensemble_reader.h"
 #include "preprocessing/cluster_identity.h"
+#include "preprocessing/ensemble_moments.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/temp_dir.h"
 
@@ -213,9 +215,9 @@ TEST(GenerateTimes, ADemoOverTimeIsDatedAndItsClustersSplitAndMerge) {
 TEST(RenderTimes, OnePicturePerStepNamedByItsTimeIndexAndTitledWithItsTime) {
     test::TempDir dir;
     const QString pattern = QString::fromStdString(dir.file("frame_%03d.png"));
-    const test::EnsilRun run =
-        test::runEnsil({"render", kEra5, "--var", "t", "--iso", "260", "--times", "1:2", "--out",
-                        pattern, "--size", "320x200", "--frames", "1", "--no-cache"});
+    const test::EnsilRun run = test::runEnsil(
+        {"render", kEra5, "--var", "t", "--iso", "260", "--times", "1:2", "--out", pattern,
+         "--size", "320x200", "--frames", "1", "--no-cache", "--floor", "none"});
     ASSERT_EQ(run.code, 0) << run.err.toStdString();
     const QImage a(QString::fromStdString(dir.file("frame_001.png")));
     const QImage b(QString::fromStdString(dir.file("frame_002.png")));
@@ -224,11 +226,12 @@ TEST(RenderTimes, OnePicturePerStepNamedByItsTimeIndexAndTitledWithItsTime) {
     EXPECT_FALSE(std::filesystem::exists(dir.file("frame_000.png")));
     EXPECT_EQ(a.size(), QSize(320, 200));
     EXPECT_NE(a, b) << "the steps' surfaces differ";
-    // The first frame is the picture of its step alone.
+    // The first frame is the picture of its step alone (but for a floor, whose colours span
+    // all the steps: TheFloorHasOneColourScaleOverAllTheSteps).
     const QString single = QString::fromStdString(dir.file("single.png"));
-    const test::EnsilRun alone =
-        test::runEnsil({"render", kEra5, "--var", "t", "--iso", "260", "--time-index", "1", "--out",
-                        single, "--size", "320x200", "--frames", "1", "--no-cache"});
+    const test::EnsilRun alone = test::runEnsil(
+        {"render", kEra5, "--var", "t", "--iso", "260", "--time-index", "1", "--out", single,
+         "--size", "320x200", "--frames", "1", "--no-cache", "--floor", "none"});
     ASSERT_EQ(alone.code, 0) << alone.err.toStdString();
     EXPECT_EQ(a, QImage(single)) << "frame_001.png is time index 1";
     EXPECT_TRUE(run.out.contains("time index 2")) << run.out.toStdString();
@@ -286,4 +289,117 @@ TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps
                                                  }),
                  data::Cancelled);
     EXPECT_EQ(done, 2u);
+}
+
+// The workbench's strip clusters the steps not visited without their surfaces: the same
+// clusters and identities as preprocessing each step, matched to the step before.
+TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessing) {
+    app::TimeSeriesRequest request;
+    request.selection = {.paths = {kEra5.toStdString()}, .variable = "t"};
+    request.steps = {0, 3};
+    // The workbench's defaults: its isovalue and 5 clusters, where the groups of step 1 on
+    // take other identities than their tree alone would give them.
+    request.preprocess.clusters = 5;
+    const auto steps =
+        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+    ASSERT_EQ(steps.size(), 4u);
+    bool someoneMoved = false;
+    bool alone = false;  // a step whose tree alone would give other identities
+    for (std::size_t s = 1; s < steps.size(); ++s) {
+        app::StepClusteringRequest one;
+        one.selection = request.selection;
+        one.selection.timeIndex = s;
+        one.isovalue = steps[0].result.meshes.isovalue;
+        one.k = 5;
+        for (const data::Member& m : steps[s - 1].result.ensemble->members) {
+            one.previousMembers.push_back(m.name);
+        }
+        one.previousIdentities = steps[s - 1].memberIdentities;
+        const app::StepClusters clusters = app::clusterTimeStep(one, {});
+        ASSERT_EQ(clusters.members.size(), 10u);
+        EXPECT_EQ(clusters.members.front(), "member 0");
+        EXPECT_EQ(clusters.memberIdentities, steps[s].memberIdentities) << "step " << s;
+        const prep::MergeTree& tree = steps[s].result.tree;
+        alone = alone ||
+                prep::memberIdentities(steps[s].result.labels, prep::identitiesFromTree(tree, 5)) !=
+                    steps[s].memberIdentities;
+        someoneMoved = someoneMoved || clusters.memberIdentities != steps[s - 1].memberIdentities;
+    }
+    EXPECT_TRUE(someoneMoved) << "ERA5's members change group over its steps";
+    EXPECT_TRUE(alone) << "the matching to the step before must matter here";
+
+    std::stop_source stop;
+    stop.request_stop();
+    app::StepClusteringRequest stopped;
+    stopped.selection = request.selection;
+    stopped.isovalue = 260.0F;
+    EXPECT_THROW((void)app::clusterTimeStep(stopped, stop.get_token()), data::Cancelled);
+}
+
+// ensil render --times with a floor: one colour scale over all the frames, spanning every
+// step's floor values, said in the colour bar; a frame then differs from its step drawn alone
+// (whose floor spans only its own values), but not where the floor is not drawn.
+TEST(RenderTimes, TheFloorHasOneColourScaleOverAllTheSteps) {
+    const data::DataSelection era5{.paths = {kEra5.toStdString()}, .variable = "t"};
+    gl::RenderSettings settings;
+    settings.floor = gl::FloorContent::ColumnMaximum;
+    const auto scale = app::floorScaleOverSteps(era5, {0, 3}, settings);
+    ASSERT_TRUE(scale.has_value());
+    bool wider = false;
+    std::size_t narrower = 0;  // a step whose own floor spans less than the scale
+    for (std::size_t t = 0; t < 4; ++t) {
+        data::DataSelection one = era5;
+        one.timeIndex = t;
+        const data::Ensemble e = data::openEnsemble(one);
+        const prep::EnsembleMoments moments = prep::computeEnsembleMoments(e);
+        const gl::FloorMap own =
+            app::floorMapFor(e, moments.mean, app::computeColumnMaxima(e, moments.mean), settings);
+        EXPECT_LE(scale->first, own.minimum) << "step " << t;
+        EXPECT_GE(scale->second, own.maximum) << "step " << t;
+        if (scale->first < own.minimum || scale->second > own.maximum) {
+            wider = true;
+            narrower = t;
+        }
+    }
+    EXPECT_TRUE(wider) << "ERA5's steps differ: some step's own range is narrower";
+    EXPECT_FALSE(app::floorScaleOverSteps(era5, {1, 1}, settings)) << "one step: its own";
+    settings.floor = gl::FloorContent::ProbabilityMaximum;
+    EXPECT_FALSE(app::floorScaleOverSteps(era5, {0, 3}, settings)) << "0 to 1 already";
+
+    test::TempDir dir;
+    const QString pattern = QString::fromStdString(dir.file("frame_%d.png"));
+    // One cluster: the surfaces' colours cannot differ between a frame and its step alone.
+    const QStringList common{"--var",          "t",          "--iso",     "260",    "--floor",
+                             "column-maximum", "--clusters", "1",         "--size", "320x200",
+                             "--frames",       "1",          "--no-cache"};
+    const test::EnsilRun run =
+        test::runEnsil(QStringList{"render", kEra5, "--times", "0:3", "--out", pattern} + common);
+    ASSERT_EQ(run.code, 0) << run.err.toStdString();
+    EXPECT_TRUE(run.out.contains("one scale for all 4 steps")) << run.out.toStdString();
+    const QString single = QString::fromStdString(dir.file("single.png"));
+    const QString step = QString::number(narrower);
+    const test::EnsilRun alone = test::runEnsil(
+        QStringList{"render", kEra5, "--times", step + ":" + step, "--out", single} + common);
+    ASSERT_EQ(alone.code, 0) << alone.err.toStdString();
+    EXPECT_FALSE(alone.out.contains("one scale")) << alone.out.toStdString();
+    const QImage inSeries(QString::fromStdString(dir.file("frame_" + step.toStdString() + ".png")));
+    ASSERT_FALSE(inSeries.isNull());
+    EXPECT_NE(inSeries, QImage(single))
+        << "the floor of step " << narrower << " takes the colours of the scale over all steps";
+    // Without a floor the frame is the step alone: only the floor's colours changed.
+    const QString noFloor = QString::fromStdString(dir.file("plain_%d.png"));
+    QStringList plain = common;
+    plain[plain.indexOf("column-maximum")] = QStringLiteral("none");
+    ASSERT_EQ(
+        test::runEnsil(QStringList{"render", kEra5, "--times", "0:3", "--out", noFloor} + plain)
+            .code,
+        0);
+    const QString plainAlone = QString::fromStdString(dir.file("plain_alone.png"));
+    ASSERT_EQ(
+        test::runEnsil(
+            QStringList{"render", kEra5, "--times", step + ":" + step, "--out", plainAlone} + plain)
+            .code,
+        0);
+    EXPECT_EQ(QImage(QString::fromStdString(dir.file("plain_" + step.toStdString() + ".png"))),
+              QImage(plainAlone));
 }

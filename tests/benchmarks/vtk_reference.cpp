@@ -12,6 +12,44 @@
 
 #include <algorithm>
 #include <chrono>
+#include <vector>
+
+namespace {
+
+// The member as a VTK image, read in place (save = 1: VTK must not free it).
+vtkNew<vtkImageData> imageOf(const ensil::data::Ensemble& e, std::size_t m) {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(static_cast<int>(e.grid.nx()), static_cast<int>(e.grid.ny()),
+                         static_cast<int>(e.grid.nz()));
+    vtkNew<vtkFloatArray> values;
+    values->SetArray(const_cast<float*>(e.members[m].values.data()),
+                     static_cast<vtkIdType>(e.members[m].values.size()), 1);
+    image->GetPointData()->SetScalars(values);
+    return image;
+}
+
+}  // namespace
+
+VtkIsosurfaceTime timeVtkFlyingEdges(const ensil::data::Ensemble& e, float isovalue,
+                                     std::size_t members) {
+    VtkIsosurfaceTime out;
+    std::vector<vtkNew<vtkImageData>> images;
+    for (std::size_t m = 0; m < std::min(members, e.memberCount()); ++m) {
+        images.push_back(imageOf(e, m));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    for (auto& image : images) {
+        vtkNew<vtkFlyingEdges3D> edges;
+        edges->SetInputData(image);
+        edges->SetValue(0, isovalue);
+        edges->ComputeNormalsOff();
+        edges->ComputeGradientsOff();
+        edges->Update();
+        out.triangles += static_cast<std::size_t>(edges->GetOutput()->GetNumberOfPolys());
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
 
 VtkReferenceTimes runVtkReference(const ensil::data::Ensemble& e, float isovalue,
                                   std::size_t members, std::size_t target) {
@@ -25,14 +63,7 @@ VtkReferenceTimes runVtkReference(const ensil::data::Ensemble& e, float isovalue
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_ERROR);
     VtkReferenceTimes times;
     for (std::size_t m = 0; m < std::min(members, e.memberCount()); ++m) {
-        vtkNew<vtkImageData> image;
-        image->SetDimensions(static_cast<int>(e.grid.nx()), static_cast<int>(e.grid.ny()),
-                             static_cast<int>(e.grid.nz()));
-        vtkNew<vtkFloatArray> values;
-        // VTK reads the member in place (save = 1: VTK must not free it).
-        values->SetArray(const_cast<float*>(e.members[m].values.data()),
-                         static_cast<vtkIdType>(e.members[m].values.size()), 1);
-        image->GetPointData()->SetScalars(values);
+        vtkNew<vtkImageData> image = imageOf(e, m);
 
         auto t = Clock::now();
         vtkNew<vtkFlyingEdges3D> edges;

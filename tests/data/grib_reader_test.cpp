@@ -166,6 +166,78 @@ TEST(GribReader, Era5OpensAsTheSameEnsembleAsItsNetcdfConversion) {
     }
 }
 
+namespace {
+
+// One GRIB 2 message holding several fields of one grid: the first field's sections 0 to 3,
+// then sections 4 to 7 once per field (as ecCodes's multi-field support writes them).
+std::string multiFieldMessage(const std::vector<GribField>& fields) {
+    codes_multi_handle* multi = codes_grib_multi_handle_new(nullptr);
+    for (const GribField& f : fields) {
+        const std::string bytes = test::encodeGrib(f);
+        codes_handle* h = codes_handle_new_from_message_copy(nullptr, bytes.data(), bytes.size());
+        EXPECT_NE(h, nullptr);
+        EXPECT_EQ(codes_grib_multi_handle_append(h, 4, multi), 0);
+        codes_handle_delete(h);
+    }
+    std::FILE* out = std::tmpfile();
+    EXPECT_EQ(codes_grib_multi_handle_write(multi, out), 0);
+    codes_grib_multi_handle_delete(multi);
+    std::string message(static_cast<std::size_t>(std::ftell(out)), '\0');
+    std::rewind(out);
+    EXPECT_EQ(std::fread(message.data(), 1, message.size(), out), message.size());
+    std::fclose(out);
+    return message;
+}
+
+// Fields (not messages) as ecCodes's tools count them: grib_count with multi-field support.
+long fieldsEccodesCounts(const std::string& path) {
+    codes_grib_multi_support_on(nullptr);
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    long count = 0;
+    int error = 0;
+    while (codes_handle* h = codes_handle_new_from_file(nullptr, file, PRODUCT_GRIB, &error)) {
+        ++count;
+        codes_handle_delete(h);
+    }
+    codes_grib_multi_support_reset_file(nullptr, file);
+    codes_grib_multi_support_off(nullptr);
+    std::fclose(file);
+    return count;
+}
+
+}  // namespace
+
+// A GRIB 2 message may hold several fields (sections 4 to 7 repeated): each is read, whatever
+// level or member it is, beside single-field messages in the same file.
+TEST(GribReader, EveryFieldOfAMultiFieldMessageIsRead) {
+    const test::TempDir dir;
+    const auto value = [](std::size_t member, double hpa) {
+        return [member, hpa](double lat, double lon) {
+            return 100.0 * static_cast<double>(member) + hpa / 10.0 + lat * 0.1 + lon * 0.01;
+        };
+    };
+    // Member 0 at 850 and 500 hPa and member 1 at 850 hPa in one message; member 1 at 500 hPa
+    // alone after it.
+    const std::string multi = multiFieldMessage({field("t", "isobaricInhPa", 850, 0, value(0, 850)),
+                                                 field("t", "isobaricInhPa", 500, 0, value(0, 500)),
+                                                 field("t", "isobaricInhPa", 850, 1, value(1, 850))});
+    const std::string single = test::encodeGrib(field("t", "isobaricInhPa", 500, 1, value(1, 500)));
+    const std::string path = dir.file("multi.grib2");
+    test::writeBytes(path, multi + single);
+    ASSERT_EQ(fieldsEccodesCounts(path), 4) << "the file must hold a message of three fields";
+
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(select(path), {}, {}, &d);
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 0", "member 1"}));
+    EXPECT_EQ(e.grid.z().values, (std::vector<double>{50000, 85000}));
+    expectValues(
+        e,
+        [&](std::size_t m, double lat, double lon, double pa) {
+            return value(m, pa / 100.0)(lat, lon);
+        },
+        1e-3);
+}
+
 TEST(GribReader, PressureLevelsInHpaAndPaMakeOnePressureAxis) {
     const test::TempDir dir;
     const auto value = [](std::size_t member, double pa) {

@@ -1,15 +1,20 @@
 #include "preprocessing/marching_cubes.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <numbers>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "fixtures.h"
 #include "mesh_checks.h"
+#include "reference_marching_cubes.h"
 
 using namespace ensil;
 
@@ -137,4 +142,79 @@ TEST(MarchingCubes, StopsWhenCancelled) {
     stop.request_stop();
     EXPECT_THROW(prep::extractIsosurface(e.grid, e.members[0].values, 12.0F, stop.get_token()),
                  data::Cancelled);
+}
+
+namespace {
+// A triangle's corners rotated to start at the smallest, keeping its winding.
+test::Triangle canonical(test::Triangle t) {
+    const auto less = [](const glm::vec3& a, const glm::vec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    while (less(t[1], t[0]) || less(t[2], t[0])) t = {t[1], t[2], t[0]};
+    return t;
+}
+bool lessTriangle(const test::Triangle& a, const test::Triangle& b) {
+    return std::lexicographical_compare(&a[0].x, &a[0].x + 9, &b[0].x, &b[0].x + 9);
+}
+
+// Noise in [-1, 1] with about 3 % of the points missing and a missing block.
+data::Ensemble holedNoise(std::size_t nx, std::size_t ny, std::size_t nz, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> value(-1.0F, 1.0F);
+    std::uniform_real_distribution<float> chance(0.0F, 1.0F);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    return test::analyticEnsemble(1, nx, ny, nz, [&](auto, auto i, auto j, auto k) {
+        const bool block = i >= nx / 3 && i < nx / 2 && j >= ny / 2 && k + 1 >= nz / 2;
+        return chance(rng) < 0.03F || block ? nan : value(rng);
+    });
+}
+}  // namespace
+
+TEST(MarchingCubes, MatchesAPlainCellByCellExtraction) {
+    // Row lengths below, at and across the 64-point words the extraction works in.
+    const std::vector<std::array<std::size_t, 3>> shapes{{3, 2, 2},  {9, 8, 7},   {64, 5, 4},
+                                                         {65, 6, 5}, {130, 7, 3}, {200, 3, 9}};
+    unsigned seed = 1;
+    for (const auto& [nx, ny, nz] : shapes) {
+        const auto e = holedNoise(nx, ny, nz, seed++);
+        const data::TriangleMesh m = mesh(e, 0.05F);
+        const test::ReferenceSurface ref =
+            test::referenceMarchingCubes(e.grid, e.members[0].values, 0.05F);
+        const std::string shape =
+            std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
+        ASSERT_GT(ref.triangles.size(), 0u) << shape;
+        // One vertex per crossing edge, shared: no two vertices at one place.
+        EXPECT_EQ(m.vertexCount(), ref.crossingEdges) << shape;
+        std::vector<glm::vec3> sorted = m.positions;
+        const auto lessPoint = [](const glm::vec3& a, const glm::vec3& b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        };
+        std::sort(sorted.begin(), sorted.end(), lessPoint);
+        EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << shape;
+        // The same triangles, with the same winding, bit for bit.
+        std::vector<test::Triangle> fast;
+        for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+            ASSERT_LT(std::max({m.indices[t], m.indices[t + 1], m.indices[t + 2]}),
+                      m.vertexCount());
+            fast.push_back(canonical({m.positions[m.indices[t]], m.positions[m.indices[t + 1]],
+                                      m.positions[m.indices[t + 2]]}));
+        }
+        std::vector<test::Triangle> expected;
+        for (const auto& t : ref.triangles) expected.push_back(canonical(t));
+        std::sort(fast.begin(), fast.end(), lessTriangle);
+        std::sort(expected.begin(), expected.end(), lessTriangle);
+        ASSERT_EQ(fast.size(), expected.size()) << shape;
+        EXPECT_TRUE(fast == expected) << shape;
+    }
+}
+
+TEST(MarchingCubes, SameMeshWhateverTheThreadCount) {
+    const auto e = holedNoise(150, 40, 30, 7);
+    const data::TriangleMesh many = mesh(e, 0.05F);
+    data::TriangleMesh one;
+    tbb::task_arena single(1);
+    single.execute([&] { one = mesh(e, 0.05F); });
+    ASSERT_GT(many.triangleCount(), 1000u);
+    EXPECT_TRUE(one.positions == many.positions);
+    EXPECT_TRUE(one.indices == many.indices);
 }

@@ -7,8 +7,10 @@
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTest>
+#include <QToolButton>
 #include <cmath>
 
+#include "gl/palette.h"
 #include "panel_fixtures.h"
 #include "widgets/csv_export.h"
 #include "widgets/member_filter_proxy.h"
@@ -379,4 +381,75 @@ TEST(MemberTableModel, TheNumberColumnAgreesWithTheNamesFromTheFile) {
         namesOnly({QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-02T00:00")}));
     EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);
     EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 2);
+}
+
+// Clusters over time (issue 17): one optional column per step, each member's cluster there in
+// the strip's number and colour, bold where it moved, empty for a step not clustered yet.
+TEST(MemberTableModel, ShowsEachMembersClusterPerStepInTheStripsColours) {
+    ui::MemberSelection s;
+    s.setMembers(test::figuresOnALine({0.0, 1.0, 2.0, 3.0}));
+    MemberTableModel model(&s);
+    test::ModelContractCheck check(&model);
+    QSignalSpy steps(&model, &MemberTableModel::stepsChanged);
+    model.setSteps({QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-01T12:00"),
+                    QStringLiteral("2017-01-02T00:00")});
+    ASSERT_EQ(steps.count(), 1);
+    EXPECT_EQ(steps.front().front().toInt(), 3);
+    model.setStepClusters(0, {0, 0, 1, 1});
+    EXPECT_EQ(model.columnCount(), MemberTableModel::ColumnCount) << "hidden until asked for";
+
+    model.setStepColumnsShown(true);
+    ASSERT_EQ(model.columnCount(), MemberTableModel::ColumnCount + 3);
+    // Member 1 leaves cluster 1 for cluster 2 at the second step, clustered after being shown.
+    model.setStepClusters(1, {0, 1, 1, 1});
+    const auto cell = [&](int member, int step, int role = Qt::DisplayRole) {
+        return model.data(model.index(member, MemberTableModel::stepColumn(step)), role);
+    };
+    EXPECT_EQ(cell(0, 0).toInt(), 1);
+    EXPECT_EQ(cell(2, 0).toInt(), 2);
+    EXPECT_EQ(cell(1, 1).toInt(), 2);
+    const glm::vec3 second = gl::clusterColor(1);
+    EXPECT_EQ(cell(1, 1, Qt::DecorationRole).value<QColor>(),
+              QColor::fromRgbF(second.r, second.g, second.b));
+    EXPECT_TRUE(cell(1, 1, Qt::FontRole).value<QFont>().bold()) << "member 1 moved at step 1";
+    EXPECT_FALSE(cell(2, 1, Qt::FontRole).value<QFont>().bold()) << "member 2 stayed";
+    EXPECT_FALSE(cell(1, 0, Qt::FontRole).value<QFont>().bold()) << "nothing before step 0";
+    EXPECT_FALSE(cell(0, 2).isValid()) << "step 2 is not clustered yet";
+    EXPECT_TRUE(cell(0, 2, Qt::ToolTipRole).toString().contains(QStringLiteral("not clustered")));
+    // Sorting by a step's column groups its clusters.
+    EXPECT_EQ(cell(1, 1, MemberTableModel::SortRole).toInt(), 2);
+
+    const int header = MemberTableModel::stepColumn(1);
+    EXPECT_EQ(model.headerData(header, Qt::Horizontal, Qt::DisplayRole).toString(),
+              QStringLiteral("01-01 12:00"))
+        << "the year the steps share is left out";
+    model.setCurrentStep(1);
+    EXPECT_TRUE(model.headerData(header, Qt::Horizontal, Qt::FontRole).value<QFont>().bold());
+    EXPECT_FALSE(model.headerData(header - 1, Qt::Horizontal, Qt::FontRole).value<QFont>().bold());
+
+    model.setSteps({QStringLiteral("a"), QStringLiteral("b")});
+    EXPECT_EQ(model.columnCount(), MemberTableModel::ColumnCount + 2);
+    EXPECT_FALSE(cell(0, 0).isValid()) << "new steps forget the old steps' clusters";
+    EXPECT_TRUE(test::ModelContractCheck::failures().isEmpty())
+        << test::ModelContractCheck::failures().join('\n').toStdString();
+}
+
+TEST_F(ShownMemberTable, PerStepButtonShowsTheStepsColumnsLinkedWithTheSelection) {
+    EXPECT_FALSE(panel.stepsButton()->isVisibleTo(&panel)) << "no time steps";
+    panel.model()->setSteps({QStringLiteral("t0"), QStringLiteral("t1")});
+    panel.model()->setStepClusters(1, {0, 1, 0, 1, 0, 1});
+    ASSERT_TRUE(panel.stepsButton()->isVisibleTo(&panel));
+    panel.stepsButton()->click();
+    ASSERT_EQ(panel.proxy()->columnCount(), MemberTableModel::ColumnCount + 2);
+    // A click in a step's column selects that row's member, as anywhere in the table.
+    const int row = panel.rowOfMember(3);
+    const QRect at =
+        panel.table()->visualRect(panel.proxy()->index(row, MemberTableModel::stepColumn(1)));
+    ASSERT_FALSE(at.isEmpty());
+    QTest::mouseClick(panel.table()->viewport(), Qt::LeftButton, Qt::NoModifier, at.center());
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{3}));
+    EXPECT_EQ(panel.proxy()->index(row, MemberTableModel::stepColumn(1)).data().toInt(), 2);
+    panel.stepsButton()->click();
+    EXPECT_EQ(panel.proxy()->columnCount(), MemberTableModel::ColumnCount);
+    EXPECT_EQ(s.selectedMembers(), (QList<int>{3})) << "hiding the columns keeps the selection";
 }

@@ -1,0 +1,187 @@
+// `ensil preprocess` in slabs (app/headless/streaming_run.h) against the in-memory run: the same
+// results and cache entry; and peak memory within --memory-limit, measured on the real program.
+#include "app/headless/streaming_run.h"
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "data/demo_ensemble.h"
+#include "data/ensemble_reader.h"
+#include "data/netcdf_writer.h"
+#include "preprocessing/mesh_cache.h"
+#include "tests/support/temp_dir.h"
+
+using namespace ensil;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+bool sameMesh(const data::PackedMesh& a, const data::PackedMesh& b) {
+    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
+           std::memcmp(a.vertices.data(), b.vertices.data(),
+                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
+}
+
+// The demo (8 members, 36 x 20 x 9) with member 5 wholly missing.
+std::string writeDemoWithAnEmptyMember(const test::TempDir& dir) {
+    const std::string path = dir.file("demo.nc");
+    data::Ensemble e = data::makeDemoEnsemble({.members = 8, .nx = 36, .ny = 20, .nz = 9}).ensemble;
+    for (float& v : e.members[5].values) v = kNaN;
+    data::writeNetcdf(e, path);
+    return path;
+}
+
+const app::PreprocessNotice kQuiet = [](const std::string&, const std::string&) {};
+
+// Peak resident memory (KiB) of `program args...` run to its end, and its exit status.
+std::pair<long, int> peakRss(const std::vector<std::string>& command) {
+    std::vector<char*> argv;
+    for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const pid_t child = fork();
+    if (child == 0) {
+        // Quiet: the numbers are what the test reads.
+        if (std::freopen("/dev/null", "w", stdout) == nullptr) _exit(126);
+        if (std::freopen("/dev/null", "w", stderr) == nullptr) _exit(126);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    rusage usage{};
+    wait4(child, &status, 0, &usage);
+    return {usage.ru_maxrss, WIFEXITED(status) ? WEXITSTATUS(status) : -1};
+}
+
+}  // namespace
+
+TEST(StreamingRun, GivesTheInMemoryRunsResultsAndCacheEntry) {
+    test::TempDir dir;
+    const std::string path = writeDemoWithAnEmptyMember(dir);
+    const data::DataSelection selection{.paths = {path}};
+    const data::EnsembleDescription d = data::describeEnsemble(selection);
+    app::PreprocessRequest request;
+    request.isovalue = 30.0;
+    request.clusters = 3;
+    request.clustersGiven = true;
+    request.sourceKey = data::sourceIdentity(selection);
+    request.cacheDirectory = dir.file("memory-cache");
+    const app::PreprocessResult want = app::preprocessEnsemble(
+        std::make_shared<const data::Ensemble>(data::openEnsemble(selection)), request, kQuiet);
+    request.cacheDirectory = dir.file("stream-cache");
+    // Room for a few layers only: several slabs.
+    const prep::StreamingPlan least = prep::planStreaming(d, std::size_t{1} << 30, 1);
+    const std::size_t limit = least.resultBytes + least.memberBytes;
+    const app::PreprocessResult got =
+        app::preprocessStreaming(selection, d, request, limit, kQuiet);
+    ASSERT_TRUE(got.streaming.has_value());
+    EXPECT_GT(got.streaming->slabs.size(), 1u);
+    EXPECT_EQ(got.membersWithoutData, want.membersWithoutData);
+    ASSERT_EQ(got.ensemble->memberCount(), want.ensemble->memberCount());
+    for (std::size_t m = 0; m < got.ensemble->memberCount(); ++m) {
+        EXPECT_EQ(got.ensemble->members[m].name, want.ensemble->members[m].name);
+    }
+    ASSERT_EQ(got.distances.size, want.distances.size);
+    for (std::size_t i = 0; i < got.distances.values.size(); ++i) {
+        EXPECT_NEAR(got.distances.values[i], want.distances.values[i],
+                    1e-9 * want.distances.values[i]);
+    }
+    ASSERT_EQ(got.tree.merges.size(), want.tree.merges.size());
+    for (std::size_t m = 0; m < got.tree.merges.size(); ++m) {
+        EXPECT_EQ(got.tree.merges[m].a, want.tree.merges[m].a);
+        EXPECT_EQ(got.tree.merges[m].b, want.tree.merges[m].b);
+        EXPECT_EQ(got.tree.merges[m].size, want.tree.merges[m].size);
+    }
+    EXPECT_EQ(got.k, want.k);
+    EXPECT_EQ(got.labels, want.labels);
+    EXPECT_EQ(got.colors, want.colors);
+    EXPECT_EQ(got.distancesToMean, want.distancesToMean);
+    EXPECT_EQ(got.meanOutlyingness, want.meanOutlyingness);
+    ASSERT_EQ(got.meshes.members.size(), want.meshes.members.size());
+    for (std::size_t m = 0; m < got.meshes.members.size(); ++m) {
+        EXPECT_TRUE(sameMesh(got.meshes.members[m], want.meshes.members[m])) << m;
+    }
+    // Stored under the in-memory run's key, so the workbench finds the meshes.
+    const prep::PipelineOptions options{.isovalue = 30.0F};
+    const std::string key = request.sourceKey +
+                            data::membersWithoutDataKey(want.membersWithoutData) + "; " +
+                            prep::pipelineKey(options, 1.0F);
+    const auto stored = prep::MeshCache(dir.file("stream-cache")).load(key);
+    ASSERT_TRUE(stored.has_value()) << "no cache entry under the in-memory run's key";
+    ASSERT_TRUE(prep::MeshCache(dir.file("memory-cache")).load(key).has_value());
+    for (std::size_t m = 0; m < stored->members.size(); ++m) {
+        EXPECT_TRUE(sameMesh(stored->members[m], want.meshes.members[m])) << m;
+    }
+}
+
+TEST(StreamingRun, RefusesWithoutAnIsovalueOrOutsideTheValues) {
+    test::TempDir dir;
+    const std::string path = writeDemoWithAnEmptyMember(dir);
+    const data::DataSelection selection{.paths = {path}};
+    const data::EnsembleDescription d = data::describeEnsemble(selection);
+    app::PreprocessRequest request;
+    try {
+        (void)app::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
+        FAIL() << "streamed without an isovalue";
+    } catch (const app::PreprocessRefused& e) {
+        EXPECT_EQ(e.exitCode(), 2);
+        EXPECT_NE(std::string(e.what()).find("--iso"), std::string::npos) << e.what();
+    }
+    request.isovalue = 1e6;
+    try {
+        (void)app::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
+        FAIL() << "streamed an isovalue outside the values";
+    } catch (const app::PreprocessRefused& e) {
+        EXPECT_EQ(e.exitCode(), 1);
+        EXPECT_NE(std::string(e.what()).find("outside the values of 'wind_speed'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(StreamingRun, MemorySizesAreParsedOrRefusedSayingWhy) {
+    std::string problem;
+    EXPECT_EQ(app::parseMemorySize("1GiB", problem), std::size_t{1} << 30);
+    EXPECT_EQ(app::parseMemorySize("512M", problem), std::size_t{512} << 20);
+    EXPECT_EQ(app::parseMemorySize("1.5 gb", problem), std::size_t{3} << 29);
+    EXPECT_EQ(app::parseMemorySize("64k", problem), std::size_t{64} << 10);
+    EXPECT_EQ(app::parseMemorySize("4096", problem), std::size_t{4096});
+    for (const char* bad : {"", "GiB", "-1G", "0", "12 parsecs", "nan", "1e30"}) {
+        problem.clear();
+        EXPECT_FALSE(app::parseMemorySize(bad, problem).has_value()) << bad;
+        EXPECT_NE(problem.find("--memory-limit"), std::string::npos) << bad;
+    }
+}
+
+// The memory-bound test: the real program's peak resident memory, over that of the same
+// program printing its help (the libraries' share), stays within 1.2 times --memory-limit
+// while the in-memory run of the same file takes more than that.
+TEST(StreamingRun, PeakMemoryStaysWithinTheLimitWhereTheInMemoryRunDoesNot) {
+    test::TempDir dir;
+    const std::string path = dir.file("big.nc");
+    // 40 members of 128 x 64 x 64: 80 MiB of values.
+    const std::string ensil = ENSIL_EXECUTABLE;
+    ASSERT_EQ(peakRss({ensil, "generate", "--members", "40", "--grid", "128x64x64", "--out", path})
+                  .second,
+              0);
+    const long base = peakRss({ensil, "preprocess", "--help"}).first;
+    const long limitKiB = 32 * 1024;
+    const auto [streamed, streamedCode] =
+        peakRss({ensil, "preprocess", path, "--iso", "30", "--no-cache", "--memory-limit", "32M"});
+    const auto [whole, wholeCode] =
+        peakRss({ensil, "preprocess", path, "--iso", "30", "--no-cache"});
+    ASSERT_EQ(streamedCode, 0);
+    ASSERT_EQ(wholeCode, 0);
+    EXPECT_LE(streamed - base, limitKiB * 12 / 10)
+        << "streamed: " << streamed << " KiB at its peak, " << base << " KiB without data";
+    EXPECT_GT(whole - base, limitKiB * 12 / 10)
+        << "the in-memory run (" << whole << " KiB) fits the limit too: the test cannot tell";
+}
