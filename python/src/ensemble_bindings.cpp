@@ -57,6 +57,8 @@ data::EnsembleDescription describeLoaded(const data::Ensemble& e, const std::str
 }
 
 void warnAboutValues(const data::Ensemble& e) {
+    // What the reader read around (a damaged GRIB message skipped, by its byte offset).
+    for (const std::string& w : e.warnings) warn(w);
     if (const auto note = data::infiniteValuesWarning(e)) warn(*note);
     for (const std::size_t m : data::membersWithoutData(e)) {
         warn("'" + memberName(e, m) + "' of '" + e.variable +

@@ -34,6 +34,12 @@ def era5_path():
     return os.path.join(SHARED_DATA, "era5_eda_members.nc")
 
 
+@pytest.fixture
+def era5_grib_path():
+    """The same ensemble as GRIB 2 from ECMWF: 160 messages (z and t, 2 levels, 4 times)."""
+    return os.path.join(SHARED_DATA, "era5-levels-members.grib")
+
+
 def spheres(radii, n=20, centres=None):
     """A (member, z, y, x) ensemble of distance fields: member m's isosurface at 0 is the sphere
     of radius radii[m] around centres[m] (x, y, z in grid index units; default the grid's

@@ -157,6 +157,19 @@ def test_open_refuses_what_the_command_line_refuses(era5_path, tmp_path):
         ensil.open([])
 
 
+def test_what_the_reader_read_around_is_a_data_warning(era5_grib_path, tmp_path):
+    # ERA5's GRIB twin cut in the middle of its last message (t at the last time): the first
+    # time still reads, with a warning naming where the cut message starts.
+    with open(era5_grib_path, "rb") as f:
+        data = f.read()
+    last = data.rfind(b"GRIB")
+    cut = tmp_path / "cut.grib"
+    cut.write_bytes(data[:last + (len(data) - last) // 2])
+    with pytest.warns(ensil.DataWarning, match=f"byte offset {last}"):
+        ens = ensil.open(str(cut), var="t", time_index=0)
+    assert ens.shape == (10, 2, 61, 120)
+
+
 def test_demo_is_the_workbenchs():
     ens = ensil.demo(members=3)
     assert ens.shape == (3, 16, 128, 256)
