@@ -161,7 +161,12 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
                         {"slabs", static_cast<qint64>(r.streaming->slabs.size())},
                         {"layers_per_slab", static_cast<qint64>(thickest)},
                         {"members_at_once", static_cast<qint64>(r.streaming->membersAtOnce)},
-                        {"planned_peak_bytes", static_cast<qint64>(r.streaming->peakBytes())}};
+                        {"planned_peak_bytes", static_cast<qint64>(r.streaming->peakBytes())},
+                        {"rank_work_cpu_seconds", [&] {
+                             QJsonArray seconds;
+                             for (const double s : r.rankWorkSeconds) seconds.append(s);
+                             return seconds;
+                         }()}};
     } else {
         o[QStringLiteral("streaming")] = QJsonValue();
     }

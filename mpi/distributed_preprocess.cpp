@@ -7,6 +7,7 @@
 #include <climits>
 #include <cstdint>
 #include <cstdlib>
+#include <ctime>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// CPU seconds of this process (every thread): what a rank's own work costs, whatever else the
+// machine runs.
+double cpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 void check(int code, const char* what) {
@@ -64,7 +73,7 @@ void failIfAsked(int rank) {
 // moments, counts and range, and the distance sums merged in slab order.
 prep::SlabSums sumSlabs(const Session& session, const data::DataSelection& selection,
                         const data::EnsembleDescription& d, const prep::StreamingPlan& plan,
-                        float isovalue) {
+                        float isovalue, double& workSeconds) {
     const auto K = static_cast<std::size_t>(session.size());
     const auto me = static_cast<std::size_t>(session.rank());
     const std::size_t layer = d.grid.nx() * d.grid.ny();
@@ -72,6 +81,7 @@ prep::SlabSums sumSlabs(const Session& session, const data::DataSelection& selec
     failIfAsked(session.rank());
     std::vector<double> mine;  // this rank's slabs' distance sums, one after another
     std::vector<char> owned(d.grid.nz(), 0);
+    const double work = cpuSeconds();
     for (std::size_t s = me; s < plan.slabs.size(); s += K) {
         const data::EnsemblePart& slab = plan.slabs[s];
         const prep::DistanceSums part = prep::addSlab(sums, selection, d, slab);
@@ -79,6 +89,7 @@ prep::SlabSums sumSlabs(const Session& session, const data::DataSelection& selec
         std::fill_n(owned.begin() + static_cast<std::ptrdiff_t>(slab.firstLayer), slab.layerCount,
                     1);
     }
+    workSeconds += cpuSeconds() - work;
     // Each layer's moments come from the one rank that read it: the others add zeros, so the
     // sum is that rank's value exactly (NaN + 0 stays NaN).
     for (std::size_t z = 0; z < owned.size(); ++z) {
@@ -193,7 +204,8 @@ std::optional<prep::StreamedEnsemble> distributedPreprocess(const Session& sessi
     out.plan = plan;
     out.meshes.isovalue = options.isovalue;
     auto start = Clock::now();
-    const prep::SlabSums sums = sumSlabs(session, selection, d, plan, options.isovalue);
+    double work = 0.0;
+    const prep::SlabSums sums = sumSlabs(session, selection, d, plan, options.isovalue, work);
     out.slabSeconds = since(start);
     // The same sums on every rank: the same members kept and the same checks.
     const std::vector<std::size_t> keep = prep::concludeSlabs(sums, selection, d, checkRange, out);
@@ -205,8 +217,14 @@ std::optional<prep::StreamedEnsemble> distributedPreprocess(const Session& sessi
     for (std::size_t i = me; i < fields.size(); i += K) mine.push_back(fields[i]);
     const prep::AxisTables axes =
         prep::axisTables(data::DisplayFrame(d.grid, verticalExaggeration));
+    const double meshing = cpuSeconds();
     std::vector<prep::MemberResult> results =
         prep::meshMembers(selection, d, mine, sums.moments, axes, options, plan.membersAtOnce);
+    work += cpuSeconds() - meshing;
+    out.rankWorkSeconds.assign(me == 0 ? K : 0, 0.0);
+    check(MPI_Gather(&work, 1, MPI_DOUBLE, out.rankWorkSeconds.data(), 1, MPI_DOUBLE, 0,
+                     MPI_COMM_WORLD),
+          "gathering the ranks' times");
     std::vector<prep::MemberResult> all = gatherMembers(session, fields.size(), std::move(results));
     if (me != 0) return std::nullopt;
     prep::collectMembers(out, std::move(all), since(start));

@@ -41,7 +41,7 @@ struct Bits {
     std::vector<std::uint32_t> rowVertices, rowTriangles;  // counts, then offsets
     // The cells that make triangles, found once: per z-layer, (i << 8 | case) in row order, and
     // per row where its cells start in its layer's list.
-    std::vector<std::vector<std::uint32_t>> layerCells;
+    std::vector<std::vector<std::uint64_t>> layerCells;
     std::vector<std::uint32_t> rowCellsBegin;
 
     Bits(std::size_t x, std::size_t y, std::size_t z)
@@ -218,7 +218,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
     // "inside" and both are valid (so an edge touching NaN never crosses).
     const auto& cases = caseInfo();
     forEachLayer(nz, stop, [&](std::size_t k) {
-        std::vector<std::uint32_t>& cells = b.layerCells[k];
+        std::vector<std::uint64_t>& cells = b.layerCells[k];
         for (std::size_t j = 0; j < ny; ++j) {
             const std::size_t r = b.row(j, k);
             const Word* in = &b.inside[r * W];
@@ -245,7 +245,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
                 std::uint32_t triangles = 0;
                 forEachActiveCell(b, j, k, [&](std::size_t i, std::size_t mask) {
                     triangles += cases[mask].triangles;
-                    cells.push_back(static_cast<std::uint32_t>(i << 8 | mask));
+                    cells.push_back(std::uint64_t{i} << 8 | mask);
                 });
                 b.rowTriangles[r + 1] = triangles;
             }
@@ -307,7 +307,7 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
             rowIds(b.row(j + 1, k), rowsOf[1]);
             rowIds(b.row(j + 1, k + 1), rowsOf[3]);
             std::uint32_t* out = &mesh.indices[3 * static_cast<std::size_t>(b.rowTriangles[r])];
-            const std::vector<std::uint32_t>& cells = b.layerCells[k];
+            const std::vector<std::uint64_t>& cells = b.layerCells[k];
             std::array<std::uint32_t, 12> ids{};  // this cell's vertex per edge
             for (std::size_t c = b.rowCellsBegin[r]; c < b.rowCellsBegin[r + 1]; ++c) {
                 const std::size_t i = cells[c] >> 8, mask = cells[c] & 0xFFU;

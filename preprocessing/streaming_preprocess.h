@@ -121,6 +121,9 @@ struct StreamedEnsemble {
     DistanceMatrix distances;             // between the kept members
     std::vector<double> distancesToMean;  // per kept member
     double slabSeconds = 0.0, memberSeconds = 0.0;
+    // Under MPI: the CPU seconds each rank spent on its own slabs and members (not waiting for
+    // the others), by rank; their sum over their largest is the speed-up the split allows.
+    std::vector<double> rankWorkSeconds;
 };
 
 // After pass 1 (sums over every slab): the members without data, the kept members' names,

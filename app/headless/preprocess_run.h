@@ -59,6 +59,7 @@ struct PreprocessResult {
     // it followed. Then `ensemble` holds the description and member names but no values, and
     // the contour boxplot (and its context surfaces) is not made.
     std::optional<prep::StreamingPlan> streaming;
+    std::vector<double> rankWorkSeconds;  // under MPI: prep::StreamedEnsemble's
 };
 
 // A request the data cannot answer, with the command's exit status: 2 for a bad option (too

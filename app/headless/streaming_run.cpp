@@ -159,6 +159,7 @@ std::optional<PreprocessResult> preprocessStreamingWith(
     r.meshes = std::move(streamed.meshes);
     r.distances = std::move(streamed.distances);
     r.distancesToMean = std::move(streamed.distancesToMean);
+    r.rankWorkSeconds = std::move(streamed.rankWorkSeconds);
     if (request.cacheDirectory) {
         // The key the in-memory path stores these meshes under (app/headless/isovalue_job), so
         // the workbench and `ensil render` find them.

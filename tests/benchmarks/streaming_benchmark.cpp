@@ -17,6 +17,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -26,19 +28,37 @@ namespace {
 
 struct Figures {
     double seconds = 0.0;
+    double cpuSeconds = 0.0;  // user + system, the process and the children it waited for
     double peakMiB = 0.0;
     int code = 0;
+    std::vector<double> rankWork;  // "rank_work_cpu_seconds" of the JSON, under mpirun
 };
 
-// Runs the command (argv[0] searched in PATH) with stdout and stderr to /dev/null.
-Figures runOnce(const std::vector<std::string>& command) {
+// The numbers of the JSON array after `"key":` in `text` (empty when there is none).
+std::vector<double> jsonNumbers(const std::string& text, const std::string& key) {
+    std::vector<double> numbers;
+    auto at = text.find("\"" + key + "\":[");
+    if (at == std::string::npos) return numbers;
+    at += key.size() + 4;
+    while (at < text.size() && text[at] != ']') {
+        char* end = nullptr;
+        numbers.push_back(std::strtod(text.c_str() + at, &end));
+        at = static_cast<std::size_t>(end - text.c_str());
+        if (at < text.size() && text[at] == ',') ++at;
+    }
+    return numbers;
+}
+
+// Runs the command (argv[0] searched in PATH) with stdout to `out`.
+Figures runOnce(const std::vector<std::string>& command, const std::string& out = "/dev/null") {
     std::vector<char*> argv;
     for (const std::string& a : command) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
+    std::fflush(stdout);  // or the child's freopen writes the parent's buffered lines again
     const auto start = std::chrono::steady_clock::now();
     const pid_t child = fork();
     if (child == 0) {
-        if (std::freopen("/dev/null", "w", stdout) == nullptr) _exit(126);
+        if (std::freopen(out.c_str(), "w", stdout) == nullptr) _exit(126);
         execvp(argv[0], argv.data());
         _exit(127);
     }
@@ -48,26 +68,49 @@ Figures runOnce(const std::vector<std::string>& command) {
     Figures f;
     f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     f.peakMiB = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
+    f.cpuSeconds = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                   1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    if (out != "/dev/null") {
+        std::ifstream in(out);
+        const std::string text((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+        f.rankWork = jsonNumbers(text, "rank_work_cpu_seconds");
+    }
     f.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return f;
 }
 
 // The median time and the largest peak over `runs` runs.
-Figures measure(const char* label, int runs, const std::vector<std::string>& command) {
-    std::vector<double> seconds;
+Figures measure(const char* label, int runs, const std::vector<std::string>& command,
+                const std::string& out = "/dev/null") {
+    std::vector<double> seconds, cpu;
     Figures worst;
     for (int r = 0; r < runs; ++r) {
-        const Figures f = runOnce(command);
+        const Figures f = runOnce(command, out);
+        worst.rankWork = f.rankWork;
         if (f.code != 0) {
             std::printf("%-28s exit status %d\n", label, f.code);
             worst.code = f.code;
             return worst;
         }
         seconds.push_back(f.seconds);
+        cpu.push_back(f.cpuSeconds);
         worst.peakMiB = std::max(worst.peakMiB, f.peakMiB);
     }
     worst.seconds = ensil::bench::median(seconds);
-    std::printf("%-28s %8.2f s %9.0f MiB peak RSS\n", label, worst.seconds, worst.peakMiB);
+    worst.cpuSeconds = ensil::bench::median(cpu);
+    std::printf("%-28s %8.2f s wall %8.2f s CPU %7.0f MiB peak RSS\n", label, worst.seconds,
+                worst.cpuSeconds, worst.peakMiB);
+    if (!worst.rankWork.empty()) {
+        double sum = 0.0, most = 0.0;
+        std::printf("%-28s", "  ranks' own work, CPU s");
+        for (const double w : worst.rankWork) {
+            std::printf(" %.2f", w);
+            sum += w;
+            most = std::max(most, w);
+        }
+        std::printf("  (sum / largest %.2f)\n", most > 0.0 ? sum / most : 0.0);
+    }
     std::fflush(stdout);
     return worst;
 }
@@ -165,10 +208,14 @@ int main(int argc, char** argv) {
     const Figures streamed = measure("streamed", runs, with({ensil}, {"--memory-limit", limit}));
     setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
     setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-    const Figures one = measure("mpirun -np 1", runs,
-                                with({"mpirun", "-np", "1", ensil}, {"--memory-limit", limit}));
-    const Figures two = measure("mpirun -np 2", runs,
-                                with({"mpirun", "-np", "2", ensil}, {"--memory-limit", limit}));
+    const std::string json = (std::filesystem::temp_directory_path() /
+                              ("ensil-streaming-benchmark-" + std::to_string(getpid()) + ".json"))
+                                 .string();
+    const Figures one = measure(
+        "mpirun -np 1", runs, with({"mpirun", "-np", "1", ensil}, {"--memory-limit", limit}), json);
+    const Figures two = measure(
+        "mpirun -np 2", runs, with({"mpirun", "-np", "2", ensil}, {"--memory-limit", limit}), json);
+    std::filesystem::remove(json);
     const double limitMiB = mibOf(limit);
     std::printf("streamed peak / limit      %8.2f  (target <= 1.2); over --help's: %.2f\n",
                 streamed.peakMiB / limitMiB, (streamed.peakMiB - base.peakMiB) / limitMiB);
@@ -179,6 +226,13 @@ int main(int argc, char** argv) {
     if (two.seconds > 0.0) {
         std::printf("mpirun -np 1 / -np 2 time  %8.2f  (target >= 1.7)\n",
                     one.seconds / two.seconds);
+        // Other programs on the machine slow both runs' wall time alike; the CPU time one rank
+        // spends against the largest of two ranks' own work is what the split allows on idle
+        // cores.
+        if (!one.rankWork.empty() && two.rankWork.size() == 2) {
+            std::printf("1 rank's work / 2 ranks' largest  %.2f\n",
+                        one.rankWork[0] / std::max(two.rankWork[0], two.rankWork[1]));
+        }
     }
     if (!folder.empty()) std::filesystem::remove_all(folder);
     return 0;
