@@ -62,13 +62,8 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
     // A result kept from before (a time step or isovalue visited again) is shown as it was,
     // through the same job so that a newer request still drops it.
-    const std::string key = sourceKey + "; iso=" + std::to_string(isovalue) +
-                            "; exaggeration=" + std::to_string(exaggeration) +
-                            "; linkage=" + std::to_string(static_cast<int>(linkage));
-    std::shared_ptr<const IsovalueResult> kept;
-    for (const auto& [keptKey, result] : m_kept) {
-        if (keptKey == key) kept = result;
-    }
+    const std::string key = keptKey(isovalue, exaggeration);
+    const std::shared_ptr<const IsovalueResult> kept = this->kept(key);
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) {
             QElapsedTimer timer;
@@ -127,6 +122,30 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             }
         },
         [this](double f) { emit progressed(f); });
+}
+
+std::string IsovalueSession::keptKey(float isovalue, float exaggeration) const {
+    return m_sourceKey + "; iso=" + std::to_string(isovalue) +
+           "; exaggeration=" + std::to_string(exaggeration) +
+           "; linkage=" + std::to_string(static_cast<int>(m_linkage));
+}
+
+std::shared_ptr<const IsovalueResult> IsovalueSession::kept(const std::string& key) const {
+    for (const auto& [keptKey, result] : m_kept) {
+        if (keptKey == key) return result;
+    }
+    return nullptr;
+}
+
+bool IsovalueSession::showKept(float isovalue, float exaggeration) {
+    const auto result = m_ensemble ? kept(keptKey(isovalue, exaggeration)) : nullptr;
+    if (!result || m_job.isRunning()) return false;
+    emit started(tr("Showing the isosurfaces at %1...").arg(isovalue));
+    IsovalueResult r = *result;
+    r.keptInMemory = true;
+    r.seconds = 0.0;
+    show(std::move(r), isovalue);
+    return true;
 }
 
 void IsovalueSession::show(IsovalueResult result, float isovalue) {
