@@ -60,8 +60,10 @@ void MainWindow::createTimeBar() {
         if (!m_overview || !m_requested) return;
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
-        recordStepClusters();
+        // The next step read ahead first: the strip's filling (started when the clusters are
+        // recorded) waits for it rather than taking a worker it needs.
         if (m_timeBar->isPlaying()) readAhead();
+        recordStepClusters();
     });
     connect(m_selection, &ui::MemberSelection::clustersChanged, this,
             &MainWindow::recordStepClusters);
