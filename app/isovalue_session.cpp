@@ -67,11 +67,8 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     m_pendingPreview.reset();
     // A result kept from before (a time step or isovalue visited again) is shown as it was,
     // through the same job so that a newer request still drops it.
-    const std::string key = resultKey(isovalue, exaggeration);
-    std::shared_ptr<const IsovalueResult> kept;
-    for (const auto& [keptKey, result] : m_kept) {
-        if (keptKey == key) kept = result;
-    }
+    const std::string key = keptKey(isovalue, exaggeration);
+    const std::shared_ptr<const IsovalueResult> kept = this->kept(key);
     m_buildInFlight = true;
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) {
@@ -135,6 +132,30 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
         [this](double f) { emit progressed(f); });
 }
 
+std::string IsovalueSession::keptKey(float isovalue, float exaggeration) const {
+    return m_sourceKey + "; iso=" + std::to_string(isovalue) +
+           "; exaggeration=" + std::to_string(exaggeration) +
+           "; linkage=" + std::to_string(static_cast<int>(m_linkage));
+}
+
+std::shared_ptr<const IsovalueResult> IsovalueSession::kept(const std::string& key) const {
+    for (const auto& [keptKey, result] : m_kept) {
+        if (keptKey == key) return result;
+    }
+    return nullptr;
+}
+
+bool IsovalueSession::showKept(float isovalue, float exaggeration) {
+    const auto result = m_ensemble ? kept(keptKey(isovalue, exaggeration)) : nullptr;
+    if (!result || m_job.isRunning()) return false;
+    emit started(tr("Showing the isosurfaces at %1...").arg(isovalue));
+    IsovalueResult r = *result;
+    r.keptInMemory = true;
+    r.seconds = 0.0;
+    show(std::move(r), isovalue);
+    return true;
+}
+
 void IsovalueSession::show(IsovalueResult result, float isovalue) {
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     // While the user scrubs, the view follows the pointer; endPreview shows these after.
@@ -164,12 +185,6 @@ void IsovalueSession::show(IsovalueResult result, float isovalue) {
                                : tr(". Note: %1").arg(QString::fromStdString(warning))));
 }
 
-std::string IsovalueSession::resultKey(float isovalue, float exaggeration) const {
-    return m_sourceKey + "; iso=" + std::to_string(isovalue) +
-           "; exaggeration=" + std::to_string(exaggeration) +
-           "; linkage=" + std::to_string(static_cast<int>(m_linkage));
-}
-
 void IsovalueSession::forgetPreviews() {
     m_previewJob.cancel();
     m_pendingPreview.reset();
@@ -192,13 +207,11 @@ void IsovalueSession::previewIsovalue(float isovalue, float exaggeration) {
 }
 
 void IsovalueSession::startPreview(float isovalue, float exaggeration) {
-    const std::string key = resultKey(isovalue, exaggeration);
+    const std::string key = keptKey(isovalue, exaggeration);
     // Shown before, in full or as a preview: at once, from memory.
-    for (const auto& [keptKey, result] : m_kept) {
-        if (keptKey == key) return showPreview(result->meshes, isovalue, 0.0);
-    }
-    for (const auto& [keptKey, meshes] : m_keptPreviews) {
-        if (keptKey == key) return showPreview(meshes, isovalue, 0.0);
+    if (const auto result = kept(key)) return showPreview(result->meshes, isovalue, 0.0);
+    for (const auto& [previewKey, meshes] : m_keptPreviews) {
+        if (previewKey == key) return showPreview(meshes, isovalue, 0.0);
     }
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;

@@ -71,6 +71,12 @@ public:
     // Builds (or reads from the cache) this isovalue's surfaces, their attributes taken in the
     // display space of this vertical exaggeration.
     void setIsovalue(float isovalue, float verticalExaggeration);
+    // A time step visited again: this isovalue's result for the data now set, kept
+    // (kKeptResults), shown at once on the GUI thread instead of through a job (a job runs at
+    // the workers' low priority and may wait for a core while the window draws another frame
+    // of the last step). False, doing nothing, when none is kept or a job is under way; then
+    // setIsovalue.
+    bool showKept(float isovalue, float verticalExaggeration);
     void setClusterCount(int k);
     // Clusters the current distances again (at once) and uses this linkage from now on.
     void setLinkage(prep::Linkage linkage);
@@ -112,8 +118,10 @@ private:
     void startPreview(float isovalue, float verticalExaggeration);
     void startWaitingPreview();
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
-    [[nodiscard]] std::string resultKey(float isovalue, float verticalExaggeration) const;
     void forgetPreviews();
+    // The key of a kept result: the data, isovalue, exaggeration and linkage.
+    [[nodiscard]] std::string keptKey(float isovalue, float verticalExaggeration) const;
+    [[nodiscard]] std::shared_ptr<const IsovalueResult> kept(const std::string& key) const;
     std::vector<std::pair<std::string, std::shared_ptr<const IsovalueResult>>> m_kept;
     [[nodiscard]] QStringList memberNames() const;
 

@@ -166,6 +166,8 @@ private:
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     void goToTimeStep(std::size_t step);
     void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);
+    // The step's surfaces: kept from a visit before, shown at once; else built.
+    void showStepSurfaces(float isovalue, float exaggeration);
     void readAhead();
     void forgetTimeSteps();
     [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
@@ -254,7 +256,10 @@ private:
     // Time steps read (ahead, or visited before) and not on screen, by time index.
     std::map<std::size_t, std::unique_ptr<EnsembleOverview>> m_timeSteps;
     BackgroundJob<EnsembleOverview> m_readAhead{this};
-    std::size_t m_readingAhead = 0;  // the step m_readAhead reads
+    // The step m_readAhead reads, from its start (queued behind other work, a job does not
+    // count as running yet) to its end; kNoStep when none.
+    static constexpr std::size_t kNoStep = static_cast<std::size_t>(-1);
+    std::size_t m_readingAhead = kNoStep;
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;

@@ -11,10 +11,10 @@
 
 #include "app/ensemble_facts.h"
 #include "app/headless/picture_title.h"
-#include "widgets/ensemble_info_panel.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "widgets/cluster_timeline.h"
+#include "widgets/ensemble_info_panel.h"
 #include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
@@ -60,8 +60,10 @@ void MainWindow::createTimeBar() {
         if (!m_overview || !m_requested) return;
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
-        recordStepClusters();
+        // The next step read ahead first: the strip's filling (started when the clusters are
+        // recorded) waits for it rather than taking a worker it needs.
         if (m_timeBar->isPlaying()) readAhead();
+        recordStepClusters();
     });
     connect(m_selection, &ui::MemberSelection::clustersChanged, this,
             &MainWindow::recordStepClusters);
@@ -77,8 +79,8 @@ void MainWindow::createTimeBar() {
 void MainWindow::recordStepClusters() {
     // Only the clusters of the step they belong to: while a step is built, the last step's
     // are still shown (and may change, a new k).
-    if (!m_overview || !m_requested || !m_selection->isClustered() ||
-        m_session->isRunning() || m_clusteredStep != static_cast<int>(m_requested->timeIndex)) {
+    if (!m_overview || !m_requested || !m_selection->isClustered() || m_session->isRunning() ||
+        m_clusteredStep != static_cast<int>(m_requested->timeIndex)) {
         return;
     }
     // Steps clustered at another cluster count, isovalue or linkage are not comparable: they
@@ -93,7 +95,8 @@ void MainWindow::recordStepClusters() {
     }
     std::vector<int> identities(static_cast<std::size_t>(m_selection->memberCount()));
     for (int m = 0; m < m_selection->memberCount(); ++m) {
-        identities[static_cast<std::size_t>(m)] = m_selection->identityOf(m_selection->clusterOf(m));
+        identities[static_cast<std::size_t>(m)] =
+            m_selection->identityOf(m_selection->clusterOf(m));
     }
     const int step = static_cast<int>(m_requested->timeIndex);
     m_memberTable->model()->setStepClusters(step, identities);
@@ -128,7 +131,7 @@ void MainWindow::fillStepClusters() {
     }
     // What the user asked for goes first: the next step waits while one is read or built
     // (and one under way is cancelled when a step is asked for, goToTimeStep).
-    if (m_stepFill.isRunning() || m_loader.isRunning() || m_readAhead.isRunning() ||
+    if (m_stepFill.isRunning() || m_loader.isRunning() || m_readingAhead != kNoStep ||
         m_session->isRunning()) {
         return;
     }
@@ -205,12 +208,13 @@ void MainWindow::goToTimeStep(std::size_t step) {
         showTimeStep(std::move(overview), step);
         return;
     }
-    if (m_readAhead.isRunning() && m_readingAhead == step) return;  // on its way: shown when read
+    if (m_readingAhead == step) return;  // on its way: shown when read
     setBusy(tr("Reading time step %1...").arg(step + 1));
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
         readingStep(selection),
         [this, step](EnsembleOverview overview) {
+            if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
             showTimeStep(std::make_unique<EnsembleOverview>(std::move(overview)), step);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
@@ -272,14 +276,23 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     }
     m_view->renderer().setTitle(QString::fromStdString(pictureTitle(e, isovalue)));
     updateWindowTitle();
-    m_session->setIsovalue(isovalue, s.verticalExaggeration);
+    showStepSurfaces(isovalue, s.verticalExaggeration);
+}
+
+void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
+    // Kept from a visit before: shown at once, in this event, so the step's surfaces, clusters
+    // and panels come together with its floor and title, with no frame of the last step in
+    // between and no wait for a worker (a job runs at low priority and may wait for a core
+    // while the window draws). Otherwise built (or taken from the mesh cache) by a job.
+    if (!m_session->showKept(isovalue, exaggeration))
+        m_session->setIsovalue(isovalue, exaggeration);
 }
 
 void MainWindow::readAhead() {
     if (!m_requested || m_timeBar->stepCount() < 2) return;
     const auto n = static_cast<std::size_t>(m_timeBar->stepCount());
     const std::size_t next = (m_requested->timeIndex + 1) % n;
-    if (m_timeSteps.count(next) != 0 || (m_readAhead.isRunning() && m_readingAhead == next)) {
+    if (m_timeSteps.count(next) != 0 || m_readingAhead == next) {
         return;
     }
     m_readingAhead = next;
@@ -287,6 +300,7 @@ void MainWindow::readAhead() {
     m_readAhead.start(
         readingStep(selection),
         [this, next](EnsembleOverview overview) {
+            m_readingAhead = kNoStep;
             auto read = std::make_unique<EnsembleOverview>(std::move(overview));
             // Asked for while it was being read: shown now.
             if (m_model->state().data.timeIndex == next && m_requested &&
@@ -298,12 +312,15 @@ void MainWindow::readAhead() {
             fillStepClusters();
         },
         // Reading ahead is a guess: a failure is said when the step is asked for.
-        [](const std::exception_ptr&, bool) {});
+        [this, next](const std::exception_ptr&, bool) {
+            if (m_readingAhead == next) m_readingAhead = kNoStep;
+        });
 }
 
 void MainWindow::forgetTimeSteps() {
     m_clusteredStep = -1;  // other data: its clusters come with its first surfaces
     m_readAhead.cancel();
+    m_readingAhead = kNoStep;
     m_stepFill.cancel();
     m_fillStopped = false;  // other data: its strip fills again
     m_timeSteps.clear();

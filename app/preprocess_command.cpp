@@ -152,7 +152,8 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     o[QStringLiteral("depth")] = depth;
     o[QStringLiteral("median_member")] = static_cast<qint64>(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
-    // How it was read when it was streamed (null when it was read whole).
+    // How it was read when it was streamed (absent when it was read whole: every value in the
+    // JSON is a number or a string, never null).
     if (r.streaming) {
         std::size_t thickest = 0;
         for (const auto& slab : r.streaming->slabs) thickest = std::max(thickest, slab.layerCount);
@@ -167,8 +168,6 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
                              for (const double s : r.rankWorkSeconds) seconds.append(s);
                              return seconds;
                          }()}};
-    } else {
-        o[QStringLiteral("streaming")] = QJsonValue();
     }
     return o;
 }

@@ -48,8 +48,9 @@ public:
     // member m's values there (NaN or infinite where missing). Throws data::Cancelled between
     // blocks of about 4 MiB; data::Error(InvalidArgument) when the count of members or of values
     // differs from what the sums were made for.
-    void add(std::span<const std::span<const float>> memberValues,
-             const std::stop_token& stop = {});
+    // `progress` hears the share of the points added after each block.
+    void add(std::span<const std::span<const float>> memberValues, const std::stop_token& stop = {},
+             const data::Progress& progress = {});
     // Adds another part's sums (made for the same members and isovalue, over other points).
     // Throws data::Error(InvalidArgument) otherwise.
     void merge(const DistanceSums& other);

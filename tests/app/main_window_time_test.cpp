@@ -7,8 +7,8 @@
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTableView>
-#include <QToolButton>
 #include <QTest>
+#include <QToolButton>
 
 #include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
@@ -28,10 +28,12 @@ using namespace ensil;
 namespace {
 // Waits until the step's surfaces are on screen.
 bool stepShown(app::MainWindow& window, int step) {
-    return QTest::qWaitFor([&] { return window.timeBar()->shownStep() == step &&
-                                        window.timeBar()->pendingStep() < 0 &&
-                                        !window.isovalueSession()->isRunning(); },
-                           60000);
+    return QTest::qWaitFor(
+        [&] {
+            return window.timeBar()->shownStep() == step && window.timeBar()->pendingStep() < 0 &&
+                   !window.isovalueSession()->isRunning();
+        },
+        60000);
 }
 // Shows the workbench and opens ERA5's variable (the NetCDF file, or its GRIB twin), waiting
 // for its first surfaces.
@@ -108,8 +110,8 @@ TEST(MainWindowTime, PlayingThroughEra5ShowsEveryStepOnceAndFillsTheStrip) {
     std::vector<int> shown;
     QObject::connect(window.isovalueSession(), &app::IsovalueSession::finished, &window, [&] {
         shown.push_back(bar.shownStep());
-        window.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_time_step_%1.png")
-                               .arg(bar.shownStep()));
+        window.grab().save(
+            QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_time_step_%1.png").arg(bar.shownStep()));
     });
     bar.setLoop(false);
     bar.setStepsPerSecond(20.0);
@@ -129,7 +131,16 @@ TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
     window.timeBar()->step(1);
     ASSERT_TRUE(stepShown(window, 1));
     EXPECT_FALSE(window.isovalueSession()->result()->keptInMemory);
+    // Shown at once, on the GUI thread: no job to wait for, and no frame of step 1 drawn
+    // before step 0's surfaces are on screen.
+    int frames = 0;
+    QObject::connect(window.view(), &QOpenGLWidget::frameSwapped, &window, [&] { ++frames; });
+    QSignalSpy finished(window.isovalueSession(), &app::IsovalueSession::finished);
     window.timeBar()->step(-1);
+    EXPECT_FALSE(window.isovalueSession()->isRunning()) << "a kept step needs no job";
+    EXPECT_EQ(finished.count(), 1) << "its surfaces shown at once, with its floor and title";
+    ASSERT_TRUE(finished.count() > 0 || finished.wait(10000));
+    EXPECT_EQ(frames, 0) << "no frame of the last step before the kept one is shown";
     ASSERT_TRUE(stepShown(window, 0));
     EXPECT_TRUE(window.isovalueSession()->result()->keptInMemory);
     EXPECT_EQ(window.view()->renderer().meshes(), first) << "the very surfaces of before";
@@ -160,8 +171,7 @@ TEST(MainWindowTime, TheStripFillsEveryStepInTheBackgroundAsTheCommandLineCluste
     EXPECT_EQ(window.timeBar()->shownStep(), 0) << "without leaving the step shown";
 
     app::TimeSeriesRequest request;
-    request.selection = {.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"},
-                         .variable = "t"};
+    request.selection = {.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, .variable = "t"};
     request.steps = {0, 3};
     request.preprocess.isovalue = *window.captureSession().isovalue;
     request.preprocess.clusters = window.memberSelection()->clusterCount();
