@@ -56,18 +56,7 @@ Ensemble openEnsemblePart(const DataSelection& selection, const EnsembleDescript
     const EnsembleReader& reader = readerFor(selection);
     checkEnsemblePart(description, part, sourceOf(selection.paths));
     Ensemble ensemble = reader.readPart(selection, description, part, stop, progress);
-    // As openEnsemble(): an infinity is no value an isosurface or a distance can use.
-    constexpr float kInfinity = std::numeric_limits<float>::infinity();
-    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-    for (Member& m : ensemble.members) {
-        std::size_t infinite = 0;
-        for (float& v : m.values) {
-            const bool isInfinite = std::abs(v) == kInfinity;
-            infinite += isInfinite ? 1 : 0;
-            v = isInfinite ? kNaN : v;
-        }
-        ensemble.infiniteValues += infinite;
-    }
+    makeInfinitiesMissing(ensemble);
     return ensemble;
 }
 

@@ -128,17 +128,7 @@ void checkMemoryFor(std::size_t bytes, const std::string& what) {
     }
 }
 
-Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
-                      const Progress& progress, EnsembleDescription* describedAs) {
-    const EnsembleReader& reader = readerFor(selection);
-    EnsembleDescription description = reader.describe(selection);
-    checkMemoryFor(description.bytes(), "'" + description.variable + "' (" +
-                                            std::to_string(description.members) + " members of " +
-                                            std::to_string(description.grid.nx()) + " x " +
-                                            std::to_string(description.grid.ny()) + " x " +
-                                            std::to_string(description.grid.nz()) + " points)");
-    Ensemble ensemble = reader.read(selection, stop, progress);
-    if (describedAs != nullptr) *describedAs = std::move(description);
+void makeInfinitiesMissing(Ensemble& ensemble) {
     // An infinity is no value an isosurface can pass through; left in, it made the range
     // [min, inf] (null in JSON) and the histogram's bins undefined. Branch-free, so it
     // vectorises.
@@ -153,6 +143,20 @@ Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& sto
         }
         ensemble.infiniteValues += infinite;
     }
+}
+
+Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
+                      const Progress& progress, EnsembleDescription* describedAs) {
+    const EnsembleReader& reader = readerFor(selection);
+    EnsembleDescription description = reader.describe(selection);
+    checkMemoryFor(description.bytes(), "'" + description.variable + "' (" +
+                                            std::to_string(description.members) + " members of " +
+                                            std::to_string(description.grid.nx()) + " x " +
+                                            std::to_string(description.grid.ny()) + " x " +
+                                            std::to_string(description.grid.nz()) + " points)");
+    Ensemble ensemble = reader.read(selection, stop, progress);
+    if (describedAs != nullptr) *describedAs = std::move(description);
+    makeInfinitiesMissing(ensemble);
     if (membersWithoutData(ensemble).size() == ensemble.members.size()) {
         throw Error(
             ErrorKind::AllValuesMissing,

@@ -114,6 +114,10 @@ EnsembleDescription describeEnsemble(const DataSelection& selection);
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop = {},
                       const Progress& progress = {}, EnsembleDescription* description = nullptr);
 
+// Makes every +inf or -inf value NaN (missing: no isosurface, range or distance can use it),
+// counting them in Ensemble::infiniteValues. What openEnsemble and openEnsemblePart do.
+void makeInfinitiesMissing(Ensemble& ensemble);
+
 // "2 values of 't' are infinite (+inf or -inf); ensil treats them as missing values", when
 // openEnsemble() found any.
 std::optional<std::string> infiniteValuesWarning(const Ensemble& ensemble);

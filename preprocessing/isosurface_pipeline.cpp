@@ -61,6 +61,25 @@ MeshedField meshField(const data::Grid& grid, const data::FieldValues& field, fl
     return out;
 }
 
+void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
+                     double wallSeconds) {
+    StageSeconds busy;
+    for (const FieldMeshStats& s : stats) {
+        busy.meshes += s.seconds.meshes;
+        busy.decimation += s.seconds.decimation;
+        busy.attributes += s.seconds.attributes;
+        meshes.trianglesExtracted += s.extracted;
+        meshes.triangles += s.triangles;
+        meshes.vertices += s.vertices;
+        meshes.worstErrorCells = std::max(meshes.worstErrorCells, s.error);
+    }
+    const double total = busy.meshes + busy.decimation + busy.attributes;
+    if (total > 0.0) {
+        meshes.seconds = {wallSeconds * busy.meshes / total, wallSeconds * busy.decimation / total,
+                          wallSeconds * busy.attributes / total};
+    }
+}
+
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
                                    const data::DisplayFrame& frame, const PipelineOptions& options,
                                    const std::stop_token& stop, const data::Progress& progress) {
@@ -88,22 +107,7 @@ IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const Ensembl
     });
     const double wall = since(start);
 
-    // Stages ran interleaved on all threads: give each stage its share of the wall time.
-    StageSeconds busy;
-    for (const FieldMeshStats& s : stats) {
-        busy.meshes += s.seconds.meshes;
-        busy.decimation += s.seconds.decimation;
-        busy.attributes += s.seconds.attributes;
-        out.trianglesExtracted += s.extracted;
-        out.triangles += s.triangles;
-        out.vertices += s.vertices;
-        out.worstErrorCells = std::max(out.worstErrorCells, s.error);
-    }
-    const double total = busy.meshes + busy.decimation + busy.attributes;
-    if (total > 0.0) {
-        out.seconds = {wall * busy.meshes / total, wall * busy.decimation / total,
-                       wall * busy.attributes / total};
-    }
+    summariseMeshes(out, stats, wall);
     return out;
 }
 

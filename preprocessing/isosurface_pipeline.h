@@ -57,6 +57,11 @@ MeshedField meshField(const data::Grid& grid, const data::FieldValues& field, fl
                       const AxisTables& axes, const EnsembleMoments* moments,
                       const PipelineOptions& options, const std::stop_token& stop = {});
 
+// The meshes' totals (triangles, vertices, worst error) and each stage's share of `wallSeconds`
+// from the fields' statistics: the stages of different fields ran interleaved on all threads.
+void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
+                     double wallSeconds);
+
 // Throws data::Cancelled.
 IsovalueMeshes buildIsovalueMeshes(const data::Ensemble& ensemble, const EnsembleMoments& moments,
                                    const data::DisplayFrame& frame, const PipelineOptions& options,

@@ -94,12 +94,7 @@ IsovalueMeshes buildPreviewMeshes(const data::Ensemble& ensemble, const Ensemble
         (m < n ? out.members[m] : out.mean) = packMesh(d.mesh, a);
     });
     data::throwIfStopped(stop);
-    for (const FieldMeshStats& s : stats) {
-        out.trianglesExtracted += s.extracted;
-        out.triangles += s.triangles;
-        out.vertices += s.vertices;
-        out.worstErrorCells = std::max(out.worstErrorCells, s.error);
-    }
+    summariseMeshes(out, stats, 0.0);  // totals; a preview's stages are not timed
     return out;
 }
 

@@ -202,25 +202,6 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
     return results;
 }
 
-void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
-                     double wallSeconds) {
-    StageSeconds busy;
-    for (const FieldMeshStats& s : stats) {
-        busy.meshes += s.seconds.meshes;
-        busy.decimation += s.seconds.decimation;
-        busy.attributes += s.seconds.attributes;
-        meshes.trianglesExtracted += s.extracted;
-        meshes.triangles += s.triangles;
-        meshes.vertices += s.vertices;
-        meshes.worstErrorCells = std::max(meshes.worstErrorCells, s.error);
-    }
-    const double total = busy.meshes + busy.decimation + busy.attributes;
-    if (total > 0.0) {
-        meshes.seconds = {wallSeconds * busy.meshes / total, wallSeconds * busy.decimation / total,
-                          wallSeconds * busy.attributes / total};
-    }
-}
-
 std::vector<std::size_t> concludeSlabs(const SlabSums& sums, const data::DataSelection& selection,
                                        const data::EnsembleDescription& d,
                                        const RangeCheck& checkRange, StreamedEnsemble& out) {

@@ -106,11 +106,6 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                                       const std::stop_token& stop = {},
                                       const data::Progress& progress = {});
 
-// The meshes' totals (triangles, vertices, worst error) and each stage's share of `wallSeconds`
-// from the members' statistics.
-void summariseMeshes(IsovalueMeshes& meshes, const std::vector<FieldMeshStats>& stats,
-                     double wallSeconds);
-
 struct StreamedEnsemble {
     StreamingPlan plan;
     std::vector<std::size_t> membersWithoutData;  // indices among the description's members
