@@ -30,5 +30,4 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
                                        const std::stop_token& stop = {},
                                        const data::Progress& progress = {});
 
-
 }  // namespace ensil::prep

@@ -306,7 +306,10 @@ data::TriangleMesh extractIsosurface(const data::Grid& grid, std::span<const flo
             if (j + 1 >= ny || k + 1 >= nz) continue;
             rowIds(b.row(j + 1, k), rowsOf[1]);
             rowIds(b.row(j + 1, k + 1), rowsOf[3]);
-            std::uint32_t* out = &mesh.indices[3 * static_cast<std::size_t>(b.rowTriangles[r])];
+            // Through data(): with no triangles at all the vector is empty, and indexing it
+            // would bind a reference to null (UBSan stops there).
+            std::uint32_t* out =
+                mesh.indices.data() + 3 * static_cast<std::size_t>(b.rowTriangles[r]);
             const std::vector<std::uint64_t>& cells = b.layerCells[k];
             std::array<std::uint32_t, 12> ids{};  // this cell's vertex per edge
             for (std::size_t c = b.rowCellsBegin[r]; c < b.rowCellsBegin[r + 1]; ++c) {
