@@ -12,6 +12,7 @@
 #include "app/data_selection_options.h"
 #include "app/headless/isovalue_job.h"
 #include "app/headless/preprocess_run.h"
+#include "app/headless/run_memory.h"
 #include "app/headless/streaming_run.h"
 #ifdef ENSIL_WITH_MPI
 #include "app/preprocess_mpi.h"
@@ -75,6 +76,7 @@ double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElaps
 // The shared result, with what only the command reports.
 struct Result : PreprocessResult {
     QString cache;
+    std::optional<RunMemory> memory;  // none where the kernel gives no figure
 };
 
 QString memberName(const data::Member& member, std::size_t index) {
@@ -152,6 +154,11 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     o[QStringLiteral("depth")] = depth;
     o[QStringLiteral("median_member")] = static_cast<qint64>(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
+    if (r.memory) {
+        o[QStringLiteral("memory")] =
+            QJsonObject{{"resident_at_start_bytes", static_cast<qint64>(r.memory->residentAtStart)},
+                        {"peak_resident_bytes", static_cast<qint64>(r.memory->peakResident)}};
+    }
     // How it was read when it was streamed (absent when it was read whole: every value in the
     // JSON is a number or a string, never null).
     if (r.streaming) {
@@ -193,6 +200,13 @@ void printText(QTextStream& out, const Result& r) {
         out << " " << QString::fromStdString(name) << " " << QString::number(value, 'f', 3);
     }
     out << "\n";
+    if (r.memory) {
+        const auto mibText = [](std::size_t bytes) {
+            return QString::number(static_cast<double>(bytes) / 1048576.0, 'f', 0);
+        };
+        out << "Memory:     peak " << mibText(r.memory->peakResident) << " MiB resident, "
+            << mibText(r.memory->residentAtStart) << " MiB of it before the run\n";
+    }
     std::vector<int> sizes(static_cast<std::size_t>(k), 0);
     for (int l : r.labels) ++sizes[static_cast<std::size_t>(l)];
     out << "Clusters:   " << k << ", sizes";
@@ -367,6 +381,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         err << "ensil preprocess: " << problem << "\n";
         return 2;
     }
+    const RunMemoryMeter memory;
     QElapsedTimer total, stage;
     total.start();
     try {
@@ -391,6 +406,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
         const auto printResult = [&](Result& r) {
             r.seconds["total"] = seconds(total);
+            r.memory = memory.read();
             if (parser.isSet(o.json)) {
                 out << QJsonDocument(toJson(r, linkage)).toJson(QJsonDocument::Compact) << "\n";
             } else {
