@@ -240,6 +240,8 @@ private:
     // The time step whose clusters the selection shows: -1 from a step's request until its
     // surfaces are built (the last step's clusters stay on screen meanwhile).
     int m_clusteredStep = -1;
+    // Another time step is on its way to the screen (its first frame is a motion frame).
+    bool m_stepChanging = false;
     [[nodiscard]] QString stripKey() const;
     // The clusters of the step on screen go into the timeline (main_window_time.cpp).
     void recordStepClusters();

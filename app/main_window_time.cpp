@@ -8,6 +8,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <algorithm>
+#include <utility>
 
 #include "app/ensemble_facts.h"
 #include "app/headless/picture_title.h"
@@ -58,6 +59,9 @@ void MainWindow::createTimeBar() {
     // A step is on screen once its surfaces are: then the bar may go on, and the next is read.
     connect(m_session, &IsovalueSession::finished, this, [this] {
         if (!m_overview || !m_requested) return;
+        // Another step's surfaces: a motion frame first (a software-OpenGL frame of every member
+        // at full resolution takes longer than a step may), the full one once steps pause.
+        if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
         // The next step read ahead first: the strip's filling (started when the clusters are
@@ -243,6 +247,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     m_overview = std::move(overview);
     m_requested->timeIndex = step;
     m_clusteredStep = -1;  // until this step's surfaces and clusters are built
+    m_stepChanging = true;
     std::size_t bytes = 0;
     for (const auto& [index, kept] : m_timeSteps) bytes += kept->ensemble->bytes();
     // The steps farthest from the one shown go first.
@@ -319,6 +324,7 @@ void MainWindow::readAhead() {
 
 void MainWindow::forgetTimeSteps() {
     m_clusteredStep = -1;  // other data: its clusters come with its first surfaces
+    m_stepChanging = false;
     m_readAhead.cancel();
     m_readingAhead = kNoStep;
     m_stepFill.cancel();

@@ -17,7 +17,7 @@ namespace ensil::ui {
 namespace {
 // Long enough to skip the picks of a cursor in motion, short enough to feel immediate.
 constexpr int kHoverDelayMs = 40;
-// A pause in wheel turns this long ends a zoom.
+// A pause in wheel turns (or time steps) this long ends the motion.
 constexpr int kWheelSettleMs = 200;
 // The resolutions motion may use, full first; few steps, as each change reallocates the
 // renderer's targets.
@@ -65,6 +65,12 @@ void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
     } else if (frameMs < 0.5 * m_motionBudgetMs && m_motionStep > 0) {
         --m_motionStep;
     }
+}
+
+void SilhouetteView::showPassingChange() {
+    m_moving = true;
+    m_settleTimer.start();
+    update();
 }
 
 void SilhouetteView::stopMoving() {
@@ -292,9 +298,7 @@ void SilhouetteView::wheelEvent(QWheelEvent* event) {
     m_renderer.camera().zoomToward(static_cast<float>(std::pow(1.12, notches)),
                                    {static_cast<float>(offset.x()), static_cast<float>(offset.y())},
                                    static_cast<float>(height()));
-    m_moving = true;
-    m_settleTimer.start();
-    update();
+    showPassingChange();
     event->accept();
 }
 

@@ -85,6 +85,10 @@ public slots:
     // drawn as camera motion is, until it ends.
     void beginInteraction() { m_moving = true; }
     void endInteraction() { stopMoving(); }
+    // A change that others may follow at once (a time step while stepping or playing): drawn
+    // as a motion frame, at the resolution motion gets, and at full resolution once such
+    // changes pause, as wheel turns are, so a step is on screen without a full software frame.
+    void showPassingChange();
 
 signals:
     // Emitted once when the view cannot render (no OpenGL 4.1 core, a shader that fails).

@@ -35,6 +35,7 @@ struct Step {
     double startedMs = -1.0;  // the step's data in hand and its surfaces asked for
     double readyMs = -1.0;    // its surfaces, clusters and panels handed over (finished)
     double drawnMs = -1.0;    // and the first frame composed after that (software OpenGL)
+    double fullMs = -1.0;     // the first of those at full resolution (once steps pause)
     int framesBefore = 0;     // frames composed between the request and ready
 };
 
@@ -58,31 +59,33 @@ Step stepTo(app::MainWindow& window, int step) {
         QObject::connect(window.view(), &QOpenGLWidget::frameSwapped, [&] {
             if (s.readyMs < 0) {
                 ++s.framesBefore;
-            } else if (s.drawnMs < 0) {
-                s.drawnMs = now();
+            } else {
+                if (s.drawnMs < 0) s.drawnMs = now();
+                if (s.fullMs < 0 && !window.view()->inMotion()) s.fullMs = now();
             }
         });
     timer.start();
     bar.requestStep(step);
     const bool shown =
-        QTest::qWaitFor([&] { return s.drawnMs >= 0 && bar.pendingStep() < 0; }, 600000);
+        QTest::qWaitFor([&] { return s.fullMs >= 0 && bar.pendingStep() < 0; }, 600000);
     QObject::disconnect(started);
     QObject::disconnect(finished);
     QObject::disconnect(frames);
-    if (!shown) s.readyMs = s.drawnMs = -1.0;
+    if (!shown) s.readyMs = s.drawnMs = s.fullMs = -1.0;
     return s;
 }
 
 void report(const char* what, const std::vector<Step>& steps) {
-    std::vector<double> started, ready, drawn, frames;
+    std::vector<double> started, ready, drawn, full, frames;
     for (const Step& s : steps) {
         started.push_back(s.startedMs);
         ready.push_back(s.readyMs);
         drawn.push_back(s.drawnMs);
+        full.push_back(s.fullMs);
         frames.push_back(s.framesBefore);
     }
-    std::printf("  %-38s median %6.0f ms ready, %6.0f ms drawn\n", what, bench::median(ready),
-                bench::median(drawn));
+    std::printf("  %-38s median %6.0f ms ready, %6.0f ms drawn, %6.0f ms at full resolution\n",
+                what, bench::median(ready), bench::median(drawn), bench::median(full));
     std::printf("  %-38s (surfaces asked for at %.0f ms; %.0f frames composed before ready)\n", "",
                 bench::median(started), bench::median(frames));
 }
