@@ -177,6 +177,13 @@ TEST(StreamingRun, PeakMemoryStaysWithinTheLimitWhereTheInMemoryRunDoesNot) {
         return static_cast<qint64>(memory.value("peak_resident_bytes").toDouble(-1)) -
                static_cast<qint64>(memory.value("resident_at_start_bytes").toDouble(0));
     };
+#if defined(__SANITIZE_ADDRESS__)
+    // Built with AddressSanitizer (the asan preset), freed memory waits in its quarantine (256
+    // MiB by default) and every block has redzones and shadow: the resident memory measures
+    // the sanitizer, not ensil (314 MiB over the start here, against 34 MiB in the ci build,
+    // which checks the bound). Both runs have still been made and checked above.
+    GTEST_SKIP() << "the memory bound is checked in the build without sanitizers";
+#endif
     ASSERT_TRUE(streamed.contains("memory") && whole.contains("memory"))
         << "no memory figures: /proc/self/clear_refs could not reset the peak";
     EXPECT_LE(taken(streamed), limit * 12 / 10)
