@@ -9,6 +9,7 @@
 #include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/histogram_strip.h"
 #include "widgets/isovalue_control.h"
@@ -21,9 +22,7 @@ using ensil::ui::IsovalueControl;
 TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAreReady) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(1000, 700);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     window.loadDemo({.members = 6, .nx = 48, .ny = 24, .nz = 8, .seed = 4});
@@ -60,9 +59,7 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
 TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurfacesOfTheRelease) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    window.resize(1000, 700);
-    window.show();
-    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
     app::IsovalueSession* session = window.isovalueSession();
     QSignalSpy built(session, &app::IsovalueSession::finished);

@@ -9,6 +9,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkQuadricDecimation.h>
+#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +29,18 @@ vtkNew<vtkImageData> imageOf(const ensil::data::Ensemble& e, std::size_t m) {
     return image;
 }
 
+// vtkFlyingEdges3D's surface of one member, without the normals and gradients it could add
+// (the reference computes its attributes later, timed on their own).
+vtkSmartPointer<vtkPolyData> flyingEdges(vtkImageData* image, float isovalue) {
+    vtkNew<vtkFlyingEdges3D> edges;
+    edges->SetInputData(image);
+    edges->SetValue(0, isovalue);
+    edges->ComputeNormalsOff();
+    edges->ComputeGradientsOff();
+    edges->Update();
+    return edges->GetOutput();
+}
+
 }  // namespace
 
 VtkIsosurfaceTime timeVtkFlyingEdges(const ensil::data::Ensemble& e, float isovalue,
@@ -39,13 +52,7 @@ VtkIsosurfaceTime timeVtkFlyingEdges(const ensil::data::Ensemble& e, float isova
     }
     const auto start = std::chrono::steady_clock::now();
     for (auto& image : images) {
-        vtkNew<vtkFlyingEdges3D> edges;
-        edges->SetInputData(image);
-        edges->SetValue(0, isovalue);
-        edges->ComputeNormalsOff();
-        edges->ComputeGradientsOff();
-        edges->Update();
-        out.triangles += static_cast<std::size_t>(edges->GetOutput()->GetNumberOfPolys());
+        out.triangles += static_cast<std::size_t>(flyingEdges(image, isovalue)->GetNumberOfPolys());
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
@@ -66,20 +73,15 @@ VtkReferenceTimes runVtkReference(const ensil::data::Ensemble& e, float isovalue
         vtkNew<vtkImageData> image = imageOf(e, m);
 
         auto t = Clock::now();
-        vtkNew<vtkFlyingEdges3D> edges;
-        edges->SetInputData(image);
-        edges->SetValue(0, isovalue);
-        edges->ComputeNormalsOff();
-        edges->ComputeGradientsOff();
-        edges->Update();
+        const vtkSmartPointer<vtkPolyData> surface = flyingEdges(image, isovalue);
         times.isosurface += seconds(t);
-        const auto in = static_cast<std::size_t>(edges->GetOutput()->GetNumberOfPolys());
+        const auto in = static_cast<std::size_t>(surface->GetNumberOfPolys());
         times.trianglesIn += in;
         if (in == 0) continue;
 
         t = Clock::now();
         vtkNew<vtkQuadricDecimation> decimate;
-        decimate->SetInputConnection(edges->GetOutputPort());
+        decimate->SetInputData(surface);
         decimate->SetTargetReduction(1.0 - static_cast<double>(std::min(target, in)) /
                                                static_cast<double>(in));
         decimate->Update();
