@@ -1,6 +1,7 @@
 // The GRIB reader: the ERA5 sample against its NetCDF conversion, and small GRIB files written
 // here with ecCodes for each case the reader must handle (pressure levels in hPa and Pa, a
-// Gaussian grid, every scanning mode, bitmaps, damaged messages, grids it refuses, wind speed).
+// Gaussian grid, every scanning mode, bitmaps in GRIB 2 and GRIB 1, model levels and heights,
+// damaged messages, grids it refuses, wind speed).
 #include <eccodes.h>
 #include <gtest/gtest.h>
 
@@ -10,9 +11,9 @@
 #include <random>
 
 #include "data/ensemble_reader.h"
-#include "tests/data/reader_test_helpers.h"
 #include "data/error.h"
 #include "tests/data/grib_test_file.h"
+#include "tests/data/reader_test_helpers.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -85,7 +86,7 @@ std::string writeGrib(const std::string& path, const std::vector<GribField>& fie
     return path;
 }
 
-// Checks every value of the ensemble against expected(member, lat, lon, level).
+// Checks every value of the ensemble against expected(member, lat, lon, level) (NaN: missing).
 void expectValues(const data::Ensemble& e,
                   const std::function<double(std::size_t, double, double, double)>& expected,
                   double tolerance) {
@@ -98,7 +99,10 @@ void expectValues(const data::Ensemble& e,
                     const double want =
                         expected(m, g.y().values[j], g.x().values[i], g.z().values[k]);
                     const float got = e.members[m].values[g.index(i, j, k)];
-                    if (!(std::abs(got - want) <= tolerance)) {
+                    // NaN expected: missing, which only NaN matches.
+                    const bool same =
+                        std::isnan(want) ? std::isnan(got) : std::abs(got - want) <= tolerance;
+                    if (!same) {
                         if (++wrong <= 3) {
                             ADD_FAILURE() << "member " << m << " at (" << i << ", " << j << ", "
                                           << k << "): " << got << ", expected " << want;
@@ -218,9 +222,10 @@ TEST(GribReader, EveryFieldOfAMultiFieldMessageIsRead) {
     };
     // Member 0 at 850 and 500 hPa and member 1 at 850 hPa in one message; member 1 at 500 hPa
     // alone after it.
-    const std::string multi = multiFieldMessage({field("t", "isobaricInhPa", 850, 0, value(0, 850)),
-                                                 field("t", "isobaricInhPa", 500, 0, value(0, 500)),
-                                                 field("t", "isobaricInhPa", 850, 1, value(1, 850))});
+    const std::string multi =
+        multiFieldMessage({field("t", "isobaricInhPa", 850, 0, value(0, 850)),
+                           field("t", "isobaricInhPa", 500, 0, value(0, 500)),
+                           field("t", "isobaricInhPa", 850, 1, value(1, 850))});
     const std::string single = test::encodeGrib(field("t", "isobaricInhPa", 500, 1, value(1, 500)));
     const std::string path = dir.file("multi.grib2");
     test::writeBytes(path, multi + single);
@@ -264,6 +269,65 @@ TEST(GribReader, PressureLevelsInHpaAndPaMakeOnePressureAxis) {
     EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 0", "member 1"}));
     expectValues(
         e, [&](std::size_t m, double lat, double lon, double pa) { return value(m, pa)(lat, lon); },
+        1e-3);
+}
+
+TEST(GribReader, ModelLevelsAndHeightsAreAxesOfTheirOwnBesidePressure) {
+    const test::TempDir dir;
+    // t on model levels, on heights above ground and on pressure levels: three variables, each
+    // with its own vertical axis, sorted whatever the file's order.
+    const auto value = [](long member, double level) {
+        return [member, level](double lat, double lon) {
+            return 100.0 * static_cast<double>(member) + level + lat * 0.1 + lon * 0.01;
+        };
+    };
+    std::vector<GribField> fields;
+    for (long member : {0L, 1L}) {
+        for (long level : {3L, 1L, 2L}) {
+            fields.push_back(field("t", "hybrid", level, member, value(member, level)));
+        }
+        // Not 2 m: ecCodes names t there '2t', another parameter.
+        for (long metres : {100L, 50L}) {
+            fields.push_back(
+                field("t", "heightAboveGround", metres, member, value(member, metres)));
+        }
+        for (long hpa : {850L, 500L}) {
+            fields.push_back(field("t", "isobaricInhPa", hpa, member, value(member, hpa)));
+        }
+    }
+    const std::string path = writeGrib(dir.file("levels.grib2"), fields);
+    const auto open = [&](const std::string& variable) {
+        return data::openEnsemble(select(path, variable));
+    };
+    const data::Ensemble model = open("t_hybrid");
+    EXPECT_EQ(model.grid.z().name, "hybrid");
+    EXPECT_FALSE(model.grid.z().positiveUp) << "model levels count down from the top";
+    EXPECT_EQ(model.grid.z().values, (std::vector<double>{1, 2, 3}));
+    expectValues(
+        model,
+        [&](std::size_t m, double lat, double lon, double level) {
+            return value(static_cast<long>(m), level)(lat, lon);
+        },
+        1e-3);
+    const data::Ensemble height = open("t_heightAboveGround");
+    EXPECT_EQ(height.grid.z().name, "height");
+    EXPECT_EQ(height.grid.z().units, "m");
+    EXPECT_TRUE(height.grid.z().positiveUp);
+    EXPECT_EQ(height.grid.z().values, (std::vector<double>{50, 100}));
+    expectValues(
+        height,
+        [&](std::size_t m, double lat, double lon, double metres) {
+            return value(static_cast<long>(m), metres)(lat, lon);
+        },
+        1e-3);
+    const data::Ensemble pressure = open("t_isobaric");
+    EXPECT_EQ(pressure.grid.z().name, "plev");
+    EXPECT_EQ(pressure.grid.z().values, (std::vector<double>{50000, 85000}));
+    expectValues(
+        pressure,
+        [&](std::size_t m, double lat, double lon, double pa) {
+            return value(static_cast<long>(m), pa / 100.0)(lat, lon);
+        },
         1e-3);
 }
 
@@ -397,6 +461,61 @@ TEST(GribReader, BitmapMakesNaNExactlyWhereValuesAreMissing) {
                 }
     EXPECT_GT(missing, 0u);
     EXPECT_LT(missing, 2 * 2 * g.nx() * g.ny());
+}
+
+TEST(GribReader, AGrib1BitmapMakesNaNWhereValuesAreMissing) {
+    const test::TempDir dir;
+    // GRIB 1: ECMWF's local definition 1 numbers the ensemble's members.
+    const auto missingAt = [](double lat, double lon) { return lat == 20.0 && lon >= 30.0; };
+    std::vector<GribField> fields;
+    for (long member : {0L, 1L}) {
+        for (long level : {850L, 500L}) {
+            GribField f;
+            f.sample = "regular_ll_pl_grib1";
+            f.keys = {{"setLocalDefinition", 1L},
+                      {"localDefinitionNumber", 1L},
+                      {"marsType", std::string("pf")},
+                      {"stream", std::string("enfo")},
+                      {"number", member},
+                      {"numberOfForecastsInEnsemble", 10L},
+                      {"shortName", std::string("t")},
+                      {"typeOfLevel", std::string("isobaricInhPa")},
+                      {"level", level},
+                      {"dataDate", 20240115L},
+                      {"Ni", 8L},
+                      {"Nj", 5L},
+                      {"longitudeOfFirstGridPointInDegrees", 0.0},
+                      {"longitudeOfLastGridPointInDegrees", 70.0},
+                      {"latitudeOfFirstGridPointInDegrees", 40.0},
+                      {"latitudeOfLastGridPointInDegrees", 0.0},
+                      {"iDirectionIncrementInDegrees", 10.0},
+                      {"jDirectionIncrementInDegrees", 10.0},
+                      {"bitsPerValue", 24L}};
+            f.value = [=](double lat, double lon) {
+                return missingAt(lat, lon) ? std::nan("")
+                                           : lat + lon + static_cast<double>(member + level);
+            };
+            fields.push_back(f);
+        }
+    }
+    const std::string path = writeGrib(dir.file("bitmap.grib1"), fields);
+    data::EnsembleDescription d;
+    const data::Ensemble e = data::openEnsemble(select(path), {}, {}, &d);
+    EXPECT_EQ(d.format, "GRIB 1");
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 0", "member 1"}));
+    EXPECT_EQ(e.grid.z().values, (std::vector<double>{50000, 85000}));
+    std::size_t missing = 0;
+    expectValues(
+        e,
+        [&](std::size_t m, double lat, double lon, double pa) {
+            if (missingAt(lat, lon)) {
+                ++missing;
+                return std::nan("");
+            }
+            return lat + lon + static_cast<double>(m) + pa / 100.0;
+        },
+        1e-3);
+    EXPECT_EQ(missing, 2u * 2u * 5u) << "five points of each level of each member";
 }
 
 TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
