@@ -5,7 +5,9 @@
 // be thread-safe).
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <stop_token>
 
@@ -25,5 +27,27 @@ inline void throwIfStopped(const std::stop_token& stop) {
 inline void report(const Progress& progress, double fraction) {
     if (progress) progress(fraction);
 }
+
+// Progress of work done in parts on several threads at once: each part that finishes moves the
+// fraction from `from` toward `to` by its share. Counted and reported under one lock, so the
+// fractions stay monotonic whatever order the threads finish in.
+class PartsProgress {
+public:
+    PartsProgress(Progress progress, std::size_t parts, double from = 0.0, double to = 1.0)
+        : m_progress(std::move(progress)), m_parts(parts), m_from(from), m_to(to) {}
+    void partDone() {
+        const std::lock_guard lock(m_mutex);
+        ++m_done;
+        report(m_progress, m_from + (m_to - m_from) * static_cast<double>(m_done) /
+                                        static_cast<double>(m_parts == 0 ? 1 : m_parts));
+    }
+
+private:
+    Progress m_progress;
+    std::size_t m_parts;
+    double m_from, m_to;
+    std::size_t m_done = 0;
+    std::mutex m_mutex;
+};
 
 }  // namespace ensil::data

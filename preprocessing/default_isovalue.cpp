@@ -42,14 +42,22 @@ std::vector<IsovalueCandidate> isovalueCandidates(const data::Ensemble& e,
     const std::size_t members = e.memberCount();
     if (points == 0 || members == 0) return candidates;
     const std::size_t stride = std::max<std::size_t>(1, points / kSampledPoints);
+    // The sampled points' values gathered once, point by point (a few MB): the candidates then
+    // read them in order instead of each reading every member at every sampled point again.
+    std::vector<float> sampledValues;
+    sampledValues.reserve((points + stride - 1) / stride * members);
+    for (std::size_t i = 0; i < points; i += stride) {
+        for (std::size_t m = 0; m < members; ++m) sampledValues.push_back(e.members[m].values[i]);
+    }
     for (IsovalueCandidate& c : candidates) {
         std::vector<std::size_t> above(members, 0), below(members, 0);
         double disagreement = 0.0;
         std::size_t sampled = 0;
-        for (std::size_t i = 0; i < points; i += stride) {
+        for (std::size_t first = 0; first < sampledValues.size(); first += members) {
+            const float* at = sampledValues.data() + first;
             std::size_t valid = 0, over = 0;
             for (std::size_t m = 0; m < members; ++m) {
-                const float v = e.members[m].values[i];
+                const float v = at[m];
                 if (std::isnan(v)) continue;
                 ++valid;
                 if (v >= c.isovalue) {

@@ -1,5 +1,7 @@
 #include "preprocessing/ensemble_statistics.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -80,7 +82,17 @@ void EnsembleStatisticsAccumulator::add(std::span<const float> member) {
 }
 
 void EnsembleStatisticsAccumulator::addLevel(std::span<const float> member, std::size_t k) {
+    addLevel(member, k, m_levelCodes);
+}
+
+void EnsembleStatisticsAccumulator::addLevel(std::span<const float> member, std::size_t k,
+                                             std::span<std::uint8_t> scratch) {
     const std::size_t level = m_nx * m_ny;
+    if (scratch.size() < level) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "the statistics' scratch holds " + std::to_string(scratch.size()) +
+                              " bytes where a level has " + std::to_string(level) + " points");
+    }
     if (member.size() != level * m_nz) {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           "a member with " + std::to_string(member.size()) +
@@ -128,7 +140,7 @@ void EnsembleStatisticsAccumulator::addLevel(std::span<const float> member, std:
     // The cells between levels k and k + 1: OR the two levels' codes point by point, then each
     // cell ORs its 4 columns.
     const float* upper = values + level;
-    std::uint8_t* codes = m_levelCodes.data();
+    std::uint8_t* codes = scratch.data();
     for (std::size_t q = 0; q < level; ++q) {
         codes[q] = static_cast<std::uint8_t>(side(values[q], c) | side(upper[q], c));
     }
@@ -201,14 +213,18 @@ EnsembleStatistics computeEnsembleStatistics(const data::Ensemble& ensemble, flo
     EnsembleStatisticsAccumulator accumulator(ensemble.grid, isovalue);
     // Level by level, every member through each level: the running sums of one level (about
     // 40 bytes a point) stay in cache instead of streaming the whole grid's once per member.
+    // Levels on threads of their own (their sums are disjoint; each level takes the members in
+    // the same order, so the result does not depend on the threads).
     const std::size_t levels = ensemble.grid.nz();
-    for (std::size_t k = 0; k < levels; ++k) {
+    data::PartsProgress levelsDone(progress, levels, 0.0, 0.95);
+    tbb::parallel_for(std::size_t{0}, levels, [&](std::size_t k) {
+        std::vector<std::uint8_t> scratch(ensemble.grid.nx() * ensemble.grid.ny());
         for (const std::size_t m : members) {
             data::throwIfStopped(stop);
-            accumulator.addLevel(ensemble.members[m].values, k);
+            accumulator.addLevel(ensemble.members[m].values, k, scratch);
         }
-        data::report(progress, 0.95 * static_cast<double>(k + 1) / static_cast<double>(levels));
-    }
+        levelsDone.partDone();
+    });
     data::throwIfStopped(stop);
     EnsembleStatistics result = accumulator.result();
     result.members.assign(members.begin(), members.end());

@@ -64,6 +64,9 @@ public:
     // member; computeEnsembleStatistics goes level by level so that one level's sums stay in
     // cache while every member passes through them. Throws as add().
     void addLevel(std::span<const float> member, std::size_t k);
+    // The same with the caller's scratch of grid.nx() * grid.ny() bytes: calls for different
+    // levels touch disjoint sums, so they may run at once on threads of their own scratch.
+    void addLevel(std::span<const float> member, std::size_t k, std::span<std::uint8_t> scratch);
 
     // The statistics of what was added so far (`members` left empty).
     [[nodiscard]] EnsembleStatistics result() const;

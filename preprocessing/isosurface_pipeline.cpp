@@ -2,9 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include <atomic>
 #include <chrono>
-#include <mutex>
 
 #include "preprocessing/decimation.h"
 #include "preprocessing/marching_cubes.h"
@@ -22,15 +20,11 @@ double since(Clock::time_point start) {
 template <typename Work>
 void forEachField(std::size_t n, const std::stop_token& stop, const data::Progress& progress,
                   double lo, double hi, Work&& work) {
-    std::atomic<std::size_t> done{0};
-    std::mutex reportMutex;
+    data::PartsProgress fieldsDone(progress, n, lo, hi);
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
         if (stop.stop_requested()) return;
         work(i);
-        const std::size_t finished = ++done;
-        const std::lock_guard lock(reportMutex);  // keeps reports monotonic
-        data::report(progress,
-                     lo + (hi - lo) * static_cast<double>(finished) / static_cast<double>(n));
+        fieldsDone.partDone();
     });
     data::throwIfStopped(stop);
 }

@@ -5,11 +5,9 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <mutex>
 
 #include "data/display_frame.h"
 #include "data/ensemble_part.h"
@@ -175,8 +173,7 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                                       const PipelineOptions& options, std::size_t atOnce,
                                       const std::stop_token& stop, const data::Progress& progress) {
     std::vector<MemberResult> results(members.size());
-    std::atomic<std::size_t> done{0};
-    std::mutex reportMutex;
+    data::PartsProgress membersDone(progress, members.size());
     tbb::task_arena arena(static_cast<int>(std::max<std::size_t>(1, atOnce)));
     arena.execute([&] {
         tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
@@ -192,10 +189,7 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                     results[i] = meshMember(selection, d, members[i], moments, axes, options, stop);
                 }
             });
-            const std::size_t finished = ++done;
-            const std::lock_guard lock(reportMutex);
-            data::report(progress,
-                         static_cast<double>(finished) / static_cast<double>(members.size()));
+            membersDone.partDone();
         });
     });
     data::throwIfStopped(stop);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -291,20 +292,23 @@ TEST(EnsembleStatistics, KeepsPrecisionForLargeValues) {
 }
 
 TEST(EnsembleStatistics, CancelThrowsAndProgressIsMonotonic) {
+    // 64 levels, summed on several threads.
+    const std::size_t levels = 64;
     const auto e = test::analyticEnsemble(
-        6, 8, 8, 8, [](auto m, auto, auto, auto) { return static_cast<float>(m); });
+        6, 8, 8, levels, [](auto m, auto, auto, auto) { return static_cast<float>(m); });
     std::vector<double> fractions;
     prep::computeEnsembleStatistics(e, 2.5F, {}, [&](double f) { fractions.push_back(f); });
-    ASSERT_GE(fractions.size(), 8u);  // at least once per level
+    ASSERT_GE(fractions.size(), levels);  // at least once per level
     EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
     EXPECT_DOUBLE_EQ(fractions.back(), 1.0);
 
     std::stop_source stop;
-    int calls = 0;
+    std::atomic<int> calls = 0;
     EXPECT_THROW(prep::computeEnsembleStatistics(e, 2.5F, stop.get_token(),
                                                  [&](double) {
                                                      if (++calls == 2) stop.request_stop();
                                                  }),
                  data::Cancelled);
-    EXPECT_EQ(calls, 2) << "the step must stop at the next level after the request";
+    // Levels already begun on other threads finish; no member is added after the request.
+    EXPECT_LT(calls, static_cast<int>(levels) / 2) << "the step must stop soon after the request";
 }
