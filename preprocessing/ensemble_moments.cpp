@@ -1,12 +1,10 @@
 #include "preprocessing/ensemble_moments.h"
 
-#include <tbb/parallel_for.h>
-
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "preprocessing/mean_member.h"
+#include "preprocessing/point_blocks.h"
 
 namespace ensil::prep {
 
@@ -19,13 +17,7 @@ EnsembleMoments computeEnsembleMoments(const data::Ensemble& ensemble, const std
     const std::size_t members = ensemble.memberCount();
     const float* mean = moments.mean.values.data();
     moments.variance.resize(n);
-    // As the mean: blocks of points on threads of their own, members in order within each.
-    const std::size_t blocks = (n + kPointsPerBlock - 1) / kPointsPerBlock;
-    data::PartsProgress blocksDone(progress, blocks, 0.5, 1.0);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        data::throwIfStopped(stop);
-        const std::size_t first = b * kPointsPerBlock;
-        const std::size_t count = std::min(kPointsPerBlock, n - first);
+    forEachPointBlock(n, stop, progress, 0.5, 1.0, [&](std::size_t first, std::size_t count) {
         std::vector<double> sum(count, 0.0);
         std::vector<std::uint32_t> valid(count, 0);
         for (std::size_t m = 0; m < members; ++m) {
@@ -42,7 +34,6 @@ EnsembleMoments computeEnsembleMoments(const data::Ensemble& ensemble, const std
             moments.variance[first + p] = valid[p] > 0 ? static_cast<float>(sum[p] / valid[p])
                                                        : std::numeric_limits<float>::quiet_NaN();
         }
-        blocksDone.partDone();
     });
     return moments;
 }

@@ -1,13 +1,11 @@
 #include "preprocessing/mean_member.h"
 
-#include <tbb/parallel_for.h>
-
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "data/error.h"
+#include "preprocessing/point_blocks.h"
 
 namespace ensil::prep {
 
@@ -22,14 +20,7 @@ data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_t
     data::Member mean;
     mean.name = "mean";
     mean.values.resize(n);
-    // Blocks of points on threads of their own; each point's members summed in member order,
-    // so the mean does not depend on the threads.
-    const std::size_t blocks = (n + kPointsPerBlock - 1) / kPointsPerBlock;
-    data::PartsProgress blocksDone(progress, blocks);
-    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t b) {
-        data::throwIfStopped(stop);
-        const std::size_t first = b * kPointsPerBlock;
-        const std::size_t count = std::min(kPointsPerBlock, n - first);
+    forEachPointBlock(n, stop, progress, 0.0, 1.0, [&](std::size_t first, std::size_t count) {
         std::vector<double> sum(count, 0.0);
         std::vector<std::uint32_t> valid(count, 0);
         for (std::size_t m = 0; m < members; ++m) {
@@ -45,7 +36,6 @@ data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_t
             mean.values[first + p] = valid[p] > 0 ? static_cast<float>(sum[p] / valid[p])
                                                   : std::numeric_limits<float>::quiet_NaN();
         }
-        blocksDone.partDone();
     });
     return mean;
 }

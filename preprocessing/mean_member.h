@@ -5,18 +5,12 @@
 // Pure function; runs on any thread.
 #pragma once
 
-#include <cstddef>
 #include <stop_token>
 
 #include "data/ensemble.h"
 #include "data/job.h"
 
 namespace ensil::prep {
-
-// Points a thread takes at once for the per-point sums over the members (the mean here, the
-// variance in ensemble_moments.cpp): a block's sums, 12 bytes a point, stay in cache while
-// every member passes through them.
-inline constexpr std::size_t kPointsPerBlock = std::size_t{1} << 14;
 
 // Throws data::Cancelled if stop is requested, data::Error(InvalidArgument) for an empty ensemble.
 data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_token& stop = {},

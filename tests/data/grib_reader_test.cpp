@@ -296,39 +296,30 @@ TEST(GribReader, ModelLevelsAndHeightsAreAxesOfTheirOwnBesidePressure) {
         }
     }
     const std::string path = writeGrib(dir.file("levels.grib2"), fields);
-    const auto open = [&](const std::string& variable) {
-        return data::openEnsemble(select(path, variable));
+    // Opens one variable and checks every value; perLevelUnit turns its axis's values into the
+    // levels the fields were written at (Pa into hPa for pressure).
+    const auto open = [&](const std::string& variable, double perLevelUnit = 1.0) {
+        data::Ensemble e = data::openEnsemble(select(path, variable));
+        expectValues(
+            e,
+            [&](std::size_t m, double lat, double lon, double z) {
+                return value(static_cast<long>(m), z / perLevelUnit)(lat, lon);
+            },
+            1e-3);
+        return e;
     };
     const data::Ensemble model = open("t_hybrid");
     EXPECT_EQ(model.grid.z().name, "hybrid");
     EXPECT_FALSE(model.grid.z().positiveUp) << "model levels count down from the top";
     EXPECT_EQ(model.grid.z().values, (std::vector<double>{1, 2, 3}));
-    expectValues(
-        model,
-        [&](std::size_t m, double lat, double lon, double level) {
-            return value(static_cast<long>(m), level)(lat, lon);
-        },
-        1e-3);
     const data::Ensemble height = open("t_heightAboveGround");
     EXPECT_EQ(height.grid.z().name, "height");
     EXPECT_EQ(height.grid.z().units, "m");
     EXPECT_TRUE(height.grid.z().positiveUp);
     EXPECT_EQ(height.grid.z().values, (std::vector<double>{50, 100}));
-    expectValues(
-        height,
-        [&](std::size_t m, double lat, double lon, double metres) {
-            return value(static_cast<long>(m), metres)(lat, lon);
-        },
-        1e-3);
-    const data::Ensemble pressure = open("t_isobaric");
+    const data::Ensemble pressure = open("t_isobaric", 100.0);
     EXPECT_EQ(pressure.grid.z().name, "plev");
     EXPECT_EQ(pressure.grid.z().values, (std::vector<double>{50000, 85000}));
-    expectValues(
-        pressure,
-        [&](std::size_t m, double lat, double lon, double pa) {
-            return value(static_cast<long>(m), pa / 100.0)(lat, lon);
-        },
-        1e-3);
 }
 
 TEST(GribReader, RegularGaussianGridHasItsUnevenLatitudes) {

@@ -9,6 +9,7 @@
 
 #include "data/error.h"
 #include "fixtures.h"
+#include "preprocessing/point_blocks.h"
 
 using namespace ensil;
 
