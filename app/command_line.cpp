@@ -7,6 +7,7 @@
 
 #include "app/data_selection_options.h"
 #include "app/generate_command.h"
+#include "app/headless/streaming_run.h"
 #include "app/info_command.h"
 #include "app/preprocess_command.h"
 #include "app/render_command.h"
@@ -59,6 +60,11 @@ QString topLevelHelp() {
         "                    dimensions and the most vertical levels).\n"
         "  --member-dim D    Dimension that holds the members, when ensil finds none.\n"
         "  --time-index I    Index along other dimensions such as time (default 0).\n"
+        "  --memory-limit S  Memory the workbench may hold for the data (default: three\n"
+        "                    quarters of what is available now). NetCDF data that would\n"
+        "                    take more (1.5 times its values) are opened as a copy at every\n"
+        "                    few points, their surfaces built from the whole data read in\n"
+        "                    slabs. E.g. 1GiB, 512M.\n"
         "  -h, --help        Show this help.\n"
         "  -v, --version     Show the version.\n"
         "\n"
@@ -99,7 +105,10 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
                                   QStringLiteral("Show this help."));
     const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")},
                                      QStringLiteral("Show the version."));
-    parser.addOptions({help, version});
+    const QCommandLineOption memoryLimit(QStringLiteral("memory-limit"),
+                                         QStringLiteral("Memory the workbench may hold."),
+                                         QStringLiteral("SIZE"));
+    parser.addOptions({help, version, memoryLimit});
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     if (!parser.parse(args)) {
@@ -120,7 +129,17 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
         err << "ensil: " << problem << "\n";
         return {2, std::nullopt};
     }
-    return {0, WorkbenchRequest{std::move(*selection)}};
+    WorkbenchRequest request{std::move(*selection)};
+    if (parser.isSet(memoryLimit)) {
+        std::string why;
+        const auto bytes = parseMemorySize(parser.value(memoryLimit).toStdString(), why);
+        if (!bytes) {
+            err << "ensil: " << QString::fromStdString(why) << "\n";
+            return {2, std::nullopt};
+        }
+        request.memoryLimit = *bytes;
+    }
+    return {0, std::move(request)};
 }
 
 }  // namespace ensil::app

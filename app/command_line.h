@@ -14,6 +14,7 @@ namespace ensil::app {
 // What the workbench should open: no paths means the built-in demo.
 struct WorkbenchRequest {
     data::DataSelection selection;
+    std::size_t memoryLimit = 0;  // --memory-limit; 0: app::defaultMemoryLimit()
 };
 
 struct CommandLineOutcome {

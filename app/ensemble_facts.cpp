@@ -32,17 +32,30 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
     facts.units = QString::fromStdString(e.units);
     facts.memberDimension = QString::fromStdString(e.memberDimension);
     facts.members = static_cast<int>(e.memberCount());
-    facts.gridSize =
-        QStringLiteral("%1 x %2 x %3").arg(e.grid.nx()).arg(e.grid.ny()).arg(e.grid.nz());
-    for (int a = 0; a < 3; ++a) facts.axes << describeAxis(e.grid.axis(a));
+    // A streamed ensemble's facts are the whole data's; its statistics are the copy's.
+    const data::Grid& grid = overview.streamed ? overview.streamed->description.grid : e.grid;
+    facts.gridSize = QStringLiteral("%1 x %2 x %3").arg(grid.nx()).arg(grid.ny()).arg(grid.nz());
+    if (overview.streamed) {
+        facts.gridSize += QObject::tr(" (in memory: %1 x %2 x %3, a copy at %4)")
+                              .arg(e.grid.nx())
+                              .arg(e.grid.ny())
+                              .arg(e.grid.nz())
+                              .arg(QString::fromStdString(everyNthPoint(overview.streamed->stride)));
+    }
+    for (int a = 0; a < 3; ++a) facts.axes << describeAxis(grid.axis(a));
     facts.valueRange = QStringLiteral("%1 .. %2 %3, mean %4")
                            .arg(overview.statistics.minimum, 0, 'g', 5)
                            .arg(overview.statistics.maximum, 0, 'g', 5)
                            .arg(facts.units)
                            .arg(overview.statistics.mean, 0, 'g', 5);
     facts.missing = overview.statistics.missingCount;
-    facts.megabytes = static_cast<double>(e.bytes()) / (1024.0 * 1024.0);
+    facts.megabytes =
+        static_cast<double>(overview.streamed ? overview.streamed->description.bytes() : e.bytes()) /
+        (1024.0 * 1024.0);
     QStringList warnings;
+    if (overview.streamed) {
+        warnings << QString::fromStdString(streamedDataNote(*overview.streamed, e));
+    }
     for (const std::string& warning : e.warnings) warnings << QString::fromStdString(warning);
     if (const auto warning = data::fewLevelsWarning(e.grid)) {
         warnings << QString::fromStdString(*warning);

@@ -13,6 +13,7 @@
 #include "data/job.h"
 #include "geo/map_lines.h"
 #include "app/headless/floor_map.h"
+#include "app/headless/workbench_reading.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
 
@@ -29,6 +30,9 @@ struct EnsembleOverview {
     std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache
     // Members with no valid value, left out of `ensemble` (data::leaveOutMembersWithoutData).
     std::vector<std::string> membersWithoutData;
+    // Set when the data are larger than the workbench's memory budget: `ensemble` is then a
+    // thinned copy, and the surfaces come from the whole data read in slabs.
+    std::shared_ptr<const StreamedSource> streamed;
 };
 
 // Throws data::Cancelled, data::Error.

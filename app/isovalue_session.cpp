@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "app/headless/isovalue_job.h"
+#include "app/headless/streamed_isovalue_job.h"
 #include "preprocessing/preview_meshes.h"
 #include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
@@ -28,8 +29,9 @@ QStringList IsovalueSession::memberNames() const {
 
 void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
-                                  std::string sourceKey) {
-    setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey));
+                                  std::string sourceKey,
+                                  std::shared_ptr<const StreamedSource> streamed) {
+    setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey), std::move(streamed));
     m_kept.clear();  // other data
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);
@@ -44,9 +46,11 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
 
 void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
-                                  std::string sourceKey) {
+                                  std::string sourceKey,
+                                  std::shared_ptr<const StreamedSource> streamed) {
     m_job.cancel();
     forgetPreviews();
+    m_streamed = std::move(streamed);
     m_ensemble = std::move(ensemble);
     m_moments = std::move(moments);
     m_sourceKey = std::move(sourceKey);
@@ -59,9 +63,12 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     const std::string sourceKey = m_sourceKey;
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
+    const auto streamed = m_streamed;
     const std::string cacheDirectory = m_cacheDirectory.toStdString();
     const prep::Linkage linkage = m_linkage;
-    emit started(tr("Building the isosurfaces at %1...").arg(isovalue));
+    emit started(m_streamed ? tr("Building the isosurfaces at %1 from the whole data, in slabs...")
+                                  .arg(isovalue)
+                            : tr("Building the isosurfaces at %1...").arg(isovalue));
     // The full surfaces take over from a preview: none is built or waits any more.
     m_previewJob.cancel();
     m_pendingPreview.reset();
@@ -88,7 +95,9 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             input.cacheDirectory = cacheDirectory;
             input.sourceKey = sourceKey;
             input.linkage = linkage;
-            IsovalueOutcome outcome = runIsovalueJob(input, stop, progress);
+            IsovalueOutcome outcome = streamed
+                                          ? runStreamedIsovalueJob(input, *streamed, stop, progress)
+                                          : runIsovalueJob(input, stop, progress);
             IsovalueResult r;
             r.fromCache = outcome.fromCache;
             r.triangles = outcome.meshes.triangles;

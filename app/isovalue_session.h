@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/background_job.h"
+#include "app/headless/workbench_reading.h"
 #include "data/ensemble.h"
 #include "data/packed_mesh.h"
 #include "preprocessing/clustering.h"
@@ -61,13 +62,17 @@ public:
                     QString cacheDirectory, QObject* parent = nullptr);
 
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
+    // With `streamed`, `ensemble` and `moments` are a thinned copy's and each isovalue's
+    // surfaces come from the whole data read in slabs (app/headless/streamed_isovalue_job.h).
     void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
-                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
+                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey,
+                     std::shared_ptr<const StreamedSource> streamed = nullptr);
     // Another time step of the same members: the last step's surfaces, figures and clusters
     // stay on screen until setIsovalue's are built, and its clusters are what the new ones are
     // matched to (MemberSelection), so colours follow groups across steps.
     void setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
-                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey);
+                     std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey,
+                     std::shared_ptr<const StreamedSource> streamed = nullptr);
     // Builds (or reads from the cache) this isovalue's surfaces, their attributes taken in the
     // display space of this vertical exaggeration.
     void setIsovalue(float isovalue, float verticalExaggeration);
@@ -131,6 +136,7 @@ private:
     std::shared_ptr<const data::Ensemble> m_ensemble;
     std::shared_ptr<const prep::EnsembleMoments> m_moments;
     std::string m_sourceKey;
+    std::shared_ptr<const StreamedSource> m_streamed;
     std::unique_ptr<IsovalueResult> m_result;
     prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};

@@ -67,6 +67,7 @@ int main(int argc, char* argv[]) {
     QGuiApplication::setDesktopFileName(QStringLiteral(ENSIL_APP_ID));
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ensil.svg")));
     ensil::app::MainWindow window;
+    window.setMemoryLimit(outcome.workbench->memoryLimit);
     // The first run has no saved layout: the view and its three docks want the whole screen.
     if (window.hasSavedLayout()) {
         window.show();

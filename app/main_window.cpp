@@ -26,6 +26,7 @@
 #include "app/headless/floor_map.h"
 #include "app/headless/picture_title.h"
 #include "app/headless/session_renderer.h"
+#include "app/headless/streaming_run.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
 #include "app/point_description.h"
@@ -274,7 +275,7 @@ void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
             .arg(params.nz),
         [params] { return demoSourceKey(params); },
         [params](const std::stop_token& stop, const data::Progress& progress) {
-            return data::makeDemoEnsemble(params, stop, progress).ensemble;
+            return WorkbenchEnsemble{data::makeDemoEnsemble(params, stop, progress).ensemble, {}};
         });
 }
 
@@ -287,23 +288,32 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
     m_requestedDemo.reset();
     startLoading(
         tr("Reading %1...").arg(name), [selection] { return data::sourceIdentity(selection); },
-        [selection](const std::stop_token& stop, const data::Progress& progress) {
-            return data::openEnsemble(selection, stop, progress);
+        [selection, limit = memoryLimit()](const std::stop_token& stop,
+                                           const data::Progress& progress) {
+            return readForWorkbench(selection, limit, stop, progress);
         });
+}
+
+std::size_t MainWindow::memoryLimit() const {
+    return m_memoryLimit != 0 ? m_memoryLimit : defaultMemoryLimit();
 }
 
 EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
                                          const std::function<std::string()>& identify,
                                          const std::stop_token& stop,
                                          const data::Progress& progress) {
-    data::Ensemble loaded = source(stop, [&](double f) { data::report(progress, 0.6 * f); });
+    WorkbenchEnsemble loaded =
+        source(stop, [&](double f) { data::report(progress, 0.6 * f); });
     // As the command line does: no NaN distance of theirs may reach the clustering.
-    std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded);
-    EnsembleOverview overview =
-        buildEnsembleOverview(std::make_shared<const data::Ensemble>(std::move(loaded)), stop,
-                              [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+    std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
+    EnsembleOverview overview = buildEnsembleOverview(
+        std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
+        [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
     overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
     overview.membersWithoutData = std::move(withoutData);
+    if (loaded.streamed) {
+        overview.streamed = std::make_shared<const StreamedSource>(std::move(*loaded.streamed));
+    }
     return overview;
 }
 
@@ -442,7 +452,8 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(ensembleFacts(*m_overview));
-    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
+    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
+                           m_overview->streamed);
     QStringList times;
     for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
     m_timeBar->setSteps(times, m_requested ? static_cast<int>(m_requested->timeIndex) : 0);
@@ -482,13 +493,17 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
         if (m_pendingProject) applyPendingProjectCamera();
     }
     updateWindowTitle();
-    setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6")
+    const data::Grid& grid = m_overview->streamed ? m_overview->streamed->description.grid : e.grid;
+    setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6%7")
                 .arg(QString::fromStdString(e.source))
                 .arg(e.memberCount())
                 .arg(QString::fromStdString(e.variable))
-                .arg(e.grid.nx())
-                .arg(e.grid.ny())
-                .arg(e.grid.nz()));
+                .arg(grid.nx())
+                .arg(grid.ny())
+                .arg(grid.nz())
+                .arg(m_overview->streamed
+                         ? tr(", larger than the memory budget: read in slabs (see Ensemble)")
+                         : QString()));
     emit ensembleLoaded();
     const session::SessionState& s = m_model->state();
     m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);

@@ -73,6 +73,12 @@ public:
     // the user's choices when the dialog is accepted. The dialog deletes itself when closed.
     ui::OpenDataDialog* chooseData(const QStringList& files);
     void cancelLoading();
+    // The memory the workbench may take for an ensemble (`ensil --memory-limit`; by default
+    // app::defaultMemoryLimit()): data whose in-memory peak is larger are opened as a thinned
+    // copy with their surfaces built from the whole data in slabs (app/headless/
+    // workbench_reading.h), saying so. Applies to what is opened next.
+    void setMemoryLimit(std::size_t bytes) { m_memoryLimit = bytes; }
+    [[nodiscard]] std::size_t memoryLimit() const;
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
     [[nodiscard]] ui::EnsembleInfoPanel* infoPanel() const { return m_info; }
@@ -149,7 +155,7 @@ private:
     // Looks from a named view (the View menu), as a session change that undo can take back.
     void lookFrom(const session::ViewPreset& preset);
     using EnsembleSource =
-        std::function<data::Ensemble(const std::stop_token&, const data::Progress&)>;
+        std::function<WorkbenchEnsemble(const std::stop_token&, const data::Progress&)>;
     // Reads an ensemble and builds its overview (on a worker). `identify` gives the data's
     // identity for the mesh cache; it runs on the worker, since it reads the files (a content
     // hash).
@@ -162,7 +168,8 @@ private:
     // step shown, and the steps read ahead or visited, kept within a memory budget.
     void createTimeBar();
     // A step's ensemble read and its overview built, on a worker.
-    static BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection);
+    static BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection,
+                                                             std::size_t memoryLimit);
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     void goToTimeStep(std::size_t step);
     void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);
@@ -281,6 +288,7 @@ private:
     bool m_hasSavedLayout = false;
     BackgroundJob<EnsembleOverview> m_loader{this};
     std::unique_ptr<EnsembleOverview> m_overview;
+    std::size_t m_memoryLimit = 0;  // 0: app::defaultMemoryLimit() when data are opened
     // The open grid's map projection, for the places under the cursor (none before data).
     std::unique_ptr<geo::MapProjection> m_mapProjection;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices

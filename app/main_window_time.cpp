@@ -37,11 +37,11 @@ std::size_t timeStepBudget() {
 }  // namespace
 
 BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(
-    const data::DataSelection& selection) {
-    return [selection](const std::stop_token& stop, const data::Progress& progress) {
+    const data::DataSelection& selection, std::size_t memoryLimit) {
+    return [selection, memoryLimit](const std::stop_token& stop, const data::Progress& progress) {
         return loadOverview(
-            [selection](const std::stop_token& s, const data::Progress& p) {
-                return data::openEnsemble(selection, s, p);
+            [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
+                return readForWorkbench(selection, memoryLimit, s, p);
             },
             [selection] { return data::sourceIdentity(selection); }, stop, progress);
     };
@@ -166,6 +166,7 @@ void MainWindow::fillStepClusters() {
         request.previousMembers.push_back(m_selection->name(m).toStdString());
     }
     request.previousIdentities = m_timeline->stepClusters(neighbour);
+    if (m_overview->streamed) request.memoryLimit = m_overview->streamed->memoryLimit;
     const QString key = m_stripKey;
     m_stepFill.start(
         [request](const std::stop_token& stop, const data::Progress& progress) {
@@ -216,7 +217,7 @@ void MainWindow::goToTimeStep(std::size_t step) {
     setBusy(tr("Reading time step %1...").arg(step + 1));
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
-        readingStep(selection),
+        readingStep(selection, memoryLimit()),
         [this, step](EnsembleOverview overview) {
             if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
             showTimeStep(std::make_unique<EnsembleOverview>(std::move(overview)), step);
@@ -249,7 +250,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     m_stepChanging = true;
     std::size_t bytes = 0;
-    for (const auto& [index, kept] : m_timeSteps) bytes += kept->ensemble->bytes();
+    for (const auto& [index, kept] : m_timeSteps) bytes += kept->ensemble->bytes();  // copies' bytes when streamed
     // The steps farthest from the one shown go first.
     while (bytes > timeStepBudget() && m_timeSteps.size() > 1) {
         auto farthest = std::max_element(m_timeSteps.begin(), m_timeSteps.end(),
@@ -270,7 +271,8 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     showSpread();
     m_info->showFacts(ensembleFacts(*m_overview));
     // The last step's surfaces, figures and clusters stay until this step's are built.
-    m_session->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey);
+    m_session->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
+                           m_overview->streamed);
     const float isovalue = s.isovalue.value_or(m_overview->defaultIsovalue);
     const prep::FieldStatistics& stats = m_overview->statistics;
     {
@@ -303,7 +305,7 @@ void MainWindow::readAhead() {
     m_readingAhead = next;
     const data::DataSelection selection = timeStepSelection(next);
     m_readAhead.start(
-        readingStep(selection),
+        readingStep(selection, memoryLimit()),
         [this, next](EnsembleOverview overview) {
             m_readingAhead = kNoStep;
             auto read = std::make_unique<EnsembleOverview>(std::move(overview));

@@ -166,6 +166,26 @@ MemberResult meshMember(const data::DataSelection& selection,
     return r;
 }
 
+namespace {
+// Runs fn(i) for every i < count, `atOnce` at a time, each thread holding one member at most.
+template <typename Fn>
+void forMembersAtOnce(std::size_t count, std::size_t atOnce, const std::stop_token& stop,
+                      const data::Progress& progress, Fn&& fn) {
+    data::PartsProgress membersDone(progress, count);
+    tbb::task_arena arena(static_cast<int>(std::max<std::size_t>(1, atOnce)));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+            if (stop.stop_requested()) return;
+            // Isolated: a thread waiting inside marching cubes' own parallel loop must not start
+            // another member, or more members than the budget allows would be in memory.
+            tbb::this_task_arena::isolate([&] { fn(i); });
+            membersDone.partDone();
+        });
+    });
+    data::throwIfStopped(stop);
+}
+}  // namespace
+
 std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                                       const data::EnsembleDescription& d,
                                       const std::vector<std::size_t>& members,
@@ -173,27 +193,32 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                                       const PipelineOptions& options, std::size_t atOnce,
                                       const std::stop_token& stop, const data::Progress& progress) {
     std::vector<MemberResult> results(members.size());
-    data::PartsProgress membersDone(progress, members.size());
-    tbb::task_arena arena(static_cast<int>(std::max<std::size_t>(1, atOnce)));
-    arena.execute([&] {
-        tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t i) {
-            if (stop.stop_requested()) return;
-            // Isolated: a thread waiting inside marching cubes' own parallel loop must not start
-            // another member, or more members than the budget allows would be in memory.
-            tbb::this_task_arena::isolate([&] {
-                if (members[i] == kMeanMember) {
-                    // The mean has no outlyingness of its own, as in buildIsovalueMeshes.
-                    results[i].meshed = meshField(d.grid, moments.mean.values, options.isovalue,
-                                                  axes, nullptr, options, stop);
-                } else {
-                    results[i] = meshMember(selection, d, members[i], moments, axes, options, stop);
-                }
-            });
-            membersDone.partDone();
-        });
+    forMembersAtOnce(members.size(), atOnce, stop, progress, [&](std::size_t i) {
+        if (members[i] == kMeanMember) {
+            // The mean has no outlyingness of its own, as in buildIsovalueMeshes.
+            results[i].meshed = meshField(d.grid, moments.mean.values, options.isovalue, axes,
+                                          nullptr, options, stop);
+        } else {
+            results[i] = meshMember(selection, d, members[i], moments, axes, options, stop);
+        }
     });
-    data::throwIfStopped(stop);
     return results;
+}
+
+std::vector<double> distancesToMeanOf(const data::DataSelection& selection,
+                                      const data::EnsembleDescription& d,
+                                      const std::vector<std::size_t>& members,
+                                      const EnsembleMoments& moments, float isovalue,
+                                      std::size_t atOnce, const std::stop_token& stop,
+                                      const data::Progress& progress) {
+    std::vector<double> distances(members.size());
+    const data::FieldValues& mean = moments.mean.values;
+    forMembersAtOnce(members.size(), atOnce, stop, progress, [&](std::size_t i) {
+        const data::Ensemble one =
+            data::openEnsemblePart(selection, d, {members[i], 1, 0, d.grid.nz()}, stop);
+        distances[i] = distancesToField(one, {mean.data(), mean.size()}, isovalue, stop).front();
+    });
+    return distances;
 }
 
 std::vector<std::size_t> concludeSlabs(const SlabSums& sums, const data::DataSelection& selection,
@@ -239,6 +264,17 @@ void collectMembers(StreamedEnsemble& out, std::vector<MemberResult>&& results,
     summariseMeshes(out.meshes, stats, wallSeconds);
 }
 
+SlabSums sumSlabs(const data::DataSelection& selection, const data::EnsembleDescription& d,
+                  const std::vector<data::EnsemblePart>& slabs, float isovalue,
+                  const std::stop_token& stop, const data::Progress& progress) {
+    SlabSums sums = emptySlabSums(d, isovalue);
+    for (std::size_t s = 0; s < slabs.size(); ++s) {
+        sums.distances.merge(addSlab(sums, selection, d, slabs[s], stop));
+        data::report(progress, static_cast<double>(s + 1) / static_cast<double>(slabs.size()));
+    }
+    return sums;
+}
+
 StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
                                   const data::EnsembleDescription& d, const StreamingPlan& plan,
                                   const PipelineOptions& options, float verticalExaggeration,
@@ -251,12 +287,8 @@ StreamedEnsemble streamPreprocess(const data::DataSelection& selection,
 
     // Pass 1: slabs of every member.
     auto start = Clock::now();
-    SlabSums sums = emptySlabSums(d, iso);
-    for (std::size_t s = 0; s < plan.slabs.size(); ++s) {
-        sums.distances.merge(addSlab(sums, selection, d, plan.slabs[s], stop));
-        data::report(progress,
-                     0.4 * static_cast<double>(s + 1) / static_cast<double>(plan.slabs.size()));
-    }
+    const SlabSums sums = sumSlabs(selection, d, plan.slabs, iso, stop,
+                                   [&](double f) { data::report(progress, 0.4 * f); });
     out.slabSeconds = since(start);
     const std::vector<std::size_t> keep = concludeSlabs(sums, selection, d, checkRange, out);
 

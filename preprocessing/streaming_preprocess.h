@@ -74,6 +74,12 @@ SlabSums emptySlabSums(const data::EnsembleDescription& description, float isova
                                    const data::EnsemblePart& slab,
                                    const std::stop_token& stop = {});
 
+// Pass 1 over every slab of `slabs` in order: the sums of the whole grid. `progress` runs from 0
+// to 1 over the slabs. Throws data::Error, Cancelled.
+SlabSums sumSlabs(const data::DataSelection& selection, const data::EnsembleDescription& description,
+                  const std::vector<data::EnsemblePart>& slabs, float isovalue,
+                  const std::stop_token& stop = {}, const data::Progress& progress = {});
+
 // `count` slabs of every member, covering the grid's layers in order, as even as can be and at
 // least 2 layers each (fewer slabs when there are not 2 layers for each).
 std::vector<data::EnsemblePart> evenSlabs(const data::EnsembleDescription& description,
@@ -104,6 +110,16 @@ std::vector<MemberResult> meshMembers(const data::DataSelection& selection,
                                       const EnsembleMoments& moments, const AxisTables& axes,
                                       const PipelineOptions& options, std::size_t atOnce,
                                       const std::stop_token& stop = {},
+                                      const data::Progress& progress = {});
+
+// Pass 2 without the meshes (they were in the cache): each listed member (indices among the
+// description's members) read whole, `atOnce` at a time, and its distance to the mean member as
+// meshMember gives it. Throws data::Error, Cancelled.
+std::vector<double> distancesToMeanOf(const data::DataSelection& selection,
+                                      const data::EnsembleDescription& description,
+                                      const std::vector<std::size_t>& members,
+                                      const EnsembleMoments& moments, float isovalue,
+                                      std::size_t atOnce, const std::stop_token& stop = {},
                                       const data::Progress& progress = {});
 
 struct StreamedEnsemble {

@@ -8,10 +8,12 @@
 #include <set>
 
 #include "app/headless/floor_map.h"
+#include "app/headless/workbench_reading.h"
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/similarity.h"
+#include "preprocessing/streaming_preprocess.h"
 
 namespace ensil::app {
 namespace {
@@ -87,19 +89,40 @@ std::vector<int> previousIdentitiesByName(const std::vector<std::string>& previo
 
 StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::stop_token& stop,
                              const data::Progress& progress) {
-    data::Ensemble ensemble = data::openEnsemble(
-        request.selection, stop, [&](double f) { data::report(progress, 0.5 * f); });
-    data::leaveOutMembersWithoutData(ensemble);
-    const prep::DistanceMatrix distances = prep::computeDistanceMatrix(
-        ensemble, request.isovalue, stop, [&](double f) { data::report(progress, 0.5 + 0.5 * f); });
-    const prep::MergeTree tree = prep::clusterMembers(distances, request.linkage, stop);
-    const int k = std::clamp(request.k, 1, static_cast<int>(ensemble.memberCount()));
-    const std::vector<int> labels = prep::clusterLabels(tree, k);
     StepClusters step;
+    prep::DistanceMatrix distances;
+    std::optional<StreamedSource> streamed;
+    data::EnsembleDescription description;
+    if (request.memoryLimit != 0) {
+        description = data::describeEnsemble(request.selection);
+        streamed = streamedSourceFor(request.selection, description, request.memoryLimit);
+    }
+    std::vector<std::string> names;
+    if (streamed) {
+        // The distances need only the slab pass (preprocessing/streaming_preprocess.h).
+        const prep::StreamingPlan plan = prep::planStreaming(description, streamed->slabLimit, 0);
+        const prep::SlabSums sums =
+            prep::sumSlabs(request.selection, description, plan.slabs, request.isovalue, stop,
+                           [&](double f) { data::report(progress, f); });
+        prep::StreamedEnsemble concluded;
+        (void)prep::concludeSlabs(sums, request.selection, description, {}, concluded);
+        distances = std::move(concluded.distances);
+        names = std::move(concluded.memberNames);
+    } else {
+        data::Ensemble ensemble = data::openEnsemble(
+            request.selection, stop, [&](double f) { data::report(progress, 0.5 * f); });
+        data::leaveOutMembersWithoutData(ensemble);
+        distances = prep::computeDistanceMatrix(
+            ensemble, request.isovalue, stop,
+            [&](double f) { data::report(progress, 0.5 + 0.5 * f); });
+        for (const data::Member& member : ensemble.members) names.push_back(member.name);
+    }
+    const prep::MergeTree tree = prep::clusterMembers(distances, request.linkage, stop);
+    const int k = std::clamp(request.k, 1, static_cast<int>(names.size()));
+    const std::vector<int> labels = prep::clusterLabels(tree, k);
     // Named as the workbench names them ("member 3" for one the file leaves unnamed).
-    for (std::size_t m = 0; m < ensemble.memberCount(); ++m) {
-        const std::string& name = ensemble.members[m].name;
-        step.members.push_back(name.empty() ? "member " + std::to_string(m + 1) : name);
+    for (std::size_t m = 0; m < names.size(); ++m) {
+        step.members.push_back(names[m].empty() ? "member " + std::to_string(m + 1) : names[m]);
     }
     const std::vector<int> previous =
         previousIdentitiesByName(request.previousMembers, request.previousIdentities, step.members);

@@ -95,6 +95,9 @@ struct StepClusteringRequest {
     // The neighbouring step's members and their identities (-1: none); empty for none.
     std::vector<std::string> previousMembers;
     std::vector<int> previousIdentities;
+    // The workbench's memory budget: data whose in-memory peak is larger are read in slabs
+    // for their distances (app/headless/workbench_reading.h); 0: read whole.
+    std::size_t memoryLimit = 0;
 };
 
 struct StepClusters {

@@ -1,0 +1,119 @@
+// The workbench on an ensemble larger than its memory budget (issue 20): it opens a thinned copy
+// read in slabs instead of refusing, says so, shows the surfaces and clusters the whole data
+// give (equal to the in-memory job's), and fills the cluster-over-time strip from slab passes
+// as the command line clusters the steps in memory.
+#include <gtest/gtest.h>
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QToolButton>
+#include <cstring>
+
+#include "app/headless/isovalue_job.h"
+#include "app/headless/streaming_run.h"
+#include "app/headless/time_series.h"
+#include "app/isovalue_session.h"
+#include "app/main_window.h"
+#include "data/demo_ensemble.h"
+#include "data/netcdf_writer.h"
+#include "tests/app/workbench_helpers.h"
+#include "tests/support/scoped_cache_home.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/cluster_timeline.h"
+#include "widgets/ensemble_info_panel.h"
+#include "widgets/member_selection.h"
+
+using namespace ensil;
+
+namespace {
+
+constexpr data::DemoEnsembleParams kDemo{.members = 24, .nx = 97, .ny = 96, .nz = 25};
+constexpr std::size_t kSteps = 3;
+
+// The demo over three steps (members change groups), as NetCDF.
+std::string writeSteps(const test::TempDir& dir) {
+    const std::string path = dir.file("steps.nc");
+    data::writeNetcdfSteps(
+        [](std::size_t step) { return data::makeDemoEnsembleAt(kDemo, step, kSteps).ensemble; },
+        {data::kDemoTimeUnits, {0.0, 12.0, 24.0}}, path);
+    return path;
+}
+
+bool sameMesh(const data::PackedMesh& a, const data::PackedMesh& b) {
+    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
+           std::memcmp(a.vertices.data(), b.vertices.data(),
+                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
+}
+
+}  // namespace
+
+TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurfaces) {
+    const test::ScopedCacheHome cache;
+    test::TempDir dir;
+    const data::DataSelection selection{.paths = {writeSteps(dir)}};
+    const data::EnsembleDescription d = data::describeEnsemble(selection);
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
+    window.setMemoryLimit(app::inMemoryPeakBytes(d) - 1);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(120000)) << "failed: "
+                                    << (failed.isEmpty() ? QString()
+                                                         : failed.front().front().toString())
+                                           .toStdString();
+
+    // Said in the info panel.
+    ASSERT_NE(window.overview(), nullptr);
+    ASSERT_TRUE(window.overview()->streamed);
+    EXPECT_EQ(window.overview()->streamed->stride, 2u);
+    EXPECT_TRUE(window.infoPanel()->text().contains(
+        QStringLiteral("larger than the workbench's memory budget")))
+        << window.infoPanel()->text().toStdString();
+    EXPECT_TRUE(window.infoPanel()->text().contains(QStringLiteral("97 x 96 x 25")))
+        << "the whole data's grid";
+
+    // The surfaces and distances are the whole data's.
+    const session::SessionState state = window.captureSession();
+    const auto whole = std::make_shared<const data::Ensemble>(data::openEnsemble(selection));
+    const prep::EnsembleMoments moments = prep::computeEnsembleMoments(*whole);
+    app::IsovalueJobInput input;
+    input.ensemble = whole.get();
+    input.moments = &moments;
+    input.options.isovalue = *state.isovalue;
+    input.verticalExaggeration = state.verticalExaggeration;
+    const app::IsovalueOutcome want = app::runIsovalueJob(input);
+    const app::IsovalueResult& got = *window.isovalueSession()->result();
+    ASSERT_EQ(got.meshes->members.size(), want.meshes.members.size());
+    for (std::size_t m = 0; m < want.meshes.members.size(); ++m) {
+        EXPECT_TRUE(sameMesh(got.meshes->members[m], want.meshes.members[m])) << "member " << m;
+    }
+    ASSERT_EQ(got.distances.values.size(), want.distances.values.size());
+    for (std::size_t i = 0; i < want.distances.values.size(); ++i) {
+        EXPECT_NEAR(got.distances.values[i], want.distances.values[i],
+                    1e-9 * want.distances.values[i]);
+    }
+
+    // The strip gets every step's clusters from slab passes, as the command line clusters
+    // them with every step in memory.
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            for (int s = 0; s < static_cast<int>(kSteps); ++s) {
+                if (strip.stepClusters(s).size() != kDemo.members) return false;
+            }
+            return !strip.fillingButton()->isVisible();
+        },
+        120000));
+    app::TimeSeriesRequest request;
+    request.selection = selection;
+    request.steps = {0, kSteps - 1};
+    request.preprocess.isovalue = *state.isovalue;
+    request.preprocess.clusters = window.memberSelection()->clusterCount();
+    const auto steps =
+        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+    for (std::size_t s = 0; s < kSteps; ++s) {
+        EXPECT_EQ(strip.stepClusters(static_cast<int>(s)), steps[s].memberIdentities)
+            << "step " << s;
+    }
+}
