@@ -21,6 +21,7 @@ struct CliRun {
     QStringList paths;
     QString variable, memberDim;
     std::size_t timeIndex = 0;
+    std::size_t memoryLimit = 0;
     QString out, err;
 };
 
@@ -38,6 +39,7 @@ CliRun run(QStringList args) {
         r.variable = QString::fromStdString(o.workbench->selection.variable);
         r.memberDim = QString::fromStdString(o.workbench->selection.memberDimension);
         r.timeIndex = o.workbench->selection.timeIndex;
+        r.memoryLimit = o.workbench->memoryLimit;
     }
     return r;
 }
@@ -76,6 +78,19 @@ TEST(CommandLine, NoArgumentsOpensTheDemoAndPathsAreForwarded) {
     const CliRun bad = run({"t.nc", "--time-index", "-1"});
     EXPECT_EQ(bad.code, 2);
     EXPECT_FALSE(bad.workbench);
+}
+
+TEST(CommandLine, TheWorkbenchTakesAMemoryLimit) {
+    EXPECT_EQ(run({"t.nc"}).memoryLimit, 0u) << "the default, chosen when data are opened";
+    const CliRun limited = run({"t.nc", "--memory-limit", "512M"});
+    EXPECT_TRUE(limited.workbench);
+    EXPECT_EQ(limited.memoryLimit, std::size_t{512} << 20);
+    EXPECT_EQ(run({"--memory-limit", "1GiB"}).memoryLimit, std::size_t{1} << 30);
+    const CliRun bad = run({"t.nc", "--memory-limit", "lots"});
+    EXPECT_EQ(bad.code, 2);
+    EXPECT_FALSE(bad.workbench);
+    EXPECT_TRUE(bad.err.contains("--memory-limit 'lots' is not a size")) << bad.err.toStdString();
+    EXPECT_TRUE(run({"--help"}).out.contains("--memory-limit")) << "said in the help";
 }
 
 TEST(CommandLine, UnknownOptionIsAnErrorWithAHint) {
