@@ -22,6 +22,19 @@ std::string defaultMeshCacheDirectory() {
         .toStdString();
 }
 
+void addContextOf(const IsovalueJobInput& in, IsovalueOutcome& out, double from, double to,
+                  const std::stop_token& stop, const data::Progress& progress) {
+    const auto start = Clock::now();
+    prep::ContextSurfaces context = prep::buildContextSurfaces(
+        *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
+        stop, [&](double f) { data::report(progress, from + (to - from) * f); });
+    prep::addContextSurfaces(out.meshes, context);
+    out.boxplot = std::move(context.boxplot);
+    out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
+    out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
+    out.seconds["context_surfaces"] = since(start);
+}
+
 IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token& stop,
                                const data::Progress& progress) {
     IsovalueOutcome out;
@@ -55,15 +68,7 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
     }
     // The summaries are cheap beside the meshes (a tenth of the demo's time) and depend on
     // nothing the cache keeps: made afresh, so the cache's format stays as it is.
-    start = Clock::now();
-    prep::ContextSurfaces context = prep::buildContextSurfaces(
-        *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
-        stop, [&](double f) { data::report(progress, 0.75 + 0.05 * f); });
-    prep::addContextSurfaces(out.meshes, context);
-    out.boxplot = std::move(context.boxplot);
-    out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
-    out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
-    out.seconds["context_surfaces"] = since(start);
+    addContextOf(in, out, 0.75, 0.8, stop, progress);
     start = Clock::now();
     out.distances =
         prep::computeDistanceMatrix(*in.ensemble, in.options.isovalue, stop,

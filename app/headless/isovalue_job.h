@@ -52,6 +52,11 @@ struct IsovalueOutcome {
                   // clustering
 };
 
+// The context surfaces (P = 0.5, the 50 % band), the contour boxplot and P(f > c) of
+// input.ensemble, added to out.meshes and out; `progress` runs from `from` to `to`.
+void addContextOf(const IsovalueJobInput& input, IsovalueOutcome& out, double from, double to,
+                  const std::stop_token& stop, const data::Progress& progress);
+
 // Throws Cancelled; data::Error from the steps. A cache that cannot be written is ignored.
 IsovalueOutcome runIsovalueJob(const IsovalueJobInput& input, const std::stop_token& stop = {},
                                const data::Progress& progress = {});

@@ -3,10 +3,9 @@
 #include <chrono>
 #include <optional>
 
-#include "data/display_frame.h"
+#include "app/headless/streaming_run.h"
 #include "data/error.h"
 #include "data/reader_support.h"
-#include "preprocessing/context_surfaces.h"
 #include "preprocessing/member_summaries.h"
 #include "preprocessing/mesh_cache.h"
 #include "preprocessing/streaming_preprocess.h"
@@ -62,11 +61,7 @@ IsovalueOutcome runStreamedIsovalueJob(const IsovalueJobInput& in, const Streame
         prep::StreamedEnsemble streamed = prep::streamPreprocess(
             source.selection, d, plan, in.options, in.verticalExaggeration, {}, stop,
             [&](double f) { data::report(progress, 0.85 * f); });
-        out.seconds["slabs"] = streamed.slabSeconds;
-        out.seconds["members"] = streamed.memberSeconds;
-        out.seconds["meshes"] = streamed.meshes.seconds.meshes;
-        out.seconds["decimation"] = streamed.meshes.seconds.decimation;
-        out.seconds["attributes"] = streamed.meshes.seconds.attributes;
+        recordStreamedSeconds(out.seconds, streamed);
         out.meshes = std::move(streamed.meshes);
         out.distances = std::move(streamed.distances);
         out.distancesToMean = std::move(streamed.distancesToMean);
@@ -91,15 +86,7 @@ IsovalueOutcome runStreamedIsovalueJob(const IsovalueJobInput& in, const Streame
     }
     // The meshes of the members stay as the whole data gave them; the context surfaces are
     // the copy's, on its coarser grid in the same box.
-    start = Clock::now();
-    prep::ContextSurfaces context = prep::buildContextSurfaces(
-        *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
-        stop, [&](double f) { data::report(progress, 0.85 + 0.1 * f); });
-    prep::addContextSurfaces(out.meshes, context);
-    out.boxplot = std::move(context.boxplot);
-    out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
-    out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
-    out.seconds["context_surfaces"] = since(start);
+    addContextOf(in, out, 0.85, 0.95, stop, progress);
     start = Clock::now();
     out.tree = prep::clusterMembers(out.distances, in.linkage, stop);
     out.seconds["clustering"] = since(start);

@@ -70,6 +70,15 @@ std::optional<std::size_t> parseMemorySize(const std::string& text, std::string&
     return static_cast<std::size_t>(bytes);
 }
 
+void recordStreamedSeconds(std::map<std::string, double>& seconds,
+                           const prep::StreamedEnsemble& streamed) {
+    seconds["slabs"] = streamed.slabSeconds;
+    seconds["members"] = streamed.memberSeconds;
+    seconds["meshes"] = streamed.meshes.seconds.meshes;
+    seconds["decimation"] = streamed.meshes.seconds.decimation;
+    seconds["attributes"] = streamed.meshes.seconds.attributes;
+}
+
 bool canStream(const data::DataSelection& selection) {
     return data::readerFor(selection).readsParts();
 }
@@ -151,11 +160,7 @@ std::optional<PreprocessResult> preprocessStreamingWith(
     }
     r.k = clustersFor(request, static_cast<int>(ensemble->memberCount()),
                       !r.membersWithoutData.empty());
-    r.seconds["slabs"] = streamed.slabSeconds;
-    r.seconds["members"] = streamed.memberSeconds;
-    r.seconds["meshes"] = streamed.meshes.seconds.meshes;
-    r.seconds["decimation"] = streamed.meshes.seconds.decimation;
-    r.seconds["attributes"] = streamed.meshes.seconds.attributes;
+    recordStreamedSeconds(r.seconds, streamed);
     r.meshes = std::move(streamed.meshes);
     r.distances = std::move(streamed.distances);
     r.distancesToMean = std::move(streamed.distancesToMean);

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -26,6 +27,11 @@ std::size_t inMemoryPeakBytes(const data::EnsembleDescription& description);
 // "1GiB", "512 MiB", "2G", "800M", "64k", "1500000" (bytes); powers of 1024 for K, M, G, T with
 // or without "iB" or "B". Empty with `problem` saying what is wrong, otherwise.
 std::optional<std::size_t> parseMemorySize(const std::string& text, std::string& problem);
+
+// The streamed run's stage seconds under the names the in-memory run gives them ("slabs",
+// "members", "meshes", "decimation", "attributes").
+void recordStreamedSeconds(std::map<std::string, double>& seconds,
+                           const prep::StreamedEnsemble& streamed);
 
 // True when the selection's format can be read in slabs (NetCDF).
 bool canStream(const data::DataSelection& selection);

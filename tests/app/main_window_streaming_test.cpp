@@ -7,7 +7,6 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
-#include <cstring>
 
 #include "app/headless/isovalue_job.h"
 #include "app/headless/streaming_run.h"
@@ -18,6 +17,7 @@
 #include "data/netcdf_writer.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
+#include "tests/streaming/same_results.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
@@ -39,11 +39,6 @@ std::string writeSteps(const test::TempDir& dir) {
     return path;
 }
 
-bool sameMesh(const data::PackedMesh& a, const data::PackedMesh& b) {
-    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
-           std::memcmp(a.vertices.data(), b.vertices.data(),
-                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
-}
 
 }  // namespace
 
@@ -86,13 +81,10 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     const app::IsovalueResult& got = *window.isovalueSession()->result();
     ASSERT_EQ(got.meshes->members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < want.meshes.members.size(); ++m) {
-        EXPECT_TRUE(sameMesh(got.meshes->members[m], want.meshes.members[m])) << "member " << m;
+        EXPECT_TRUE(test::sameMesh(got.meshes->members[m], want.meshes.members[m])) << "member " << m;
     }
-    ASSERT_EQ(got.distances.values.size(), want.distances.values.size());
-    for (std::size_t i = 0; i < want.distances.values.size(); ++i) {
-        EXPECT_NEAR(got.distances.values[i], want.distances.values[i],
-                    1e-9 * want.distances.values[i]);
-    }
+    test::expectSameDistances(got.distances, want.distances);
+    test::expectSameTree(got.tree, want.tree);
 
     // The strip gets every step's clusters from slab passes, as the command line clusters
     // them with every step in memory.

@@ -9,7 +9,6 @@
 #include <QProcess>
 #include <QStringList>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -18,6 +17,7 @@
 #include "data/ensemble_reader.h"
 #include "data/netcdf_writer.h"
 #include "preprocessing/mesh_cache.h"
+#include "tests/streaming/same_results.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -26,11 +26,6 @@ namespace {
 
 const float kNaN = std::numeric_limits<float>::quiet_NaN();
 
-bool sameMesh(const data::PackedMesh& a, const data::PackedMesh& b) {
-    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
-           std::memcmp(a.vertices.data(), b.vertices.data(),
-                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
-}
 
 // The demo (8 members, 36 x 20 x 9) with member 5 wholly missing.
 std::string writeDemoWithAnEmptyMember(const test::TempDir& dir) {
@@ -82,17 +77,8 @@ TEST(StreamingRun, GivesTheInMemoryRunsResultsAndCacheEntry) {
     for (std::size_t m = 0; m < got.ensemble->memberCount(); ++m) {
         EXPECT_EQ(got.ensemble->members[m].name, want.ensemble->members[m].name);
     }
-    ASSERT_EQ(got.distances.size, want.distances.size);
-    for (std::size_t i = 0; i < got.distances.values.size(); ++i) {
-        EXPECT_NEAR(got.distances.values[i], want.distances.values[i],
-                    1e-9 * want.distances.values[i]);
-    }
-    ASSERT_EQ(got.tree.merges.size(), want.tree.merges.size());
-    for (std::size_t m = 0; m < got.tree.merges.size(); ++m) {
-        EXPECT_EQ(got.tree.merges[m].a, want.tree.merges[m].a);
-        EXPECT_EQ(got.tree.merges[m].b, want.tree.merges[m].b);
-        EXPECT_EQ(got.tree.merges[m].size, want.tree.merges[m].size);
-    }
+    test::expectSameDistances(got.distances, want.distances);
+    test::expectSameTree(got.tree, want.tree);
     EXPECT_EQ(got.k, want.k);
     EXPECT_EQ(got.labels, want.labels);
     EXPECT_EQ(got.colors, want.colors);
@@ -100,7 +86,7 @@ TEST(StreamingRun, GivesTheInMemoryRunsResultsAndCacheEntry) {
     EXPECT_EQ(got.meanOutlyingness, want.meanOutlyingness);
     ASSERT_EQ(got.meshes.members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < got.meshes.members.size(); ++m) {
-        EXPECT_TRUE(sameMesh(got.meshes.members[m], want.meshes.members[m])) << m;
+        EXPECT_TRUE(test::sameMesh(got.meshes.members[m], want.meshes.members[m])) << m;
     }
     // Stored under the in-memory run's key, so the workbench finds the meshes.
     const prep::PipelineOptions options{.isovalue = 30.0F};
@@ -111,7 +97,7 @@ TEST(StreamingRun, GivesTheInMemoryRunsResultsAndCacheEntry) {
     ASSERT_TRUE(stored.has_value()) << "no cache entry under the in-memory run's key";
     ASSERT_TRUE(prep::MeshCache(dir.file("memory-cache")).load(key).has_value());
     for (std::size_t m = 0; m < stored->members.size(); ++m) {
-        EXPECT_TRUE(sameMesh(stored->members[m], want.meshes.members[m])) << m;
+        EXPECT_TRUE(test::sameMesh(stored->members[m], want.meshes.members[m])) << m;
     }
 }
 

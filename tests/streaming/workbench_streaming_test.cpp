@@ -4,7 +4,6 @@
 // data in slabs, equal to the in-memory job's (app/headless/streamed_isovalue_job.h).
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <limits>
 #include <string>
 
@@ -19,17 +18,13 @@
 #include "data/thinned_ensemble.h"
 #include "preprocessing/mesh_cache.h"
 #include "preprocessing/streaming_preprocess.h"
+#include "tests/streaming/same_results.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
 
 namespace {
 
-bool sameMesh(const data::PackedMesh& a, const data::PackedMesh& b) {
-    return a.vertices.size() == b.vertices.size() && a.indices == b.indices &&
-           std::memcmp(a.vertices.data(), b.vertices.data(),
-                       a.vertices.size() * sizeof(data::PackedVertex)) == 0;
-}
 
 // The demo (24 members, 97 x 96 x 25: odd counts along x and z, so their last points are not
 // on the stride) written as NetCDF: enough members that the slab passes (a whole-grid sum and
@@ -155,19 +150,11 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
 
     ASSERT_EQ(got.meshes.members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < got.meshes.members.size(); ++m) {
-        EXPECT_TRUE(sameMesh(got.meshes.members[m], want.meshes.members[m])) << "member " << m;
+        EXPECT_TRUE(test::sameMesh(got.meshes.members[m], want.meshes.members[m])) << "member " << m;
     }
-    EXPECT_TRUE(sameMesh(got.meshes.mean, want.meshes.mean)) << "the mean member";
-    ASSERT_EQ(got.distances.values.size(), want.distances.values.size());
-    for (std::size_t i = 0; i < got.distances.values.size(); ++i) {
-        EXPECT_NEAR(got.distances.values[i], want.distances.values[i],
-                    1e-9 * want.distances.values[i]);
-    }
-    ASSERT_EQ(got.tree.merges.size(), want.tree.merges.size());
-    for (std::size_t m = 0; m < got.tree.merges.size(); ++m) {
-        EXPECT_EQ(got.tree.merges[m].a, want.tree.merges[m].a);
-        EXPECT_EQ(got.tree.merges[m].b, want.tree.merges[m].b);
-    }
+    EXPECT_TRUE(test::sameMesh(got.meshes.mean, want.meshes.mean)) << "the mean member";
+    test::expectSameDistances(got.distances, want.distances);
+    test::expectSameTree(got.tree, want.tree);
     ASSERT_EQ(got.distancesToMean.size(), want.distancesToMean.size());
     for (std::size_t m = 0; m < got.distancesToMean.size(); ++m) {
         EXPECT_NEAR(got.distancesToMean[m], want.distancesToMean[m],
@@ -184,7 +171,7 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     EXPECT_TRUE(cachedRun.fromCache);
     EXPECT_EQ(cachedRun.distances.values, got.distances.values);
     EXPECT_EQ(cachedRun.distancesToMean, got.distancesToMean);
-    EXPECT_TRUE(sameMesh(cachedRun.meshes.members.front(), want.meshes.members.front()));
+    EXPECT_TRUE(test::sameMesh(cachedRun.meshes.members.front(), want.meshes.members.front()));
 
     // Stored under the in-memory job's key: the in-memory job finds them there.
     input.ensemble = whole.get();
@@ -192,6 +179,6 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     const app::IsovalueOutcome again = app::runIsovalueJob(input);
     EXPECT_TRUE(again.fromCache);
     for (std::size_t m = 0; m < again.meshes.members.size(); ++m) {
-        EXPECT_TRUE(sameMesh(again.meshes.members[m], want.meshes.members[m])) << "member " << m;
+        EXPECT_TRUE(test::sameMesh(again.meshes.members[m], want.meshes.members[m])) << "member " << m;
     }
 }
