@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QScopedValueRollback>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -129,7 +130,14 @@ void MainWindow::createDocks() {
     m_info = new ui::EnsembleInfoPanel;
     auto* dock = new QDockWidget(tr("Ensemble"), this);
     dock->setObjectName(QStringLiteral("ensembleDock"));
-    dock->setWidget(m_info);
+    // Scrolled: the facts and notes (a streamed ensemble's, several warnings) can be longer
+    // than the tabbed dock is high, and a form layout would clip them.
+    auto* scroll = new QScrollArea(dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(m_info);
+    dock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
     m_info->showMessage(tr("No ensemble loaded."));
     createPanels();

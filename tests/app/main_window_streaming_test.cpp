@@ -4,6 +4,9 @@
 // as the command line clusters the steps in memory.
 #include <gtest/gtest.h>
 
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
@@ -67,6 +70,15 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
         << window.infoPanel()->text().toStdString();
     EXPECT_TRUE(window.infoPanel()->text().contains(QStringLiteral("97 x 96 x 25")))
         << "the whole data's grid";
+
+    // For the eye: the info panel's facts and note beside the view (see the closing note).
+    for (QWidget* w = window.infoPanel(); w != nullptr; w = w->parentWidget()) {
+        if (auto* dock = qobject_cast<QDockWidget*>(w)) dock->raise();
+        if (auto* scroll = qobject_cast<QScrollArea*>(w)) {
+            scroll->verticalScrollBar()->setValue(scroll->verticalScrollBar()->maximum());
+        }
+    }
+    window.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/streamed_workbench.png"));
 
     // The surfaces and distances are the whole data's.
     const session::SessionState state = window.captureSession();
