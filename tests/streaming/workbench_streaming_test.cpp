@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <set>
 #include <string>
 
 #include "app/headless/isovalue_job.h"
 #include "app/headless/streamed_isovalue_job.h"
 #include "app/headless/streaming_run.h"
+#include "app/headless/time_series.h"
 #include "app/headless/workbench_reading.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
@@ -181,4 +183,23 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     for (std::size_t m = 0; m < again.meshes.members.size(); ++m) {
         EXPECT_TRUE(test::sameMesh(again.meshes.members[m], want.meshes.members[m])) << "member " << m;
     }
+}
+
+TEST(StreamedStepClusters, AreTheStepsClustersInMemory) {
+    test::TempDir dir;
+    const data::DataSelection selection{.paths = {writeDemo(dir)}};
+    const data::EnsembleDescription d = data::describeEnsemble(selection);
+    app::StepClusteringRequest request;
+    request.selection = selection;
+    request.isovalue = 30.0F;
+    request.k = 4;
+    const app::StepClusters inMemory = app::clusterTimeStep(request, {});
+    request.memoryLimit = budgetBetween(d);  // the distances from the slab pass
+    const app::StepClusters streamed = app::clusterTimeStep(request, {});
+    EXPECT_EQ(streamed.members, inMemory.members);
+    EXPECT_EQ(streamed.memberIdentities, inMemory.memberIdentities);
+    EXPECT_EQ(std::set<int>(inMemory.memberIdentities.begin(), inMemory.memberIdentities.end())
+                  .size(),
+              4u)
+        << "four groups to match";
 }
