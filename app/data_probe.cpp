@@ -1,5 +1,7 @@
 #include "app/data_probe.h"
 
+#include "app/headless/workbench_reading.h"
+
 #include <QObject>
 #include <algorithm>
 
@@ -74,10 +76,12 @@ ui::DataProbe probeWithoutMemberDimension(const data::DataSelection& selection,
 
 }  // namespace
 
-ui::DataProbe probeData(const data::DataSelection& selection) {
+ui::DataProbe probeData(const data::DataSelection& selection, std::size_t memoryLimit) {
     try {
         ui::DataProbe probe;
-        fill(probe, data::describeEnsemble(selection));
+        const data::EnsembleDescription d = data::describeEnsemble(selection);
+        fill(probe, d);
+        if (memoryLimit != 0) probe.size = qs(howItOpens(selection, d, memoryLimit));
         return probe;
     } catch (const data::Error& e) {
         if (e.kind() == data::ErrorKind::MemberDimensionNotFound && !e.choices().empty() &&

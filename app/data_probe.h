@@ -10,6 +10,8 @@
 
 namespace ensil::app {
 
-ui::DataProbe probeData(const data::DataSelection& selection);
+// With a memoryLimit (the workbench's), the probe also says how the data would open within it
+// (DataProbe::size, app::howItOpens).
+ui::DataProbe probeData(const data::DataSelection& selection, std::size_t memoryLimit = 0);
 
 }  // namespace ensil::app

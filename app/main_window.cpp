@@ -359,7 +359,7 @@ void MainWindow::chooseFiles() {
 }
 
 ui::OpenDataDialog* MainWindow::chooseData(const QStringList& files) {
-    ui::OpenDataDialog* dialog = showOpenDataDialog(files, this);
+    ui::OpenDataDialog* dialog = showOpenDataDialog(files, this, memoryLimit());
     connect(dialog, &QDialog::accepted, this, [this, dialog] { openFiles(dialog->selection()); });
     return dialog;
 }

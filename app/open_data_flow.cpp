@@ -12,10 +12,12 @@ namespace {
 // it drops a probe's answer instead of waiting for it (the probe captures only values).
 class ProbeJobs : public QObject {
 public:
-    explicit ProbeJobs(ui::OpenDataDialog* dialog) : QObject(dialog), m_dialog(dialog) {}
+    ProbeJobs(ui::OpenDataDialog* dialog, std::size_t memoryLimit)
+        : QObject(dialog), m_dialog(dialog), m_memoryLimit(memoryLimit) {}
     void answer(const data::DataSelection& selection, int request) {
-        m_job.start([selection](const std::stop_token&,
-                                const data::Progress&) { return probeData(selection); },
+        m_job.start([selection, limit = m_memoryLimit](
+                        const std::stop_token&,
+                        const data::Progress&) { return probeData(selection, limit); },
                     [this, request](ui::DataProbe probe) { m_dialog->showProbe(probe, request); },
                     [this, request](const std::exception_ptr&, bool cancelled) {
                         // probeData reports problems in its result; anything else is a bug
@@ -29,22 +31,24 @@ public:
 
 private:
     ui::OpenDataDialog* m_dialog;
+    std::size_t m_memoryLimit;
     BackgroundJob<ui::DataProbe> m_job{this, BackgroundJob<ui::DataProbe>::WhenDestroyed::Abandon};
 };
 }  // namespace
 
-void answerProbesInBackground(ui::OpenDataDialog* dialog) {
-    auto* jobs = new ProbeJobs(dialog);
+void answerProbesInBackground(ui::OpenDataDialog* dialog, std::size_t memoryLimit) {
+    auto* jobs = new ProbeJobs(dialog, memoryLimit);
     QObject::connect(dialog, &ui::OpenDataDialog::probeRequested, jobs,
                      [jobs](const data::DataSelection& selection, int request) {
                          jobs->answer(selection, request);
                      });
 }
 
-ui::OpenDataDialog* showOpenDataDialog(const QStringList& files, QWidget* parent) {
+ui::OpenDataDialog* showOpenDataDialog(const QStringList& files, QWidget* parent,
+                                       std::size_t memoryLimit) {
     auto* dialog = new ui::OpenDataDialog(files, parent);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    answerProbesInBackground(dialog);
+    answerProbesInBackground(dialog, memoryLimit);
     dialog->requestProbe();
     dialog->open();
     return dialog;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QStringList>
+#include <cstddef>
 
 class QWidget;
 
@@ -16,10 +17,12 @@ namespace ensil::app {
 
 // Opens the dialog (window-modal, deleted when closed) and starts the first probe. The caller
 // connects QDialog::accepted and reads OpenDataDialog::selection().
-ui::OpenDataDialog* showOpenDataDialog(const QStringList& files, QWidget* parent);
+// `memoryLimit` (the workbench's) is what the dialog's size line measures the data against.
+ui::OpenDataDialog* showOpenDataDialog(const QStringList& files, QWidget* parent,
+                                       std::size_t memoryLimit = 0);
 
 // Answers every probeRequested of the dialog on a worker thread. A result that arrives after
 // the dialog is gone is dropped; the dialog ignores answers to superseded requests.
-void answerProbesInBackground(ui::OpenDataDialog* dialog);
+void answerProbesInBackground(ui::OpenDataDialog* dialog, std::size_t memoryLimit = 0);
 
 }  // namespace ensil::app

@@ -170,6 +170,7 @@ void OpenDataDialog::fillDetails(const DataProbe& probe) {
                  .arg(probe.members)
                  .arg(probe.variable, probe.grid);
     for (const QString& fixed : probe.fixedDimensions) lines << tr("Fixed: %1").arg(fixed);
+    if (!probe.size.isEmpty()) lines << tr("Size: %1").arg(probe.size);
     m_details->setText(lines.join(QLatin1Char('\n')));
 }
 

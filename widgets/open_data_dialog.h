@@ -42,6 +42,7 @@ struct DataProbe {
     int timeSteps = 0;            // indices along the fixed dimensions; 0 when none
     QStringList fixedDimensions;  // "time = 0 of 4 (2017-01-01T00:00)"
     QString grid;                 // "120 x 61 x 2"
+    QString size;                 // "21 MiB of values", and how they open; empty: not said
     QString error;                // plain words; non-empty: the files cannot be read so
 };
 

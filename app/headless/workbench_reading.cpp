@@ -14,8 +14,10 @@ std::string sizeText(double bytes) {
     char text[32];
     if (bytes >= 1073741824.0) {
         std::snprintf(text, sizeof text, "%.2f GiB", bytes / 1073741824.0);
-    } else {
+    } else if (bytes >= 10.0 * 1048576.0) {
         std::snprintf(text, sizeof text, "%.0f MiB", bytes / 1048576.0);
+    } else {
+        std::snprintf(text, sizeof text, "%.1f MiB", bytes / 1048576.0);
     }
     return text;
 }
@@ -77,6 +79,20 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
                               "nothing to draw");
     }
     return {std::move(copy), std::move(source)};
+}
+
+std::string howItOpens(const data::DataSelection& selection, const data::EnsembleDescription& d,
+                       std::size_t memoryLimit) {
+    const std::string values = sizeText(static_cast<double>(d.bytes())) + " of values";
+    try {
+        const std::optional<StreamedSource> source = streamedSourceFor(selection, d, memoryLimit);
+        if (!source) return values;
+        return values + ", more than the memory budget of " +
+               sizeText(static_cast<double>(memoryLimit)) + ": read in slabs, a copy at " +
+               everyNthPoint(source->stride) + " in memory";
+    } catch (const std::exception& e) {
+        return values + ": " + e.what();
+    }
 }
 
 std::string streamedDataNote(const StreamedSource& source, const data::Ensemble& copy) {

@@ -53,6 +53,13 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
                                    const std::stop_token& stop = {},
                                    const data::Progress& progress = {});
 
+// What the Open dialog says of the data before they are read: "21 MiB of values" when they fit
+// `memoryLimit` whole; "21 MiB of values, more than the memory budget of 16 MiB: read in slabs,
+// a copy at every 2nd point in memory"; or why they cannot be opened within it (the
+// OutOfMemory message). Never throws.
+std::string howItOpens(const data::DataSelection& selection,
+                       const data::EnsembleDescription& description, std::size_t memoryLimit);
+
 // "every 2nd point", "every 3rd point": how a copy is thinned, in words.
 std::string everyNthPoint(std::size_t stride);
 

@@ -5,6 +5,9 @@
 #include <fstream>
 #include <random>
 
+#include "app/headless/streaming_run.h"
+#include "data/demo_ensemble.h"
+#include "data/netcdf_writer.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -135,4 +138,24 @@ TEST(DataProbe, VtkFilesAreOneMemberEachWithNothingToChooseAlong) {
     EXPECT_TRUE(probe.memberDimensionChoices.isEmpty()) << "z, y and x are the grid's axes";
     EXPECT_EQ(probe.timeSteps, 0);
     EXPECT_EQ(probe.grid, "68 x 68 x 68");
+}
+
+TEST(DataProbe, SaysHowTheDataOpenWithinTheWorkbenchsMemoryBudget) {
+    data::DataSelection era5 = fileSelection("era5_eda_members.nc");
+    era5.variable = "t";
+    EXPECT_TRUE(app::probeData(era5).size.isEmpty()) << "not asked";
+    EXPECT_EQ(app::probeData(era5, std::size_t{1} << 30).size, "0.6 MiB of values");
+    const QString tooSmall = app::probeData(era5, std::size_t{1} << 19).size;
+    EXPECT_TRUE(tooSmall.startsWith("0.6 MiB of values: a memory limit of")) << tooSmall.toStdString();
+
+    // The demo (24 members, 97 x 96 x 25) within a budget its in-memory peak just misses.
+    test::TempDir dir;
+    const data::DataSelection demo{.paths = {dir.file("demo.nc")}};
+    data::writeNetcdf(
+        data::makeDemoEnsemble({.members = 24, .nx = 97, .ny = 96, .nz = 25}).ensemble,
+        demo.paths.front());
+    const std::size_t budget = app::inMemoryPeakBytes(data::describeEnsemble(demo)) - 1;
+    EXPECT_EQ(app::probeData(demo, budget).size,
+              "21 MiB of values, more than the memory budget of 32 MiB: read in slabs, a copy at "
+              "every 2nd point in memory");
 }

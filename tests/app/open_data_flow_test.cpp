@@ -7,6 +7,7 @@
 #include <QDialogButtonBox>
 #include <QPointer>
 #include <QPushButton>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
@@ -49,6 +50,10 @@ TEST(OpenDataFlow, ChoosesVariableAndTimeIndexThenLoadsThem) {
     EXPECT_EQ(itemNamed(list, "t")->text(3), "Temperature");
     EXPECT_TRUE(dialog->memberDimensionBox()->currentText().startsWith("number"));
     EXPECT_EQ(dialog->timeIndexBox()->maximum(), 3);
+    // Measured against the workbench's memory budget (its default: ERA5 fits whole).
+    EXPECT_TRUE(dialog->findChild<QLabel*>("openDataDetails")->text().contains(
+        QStringLiteral("Size: 0.6 MiB of values")))
+        << dialog->findChild<QLabel*>("openDataDetails")->text().toStdString();
     // The layout follows the new details before the picture is taken.
     QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     QApplication::processEvents();

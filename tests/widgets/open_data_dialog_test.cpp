@@ -85,6 +85,12 @@ TEST(OpenDataDialog, ListsTheVariablesAndOffersTheDetectedChoices) {
         << details.toStdString();
     EXPECT_TRUE(details.contains("Fixed: time = 0 of 4 (2017-01-01T00:00)"))
         << details.toStdString();
+    EXPECT_FALSE(details.contains("Size:")) << "no size line when the probe says none";
+    DataProbe sized = era5Probe();
+    sized.size = "0.6 MiB of values";
+    dialog.showProbe(sized, requested.front().at(1).toInt());
+    EXPECT_TRUE(dialog.findChild<QLabel*>("openDataDetails")->text().contains(
+        "Size: 0.6 MiB of values"));
     EXPECT_TRUE(okButton(dialog)->isEnabled());
     const data::DataSelection chosen = dialog.selection();
     EXPECT_EQ(chosen.variable, "t");
