@@ -14,6 +14,7 @@
 
 #include "data/content_hash.h"
 #include "data/error.h"
+#include "data/reader_support.h"
 #include "data/grib_reader.h"
 #include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
@@ -33,12 +34,6 @@ const std::vector<std::unique_ptr<EnsembleReader>>& readers() {
         return r;
     }();
     return list;
-}
-
-std::string gib(double bytes) {
-    std::array<char, 32> text{};
-    std::snprintf(text.data(), text.size(), "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-    return text.data();
 }
 
 }  // namespace
@@ -120,9 +115,9 @@ void checkMemoryFor(std::size_t bytes, const std::string& what) {
     // Keep a quarter of what is free for meshes, the cache and everything else.
     if (available > 0 && static_cast<double>(bytes) > 0.75 * static_cast<double>(available)) {
         throw Error(ErrorKind::OutOfMemory,
-                    what + " needs " + gib(static_cast<double>(bytes)) +
+                    what + " needs " + sizeText(static_cast<double>(bytes)) +
                         " of memory; ensil takes at most three quarters of the " +
-                        gib(static_cast<double>(available)) +
+                        sizeText(static_cast<double>(available)) +
                         " available now, keeping the rest for meshes and other programs. "
                         "Choose fewer members, files or points, or close other programs");
     }

@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +83,18 @@ Ensemble ensembleDescribedBy(const EnsembleDescription& d, const std::vector<std
     e.warnings = d.warnings;
     e.members.resize(d.members);
     return e;
+}
+
+std::string sizeText(double bytes) {
+    char text[32];
+    if (bytes >= 1073741824.0) {
+        std::snprintf(text, sizeof text, "%.2f GiB", bytes / 1073741824.0);
+    } else if (bytes >= 10.0 * 1048576.0) {
+        std::snprintf(text, sizeof text, "%.0f MiB", bytes / 1048576.0);
+    } else {
+        std::snprintf(text, sizeof text, "%.1f MiB", bytes / 1048576.0);
+    }
+    return text;
 }
 
 std::string shapeText(std::size_t nx, std::size_t ny, std::size_t nz) {

@@ -35,6 +35,10 @@ std::string sourceOf(const std::vector<std::string>& paths);
 Ensemble ensembleDescribedBy(const EnsembleDescription& description,
                              const std::vector<std::string>& paths);
 
+// A size in bytes as people read it: "3.13 GiB" from 1 GiB up, "21 MiB" from 10 MiB up, "0.6 MiB"
+// below (powers of 1024). The one format of every memory figure ensil says.
+std::string sizeText(double bytes);
+
 // "68 x 68 x 1": sizes along x, y, z.
 std::string shapeText(std::size_t nx, std::size_t ny, std::size_t nz);
 

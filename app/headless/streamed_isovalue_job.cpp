@@ -37,7 +37,7 @@ IsovalueOutcome runStreamedIsovalueJob(const IsovalueJobInput& in, const Streame
     std::optional<prep::IsovalueMeshes> cached;
     if (cache) cached = cache->load(key);
     auto start = Clock::now();
-    const prep::StreamingPlan plan = prep::planStreaming(d, source.slabLimit, 0);
+    const prep::StreamingPlan& plan = source.plan;
     std::vector<std::string> names;
     if (cached) {
         // The meshes are known; the distances still need the whole data: the slab pass, and

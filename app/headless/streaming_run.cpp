@@ -17,12 +17,6 @@
 namespace ensil::app {
 namespace {
 
-std::string gib(double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.2f GiB", bytes / 1073741824.0);
-    return text;
-}
-
 double since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -121,16 +115,17 @@ std::optional<PreprocessResult> preprocessStreamingWith(
         " of up to " + std::to_string(thickest) + " layers, " + std::to_string(plan.membersAtOnce) +
         (plan.membersAtOnce == 1 ? " member" : " members") + " meshed at a time";
     if (backend.where.empty()) {
-        notice("note", "'" + d.variable + "' (" + gib(static_cast<double>(d.bytes())) +
+        notice("note", "'" + d.variable + "' (" + data::sizeText(static_cast<double>(d.bytes())) +
                            " of values) would take more than the memory limit of " +
-                           gib(static_cast<double>(memoryLimit)) +
+                           data::sizeText(static_cast<double>(memoryLimit)) +
                            " in memory: it is preprocessed in " + how +
                            ", without the contour boxplot");
     } else {
-        notice("note", "'" + d.variable + "' (" + gib(static_cast<double>(d.bytes())) +
+        notice("note", "'" + d.variable + "' (" + data::sizeText(static_cast<double>(d.bytes())) +
                            " of values) is preprocessed " + backend.where + ": " + how +
                            " on each within its memory limit of " +
-                           gib(static_cast<double>(memoryLimit)) + ", without the contour boxplot");
+                           data::sizeText(static_cast<double>(memoryLimit)) +
+                           ", without the contour boxplot");
     }
     if (const auto note = data::fewLevelsWarning(d.grid)) notice("note", *note);
     for (const std::string& note : d.warnings) notice("warning", note);

@@ -100,10 +100,9 @@ StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::st
     std::vector<std::string> names;
     if (streamed) {
         // The distances need only the slab pass (preprocessing/streaming_preprocess.h).
-        const prep::StreamingPlan plan = prep::planStreaming(description, streamed->slabLimit, 0);
         const prep::SlabSums sums =
-            prep::sumSlabs(request.selection, description, plan.slabs, request.isovalue, stop,
-                           [&](double f) { data::report(progress, f); });
+            prep::sumSlabs(request.selection, description, streamed->plan.slabs,
+                           request.isovalue, stop, [&](double f) { data::report(progress, f); });
         prep::StreamedEnsemble concluded;
         (void)prep::concludeSlabs(sums, request.selection, description, {}, concluded);
         distances = std::move(concluded.distances);

@@ -4,23 +4,11 @@
 
 #include "app/headless/streaming_run.h"
 #include "data/error.h"
+#include "data/reader_support.h"
 #include "data/thinned_ensemble.h"
-#include "preprocessing/streaming_preprocess.h"
 
 namespace ensil::app {
 namespace {
-
-std::string sizeText(double bytes) {
-    char text[32];
-    if (bytes >= 1073741824.0) {
-        std::snprintf(text, sizeof text, "%.2f GiB", bytes / 1073741824.0);
-    } else if (bytes >= 10.0 * 1048576.0) {
-        std::snprintf(text, sizeof text, "%.0f MiB", bytes / 1048576.0);
-    } else {
-        std::snprintf(text, sizeof text, "%.1f MiB", bytes / 1048576.0);
-    }
-    return text;
-}
 
 std::string ordinal(std::size_t n) {
     const std::size_t tens = n % 100;
@@ -49,17 +37,16 @@ std::optional<StreamedSource> streamedSourceFor(const data::DataSelection& selec
     // The copy's values are two thirds of its share: the workbench builds half as much again
     // from them (moments, statistics).
     source.stride = data::thinningStrideFor(d, copyShare / 3 * 2);
-    source.slabLimit = memoryLimit - copyShare;
     if (source.stride == 0) {
         throw data::Error(data::ErrorKind::OutOfMemory,
-                          "'" + d.variable + "' (" + sizeText(static_cast<double>(d.bytes())) +
-                              ") cannot be opened within the workbench's memory budget of " +
-                              sizeText(static_cast<double>(memoryLimit)) +
+                          "'" + d.variable + "' (" +
+                              data::sizeText(static_cast<double>(d.bytes())) + ") cannot be opened within the workbench's memory budget of " +
+                              data::sizeText(static_cast<double>(memoryLimit)) +
                               ": not even a copy of its corner points fits a quarter of it");
     }
     // Planned now, so a budget too small for the slab passes is said before anything is read
     // (planStreaming names the least that would do).
-    (void)prep::planStreaming(d, source.slabLimit, 0);
+    source.plan = prep::planStreaming(d, memoryLimit - copyShare, 0);
     return source;
 }
 
@@ -68,9 +55,8 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     std::optional<StreamedSource> source = streamedSourceFor(selection, d, memoryLimit);
     if (!source) return {data::openEnsemble(selection, stop, progress), std::nullopt};
-    const prep::StreamingPlan plan = prep::planStreaming(d, source->slabLimit, 0);
-    data::Ensemble copy =
-        data::openThinnedEnsemble(selection, d, plan.slabs, source->stride, stop, progress);
+    data::Ensemble copy = data::openThinnedEnsemble(selection, d, source->plan.slabs,
+                                                    source->stride, stop, progress);
     if (data::membersWithoutData(copy).size() == copy.members.size()) {
         throw data::Error(data::ErrorKind::AllValuesMissing,
                           "every value of '" + copy.variable + "' in " + copy.source +
@@ -83,12 +69,12 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
 
 std::string howItOpens(const data::DataSelection& selection, const data::EnsembleDescription& d,
                        std::size_t memoryLimit) {
-    const std::string values = sizeText(static_cast<double>(d.bytes())) + " of values";
+    const std::string values = data::sizeText(static_cast<double>(d.bytes())) + " of values";
     try {
         const std::optional<StreamedSource> source = streamedSourceFor(selection, d, memoryLimit);
         if (!source) return values;
         return values + ", more than the memory budget of " +
-               sizeText(static_cast<double>(memoryLimit)) + ": read in slabs, a copy at " +
+               data::sizeText(static_cast<double>(memoryLimit)) + ": read in slabs, a copy at " +
                everyNthPoint(source->stride) + " in memory";
     } catch (const std::exception& e) {
         return values + ": " + e.what();
@@ -97,13 +83,13 @@ std::string howItOpens(const data::DataSelection& selection, const data::Ensembl
 
 std::string streamedDataNote(const StreamedSource& source, const data::Ensemble& copy) {
     const data::EnsembleDescription& d = source.description;
-    return "'" + d.variable + "' (" + sizeText(static_cast<double>(d.bytes())) +
+    return "'" + d.variable + "' (" + data::sizeText(static_cast<double>(d.bytes())) +
            " of values) is larger than the workbench's memory budget of " +
-           sizeText(static_cast<double>(source.memoryLimit)) +
+           data::sizeText(static_cast<double>(source.memoryLimit)) +
            ": its surfaces, distances and clusters are built from the whole data, read in "
            "slabs; the statistics, histogram, floor, sections, contour boxplot and values under "
            "the cursor come from a copy at " +
-           everyNthPoint(source.stride) + " (" + sizeText(static_cast<double>(copy.bytes())) +
+           everyNthPoint(source.stride) + " (" + data::sizeText(static_cast<double>(copy.bytes())) +
            ")";
 }
 

@@ -14,6 +14,7 @@
 #include "data/ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/job.h"
+#include "preprocessing/streaming_preprocess.h"
 
 namespace ensil::app {
 
@@ -22,8 +23,10 @@ struct StreamedSource {
     data::DataSelection selection;
     data::EnsembleDescription description;  // of the whole data, from its headers
     std::size_t memoryLimit = 0;            // the workbench's budget, as given
-    std::size_t slabLimit = 0;              // what the slab passes may take: the budget less the copy's
-    std::size_t stride = 1;                 // the copy keeps every stride-th point along each axis
+    // The slab passes' plan, made once when the data are opened, within the budget less the
+    // copy's share (its memoryLimit): every read and job of these data follows it.
+    prep::StreamingPlan plan;
+    std::size_t stride = 1;  // the copy keeps every stride-th point along each axis
 };
 
 struct WorkbenchEnsemble {

@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
     if (overview.streamed) {
         std::printf("streamed: a copy at %s (%.0f MiB), slab passes within %.0f MiB\n",
                     app::everyNthPoint(overview.streamed->stride).c_str(), mib(overview.ensemble->bytes()),
-                    mib(overview.streamed->slabLimit));
+                    mib(overview.streamed->plan.memoryLimit));
     } else {
         std::printf("opened in memory (the limit holds it)\n");
     }

@@ -109,7 +109,7 @@ TEST(WorkbenchReading, ReadsWholeWithinTheBudgetAndAThinnedCopyBeyondIt) {
     EXPECT_LE(app::inMemoryPeakBytes(d) / source.stride / source.stride / source.stride,
               budget / 4)
         << "the copy and what is built from it keep to a quarter of the budget";
-    EXPECT_LT(source.slabLimit, budget);
+    EXPECT_LT(source.plan.memoryLimit, budget);
     EXPECT_TRUE(streamed.ensemble.grid.sameShapeAndCoordinates(
         data::thinnedGrid(d.grid, source.stride)));
     const std::string note = app::streamedDataNote(source, streamed.ensemble);
