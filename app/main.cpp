@@ -13,6 +13,7 @@
 #include "app/main_window.h"
 #include "app/version.h"
 #include "app/workbench_surface_format.h"
+#include "data/working_memory.h"
 #include "gl/offscreen_context.h"
 #include "gl/surface_format.h"
 
@@ -25,6 +26,7 @@ void setApplicationIdentity() {
 }  // namespace
 
 int main(int argc, char* argv[]) {
+    ensil::data::keepWorkingMemoryForReuse();
     QStringList args;
     for (int i = 0; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
     QTextStream out(stdout);

@@ -35,6 +35,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
+#include "data/working_memory.h"
 #include "widgets/silhouette_view.h"
 
 namespace {
@@ -168,6 +169,7 @@ double orbitFramesPerSecond(ensil::ui::SilhouetteView& view) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     ensil::data::DemoEnsembleParams params;
     double reportMs = 20.0;
     bool warmCache = false;

@@ -16,6 +16,7 @@
 #include <cstring>
 #include <random>
 
+#include "data/working_memory.h"
 #include "point_distances.h"
 #include "preprocessing/clustering.h"
 #include "timing.h"
@@ -57,6 +58,7 @@ ui::MemberFigures figures(std::size_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int runs = 15;
     const char* grabPath = nullptr;
     for (int i = 1; i + 1 < argc; ++i) {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "data/demo_ensemble.h"
+#include "data/working_memory.h"
 #include "hausdorff.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/decimation.h"
@@ -31,6 +32,7 @@ using ensil::bench::median;
 using ensil::bench::medianMs;
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int runs = 5;
     std::size_t vtkMembers = 51;
     bool vtkDecimation = true;

@@ -19,6 +19,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
+#include "data/working_memory.h"
 #include "timing.h"
 #include "widgets/session/project_file.h"
 
@@ -48,6 +49,7 @@ Reopening reopen(const QString& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int runs = 3;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--runs" && i + 1 < argc)

@@ -20,6 +20,7 @@
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/netcdf_writer.h"
+#include "data/working_memory.h"
 #include "timing.h"
 
 using ensil::bench::median;
@@ -40,6 +41,7 @@ std::size_t readAllBytes(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int runs = 7;
     ensil::data::DataSelection selection;
     for (int i = 1; i < argc; ++i) {

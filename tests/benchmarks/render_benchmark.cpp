@@ -15,6 +15,7 @@
 #include <string>
 
 #include "data/demo_ensemble.h"
+#include "data/working_memory.h"
 #include "gl/offscreen_context.h"
 #include "gl/palette.h"
 #include "gl/renderer.h"
@@ -29,6 +30,7 @@
 using ensil::bench::median;
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int frames = 20, width = 1920, height = 1200;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];

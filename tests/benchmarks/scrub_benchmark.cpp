@@ -25,6 +25,7 @@
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
 #include "data/demo_ensemble.h"
+#include "data/working_memory.h"
 #include "preprocessing/preview_meshes.h"
 #include "timing.h"
 #include "widgets/isovalue_control.h"
@@ -56,6 +57,7 @@ void runUntil(const QElapsedTimer& clock, double deadlineMs, Done&& done) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     double seconds = 4.0;
     QString pictures;  // --pictures STEM: STEM_preview.png, the last preview; STEM_full.png
     for (int i = 1; i + 1 < argc; ++i) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "data/demo_ensemble.h"
+#include "data/working_memory.h"
 #include "point_distances.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/similarity.h"
@@ -37,6 +38,7 @@ ensil::prep::DistanceMatrix randomPointDistances(std::size_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     using namespace ensil;
     int runs = 5;
     for (int i = 1; i < argc; ++i) {

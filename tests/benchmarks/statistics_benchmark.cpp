@@ -12,6 +12,7 @@
 #include <string>
 
 #include "data/demo_ensemble.h"
+#include "data/working_memory.h"
 #include "preprocessing/default_isovalue.h"
 #include "preprocessing/ensemble_statistics.h"
 #include "preprocessing/field_statistics.h"
@@ -37,6 +38,7 @@ const char* regimeName(ensil::data::DemoRegime regime) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     using namespace ensil;
     int runs = 7;
     for (int i = 1; i < argc; ++i) {

@@ -21,6 +21,7 @@
 #include "app/headless/time_series.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "data/working_memory.h"
 #include "timing.h"
 
 using ensil::bench::median;
@@ -57,6 +58,7 @@ std::vector<double> stepTimes(const app::TimeSeriesRequest& request, std::vector
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     std::size_t steps = 10;
     std::string dirArgument;
     for (int i = 1; i < argc; ++i) {

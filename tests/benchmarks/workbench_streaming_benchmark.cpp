@@ -25,6 +25,7 @@
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "app/workbench_surface_format.h"
+#include "data/working_memory.h"
 
 using namespace ensil;
 
@@ -33,6 +34,7 @@ double mib(std::size_t bytes) { return static_cast<double>(bytes) / 1048576.0; }
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     QSurfaceFormat::setDefaultFormat(app::workbenchSurfaceFormat());
     QApplication application(argc, argv);
     std::string file, limitText = "1GiB", screenshot;

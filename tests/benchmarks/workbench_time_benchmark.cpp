@@ -22,6 +22,7 @@
 #include "app/workbench_surface_format.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "data/working_memory.h"
 #include "timing.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
@@ -93,6 +94,7 @@ void report(const char* what, const std::vector<Step>& steps) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int kSteps = kDefaultSteps;
     for (int a = 1; a + 1 < argc; ++a) {
         if (std::string(argv[a]) == "--steps") kSteps = std::max(2, std::atoi(argv[a + 1]));
