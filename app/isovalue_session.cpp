@@ -2,6 +2,7 @@
 
 #include <QElapsedTimer>
 #include <numeric>
+#include <utility>
 
 #include "app/headless/isovalue_job.h"
 #include "app/headless/streamed_isovalue_job.h"
@@ -32,6 +33,7 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
                                   std::string sourceKey,
                                   std::shared_ptr<const StreamedSource> streamed) {
     setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey), std::move(streamed));
+    m_prepareJob.cancel();  // a step of other data
     m_kept.clear();  // other data
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);
@@ -48,7 +50,9 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey,
                                   std::shared_ptr<const StreamedSource> streamed) {
+    // A step prepared ahead goes on: it may be this one (setIsovalue then waits for it).
     m_job.cancel();
+    m_awaitingPrepared = false;
     forgetPreviews();
     m_streamed = std::move(streamed);
     m_ensemble = std::move(ensemble);
@@ -56,16 +60,41 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
     m_sourceKey = std::move(sourceKey);
 }
 
+namespace {
+
+// One isovalue's surfaces, figures and clusters for one step's data: the work of a job.
+IsovalueResult buildResult(const IsovalueJobInput& input, const StreamedSource* streamed,
+                           const std::stop_token& stop, const data::Progress& progress) {
+    QElapsedTimer timer;
+    timer.start();
+    IsovalueOutcome outcome = streamed ? runStreamedIsovalueJob(input, *streamed, stop, progress)
+                                       : runIsovalueJob(input, stop, progress);
+    IsovalueResult r;
+    r.fromCache = outcome.fromCache;
+    r.triangles = outcome.meshes.triangles;
+    r.meshes = std::make_shared<data::MeshSet>(std::move(outcome.meshes));
+    r.distances = std::move(outcome.distances);
+    r.tree = std::move(outcome.tree);
+    r.distancesToMean = std::move(outcome.distancesToMean);
+    r.exceedanceColumnMaximum = std::move(outcome.exceedanceColumnMaximum);
+    r.exceedance = std::move(outcome.exceedance);
+    r.meanOutlyingness = std::move(outcome.meanOutlyingness);
+    r.depth = std::move(outcome.boxplot.depth);
+    if (!r.depth.empty()) r.medianMember = static_cast<int>(outcome.boxplot.median);
+    r.outliers.assign(outcome.boxplot.outliers.begin(), outcome.boxplot.outliers.end());
+    r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+    return r;
+}
+
+}  // namespace
+
 void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     if (!m_ensemble) return;
     prep::PipelineOptions options;
     options.isovalue = isovalue;
-    const std::string sourceKey = m_sourceKey;
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     const auto streamed = m_streamed;
-    const std::string cacheDirectory = m_cacheDirectory.toStdString();
-    const prep::Linkage linkage = m_linkage;
     emit started(m_streamed ? tr("Building the isosurfaces at %1 from the whole data, in slabs...")
                                   .arg(isovalue)
                             : tr("Building the isosurfaces at %1...").arg(isovalue));
@@ -76,73 +105,122 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     // through the same job so that a newer request still drops it.
     const std::string key = keptKey(isovalue, exaggeration);
     const std::shared_ptr<const IsovalueResult> kept = this->kept(key);
+    m_awaitingPrepared = false;
+    if (!kept && m_prepareJob.isRunning() && m_preparingKey == key) {
+        // This step is being prepared ahead: its build is what is shown when done.
+        m_job.cancel();
+        m_buildInFlight = true;
+        m_awaitingPrepared = true;
+        m_awaitedIsovalue = isovalue;
+        return;
+    }
+    m_prepareJob.cancel();  // a guess the user did not follow: its cores are wanted here
+    IsovalueJobInput input;
+    input.options = options;
+    input.verticalExaggeration = exaggeration;
+    input.cacheDirectory = m_cacheDirectory.toStdString();
+    input.sourceKey = m_sourceKey;
+    input.linkage = m_linkage;
     m_buildInFlight = true;
     m_job.start(
-        [=](const std::stop_token& stop, const data::Progress& progress) {
-            QElapsedTimer timer;
-            timer.start();
+        [=](const std::stop_token& stop, const data::Progress& progress) mutable {
             if (kept) {
                 IsovalueResult r = *kept;
                 r.keptInMemory = true;
-                r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
+                r.seconds = 0.0;
                 return r;
             }
-            IsovalueJobInput input;
             input.ensemble = ensemble.get();
             input.moments = moments.get();
-            input.options = options;
-            input.verticalExaggeration = exaggeration;
-            input.cacheDirectory = cacheDirectory;
-            input.sourceKey = sourceKey;
-            input.linkage = linkage;
-            IsovalueOutcome outcome = streamed
-                                          ? runStreamedIsovalueJob(input, *streamed, stop, progress)
-                                          : runIsovalueJob(input, stop, progress);
-            IsovalueResult r;
-            r.fromCache = outcome.fromCache;
-            r.triangles = outcome.meshes.triangles;
-            r.meshes = std::make_shared<data::MeshSet>(std::move(outcome.meshes));
-            r.distances = std::move(outcome.distances);
-            r.tree = std::move(outcome.tree);
-            r.distancesToMean = std::move(outcome.distancesToMean);
-            r.exceedanceColumnMaximum = std::move(outcome.exceedanceColumnMaximum);
-            r.exceedance = std::move(outcome.exceedance);
-            r.meanOutlyingness = std::move(outcome.meanOutlyingness);
-            r.depth = std::move(outcome.boxplot.depth);
-            if (!r.depth.empty()) r.medianMember = static_cast<int>(outcome.boxplot.median);
-            r.outliers.assign(outcome.boxplot.outliers.begin(), outcome.boxplot.outliers.end());
-            r.seconds = static_cast<double>(timer.nsecsElapsed()) * 1e-9;
-            return r;
+            return buildResult(input, streamed.get(), stop, progress);
         },
         [this, isovalue, key](IsovalueResult r) {
             m_buildInFlight = false;
-            if (!r.keptInMemory) {
-                // The most recent first; the oldest go beyond kKeptResults.
-                std::erase_if(m_kept, [&key](const auto& entry) { return entry.first == key; });
-                m_kept.emplace(m_kept.begin(), key, std::make_shared<const IsovalueResult>(r));
-                if (m_kept.size() > kKeptResults) m_kept.resize(kKeptResults);
-            }
+            if (!r.keptInMemory) keep(key, r);
             show(std::move(r), isovalue);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
+            if (m_awaitingPrepared) return;  // given up for the step prepared ahead
             m_buildInFlight = false;
-            if (cancelled || !error) {
-                emit failed(tr("Isosurfaces cancelled"));
-                return;
-            }
-            try {
-                std::rethrow_exception(error);
-            } catch (const std::exception& e) {
-                emit failed(QString::fromStdString(e.what()));
-            } catch (...) {
-                emit failed(tr("unknown error"));
-            }
+            reportFailure(error, cancelled);
         },
         [this](double f) { emit progressed(f); });
 }
 
-std::string IsovalueSession::keptKey(float isovalue, float exaggeration) const {
-    return m_sourceKey + "; iso=" + std::to_string(isovalue) +
+void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
+                                      std::shared_ptr<const prep::EnsembleMoments> moments,
+                                      std::string sourceKey, float isovalue, float exaggeration) {
+    if (!ensemble || !moments) return;
+    const std::string key = keyOf(sourceKey, isovalue, exaggeration);
+    if (kept(key) || (m_prepareJob.isRunning() && m_preparingKey == key)) return;
+    if (m_awaitingPrepared) return;  // the step shown is still waiting for the last one
+    IsovalueJobInput input;
+    input.options.isovalue = isovalue;
+    input.verticalExaggeration = exaggeration;
+    input.cacheDirectory = m_cacheDirectory.toStdString();
+    input.sourceKey = std::move(sourceKey);
+    input.linkage = m_linkage;
+    m_preparingKey = key;
+    m_prepareJob.start(
+        [=](const std::stop_token& stop, const data::Progress& progress) mutable {
+            input.ensemble = ensemble.get();
+            input.moments = moments.get();
+            return buildResult(input, nullptr, stop, progress);
+        },
+        // When the step is waited for, showing it is the last thing done: what that sets off
+        // (the next step read and prepared ahead) replaces these functions while they run.
+        [this, key](IsovalueResult r) {
+            keep(key, r);
+            if (!std::exchange(m_awaitingPrepared, false)) {
+                emit preparationEnded();
+                return;
+            }
+            m_buildInFlight = false;
+            show(std::move(r), m_awaitedIsovalue);
+        },
+        [this](const std::exception_ptr& error, bool cancelled) {
+            // A guess that failed says nothing, unless the user is waiting for it.
+            if (!std::exchange(m_awaitingPrepared, false)) {
+                emit preparationEnded();
+                return;
+            }
+            m_buildInFlight = false;
+            reportFailure(error, cancelled);
+        },
+        [this](double f) {
+            if (m_awaitingPrepared) emit progressed(f);
+        });
+}
+
+void IsovalueSession::cancel() {
+    m_job.cancel();
+    m_prepareJob.cancel();
+}
+
+void IsovalueSession::keep(const std::string& key, const IsovalueResult& result) {
+    // The most recent first; the oldest go beyond kKeptResults.
+    std::erase_if(m_kept, [&key](const auto& entry) { return entry.first == key; });
+    m_kept.emplace(m_kept.begin(), key, std::make_shared<const IsovalueResult>(result));
+    if (m_kept.size() > kKeptResults) m_kept.resize(kKeptResults);
+}
+
+void IsovalueSession::reportFailure(const std::exception_ptr& error, bool cancelled) {
+    if (cancelled || !error) {
+        emit failed(tr("Isosurfaces cancelled"));
+        return;
+    }
+    try {
+        std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+        emit failed(QString::fromStdString(e.what()));
+    } catch (...) {
+        emit failed(tr("unknown error"));
+    }
+}
+
+std::string IsovalueSession::keyOf(const std::string& sourceKey, float isovalue,
+                                   float exaggeration) const {
+    return sourceKey + "; iso=" + std::to_string(isovalue) +
            "; exaggeration=" + std::to_string(exaggeration) +
            "; linkage=" + std::to_string(static_cast<int>(m_linkage));
 }
@@ -156,7 +234,7 @@ std::shared_ptr<const IsovalueResult> IsovalueSession::kept(const std::string& k
 
 bool IsovalueSession::showKept(float isovalue, float exaggeration) {
     const auto result = m_ensemble ? kept(keptKey(isovalue, exaggeration)) : nullptr;
-    if (!result || m_job.isRunning()) return false;
+    if (!result || isRunning()) return false;
     emit started(tr("Showing the isosurfaces at %1...").arg(isovalue));
     IsovalueResult r = *result;
     r.keptInMemory = true;

@@ -82,11 +82,22 @@ public:
     // of the last step). False, doing nothing, when none is kept or a job is under way; then
     // setIsovalue.
     bool showKept(float isovalue, float verticalExaggeration);
+    // Another time step's result built ahead, in the background, while the user looks at this
+    // one (MainWindow reads the next step ahead and hands it here): kept (kKeptResults) but not
+    // shown, so that stepping there shows it at once (showKept). When that step is asked for
+    // while its result is still being built, setIsovalue waits for this build instead of
+    // starting another. A newer preparation, another isovalue, cancel() or other data drop it.
+    void prepareTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
+                         std::shared_ptr<const prep::EnsembleMoments> moments,
+                         std::string sourceKey, float isovalue, float verticalExaggeration);
+    [[nodiscard]] bool isPreparing() const { return m_prepareJob.isRunning(); }
+    // The surfaces asked for are those being prepared ahead, and are waited for.
+    [[nodiscard]] bool awaitsPreparedStep() const { return m_awaitingPrepared; }
     void setClusterCount(int k);
     // Clusters the current distances again (at once) and uses this linkage from now on.
     void setLinkage(prep::Linkage linkage);
     [[nodiscard]] prep::Linkage linkage() const { return m_linkage; }
-    void cancel() { m_job.cancel(); }
+    void cancel();
 
     // Shows this isovalue's preview surfaces as soon as they can be built (see above).
     void previewIsovalue(float isovalue, float verticalExaggeration);
@@ -102,7 +113,8 @@ public:
 
     [[nodiscard]] const IsovalueResult* result() const { return m_result.get(); }
     [[nodiscard]] std::vector<int> labels() const;
-    [[nodiscard]] bool isRunning() const { return m_job.isRunning(); }
+    // The surfaces asked for are being built (or prepared ahead, and waited for).
+    [[nodiscard]] bool isRunning() const { return m_job.isRunning() || m_awaitingPrepared; }
 
     // The last results built, kept whole (meshes, distances, clusters, summaries) so that a
     // time step or isovalue visited again is shown without rebuilding: a few MiB each.
@@ -115,6 +127,9 @@ signals:
     void progressed(double fraction);
     void finished(const QString& summary);
     void failed(const QString& message);
+    // A time step's result prepared ahead is kept (prepareTimeStep), or its build ended,
+    // while no one waited for it (a step waited for says finished or failed instead).
+    void preparationEnded();
     // A preview is on screen (handed to the view, which repaints); seconds to build it.
     void previewShown(float isovalue, double seconds);
 
@@ -124,8 +139,14 @@ private:
     void startWaitingPreview();
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
     void forgetPreviews();
+    void keep(const std::string& key, const IsovalueResult& result);
+    void reportFailure(const std::exception_ptr& error, bool cancelled);
     // The key of a kept result: the data, isovalue, exaggeration and linkage.
-    [[nodiscard]] std::string keptKey(float isovalue, float verticalExaggeration) const;
+    [[nodiscard]] std::string keptKey(float isovalue, float verticalExaggeration) const {
+        return keyOf(m_sourceKey, isovalue, verticalExaggeration);
+    }
+    [[nodiscard]] std::string keyOf(const std::string& sourceKey, float isovalue,
+                                    float verticalExaggeration) const;
     [[nodiscard]] std::shared_ptr<const IsovalueResult> kept(const std::string& key) const;
     std::vector<std::pair<std::string, std::shared_ptr<const IsovalueResult>>> m_kept;
     [[nodiscard]] QStringList memberNames() const;
@@ -140,6 +161,11 @@ private:
     std::unique_ptr<IsovalueResult> m_result;
     prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};
+    // The step prepared ahead: its key, and whether the surfaces asked for are that build's.
+    BackgroundJob<IsovalueResult> m_prepareJob{this};
+    std::string m_preparingKey;
+    bool m_awaitingPrepared = false;
+    float m_awaitedIsovalue = 0.0F;
 
     struct PreviewRequest {
         float isovalue = 0.0F;

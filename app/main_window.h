@@ -175,7 +175,12 @@ private:
     void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);
     // The step's surfaces: kept from a visit before, shown at once; else built.
     void showStepSurfaces(float isovalue, float exaggeration);
+    // The next step in the direction of the last move (forward while playing, round the end),
+    // read and its surfaces built in the background while this one is looked at, so that
+    // stepping on shows it at once; a guess, dropped when the user goes elsewhere.
     void readAhead();
+    // That step's surfaces, figures and clusters built ahead and kept by the session.
+    void buildAhead(const EnsembleOverview& step);
     void forgetTimeSteps();
     [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
     void startLoading(const QString& what, std::function<std::string()> identify,
@@ -269,6 +274,7 @@ private:
     // count as running yet) to its end; kNoStep when none.
     static constexpr std::size_t kNoStep = static_cast<std::size_t>(-1);
     std::size_t m_readingAhead = kNoStep;
+    int m_stepDirection = 1;  // of the last move between steps: +1 later, -1 earlier
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;

@@ -64,15 +64,17 @@ void MainWindow::createTimeBar() {
         if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
-        // The next step read ahead first: the strip's filling (started when the clusters are
-        // recorded) waits for it rather than taking a worker it needs.
-        if (m_timeBar->isPlaying()) readAhead();
+        // The next step read ahead (and built) first: the strip's filling (started when the
+        // clusters are recorded) waits for it rather than taking a worker it needs.
+        readAhead();
         recordStepClusters();
     });
     connect(m_selection, &ui::MemberSelection::clustersChanged, this,
             &MainWindow::recordStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::membersClicked, m_selection,
             &ui::MemberSelection::click);
+    // The strip's filling waits while the next step is built ahead.
+    connect(m_session, &IsovalueSession::preparationEnded, this, &MainWindow::fillStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, this, [this] {
         m_fillStopped = true;
         m_stepFill.cancel();
@@ -136,7 +138,7 @@ void MainWindow::fillStepClusters() {
     // What the user asked for goes first: the next step waits while one is read or built
     // (and one under way is cancelled when a step is asked for, goToTimeStep).
     if (m_stepFill.isRunning() || m_loader.isRunning() || m_readingAhead != kNoStep ||
-        m_session->isRunning()) {
+        m_session->isRunning() || m_session->isPreparing()) {
         return;
     }
     const auto clustered = [this](int s) { return !m_timeline->stepClusters(s).empty(); };
@@ -206,6 +208,7 @@ data::DataSelection MainWindow::timeStepSelection(std::size_t step) const {
 
 void MainWindow::goToTimeStep(std::size_t step) {
     if (!m_overview || !m_requested || step == m_requested->timeIndex) return;
+    m_stepDirection = step > m_requested->timeIndex ? 1 : -1;
     m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
     if (const auto kept = m_timeSteps.find(step); kept != m_timeSteps.end()) {
         std::unique_ptr<EnsembleOverview> overview = std::move(kept->second);
@@ -298,8 +301,20 @@ void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
 void MainWindow::readAhead() {
     if (!m_requested || m_timeBar->stepCount() < 2) return;
     const auto n = static_cast<std::size_t>(m_timeBar->stepCount());
-    const std::size_t next = (m_requested->timeIndex + 1) % n;
-    if (m_timeSteps.count(next) != 0 || m_readingAhead == next) {
+    const std::size_t current = m_requested->timeIndex;
+    std::size_t next = 0;
+    if (m_timeBar->isPlaying()) {
+        next = (current + 1) % n;
+    } else if (m_stepDirection > 0) {
+        if (current + 1 >= n) return;
+        next = current + 1;
+    } else {
+        if (current == 0) return;
+        next = current - 1;
+    }
+    if (m_readingAhead == next) return;
+    if (const auto kept = m_timeSteps.find(next); kept != m_timeSteps.end()) {
+        buildAhead(*kept->second);
         return;
     }
     m_readingAhead = next;
@@ -315,6 +330,7 @@ void MainWindow::readAhead() {
                 showTimeStep(std::move(read), next);
                 return;
             }
+            buildAhead(*read);
             m_timeSteps[next] = std::move(read);
             fillStepClusters();
         },
@@ -322,6 +338,14 @@ void MainWindow::readAhead() {
         [this, next](const std::exception_ptr&, bool) {
             if (m_readingAhead == next) m_readingAhead = kNoStep;
         });
+}
+
+void MainWindow::buildAhead(const EnsembleOverview& step) {
+    // Data larger than memory would be read whole again in slabs for a guess: not built ahead.
+    if (step.streamed) return;
+    const session::SessionState& s = m_model->state();
+    m_session->prepareTimeStep(step.ensemble, step.moments, step.sourceKey,
+                               s.isovalue.value_or(step.defaultIsovalue), s.verticalExaggeration);
 }
 
 void MainWindow::forgetTimeSteps() {

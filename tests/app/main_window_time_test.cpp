@@ -10,6 +10,7 @@
 #include <QTest>
 #include <QToolButton>
 
+#include "app/headless/isovalue_job.h"
 #include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -148,6 +149,76 @@ TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
     ASSERT_TRUE(stepShown(window, 0));
     EXPECT_TRUE(window.isovalueSession()->result()->keptInMemory);
     EXPECT_EQ(window.view()->renderer().meshes(), first) << "the very surfaces of before";
+}
+
+TEST(MainWindowTime, TheNextStepIsReadAndBuiltAheadAndShownAtOnceAsBuiltDirectly) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    QSignalSpy prepared(window.isovalueSession(), &app::IsovalueSession::preparationEnded);
+    ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
+    // While step 0 is looked at, step 1 is read and its surfaces built in the background.
+    ASSERT_TRUE(prepared.count() > 0 || prepared.wait(60000));
+    EXPECT_FALSE(window.isovalueSession()->isPreparing());
+    EXPECT_EQ(window.timeBar()->shownStep(), 0) << "built ahead, not shown";
+    QSignalSpy finished(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.timeBar()->step(1);
+    EXPECT_EQ(finished.count(), 1) << "shown at once, in the request's own event";
+    EXPECT_FALSE(window.isovalueSession()->isRunning());
+    ASSERT_TRUE(stepShown(window, 1));
+    const app::IsovalueResult& shown = *window.isovalueSession()->result();
+    EXPECT_TRUE(shown.keptInMemory);
+
+    // The same surfaces, distances and clusters as built directly for step 1.
+    const app::EnsembleOverview& step = *window.overview();
+    app::IsovalueJobInput input;
+    input.ensemble = step.ensemble.get();
+    input.moments = step.moments.get();
+    input.options.isovalue = shown.meshes->isovalue;
+    const app::IsovalueOutcome direct = app::runIsovalueJob(input, {}, {});
+    EXPECT_EQ(shown.triangles, direct.meshes.triangles);
+    ASSERT_EQ(shown.meshes->members.size(), direct.meshes.members.size());
+    for (std::size_t m = 0; m < direct.meshes.members.size(); ++m) {
+        EXPECT_EQ(shown.meshes->members[m].indices, direct.meshes.members[m].indices) << m;
+    }
+    ASSERT_EQ(shown.distances.values.size(), direct.distances.values.size());
+    for (std::size_t i = 0; i < direct.distances.values.size(); ++i) {
+        EXPECT_DOUBLE_EQ(shown.distances.values[i], direct.distances.values[i]) << i;
+    }
+    EXPECT_EQ(shown.depth, direct.boxplot.depth);
+
+    // Step 1 shown, step 2 (the way the user went) is read and built ahead in its turn.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return prepared.count() >= 2; }, 60000));
+    window.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(window, 2));
+    EXPECT_TRUE(window.isovalueSession()->result()->keptInMemory);
+}
+
+TEST(MainWindowTime, AStepAskedForWhileBuiltAheadWaitsForThatBuild) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
+    app::IsovalueSession& session = *window.isovalueSession();
+    const app::EnsembleOverview& shown = *window.overview();
+    const float iso = session.result()->meshes->isovalue;
+    // Another step's data (the same values under another key), prepared and then asked for
+    // before the preparation can have ended (its result needs this thread's events).
+    session.prepareTimeStep(shown.ensemble, shown.moments, "another step", iso, 1.0F);
+    ASSERT_TRUE(session.isPreparing());
+    QSignalSpy finished(&session, &app::IsovalueSession::finished);
+    QSignalSpy failed(&session, &app::IsovalueSession::failed);
+    session.setTimeStep(shown.ensemble, shown.moments, "another step");
+    session.setIsovalue(iso, 1.0F);
+    EXPECT_TRUE(session.awaitsPreparedStep()) << "no second build of the same surfaces";
+    EXPECT_TRUE(session.isRunning());
+    ASSERT_TRUE(finished.wait(60000));
+    EXPECT_EQ(failed.count(), 0) << "the job given up for it says nothing";
+    EXPECT_FALSE(session.awaitsPreparedStep());
+    EXPECT_FALSE(session.isRunning());
+    EXPECT_FALSE(session.result()->keptInMemory);
+    EXPECT_EQ(session.result()->meshes->isovalue, iso);
+    // Kept as well: asked for again, shown at once.
+    EXPECT_TRUE(session.showKept(iso, 1.0F));
+    EXPECT_TRUE(session.result()->keptInMemory);
 }
 
 // Waits until the strip holds each of ERA5's four steps' clusters.

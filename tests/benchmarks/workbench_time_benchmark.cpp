@@ -2,10 +2,13 @@
 // defaults: 50 members, 256 x 128 x 16) over 10 steps, written as one NetCDF file with a CF
 // time dimension and opened in the workbench. Prints, per step, the time from the time bar's
 // request to the step's surfaces, clusters and panels handed over, and to its first frame
-// drawn: first going forward through steps never seen (read and built), then going back
-// through them (kept in memory). Needs an X display (xvfb-run -a).
+// drawn: first going forward through the first half of the steps never seen, each asked for
+// as soon as the last is drawn (read and built after the request), then through the second
+// half, each asked for after looking at the last for a few seconds as a forecaster does (read
+// and built ahead meanwhile: MainWindow::readAhead), then going back through them (kept in
+// memory). Needs an X display (xvfb-run -a).
 //
-//   ensil_workbench_time_benchmark [--steps N]
+//   ensil_workbench_time_benchmark [--steps N] [--look SECONDS]
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QSignalSpy>
@@ -85,9 +88,9 @@ void report(const char* what, const std::vector<Step>& steps) {
         full.push_back(s.fullMs);
         frames.push_back(s.framesBefore);
     }
-    std::printf("  %-38s median %6.0f ms ready, %6.0f ms drawn, %6.0f ms at full resolution\n",
+    std::printf("  %-42s median %6.0f ms ready, %6.0f ms drawn, %6.0f ms at full resolution\n",
                 what, bench::median(ready), bench::median(drawn), bench::median(full));
-    std::printf("  %-38s (surfaces asked for at %.0f ms; %.0f frames composed before ready)\n", "",
+    std::printf("  %-42s (surfaces asked for at %.0f ms; %.0f frames composed before ready)\n", "",
                 bench::median(started), bench::median(frames));
 }
 
@@ -96,8 +99,10 @@ void report(const char* what, const std::vector<Step>& steps) {
 int main(int argc, char** argv) {
     ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
     int kSteps = kDefaultSteps;
+    double lookSeconds = 3.0;
     for (int a = 1; a + 1 < argc; ++a) {
-        if (std::string(argv[a]) == "--steps") kSteps = std::max(2, std::atoi(argv[a + 1]));
+        if (std::string(argv[a]) == "--steps") kSteps = std::max(4, std::atoi(argv[a + 1]));
+        if (std::string(argv[a]) == "--look") lookSeconds = std::max(0.0, std::atof(argv[a + 1]));
     }
     QTemporaryDir home;
     qputenv("XDG_CACHE_HOME", home.path().toUtf8());
@@ -127,10 +132,18 @@ int main(int argc, char** argv) {
         "workbench, paper-sized demo over %d steps (%zu members, %zu x %zu x %zu), "
         "1400 x 900 window\n",
         kSteps, params.members, params.nx, params.ny, params.nz);
-    std::vector<Step> fresh, kept;
-    for (int s = 1; s < kSteps; ++s) fresh.push_back(stepTo(window, s));
+    std::vector<Step> fresh, ahead, kept;
+    const int half = kSteps / 2;
+    for (int s = 1; s <= half; ++s) fresh.push_back(stepTo(window, s));
+    for (int s = half + 1; s < kSteps; ++s) {
+        QTest::qWait(static_cast<int>(lookSeconds * 1000.0));  // the user looks at the step
+        ahead.push_back(stepTo(window, s));
+    }
     for (int s = kSteps - 2; s >= 0; --s) kept.push_back(stepTo(window, s));
-    report("a step never seen (read and built)", fresh);
+    report("a step never seen, asked for at once", fresh);
+    char looked[64];
+    std::snprintf(looked, sizeof looked, "the next, after looking %.0f s at the last", lookSeconds);
+    report(looked, ahead);
     report("a step seen before (kept in memory)", kept);
     return 0;
 }
