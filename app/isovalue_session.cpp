@@ -192,6 +192,49 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
         });
 }
 
+void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
+    if (!m_ensemble || !m_moments || !m_buildInFlight || m_awaitingPrepared || m_previewing) return;
+    const auto ensemble = m_ensemble;
+    const auto moments = m_moments;
+    m_previewInFlight = true;
+    m_previewJob.start(
+        [=](const std::stop_token& stop, const data::Progress&) {
+            QElapsedTimer timer;
+            timer.start();
+            // No median or outliers of its own: the step's come with its full surfaces.
+            auto meshes = std::make_shared<prep::IsovalueMeshes>(prep::buildPreviewMeshes(
+                *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration), isovalue, {},
+                stop));
+            return BuiltPreview{std::move(meshes),
+                                static_cast<double>(timer.nsecsElapsed()) * 1e-9};
+        },
+        [this, ensemble, isovalue](BuiltPreview built) {
+            m_previewInFlight = false;
+            if (m_buildInFlight && !m_previewing && ensemble == m_ensemble) {
+                m_stepPreviewShown = true;
+                // Motion frames until the full surfaces (show) let the view settle.
+                m_view->beginInteraction();
+                m_view->renderer().setMeshes(std::move(built.meshes));
+                m_view->update();
+                emit previewShown(isovalue, built.seconds);
+            }
+            startWaitingPreview();  // a scrub begun meanwhile
+        },
+        [this](const std::exception_ptr&, bool) {
+            m_previewInFlight = false;
+            startWaitingPreview();
+        });
+}
+
+void IsovalueSession::endStepPreview(bool settle) {
+    if (!std::exchange(m_stepPreviewShown, false)) return;
+    if (settle) {
+        m_view->showPassingChange();  // one more motion frame, then full resolution
+    } else {
+        m_view->endInteraction();
+    }
+}
+
 void IsovalueSession::cancel() {
     m_job.cancel();
     m_prepareJob.cancel();
@@ -205,6 +248,7 @@ void IsovalueSession::keep(const std::string& key, const IsovalueResult& result)
 }
 
 void IsovalueSession::reportFailure(const std::exception_ptr& error, bool cancelled) {
+    endStepPreview(false);
     if (cancelled || !error) {
         emit failed(tr("Isosurfaces cancelled"));
         return;
@@ -244,6 +288,7 @@ bool IsovalueSession::showKept(float isovalue, float exaggeration) {
 }
 
 void IsovalueSession::show(IsovalueResult result, float isovalue) {
+    endStepPreview(true);
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     // While the user scrubs, the view follows the pointer; endPreview shows these after.
     if (!m_previewing) m_view->renderer().setMeshes(m_result->meshes);

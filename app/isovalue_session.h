@@ -90,6 +90,11 @@ public:
     void prepareTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
                          std::shared_ptr<const prep::EnsembleMoments> moments,
                          std::string sourceKey, float isovalue, float verticalExaggeration);
+    // A time step never seen: its reduced-detail surfaces (preprocessing/preview_meshes.h),
+    // built in a fraction of the full ones' time, shown while those are built (setIsovalue,
+    // called before) as motion frames, with no clusters of their own (the members keep their
+    // colours). The full surfaces replace them; nothing is shown when they come first.
+    void previewTimeStep(float isovalue, float verticalExaggeration);
     [[nodiscard]] bool isPreparing() const { return m_prepareJob.isRunning(); }
     // The surfaces asked for are those being prepared ahead, and are waited for.
     [[nodiscard]] bool awaitsPreparedStep() const { return m_awaitingPrepared; }
@@ -141,6 +146,9 @@ private:
     void forgetPreviews();
     void keep(const std::string& key, const IsovalueResult& result);
     void reportFailure(const std::exception_ptr& error, bool cancelled);
+    // A step's preview gives way: to the full surfaces (settle: the view's motion ends as after
+    // a passing change), or to nothing (a failure or cancel: it ends now).
+    void endStepPreview(bool settle);
     // The key of a kept result: the data, isovalue, exaggeration and linkage.
     [[nodiscard]] std::string keptKey(float isovalue, float verticalExaggeration) const {
         return keyOf(m_sourceKey, isovalue, verticalExaggeration);
@@ -182,6 +190,7 @@ private:
     // wait. BackgroundJob::isRunning turns false before its result reaches the GUI thread.
     bool m_previewInFlight = false;
     bool m_buildInFlight = false;  // the same for the full surfaces' job
+    bool m_stepPreviewShown = false;  // a step's preview on screen until its full surfaces
     int m_previewsBuilt = 0;
     std::vector<std::pair<std::string, std::shared_ptr<const data::MeshSet>>> m_keptPreviews;
 };

@@ -294,8 +294,11 @@ void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
     // and panels come together with its floor and title, with no frame of the last step in
     // between and no wait for a worker (a job runs at low priority and may wait for a core
     // while the window draws). Otherwise built (or taken from the mesh cache) by a job.
-    if (!m_session->showKept(isovalue, exaggeration))
-        m_session->setIsovalue(isovalue, exaggeration);
+    if (m_session->showKept(isovalue, exaggeration)) return;
+    m_session->setIsovalue(isovalue, exaggeration);
+    // A step never seen is on screen sooner in reduced detail (not one built ahead, nearly
+    // done, whose cores the preview would take).
+    m_session->previewTimeStep(isovalue, exaggeration);
 }
 
 void MainWindow::readAhead() {

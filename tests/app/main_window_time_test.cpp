@@ -14,6 +14,8 @@
 #include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "data/demo_ensemble.h"
+#include "data/netcdf_writer.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -219,6 +221,52 @@ TEST(MainWindowTime, AStepAskedForWhileBuiltAheadWaitsForThatBuild) {
     // Kept as well: asked for again, shown at once.
     EXPECT_TRUE(session.showKept(iso, 1.0F));
     EXPECT_TRUE(session.result()->keptInMemory);
+}
+
+TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurfaces) {
+    const test::ScopedCacheHome cache;
+    test::TempDir dir;
+    // The demo over two steps, large enough that its full surfaces take many times a preview's.
+    constexpr data::DemoEnsembleParams kDemo{.members = 24, .nx = 97, .ny = 96, .nz = 25};
+    const std::string path = dir.file("steps.nc");
+    data::writeNetcdfSteps(
+        [&](std::size_t step) { return data::makeDemoEnsembleAt(kDemo, step, 2).ensemble; },
+        {data::kDemoTimeUnits, {0.0, 12.0}}, path);
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    app::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    window.openFiles(data::DataSelection{.paths = {path}});
+    ASSERT_TRUE(built.wait(120000));
+    const auto first = window.view()->renderer().meshes();
+
+    // Asked for at once (its reading ahead just begun): read, then built, with a preview.
+    std::vector<std::string> order;
+    std::shared_ptr<const data::MeshSet> previewed;
+    QObject::connect(&session, &app::IsovalueSession::previewShown, &window, [&] {
+        order.emplace_back("preview");
+        previewed = window.view()->renderer().meshes();
+        EXPECT_TRUE(window.view()->inMotion()) << "a preview is drawn as motion frames";
+    });
+    QObject::connect(&session, &app::IsovalueSession::finished, &window,
+                     [&] { order.emplace_back("full"); });
+    window.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(window, 1));
+    ASSERT_EQ(order, (std::vector<std::string>{"preview", "full"}));
+    ASSERT_NE(previewed, nullptr);
+    EXPECT_NE(previewed, first) << "the preview is step 1's";
+    EXPECT_EQ(previewed->members.size(), kDemo.members);
+    const app::IsovalueResult& full = *session.result();
+    EXPECT_FALSE(full.keptInMemory);
+    const auto indices = [](const data::MeshSet& set) {
+        std::size_t n = 0;
+        for (const data::PackedMesh& m : set.members) n += m.indices.size();
+        return n;
+    };
+    EXPECT_LT(indices(*previewed), indices(*full.meshes)) << "reduced detail";
+    EXPECT_EQ(window.view()->renderer().meshes(), full.meshes) << "the full surfaces replace it";
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !window.view()->inMotion(); }, 10000))
+        << "the view settles at full resolution";
 }
 
 // Waits until the strip holds each of ERA5's four steps' clusters.

@@ -2,7 +2,7 @@
 // defaults: 50 members, 256 x 128 x 16) over 10 steps, written as one NetCDF file with a CF
 // time dimension and opened in the workbench. Prints, per step, the time from the time bar's
 // request to the step's surfaces, clusters and panels handed over, and to its first frame
-// drawn: first going forward through the first half of the steps never seen, each asked for
+// drawn (and to its first frame in reduced detail, for a step never seen): first going forward through the first half of the steps never seen, each asked for
 // as soon as the last is drawn (read and built after the request), then through the second
 // half, each asked for after looking at the last for a few seconds as a forecaster does (read
 // and built ahead meanwhile: MainWindow::readAhead), then going back through them (kept in
@@ -41,6 +41,8 @@ struct Step {
     double drawnMs = -1.0;    // and the first frame composed after that (software OpenGL)
     double fullMs = -1.0;     // the first of those at full resolution (once steps pause)
     int framesBefore = 0;     // frames composed between the request and ready
+    double previewMs = -1.0;  // a step never seen: its reduced-detail surfaces handed over
+    double onScreenMs = -1.0; // the first frame showing the step, in reduced or full detail
 };
 
 // Asks for `step` and waits until its surfaces are on screen and drawn. Ready is when the
@@ -59,8 +61,13 @@ Step stepTo(app::MainWindow& window, int step) {
         QObject::connect(window.isovalueSession(), &app::IsovalueSession::finished, [&] {
             if (s.readyMs < 0 && bar.shownStep() == step) s.readyMs = now();
         });
+    const QMetaObject::Connection previewed =
+        QObject::connect(window.isovalueSession(), &app::IsovalueSession::previewShown, [&] {
+            if (s.previewMs < 0 && s.readyMs < 0) s.previewMs = now();
+        });
     const QMetaObject::Connection frames =
         QObject::connect(window.view(), &QOpenGLWidget::frameSwapped, [&] {
+            if (s.onScreenMs < 0 && (s.previewMs >= 0 || s.readyMs >= 0)) s.onScreenMs = now();
             if (s.readyMs < 0) {
                 ++s.framesBefore;
             } else {
@@ -75,13 +82,15 @@ Step stepTo(app::MainWindow& window, int step) {
     QObject::disconnect(started);
     QObject::disconnect(finished);
     QObject::disconnect(frames);
+    QObject::disconnect(previewed);
     if (!shown) s.readyMs = s.drawnMs = s.fullMs = -1.0;
     return s;
 }
 
 void report(const char* what, const std::vector<Step>& steps) {
-    std::vector<double> started, ready, drawn, full, frames;
+    std::vector<double> started, ready, drawn, full, frames, onScreen;
     for (const Step& s : steps) {
+        onScreen.push_back(s.onScreenMs);
         started.push_back(s.startedMs);
         ready.push_back(s.readyMs);
         drawn.push_back(s.drawnMs);
@@ -90,8 +99,10 @@ void report(const char* what, const std::vector<Step>& steps) {
     }
     std::printf("  %-42s median %6.0f ms ready, %6.0f ms drawn, %6.0f ms at full resolution\n",
                 what, bench::median(ready), bench::median(drawn), bench::median(full));
-    std::printf("  %-42s (surfaces asked for at %.0f ms; %.0f frames composed before ready)\n", "",
+    std::printf("  %-42s (surfaces asked for at %.0f ms; %.0f frames composed before ready;\n", "",
                 bench::median(started), bench::median(frames));
+    std::printf("  %-42s  first frame of the step, in reduced or full detail, at %.0f ms)\n", "",
+                bench::median(onScreen));
 }
 
 }  // namespace
