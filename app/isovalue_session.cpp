@@ -34,7 +34,7 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
                                   std::shared_ptr<const StreamedSource> streamed) {
     setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey), std::move(streamed));
     m_prepareJob.cancel();  // a step of other data
-    m_kept.clear();  // other data
+    m_kept.clear();         // other data
     m_result.reset();
     m_view->renderer().setMeshes(nullptr);
     // The members are known now; their figures and clusters come with the first isovalue.
@@ -95,9 +95,10 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     const auto streamed = m_streamed;
-    emit started(m_streamed ? tr("Building the isosurfaces at %1 from the whole data, in slabs...")
-                                  .arg(isovalue)
-                            : tr("Building the isosurfaces at %1...").arg(isovalue));
+    emit started(
+        m_streamed
+            ? tr("Building the isosurfaces at %1 from the whole data, in slabs...").arg(isovalue)
+            : tr("Building the isosurfaces at %1...").arg(isovalue));
     // The full surfaces take over from a preview: none is built or waits any more.
     m_previewJob.cancel();
     m_pendingPreview.reset();
@@ -192,22 +193,30 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
         });
 }
 
+BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
+    std::shared_ptr<const data::Ensemble> ensemble,
+    std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
+    int median, std::vector<int> outliers) {
+    return [=](const std::stop_token& stop, const data::Progress&) {
+        QElapsedTimer timer;
+        timer.start();
+        auto meshes = std::make_shared<prep::IsovalueMeshes>(prep::buildPreviewMeshes(
+            *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration), isovalue, {},
+            stop));
+        meshes->median = median;
+        meshes->outliers = outliers;
+        return BuiltPreview{std::move(meshes), static_cast<double>(timer.nsecsElapsed()) * 1e-9};
+    };
+}
+
 void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
     if (!m_ensemble || !m_moments || !m_buildInFlight || m_awaitingPrepared || m_previewing) return;
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     m_previewInFlight = true;
     m_previewJob.start(
-        [=](const std::stop_token& stop, const data::Progress&) {
-            QElapsedTimer timer;
-            timer.start();
-            // No median or outliers of its own: the step's come with its full surfaces.
-            auto meshes = std::make_shared<prep::IsovalueMeshes>(prep::buildPreviewMeshes(
-                *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration), isovalue, {},
-                stop));
-            return BuiltPreview{std::move(meshes),
-                                static_cast<double>(timer.nsecsElapsed()) * 1e-9};
-        },
+        // No median or outliers of its own: the step's come with its full surfaces.
+        previewWork(ensemble, moments, isovalue, exaggeration, -1, {}),
         [this, ensemble, isovalue](BuiltPreview built) {
             m_previewInFlight = false;
             if (m_buildInFlight && !m_previewing && ensemble == m_ensemble) {
@@ -345,25 +354,13 @@ void IsovalueSession::startPreview(float isovalue, float exaggeration) {
     for (const auto& [previewKey, meshes] : m_keptPreviews) {
         if (previewKey == key) return showPreview(meshes, isovalue, 0.0);
     }
-    const auto ensemble = m_ensemble;
-    const auto moments = m_moments;
     // The median and outliers stay marked as the full result last said.
     const int median = m_result && m_result->meshes ? m_result->meshes->median : -1;
     const std::vector<int> outliers =
         m_result && m_result->meshes ? m_result->meshes->outliers : std::vector<int>{};
     m_previewInFlight = true;
     m_previewJob.start(
-        [=](const std::stop_token& stop, const data::Progress&) {
-            QElapsedTimer timer;
-            timer.start();
-            auto meshes = std::make_shared<prep::IsovalueMeshes>(prep::buildPreviewMeshes(
-                *ensemble, *moments, data::DisplayFrame(ensemble->grid, exaggeration), isovalue, {},
-                stop));
-            meshes->median = median;
-            meshes->outliers = outliers;
-            return BuiltPreview{std::move(meshes),
-                                static_cast<double>(timer.nsecsElapsed()) * 1e-9};
-        },
+        previewWork(m_ensemble, m_moments, isovalue, exaggeration, median, outliers),
         [this, key, isovalue](BuiltPreview built) {
             m_previewInFlight = false;
             ++m_previewsBuilt;

@@ -183,13 +183,18 @@ private:
         std::shared_ptr<const data::MeshSet> meshes;
         double seconds = 0.0;
     };
+    // A preview's work: its meshes marked with this median and these outliers.
+    static BackgroundJob<BuiltPreview>::Work previewWork(
+        std::shared_ptr<const data::Ensemble> ensemble,
+        std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
+        int median, std::vector<int> outliers);
     BackgroundJob<BuiltPreview> m_previewJob{this};
     std::optional<PreviewRequest> m_pendingPreview;
     bool m_previewing = false;
     // A preview job started and not yet handed back (done or dropped): until then new values
     // wait. BackgroundJob::isRunning turns false before its result reaches the GUI thread.
     bool m_previewInFlight = false;
-    bool m_buildInFlight = false;  // the same for the full surfaces' job
+    bool m_buildInFlight = false;     // the same for the full surfaces' job
     bool m_stepPreviewShown = false;  // a step's preview on screen until its full surfaces
     int m_previewsBuilt = 0;
     std::vector<std::pair<std::string, std::shared_ptr<const data::MeshSet>>> m_keptPreviews;

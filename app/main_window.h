@@ -274,7 +274,7 @@ private:
     // count as running yet) to its end; kNoStep when none.
     static constexpr std::size_t kNoStep = static_cast<std::size_t>(-1);
     std::size_t m_readingAhead = kNoStep;
-    int m_stepDirection = 1;  // of the last move between steps: +1 later, -1 earlier
+    int m_stepDirection = 1;        // of the last move between steps: +1 later, -1 earlier
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     IsovalueSession* m_session = nullptr;

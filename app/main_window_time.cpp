@@ -36,8 +36,8 @@ std::size_t timeStepBudget() {
 
 }  // namespace
 
-BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(
-    const data::DataSelection& selection, std::size_t memoryLimit) {
+BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(const data::DataSelection& selection,
+                                                              std::size_t memoryLimit) {
     return [selection, memoryLimit](const std::stop_token& stop, const data::Progress& progress) {
         return loadOverview(
             [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
@@ -253,7 +253,8 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     m_stepChanging = true;
     std::size_t bytes = 0;
-    for (const auto& [index, kept] : m_timeSteps) bytes += kept->ensemble->bytes();  // copies' bytes when streamed
+    for (const auto& [index, kept] : m_timeSteps)
+        bytes += kept->ensemble->bytes();  // copies' bytes when streamed
     // The steps farthest from the one shown go first.
     while (bytes > timeStepBudget() && m_timeSteps.size() > 1) {
         auto farthest = std::max_element(m_timeSteps.begin(), m_timeSteps.end(),

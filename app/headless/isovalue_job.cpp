@@ -91,8 +91,8 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         },
         [&] {
             const auto t = Clock::now();
-            out.distancesToMean = prep::distancesToField(
-                *in.ensemble, {mean.data(), mean.size()}, in.options.isovalue, stop);
+            out.distancesToMean = prep::distancesToField(*in.ensemble, {mean.data(), mean.size()},
+                                                         in.options.isovalue, stop);
             toMeanSeconds = since(t);
             partsDone.partDone();
         });

@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
     std::string problem;
     const auto limit = app::parseMemorySize(limitText, problem);
     if (file.empty() || !limit) {
-        std::fprintf(stderr, "give --file FILE.nc and a valid --memory-limit %s\n", problem.c_str());
+        std::fprintf(stderr, "give --file FILE.nc and a valid --memory-limit %s\n",
+                     problem.c_str());
         return 2;
     }
     app::MainWindow window;
@@ -74,8 +75,7 @@ int main(int argc, char** argv) {
     timer.start();
     window.openFiles({.paths = {file}});
     const bool ok = QTest::qWaitFor(
-        [&] { return !built.isEmpty() || !failed.isEmpty() || !buildFailed.isEmpty(); },
-        3600000);
+        [&] { return !built.isEmpty() || !failed.isEmpty() || !buildFailed.isEmpty(); }, 3600000);
     const double surfacesS = static_cast<double>(timer.elapsed()) / 1000.0;
     if (!ok || built.isEmpty()) {
         std::fprintf(stderr, "no surfaces: %s%s\n",
@@ -89,8 +89,8 @@ int main(int argc, char** argv) {
     std::printf("%s; --memory-limit %s (%.0f MiB)\n", file.c_str(), limitText.c_str(), mib(*limit));
     if (overview.streamed) {
         std::printf("streamed: a copy at %s (%.0f MiB), slab passes within %.0f MiB\n",
-                    app::everyNthPoint(overview.streamed->stride).c_str(), mib(overview.ensemble->bytes()),
-                    mib(overview.streamed->plan.memoryLimit));
+                    app::everyNthPoint(overview.streamed->stride).c_str(),
+                    mib(overview.ensemble->bytes()), mib(overview.streamed->plan.memoryLimit));
     } else {
         std::printf("opened in memory (the limit holds it)\n");
     }
@@ -107,12 +107,13 @@ int main(int argc, char** argv) {
                     static_cast<double>(timer.elapsed()) / 1000.0);
     }
     if (const auto memory = meter.read()) {
-        std::printf("peak resident %.0f MiB, %.0f MiB of it before opening: %.0f MiB taken "
-                    "(%.2f of the limit)\n",
-                    mib(memory->peakResident), mib(memory->residentAtStart),
-                    mib(memory->peakResident - memory->residentAtStart),
-                    static_cast<double>(memory->peakResident - memory->residentAtStart) /
-                        static_cast<double>(*limit));
+        std::printf(
+            "peak resident %.0f MiB, %.0f MiB of it before opening: %.0f MiB taken "
+            "(%.2f of the limit)\n",
+            mib(memory->peakResident), mib(memory->residentAtStart),
+            mib(memory->peakResident - memory->residentAtStart),
+            static_cast<double>(memory->peakResident - memory->residentAtStart) /
+                static_cast<double>(*limit));
     }
     if (!screenshot.empty()) {
         QString error;

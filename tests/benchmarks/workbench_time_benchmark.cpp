@@ -2,11 +2,12 @@
 // defaults: 50 members, 256 x 128 x 16) over 10 steps, written as one NetCDF file with a CF
 // time dimension and opened in the workbench. Prints, per step, the time from the time bar's
 // request to the step's surfaces, clusters and panels handed over, and to its first frame
-// drawn (and to its first frame in reduced detail, for a step never seen): first going forward through the first half of the steps never seen, each asked for
-// as soon as the last is drawn (read and built after the request), then through the second
-// half, each asked for after looking at the last for a few seconds as a forecaster does (read
-// and built ahead meanwhile: MainWindow::readAhead), then going back through them (kept in
-// memory). Needs an X display (xvfb-run -a).
+// drawn (and to its first frame in reduced detail, for a step never seen): first going forward
+// through the first half of the steps never seen, each asked for as soon as the last is drawn (read
+// and built after the request), then through the second half, each asked for after looking at the
+// last for a few seconds as a forecaster does (read and built ahead meanwhile:
+// MainWindow::readAhead), then going back through them (kept in memory). Needs an X display
+// (xvfb-run -a).
 //
 //   ensil_workbench_time_benchmark [--steps N] [--look SECONDS]
 #include <QApplication>
@@ -36,13 +37,13 @@ namespace {
 constexpr int kDefaultSteps = 10;
 
 struct Step {
-    double startedMs = -1.0;  // the step's data in hand and its surfaces asked for
-    double readyMs = -1.0;    // its surfaces, clusters and panels handed over (finished)
-    double drawnMs = -1.0;    // and the first frame composed after that (software OpenGL)
-    double fullMs = -1.0;     // the first of those at full resolution (once steps pause)
-    int framesBefore = 0;     // frames composed between the request and ready
-    double previewMs = -1.0;  // a step never seen: its reduced-detail surfaces handed over
-    double onScreenMs = -1.0; // the first frame showing the step, in reduced or full detail
+    double startedMs = -1.0;   // the step's data in hand and its surfaces asked for
+    double readyMs = -1.0;     // its surfaces, clusters and panels handed over (finished)
+    double drawnMs = -1.0;     // and the first frame composed after that (software OpenGL)
+    double fullMs = -1.0;      // the first of those at full resolution (once steps pause)
+    int framesBefore = 0;      // frames composed between the request and ready
+    double previewMs = -1.0;   // a step never seen: its reduced-detail surfaces handed over
+    double onScreenMs = -1.0;  // the first frame showing the step, in reduced or full detail
 };
 
 // Asks for `step` and waits until its surfaces are on screen and drawn. Ready is when the
