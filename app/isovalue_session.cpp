@@ -52,6 +52,7 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
                                   std::shared_ptr<const StreamedSource> streamed) {
     // A step prepared ahead goes on: it may be this one (setIsovalue then waits for it).
     m_job.cancel();
+    m_motionJob.cancel();
     m_awaitingPrepared = false;
     forgetPreviews();
     m_streamed = std::move(streamed);
@@ -113,9 +114,11 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
         m_buildInFlight = true;
         m_awaitingPrepared = true;
         m_awaitedIsovalue = isovalue;
+        m_awaitedExaggeration = exaggeration;
         return;
     }
     m_prepareJob.cancel();  // a guess the user did not follow: its cores are wanted here
+    m_motionJob.cancel();
     IsovalueJobInput input;
     input.options = options;
     input.verticalExaggeration = exaggeration;
@@ -135,10 +138,10 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
             input.moments = moments.get();
             return buildResult(input, streamed.get(), stop, progress);
         },
-        [this, isovalue, key](IsovalueResult r) {
+        [this, isovalue, exaggeration, key](IsovalueResult r) {
             m_buildInFlight = false;
             if (!r.keptInMemory) keep(key, r);
-            show(std::move(r), isovalue);
+            show(std::move(r), isovalue, exaggeration, key);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
             if (m_awaitingPrepared) return;  // given up for the step prepared ahead
@@ -166,7 +169,13 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
         [=](const std::stop_token& stop, const data::Progress& progress) mutable {
             input.ensemble = ensemble.get();
             input.moments = moments.get();
-            return buildResult(input, nullptr, stop, progress);
+            IsovalueResult r = buildResult(input, nullptr, stop, progress);
+            // Its motion meshes too: its first frame, a motion frame, is drawn from them.
+            r.motionMeshes =
+                previewWork(ensemble, moments, input.options.isovalue, input.verticalExaggeration,
+                            r.meshes->median, r.meshes->outliers)(stop, {})
+                    .meshes;
+            return r;
         },
         // When the step is waited for, showing it is the last thing done: what that sets off
         // (the next step read and prepared ahead) replaces these functions while they run.
@@ -177,7 +186,7 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
                 return;
             }
             m_buildInFlight = false;
-            show(std::move(r), m_awaitedIsovalue);
+            show(std::move(r), m_awaitedIsovalue, m_awaitedExaggeration, key);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
             // A guess that failed says nothing, unless the user is waiting for it.
@@ -207,6 +216,28 @@ BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
         meshes->outliers = outliers;
         return BuiltPreview{std::move(meshes), static_cast<double>(timer.nsecsElapsed()) * 1e-9};
     };
+}
+
+void IsovalueSession::buildMotionMeshes(const std::string& key, float exaggeration) {
+    if (!m_ensemble || !m_moments || !m_result || !m_result->meshes) return;
+    const auto shown = m_result->meshes;
+    m_motionJob.start(
+        previewWork(m_ensemble, m_moments, shown->isovalue, exaggeration, shown->median,
+                    shown->outliers),
+        [this, key, shown](BuiltPreview built) {
+            if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
+            m_result->motionMeshes = built.meshes;
+            for (auto& [keptKey, kept] : m_kept) {
+                if (keptKey != key || kept->meshes != shown) continue;
+                auto withMotion = std::make_shared<IsovalueResult>(*kept);
+                withMotion->motionMeshes = built.meshes;
+                kept = std::move(withMotion);
+            }
+            if (m_view->renderer().meshes() == shown) {
+                m_view->renderer().setMotionMeshes(std::move(built.meshes));
+            }
+        },
+        [](const std::exception_ptr&, bool) {});  // none: the full meshes are drawn in motion
 }
 
 void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
@@ -292,15 +323,26 @@ bool IsovalueSession::showKept(float isovalue, float exaggeration) {
     IsovalueResult r = *result;
     r.keptInMemory = true;
     r.seconds = 0.0;
-    show(std::move(r), isovalue);
+    show(std::move(r), isovalue, exaggeration, keptKey(isovalue, exaggeration));
     return true;
 }
 
-void IsovalueSession::show(IsovalueResult result, float isovalue) {
+void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggeration,
+                           const std::string& key) {
     endStepPreview(true);
     m_result = std::make_unique<IsovalueResult>(std::move(result));
     // While the user scrubs, the view follows the pointer; endPreview shows these after.
-    if (!m_previewing) m_view->renderer().setMeshes(m_result->meshes);
+    if (!m_previewing) {
+        m_view->renderer().setMeshes(m_result->meshes);
+        m_view->renderer().setMotionMeshes(m_result->motionMeshes);
+    }
+    // After the result's first frame, whose cores the build would take.
+    if (!m_result->motionMeshes) {
+        const auto shown = m_result->meshes;
+        m_view->afterNextFrame(this, [this, key, exaggeration, shown] {
+            if (m_result && m_result->meshes == shown) buildMotionMeshes(key, exaggeration);
+        });
+    }
     // Same names: the selection keeps what the user selected and hid.
     ui::MemberFigures figures;
     figures.names = memberNames();
@@ -401,6 +443,7 @@ void IsovalueSession::endPreview() {
     // Released where it started: the full surfaces of that value come back.
     if (!m_buildInFlight && m_result) {
         m_view->renderer().setMeshes(m_result->meshes);
+        m_view->renderer().setMotionMeshes(m_result->motionMeshes);
         m_view->update();
     }
 }

@@ -48,6 +48,10 @@ struct IsovalueResult {
     std::vector<int> outliers;
     std::vector<float> exceedanceColumnMaximum;           // for the floor: max over z of P(f > c)
     std::shared_ptr<const data::FieldValues> exceedance;  // P(f > c), for a section
+    // The members and mean in reduced detail, drawn while the view moves
+    // (gl::Renderer::setMotionMeshes); built after the result is shown, or with a step built
+    // ahead. Null until then.
+    std::shared_ptr<const data::MeshSet> motionMeshes;
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;
@@ -139,7 +143,11 @@ signals:
     void previewShown(float isovalue, double seconds);
 
 private:
-    void show(IsovalueResult result, float isovalue);
+    // Shows the result kept (or to keep) under `key`, and builds its motion meshes if it has
+    // none.
+    void show(IsovalueResult result, float isovalue, float verticalExaggeration,
+              const std::string& key);
+    void buildMotionMeshes(const std::string& key, float verticalExaggeration);
     void startPreview(float isovalue, float verticalExaggeration);
     void startWaitingPreview();
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
@@ -174,6 +182,7 @@ private:
     std::string m_preparingKey;
     bool m_awaitingPrepared = false;
     float m_awaitedIsovalue = 0.0F;
+    float m_awaitedExaggeration = 1.0F;
 
     struct PreviewRequest {
         float isovalue = 0.0F;
@@ -189,6 +198,7 @@ private:
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
     BackgroundJob<BuiltPreview> m_previewJob{this};
+    BackgroundJob<BuiltPreview> m_motionJob{this};  // the shown result's motion meshes
     std::optional<PreviewRequest> m_pendingPreview;
     bool m_previewing = false;
     // A preview job started and not yet handed back (done or dropped): until then new values

@@ -65,8 +65,13 @@ void MainWindow::createTimeBar() {
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
         // The next step read ahead (and built) first: the strip's filling (started when the
-        // clusters are recorded) waits for it rather than taking a worker it needs.
-        readAhead();
+        // clusters are recorded) waits for it rather than taking a worker it needs. Not
+        // playing, it starts once this step's first frame is drawn, whose cores it would take.
+        if (m_timeBar->isPlaying()) {
+            readAhead();
+        } else {
+            m_view->afterNextFrame(this, [this] { readAhead(); });
+        }
         recordStepClusters();
     });
     connect(m_selection, &ui::MemberSelection::clustersChanged, this,

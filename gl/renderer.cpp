@@ -104,6 +104,7 @@ void Renderer::initialize() {
     m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;
+    m_motionMeshesDirty = true;
 }
 
 void Renderer::releaseGpuResources() {
@@ -122,6 +123,7 @@ void Renderer::releaseGpuResources() {
     f.glDeleteTextures(1, &m_gpu->spreadTexture);
     f.glDeleteVertexArrays(1, &m_gpu->emptyVao);
     m_gpu->meshes.release(f);
+    m_gpu->motionMeshes.release(f);
     m_gpu->targets.release(f);
     m_gpu->shaders.clear();
     m_gpu.reset();
@@ -179,9 +181,9 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     if (m_scene.settings.showLegend && contextColouredBySpread() && in.showMean) {
         in.colourScales.push_back(ColourScale{
             QStringLiteral("context: ") + m_scene.spread.quantity +
-                (m_scene.spread.units.isEmpty() ? QString()
-                                                : QStringLiteral(" [") + m_scene.spread.units +
-                                                      QStringLiteral("]")),
+                (m_scene.spread.units.isEmpty()
+                     ? QString()
+                     : QStringLiteral(" [") + m_scene.spread.units + QStringLiteral("]")),
             m_scene.spread.minimum, m_scene.spread.maximum});
     }
     if (m_scene.settings.showLegend && sectionShown() && !m_scene.section.quantity.isEmpty()) {
@@ -199,6 +201,7 @@ void Renderer::setGrid(const data::Grid& grid) {
     m_axisTablesDirty = true;
     m_mapLinesDirty = true;
     m_meshesDirty = true;  // the rims lie on the box's faces
+    m_motionMeshesDirty = true;
     resetCamera();
 }
 
@@ -244,9 +247,9 @@ void Renderer::frameTheBox() {
                 room.top + room.legend.height() + room.colourBar.height() + 3 * room.margin;
             std::vector<Camera::NdcRegion> candidates;
             if (stackedHeight <= logical.height()) {
-                candidates.push_back(region(
-                    std::max(room.legend.width(), room.colourBar.width()) + strip,
-                    room.axisLabels));
+                candidates.push_back(
+                    region(std::max(room.legend.width(), room.colourBar.width()) + strip,
+                           room.axisLabels));
             }
             // Below the box its tick values and axis title come before the colour bar.
             candidates.push_back(region(room.legend.width() + (room.legend.isEmpty() ? 0 : strip),
@@ -254,8 +257,8 @@ void Renderer::frameTheBox() {
                                             (room.colourBar.isEmpty() ? 0 : strip)));
             // The share of the view the box's rectangle takes with this camera.
             const auto boxShare = [&](const Camera& camera) {
-                const glm::ivec4 r = screenRectangle(camera.viewProjection(viewAspect()),
-                                                     size.x, size.y);
+                const glm::ivec4 r =
+                    screenRectangle(camera.viewProjection(viewAspect()), size.x, size.y);
                 return static_cast<double>(r.z) * r.w / (static_cast<double>(size.x) * size.y);
             };
             // Not at any price: in a view smaller than ensil supports (480 x 320) the room

@@ -32,6 +32,7 @@ class QOpenGLShaderProgram;
 namespace ensil::gl {
 
 struct GpuMesh;
+class GpuMeshCache;
 struct ShaderFiles;
 
 // What lies under a pixel: the member (-1 for none) and its cluster (-1 when unknown).
@@ -186,8 +187,18 @@ public:
     // How a coastline is drawn, for tests that look for it: a light core over a dark casing.
     static constexpr glm::vec4 kCoastlineColor{0.97F, 0.97F, 0.97F, 1.0F};
     void setVerticalExaggeration(float exaggeration);
-    // The meshes of the current isovalue (uploaded at the next frame); null clears them.
+    // The meshes of the current isovalue (uploaded at the next frame); null clears them, and
+    // their motion meshes too.
     void setMeshes(std::shared_ptr<const data::MeshSet> meshes);
+    // The same members and mean in reduced detail (preprocessing/preview_meshes.h), drawn in
+    // their place in frames below full resolution (camera motion, a step passing): with a
+    // software OpenGL a frame of many small triangles costs by the triangle, not only by the
+    // pixel. The context surfaces, the median and outliers and picking stay the full meshes'.
+    // Null, or a different member count: the full meshes in every frame.
+    void setMotionMeshes(std::shared_ptr<const data::MeshSet> meshes);
+    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& motionMeshes() const {
+        return m_scene.motionMeshes;
+    }
     [[nodiscard]] const std::shared_ptr<const data::MeshSet>& meshes() const {
         return m_scene.meshes;
     }
@@ -273,6 +284,9 @@ private:
     // The context surface RenderSettings::context asks for (the mean's when that one is not
     // there).
     [[nodiscard]] const GpuMesh& contextMesh() const;
+    // The members and mean this frame draws: the motion meshes in a frame below full
+    // resolution when there are any, else the full ones.
+    [[nodiscard]] const GpuMeshCache& drawnMeshes() const;
     // Every shown member's rims (and the mean's), after the surfaces (RenderSettings::showRims);
     // with `pick`, the members' ids into the id pass instead. `viewport`: the pass's pixels.
     void drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bool pick);
@@ -325,6 +339,7 @@ private:
         SectionVolume spread;
         std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
         std::shared_ptr<const data::MeshSet> meshes;
+        std::shared_ptr<const data::MeshSet> motionMeshes;
         std::vector<MemberAppearance> appearance;
         RenderSettings settings;
         glm::ivec2 lastSize{0};   // the last frame's size, which picking draws at
@@ -342,6 +357,7 @@ private:
     bool m_mapLinesDirty = false;
     bool m_axisTablesDirty = false;
     bool m_meshesDirty = false;
+    bool m_motionMeshesDirty = false;
     glm::vec4 m_background = kDefaultBackground;
     float m_resolutionScale = 1.0F;
     // The camera as the last framing left it: still so, it is framed again when the view's

@@ -49,6 +49,10 @@ struct Renderer::Gpu {
     GLuint axisTables = 0;  // row a: the display coordinate of every grid index along axis a
     glm::ivec3 axisSize{0};
     GpuMeshCache meshes;
+    // The same surfaces in reduced detail (Renderer::setMotionMeshes), and which of the two the
+    // frame being drawn takes its members and mean from.
+    GpuMeshCache motionMeshes;
+    const GpuMeshCache* drawn = &meshes;
     RenderTargets targets;
 };
 

@@ -47,6 +47,12 @@ void drawMesh(GlFunctions& f, QOpenGLShaderProgram& program, const GpuMesh& mesh
 void Renderer::setMeshes(std::shared_ptr<const data::MeshSet> meshes) {
     m_scene.meshes = std::move(meshes);
     m_meshesDirty = true;
+    setMotionMeshes(nullptr);
+}
+
+void Renderer::setMotionMeshes(std::shared_ptr<const data::MeshSet> meshes) {
+    m_scene.motionMeshes = std::move(meshes);
+    m_motionMeshesDirty = true;
 }
 
 std::size_t Renderer::gpuBytes() const { return m_gpu ? m_gpu->meshes.bytes() : 0; }
@@ -75,17 +81,21 @@ void Renderer::uploadAxisTables() {
 }
 
 void Renderer::uploadMeshesIfChanged() {
-    if (!m_meshesDirty) return;
-    m_meshesDirty = false;
     GlFunctions& f = *m_gpu->f;
-    if (m_scene.meshes) {
-        const glm::vec3 gridLast(static_cast<float>(m_scene.grid.nx() - 1),
-                                 static_cast<float>(m_scene.grid.ny() - 1),
-                                 static_cast<float>(m_scene.grid.nz() - 1));
-        m_gpu->meshes.upload(f, *m_scene.meshes, gridLast);
-    } else {
-        m_gpu->meshes.release(f);
-    }
+    const glm::vec3 gridLast(static_cast<float>(m_scene.grid.nx() - 1),
+                             static_cast<float>(m_scene.grid.ny() - 1),
+                             static_cast<float>(m_scene.grid.nz() - 1));
+    const auto upload = [&](bool& dirty, GpuMeshCache& cache, const data::MeshSet* meshes) {
+        if (!dirty) return;
+        dirty = false;
+        if (meshes) {
+            cache.upload(f, *meshes, gridLast);
+        } else {
+            cache.release(f);
+        }
+    };
+    upload(m_meshesDirty, m_gpu->meshes, m_scene.meshes.get());
+    upload(m_motionMeshesDirty, m_gpu->motionMeshes, m_scene.motionMeshes.get());
 }
 
 Renderer::Selection Renderer::selectionShown() const {
@@ -195,7 +205,8 @@ glm::vec3 Renderer::memberColour(std::size_t member, const MemberAppearance& a,
     if (m_scene.settings.showBand && !a.selected && !isOutlier(member)) {
         colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
     }
-    if (static_cast<int>(member) == m_highlighted) colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
+    if (static_cast<int>(member) == m_highlighted)
+        colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);
     return colour;
 }
 
@@ -241,7 +252,7 @@ void Renderer::drawRims(const glm::mat4& viewProjection, glm::ivec2 viewport, bo
         draw(contextMesh(), kMeanSurfaceColor, kRimHalfWidth);
     }
     const Selection selection = selectionShown();
-    const std::vector<GpuMesh>& members = m_gpu->meshes.members();
+    const std::vector<GpuMesh>& members = drawnMeshes().members();
     for (std::size_t m = 0; m < members.size(); ++m) {
         MemberAppearance a = appearance(m);
         const bool animated = static_cast<int>(m) == m_animated;
@@ -283,7 +294,7 @@ bool Renderer::translucentMode() const {
 
 void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
     GlFunctions& f = *m_gpu->f;
-    const std::vector<GpuMesh>& members = m_gpu->meshes.members();
+    const std::vector<GpuMesh>& members = drawnMeshes().members();
     QOpenGLShaderProgram* program = programs.bound;
     // The silhouette modes draw through the culling geometry shader; solid and semi-transparent
     // surfaces need every triangle.
@@ -367,8 +378,10 @@ void Renderer::drawMemberPass(SurfacePrograms& programs, MemberPass pass) {
     setClipDistances(f, false);
 }
 
+const GpuMeshCache& Renderer::drawnMeshes() const { return *m_gpu->drawn; }
+
 const GpuMesh& Renderer::contextMesh() const {
-    const GpuMeshCache& meshes = m_gpu->meshes;
+    const GpuMeshCache& meshes = drawnMeshes();
     switch (m_scene.settings.context) {
         case ContextSurface::Median: {
             const int median = m_scene.meshes ? m_scene.meshes->median : -1;
@@ -378,7 +391,8 @@ const GpuMesh& Renderer::contextMesh() const {
             break;
         }
         case ContextSurface::Probability:
-            if (meshes.probability().vao != 0) return meshes.probability();
+            // The summaries have no reduced detail: the full meshes' always.
+            if (m_gpu->meshes.probability().vao != 0) return m_gpu->meshes.probability();
             break;
         case ContextSurface::Mean:
             break;
@@ -389,6 +403,9 @@ const GpuMesh& Renderer::contextMesh() const {
 void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height) {
     GlFunctions& f = *m_gpu->f;
     uploadMeshesIfChanged();
+    const bool reduced = m_resolutionScale < 1.0F && m_scene.motionMeshes &&
+                         m_gpu->motionMeshes.members().size() == m_gpu->meshes.members().size();
+    m_gpu->drawn = reduced ? &m_gpu->motionMeshes : &m_gpu->meshes;
     if (m_gpu->meshes.members().empty() && m_gpu->meshes.mean().vao == 0) return;
 
     SurfacePrograms programs = bindSurfacePrograms(viewProjection, {width, height}, false, true);
@@ -402,8 +419,8 @@ void Renderer::drawMeshes(const glm::mat4& viewProjection, int width, int height
     f.glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
 
     const Selection selection = selectionShown();
-    const bool translucentMean = m_scene.settings.showMean && m_scene.settings.meanTranslucent() &&
-                                 contextMesh().vao != 0;
+    const bool translucentMean =
+        m_scene.settings.showMean && m_scene.settings.meanTranslucent() && contextMesh().vao != 0;
     const bool band = m_scene.settings.showBand && m_gpu->meshes.bandOuter().vao != 0;
     if (translucentMode() || (selection.any && !selection.solid) || translucentMean || band) {
         // Every isosurface lies inside the data box: the transparency targets are drawn and
@@ -456,6 +473,7 @@ std::vector<std::uint32_t> Renderer::drawIds(int x0, int y0, int w, int h) {
     GlFunctions& f = *m_gpu->f;
     const int width = m_scene.lastSize.x, height = m_scene.lastSize.y;
     uploadMeshesIfChanged();
+    m_gpu->drawn = &m_gpu->meshes;  // picks answer for the full surfaces
     if (m_axisTablesDirty) uploadAxisTables();
     m_gpu->targets.ensurePick(f, width, height);
     // Only the window asked for is drawn: picking on hover stays cheap.

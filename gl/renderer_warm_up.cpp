@@ -70,6 +70,7 @@ void Renderer::warmUp() {
     m_mapLinesDirty = true;
     m_axisTablesDirty = true;
     m_meshesDirty = true;
+    m_motionMeshesDirty = true;
 }
 
 }  // namespace ensil::gl

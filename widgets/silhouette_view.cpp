@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 namespace ensil::ui {
 namespace {
@@ -71,6 +72,16 @@ void SilhouetteView::showPassingChange() {
     m_moving = true;
     m_settleTimer.start();
     update();
+}
+
+void SilhouetteView::afterNextFrame(QObject* context, std::function<void()> work) {
+    auto connection = std::make_shared<QMetaObject::Connection>();
+    *connection =
+        connect(this, &QOpenGLWidget::frameSwapped, context, [connection, work = std::move(work)] {
+            disconnect(*connection);
+            work();
+        });
+    update();  // so that there is a next frame
 }
 
 void SilhouetteView::stopMoving() {

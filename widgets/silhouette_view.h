@@ -89,6 +89,9 @@ public slots:
     // as a motion frame, at the resolution motion gets, and at full resolution once such
     // changes pause, as wheel turns are, so a step is on screen without a full software frame.
     void showPassingChange();
+    // Runs `work` once, after the next frame is on screen: background work that would take the
+    // cores a software OpenGL's frame needs starts when that frame is drawn.
+    void afterNextFrame(QObject* context, std::function<void()> work);
 
 signals:
     // Emitted once when the view cannot render (no OpenGL 4.1 core, a shader that fails).

@@ -169,6 +169,10 @@ TEST(MainWindowTime, TheNextStepIsReadAndBuiltAheadAndShownAtOnceAsBuiltDirectly
     ASSERT_TRUE(stepShown(window, 1));
     const app::IsovalueResult& shown = *window.isovalueSession()->result();
     EXPECT_TRUE(shown.keptInMemory);
+    // Built with its motion meshes, which its first frame (a motion frame) draws.
+    ASSERT_NE(shown.motionMeshes, nullptr);
+    EXPECT_EQ(shown.motionMeshes->members.size(), shown.meshes->members.size());
+    EXPECT_EQ(window.view()->renderer().motionMeshes(), shown.motionMeshes);
 
     // The same surfaces, distances and clusters as built directly for step 1.
     const app::EnsembleOverview& step = *window.overview();
@@ -265,6 +269,9 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     };
     EXPECT_LT(indices(*previewed), indices(*full.meshes)) << "reduced detail";
     EXPECT_EQ(window.view()->renderer().meshes(), full.meshes) << "the full surfaces replace it";
+    // Their reduced detail for motion frames follows, built after their first frame.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return session.result()->motionMeshes != nullptr; }, 30000));
+    EXPECT_EQ(window.view()->renderer().motionMeshes(), session.result()->motionMeshes);
     ASSERT_TRUE(QTest::qWaitFor([&] { return !window.view()->inMotion(); }, 10000))
         << "the view settles at full resolution";
 }

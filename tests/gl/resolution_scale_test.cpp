@@ -61,3 +61,45 @@ TEST_F(ResolutionScaleTest, ScaleIsClamped) {
     m_renderer.setResolutionScale(3.0F);
     EXPECT_EQ(m_renderer.resolutionScale(), 1.0F);
 }
+
+// Frames below full resolution draw the members from the motion meshes when there are any; at
+// full resolution, and for picking, the full meshes always. Motion meshes with nothing in them
+// make the difference plain.
+TEST_F(ResolutionScaleTest, FramesBelowFullResolutionDrawTheMotionMeshes) {
+    m_renderer.settings().thickness = 0.05F;
+    m_renderer.settings().showMean = false;
+    const auto full = m_renderer.meshes();
+    auto empty = std::make_shared<data::MeshSet>();
+    empty->members.resize(full->members.size());
+    // What a frame at half resolution shows with the full meshes, and with none (the box).
+    m_renderer.setResolutionScale(0.5F);
+    const QImage withFull = draw();
+    m_renderer.setMeshes(empty);
+    const QImage withNone = draw();
+    ASSERT_GT(test::differingFraction(withFull, withNone, 16), 0.01) << "the members are seen";
+    m_renderer.setMeshes(full);
+    m_renderer.setResolutionScale(1.0F);
+    const QImage still = draw();
+
+    m_renderer.setMotionMeshes(empty);
+    m_renderer.setResolutionScale(0.5F);
+    EXPECT_EQ(test::differingFraction(draw(), withNone, 0), 0.0)
+        << "the motion meshes (nothing) are drawn";
+    m_renderer.settings().mode = gl::RenderMode::OpaqueSurfaces;
+    EXPECT_NE(m_renderer.pick(kWidth / 2, kHeight / 2).member, -1)
+        << "picking answers for the full meshes";
+    m_renderer.settings().mode = gl::RenderMode::ShadedSilhouettes;
+    m_renderer.setResolutionScale(1.0F);
+    EXPECT_EQ(test::differingFraction(draw(), still, 0), 0.0) << "still: the full meshes";
+
+    // Another member count cannot stand for these members: the full meshes are drawn.
+    auto fewer = std::make_shared<data::MeshSet>();
+    fewer->members.resize(full->members.size() - 1);
+    m_renderer.setMotionMeshes(fewer);
+    m_renderer.setResolutionScale(0.5F);
+    EXPECT_EQ(test::differingFraction(draw(), withFull, 0), 0.0);
+    // New meshes drop the old motion meshes.
+    m_renderer.setMotionMeshes(empty);
+    m_renderer.setMeshes(full);
+    EXPECT_EQ(test::differingFraction(draw(), withFull, 0), 0.0);
+}
