@@ -8,7 +8,7 @@
 
 namespace {
 
-long minorFaults() {
+[[maybe_unused]] long minorFaults() {
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     return usage.ru_minflt;
@@ -17,7 +17,7 @@ long minorFaults() {
 constexpr std::size_t kPage = 4096;
 
 // A block like a member's working buffers, every page written, then freed.
-void touchAndFree(std::size_t bytes) {
+[[maybe_unused]] void touchAndFree(std::size_t bytes) {
     auto* block = static_cast<volatile char*>(::operator new(bytes));
     for (std::size_t i = 0; i < bytes; i += kPage) block[i] = 1;
     ::operator delete(const_cast<char*>(block));
