@@ -65,9 +65,12 @@ void MainWindow::createTimeBar() {
         m_clusteredStep = static_cast<int>(m_requested->timeIndex);
         m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
         // The next step read ahead (and built) first: the strip's filling (started when the
-        // clusters are recorded) waits for it rather than taking a worker it needs. Not
-        // playing, it starts once this step's first frame is drawn, whose cores it would take.
-        if (m_timeBar->isPlaying()) {
+        // clusters are recorded) waits for it rather than taking a worker it needs. A step
+        // shown at once (built ahead, or kept) has its first frame still to draw, whose cores
+        // the reading would take: then it starts after that frame, unless playing. A step built
+        // here has been on screen in reduced detail; its next is read at once.
+        const IsovalueResult* shown = m_session->result();
+        if (m_timeBar->isPlaying() || shown == nullptr || !shown->keptInMemory) {
             readAhead();
         } else {
             m_view->afterNextFrame(this, [this] { readAhead(); });
