@@ -91,8 +91,6 @@ IsovalueResult buildResult(const IsovalueJobInput& input, const StreamedSource* 
 
 void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     if (!m_ensemble) return;
-    prep::PipelineOptions options;
-    options.isovalue = isovalue;
     const auto ensemble = m_ensemble;
     const auto moments = m_moments;
     const auto streamed = m_streamed;
@@ -119,12 +117,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     }
     m_prepareJob.cancel();  // a guess the user did not follow: its cores are wanted here
     m_motionJob.cancel();
-    IsovalueJobInput input;
-    input.options = options;
-    input.verticalExaggeration = exaggeration;
-    input.cacheDirectory = m_cacheDirectory.toStdString();
-    input.sourceKey = m_sourceKey;
-    input.linkage = m_linkage;
+    IsovalueJobInput input = jobInput(m_sourceKey, isovalue, exaggeration);
     m_buildInFlight = true;
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) mutable {
@@ -158,12 +151,7 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
     const std::string key = keyOf(sourceKey, isovalue, exaggeration);
     if (kept(key) || (m_prepareJob.isRunning() && m_preparingKey == key)) return;
     if (m_awaitingPrepared) return;  // the step shown is still waiting for the last one
-    IsovalueJobInput input;
-    input.options.isovalue = isovalue;
-    input.verticalExaggeration = exaggeration;
-    input.cacheDirectory = m_cacheDirectory.toStdString();
-    input.sourceKey = std::move(sourceKey);
-    input.linkage = m_linkage;
+    IsovalueJobInput input = jobInput(std::move(sourceKey), isovalue, exaggeration);
     m_preparingKey = key;
     m_prepareJob.start(
         [=](const std::stop_token& stop, const data::Progress& progress) mutable {
@@ -171,10 +159,9 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
             input.moments = moments.get();
             IsovalueResult r = buildResult(input, nullptr, stop, progress);
             // Its motion meshes too: its first frame, a motion frame, is drawn from them.
-            r.motionMeshes =
-                previewWork(ensemble, moments, input.options.isovalue, input.verticalExaggeration,
-                            r.meshes->median, r.meshes->outliers)(stop, {})
-                    .meshes;
+            r.motionMeshes = previewWork(ensemble, moments, input.options.isovalue,
+                                         input.verticalExaggeration, -1, {})(stop, {})
+                                 .meshes;
             return r;
         },
         // When the step is waited for, showing it is the last thing done: what that sets off
@@ -221,23 +208,45 @@ BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
 void IsovalueSession::buildMotionMeshes(const std::string& key, float exaggeration) {
     if (!m_ensemble || !m_moments || !m_result || !m_result->meshes) return;
     const auto shown = m_result->meshes;
+    // The preview of this very isovalue and step (the scrub's last, or the step's) serves as it
+    // is; otherwise it is built. The renderer takes the median and outliers from the full
+    // meshes, so the motion meshes need none.
+    if (auto preview = keptPreview(key)) return attachMotionMeshes(key, shown, std::move(preview));
     m_motionJob.start(
-        previewWork(m_ensemble, m_moments, shown->isovalue, exaggeration, shown->median,
-                    shown->outliers),
+        previewWork(m_ensemble, m_moments, shown->isovalue, exaggeration, -1, {}),
         [this, key, shown](BuiltPreview built) {
-            if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
-            m_result->motionMeshes = built.meshes;
-            for (auto& [keptKey, kept] : m_kept) {
-                if (keptKey != key || kept->meshes != shown) continue;
-                auto withMotion = std::make_shared<IsovalueResult>(*kept);
-                withMotion->motionMeshes = built.meshes;
-                kept = std::move(withMotion);
-            }
-            if (m_view->renderer().meshes() == shown) {
-                m_view->renderer().setMotionMeshes(std::move(built.meshes));
-            }
+            attachMotionMeshes(key, shown, std::move(built.meshes));
         },
-        [](const std::exception_ptr&, bool) {});  // none: the full meshes are drawn in motion
+        // None: the full meshes are drawn in motion.
+        [](const std::exception_ptr&, bool) {});
+}
+
+void IsovalueSession::attachMotionMeshes(const std::string& key,
+                                         const std::shared_ptr<const data::MeshSet>& shown,
+                                         std::shared_ptr<const data::MeshSet> motion) {
+    if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
+    m_result->motionMeshes = motion;
+    for (auto& [keptKey, kept] : m_kept) {
+        if (keptKey != key || kept->meshes != shown) continue;
+        auto withMotion = std::make_shared<IsovalueResult>(*kept);
+        withMotion->motionMeshes = motion;
+        kept = std::move(withMotion);
+    }
+    if (m_view->renderer().meshes() == shown) m_view->renderer().setMotionMeshes(std::move(motion));
+}
+
+std::shared_ptr<const data::MeshSet> IsovalueSession::keptPreview(const std::string& key) const {
+    for (const auto& [previewKey, meshes] : m_keptPreviews) {
+        if (previewKey == key) return meshes;
+    }
+    return nullptr;
+}
+
+void IsovalueSession::keepPreview(const std::string& key,
+                                  std::shared_ptr<const data::MeshSet> meshes) {
+    std::erase_if(m_keptPreviews, [&key](const auto& entry) { return entry.first == key; });
+    m_keptPreviews.emplace(m_keptPreviews.begin(), key, std::move(meshes));
+    if (m_keptPreviews.size() > kKeptPreviews) m_keptPreviews.resize(kKeptPreviews);
 }
 
 void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
@@ -248,8 +257,9 @@ void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
     m_previewJob.start(
         // No median or outliers of its own: the step's come with its full surfaces.
         previewWork(ensemble, moments, isovalue, exaggeration, -1, {}),
-        [this, ensemble, isovalue](BuiltPreview built) {
+        [this, ensemble, isovalue, key = keptKey(isovalue, exaggeration)](BuiltPreview built) {
             m_previewInFlight = false;
+            if (ensemble == m_ensemble) keepPreview(key, built.meshes);
             if (m_buildInFlight && !m_previewing && ensemble == m_ensemble) {
                 m_stepPreviewShown = true;
                 // Motion frames until the full surfaces (show) let the view settle.
@@ -300,6 +310,17 @@ void IsovalueSession::reportFailure(const std::exception_ptr& error, bool cancel
     } catch (...) {
         emit failed(tr("unknown error"));
     }
+}
+
+IsovalueJobInput IsovalueSession::jobInput(std::string sourceKey, float isovalue,
+                                           float exaggeration) const {
+    IsovalueJobInput input;
+    input.options.isovalue = isovalue;
+    input.verticalExaggeration = exaggeration;
+    input.cacheDirectory = m_cacheDirectory.toStdString();
+    input.sourceKey = std::move(sourceKey);
+    input.linkage = m_linkage;
+    return input;
 }
 
 std::string IsovalueSession::keyOf(const std::string& sourceKey, float isovalue,
@@ -393,9 +414,7 @@ void IsovalueSession::startPreview(float isovalue, float exaggeration) {
     const std::string key = keptKey(isovalue, exaggeration);
     // Shown before, in full or as a preview: at once, from memory.
     if (const auto result = kept(key)) return showPreview(result->meshes, isovalue, 0.0);
-    for (const auto& [previewKey, meshes] : m_keptPreviews) {
-        if (previewKey == key) return showPreview(meshes, isovalue, 0.0);
-    }
+    if (auto preview = keptPreview(key)) return showPreview(std::move(preview), isovalue, 0.0);
     // The median and outliers stay marked as the full result last said.
     const int median = m_result && m_result->meshes ? m_result->meshes->median : -1;
     const std::vector<int> outliers =
@@ -406,8 +425,7 @@ void IsovalueSession::startPreview(float isovalue, float exaggeration) {
         [this, key, isovalue](BuiltPreview built) {
             m_previewInFlight = false;
             ++m_previewsBuilt;
-            m_keptPreviews.emplace(m_keptPreviews.begin(), key, built.meshes);
-            if (m_keptPreviews.size() > kKeptPreviews) m_keptPreviews.resize(kKeptPreviews);
+            keepPreview(key, built.meshes);
             showPreview(std::move(built.meshes), isovalue, built.seconds);
         },
         // A preview overtaken by the full surfaces or a new ensemble is dropped; one that

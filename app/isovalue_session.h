@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/background_job.h"
+#include "app/headless/isovalue_job.h"
 #include "app/headless/workbench_reading.h"
 #include "data/ensemble.h"
 #include "data/packed_mesh.h"
@@ -148,6 +149,15 @@ private:
     void show(IsovalueResult result, float isovalue, float verticalExaggeration,
               const std::string& key);
     void buildMotionMeshes(const std::string& key, float verticalExaggeration);
+    // The result showing `shown` (kept under `key`) gets these motion meshes, on screen too.
+    void attachMotionMeshes(const std::string& key,
+                            const std::shared_ptr<const data::MeshSet>& shown,
+                            std::shared_ptr<const data::MeshSet> motion);
+    [[nodiscard]] std::shared_ptr<const data::MeshSet> keptPreview(const std::string& key) const;
+    void keepPreview(const std::string& key, std::shared_ptr<const data::MeshSet> meshes);
+    // A job's input for this data, isovalue and exaggeration (its ensemble and moments not set).
+    [[nodiscard]] IsovalueJobInput jobInput(std::string sourceKey, float isovalue,
+                                            float verticalExaggeration) const;
     void startPreview(float isovalue, float verticalExaggeration);
     void startWaitingPreview();
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);

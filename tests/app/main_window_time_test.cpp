@@ -269,9 +269,10 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     };
     EXPECT_LT(indices(*previewed), indices(*full.meshes)) << "reduced detail";
     EXPECT_EQ(window.view()->renderer().meshes(), full.meshes) << "the full surfaces replace it";
-    // Their reduced detail for motion frames follows, built after their first frame.
+    // Their reduced detail for motion frames follows after their first frame: the preview.
     ASSERT_TRUE(QTest::qWaitFor([&] { return session.result()->motionMeshes != nullptr; }, 30000));
     EXPECT_EQ(window.view()->renderer().motionMeshes(), session.result()->motionMeshes);
+    EXPECT_EQ(session.result()->motionMeshes, previewed) << "the step's preview, not built again";
     ASSERT_TRUE(QTest::qWaitFor([&] { return !window.view()->inMotion(); }, 10000))
         << "the view settles at full resolution";
 }
