@@ -1,8 +1,12 @@
 #include "preprocessing/similarity.h"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <span>
@@ -18,13 +22,20 @@ namespace {
 // member's values are read and written contiguously.
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic>;
 
-// Points per block: a block matrix (points x members, double) of about 4 MiB keeps memory small
-// for any grid, keeps a block to a few milliseconds (the stop token is checked between blocks),
-// and still gives the matrix products long enough inner dimensions to run at full speed.
+// Points per block: a block matrix (points x members, double) of about 256 KiB stays in a
+// core's L2 cache while the matrix products read it (4 MiB blocks spilled to memory and cost
+// as much in traffic as the products themselves), keeps a block well under a millisecond (the
+// stop token is checked between blocks), and still gives the products inner dimensions of
+// hundreds of points, long enough to run at full speed.
 std::size_t blockRows(std::size_t members) {
-    constexpr std::size_t kBlockBytes = std::size_t{4} << 20;
-    return std::clamp<std::size_t>(kBlockBytes / (members * sizeof(double)), 1024, 65536);
+    constexpr std::size_t kBlockBytes = std::size_t{256} << 10;
+    return std::clamp<std::size_t>(kBlockBytes / (members * sizeof(double)), 256, 65536);
 }
+
+// Blocks per part: the points are cut into parts of this many blocks whatever the number of
+// threads, each part summed on its own and the parts merged in order, so the sums (and their
+// rounding) do not depend on how many threads ran them.
+constexpr std::size_t kBlocksPerPart = 64;
 
 // The three running sums of DistanceSums, viewed as matrices over its one array. With
 // S_i = M_i s_i the masked square-root distances and M_i the validity masks:
@@ -42,27 +53,38 @@ struct PairSumsView {
         : cross(data, n, n), squares(data + n * n, n, n), common(data + 2 * n * n, n, n) {}
 };
 
-// Fills s and mask (rows x members) with the points [first, first + rows) of every
-// member. Returns whether any of these points is missing in any member.
+// Fills s (rows x members) with the square-root distances of the points [first, first + rows)
+// of every member, 0 where a value is missing. Returns whether any of these points is missing
+// in any member; only then is the mask (1 where valid) filled too, since a block with nothing
+// missing needs none.
 bool fillBlock(std::span<const std::span<const float>> members, double isovalue, std::size_t first,
                std::size_t rows, Matrix& s, Matrix& mask) {
     bool missing = false;
     for (std::size_t m = 0; m < members.size(); ++m) {
         const float* values = members[m].data() + first;
         double* sColumn = s.col(static_cast<Eigen::Index>(m)).data();
-        double* maskColumn = mask.col(static_cast<Eigen::Index>(m)).data();
-        bool columnMissing = false;
-        // Branch-free so the compiler can vectorise: NaN and infinity fail the comparison.
+        // Two plain loops rather than one, so that each vectorises (GCC does not vectorise the
+        // root beside a flag gathered over the points): NaN and infinity fail the comparisons.
         for (std::size_t p = 0; p < rows; ++p) {
             const double diff = std::abs(static_cast<double>(values[p]) - isovalue);
             const bool valid = diff <= std::numeric_limits<double>::max();
-            sColumn[p] = valid ? std::sqrt(diff) : 0.0;
-            maskColumn[p] = valid ? 1.0 : 0.0;
-            columnMissing |= !valid;
+            sColumn[p] = std::sqrt(valid ? diff : 0.0);
         }
-        missing |= columnMissing;
+        std::int32_t invalid = 0;
+        for (std::size_t p = 0; p < rows; ++p) {
+            invalid |= std::abs(values[p]) <= std::numeric_limits<float>::max() ? 0 : 1;
+        }
+        missing |= invalid != 0;
     }
-    return missing;
+    if (!missing) return false;
+    for (std::size_t m = 0; m < members.size(); ++m) {
+        const float* values = members[m].data() + first;
+        double* maskColumn = mask.col(static_cast<Eigen::Index>(m)).data();
+        for (std::size_t p = 0; p < rows; ++p) {
+            maskColumn[p] = std::isfinite(values[p]) ? 1.0 : 0.0;
+        }
+    }
+    return true;
 }
 
 void accumulateBlock(const Matrix& s, const Matrix& mask, bool missing,
@@ -149,19 +171,38 @@ void DistanceSums::add(std::span<const std::span<const float>> memberValues,
     if (points == 0) return;
     const auto n = static_cast<Eigen::Index>(m_members);
     const std::size_t maxRows = std::min(blockRows(m_members), points);
-    Matrix s(static_cast<Eigen::Index>(maxRows), n);
-    Matrix mask(static_cast<Eigen::Index>(maxRows), n);
-    PairSumsView<Matrix> sums(m_sums.data(), n);
-    for (std::size_t first = 0; first < points; first += maxRows) {
-        data::throwIfStopped(stop);
-        const std::size_t rows = std::min(maxRows, points - first);
-        if (rows < maxRows) {  // the last block is shorter
-            s.resize(static_cast<Eigen::Index>(rows), n);
-            mask.resize(static_cast<Eigen::Index>(rows), n);
+    const std::size_t blocks = (points + maxRows - 1) / maxRows;
+    const std::size_t parts = (blocks + kBlocksPerPart - 1) / kBlocksPerPart;
+    // Each part sums its points from zero into its own array (the three n x n matrices), and
+    // the parts are added to these sums in order after all have run.
+    const std::size_t matrixValues = m_sums.size() - 1;
+    std::vector<std::vector<double>> partSums(parts);
+    // The block matrices of each thread, made once and reused by every part it runs.
+    struct BlockMatrices {
+        Matrix s, mask;
+    };
+    tbb::enumerable_thread_specific<BlockMatrices> scratch;
+    data::PartsProgress blocksProgress(progress, blocks);
+    tbb::parallel_for(std::size_t{0}, parts, [&](std::size_t part) {
+        auto& [s, mask] = scratch.local();
+        partSums[part].assign(matrixValues, 0.0);
+        PairSumsView<Matrix> sums(partSums[part].data(), n);
+        const std::size_t end = std::min(points, (part + 1) * kBlocksPerPart * maxRows);
+        for (std::size_t first = part * kBlocksPerPart * maxRows; first < end; first += maxRows) {
+            data::throwIfStopped(stop);
+            const auto rows = static_cast<Eigen::Index>(std::min(maxRows, end - first));
+            if (s.rows() != rows) {  // the first block on this thread, or the last, shorter one
+                s.resize(rows, n);
+                mask.resize(rows, n);
+            }
+            const bool missing =
+                fillBlock(memberValues, m_isovalue, first, static_cast<std::size_t>(rows), s, mask);
+            accumulateBlock(s, mask, missing, sums);
+            blocksProgress.partDone();
         }
-        const bool missing = fillBlock(memberValues, m_isovalue, first, rows, s, mask);
-        accumulateBlock(s, mask, missing, sums);
-        data::report(progress, static_cast<double>(first + rows) / static_cast<double>(points));
+    });
+    for (const std::vector<double>& part : partSums) {
+        for (std::size_t k = 0; k < matrixValues; ++k) m_sums[k] += part[k];
     }
     m_sums.back() += static_cast<double>(points);
 }

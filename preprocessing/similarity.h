@@ -45,10 +45,13 @@ public:
     [[nodiscard]] double points() const { return m_sums.empty() ? 0.0 : m_sums.back(); }
 
     // Adds the same `points` consecutive grid points of every member: memberValues[m] holds
-    // member m's values there (NaN or infinite where missing). Throws data::Cancelled between
-    // blocks of about 4 MiB; data::Error(InvalidArgument) when the count of members or of values
-    // differs from what the sums were made for.
-    // `progress` hears the share of the points added after each block.
+    // member m's values there (NaN or infinite where missing). The points are summed in parts
+    // of a fixed size on every thread of the pool and the parts merged in order, so the result
+    // does not depend on the number of threads. Throws data::Cancelled between blocks of about
+    // 256 KiB; data::Error(InvalidArgument) when the count of members or of values differs from
+    // what the sums were made for.
+    // `progress` hears the share of the points added after each block (from the pool's threads,
+    // one at a time).
     void add(std::span<const std::span<const float>> memberValues, const std::stop_token& stop = {},
              const data::Progress& progress = {});
     // Adds another part's sums (made for the same members and isovalue, over other points).

@@ -1,6 +1,7 @@
 #include "preprocessing/similarity.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,9 +103,8 @@ TEST(Similarity, EveryDistanceIsMeasuredWhenEveryPairOverlaps) {
 
 TEST(Similarity, MembersOfWhichNoTwoOverlapCannotBeComparedAndSaySo) {
     // Each member is valid only in its own column i == m: no pair has a common point.
-    const auto e = test::analyticEnsemble(3, 3, 2, 2, [](auto m, auto i, auto, auto) {
-        return i == m ? 1.0F : kNaN;
-    });
+    const auto e = test::analyticEnsemble(
+        3, 3, 2, 2, [](auto m, auto i, auto, auto) { return i == m ? 1.0F : kNaN; });
     try {
         (void)prep::computeDistanceMatrix(e, 0.0F);
         FAIL() << "members with no common point were compared";
@@ -136,6 +136,26 @@ TEST(Similarity, MatrixProductsMatchAPlainLoopOverRandomFields) {
             const double expected = referenceDistance(e, isovalue, i, j);
             EXPECT_NEAR(d.at(i, j), expected, 1e-9 * expected) << "i=" << i << " j=" << j;
         }
+    }
+}
+
+TEST(Similarity, TheMatrixIsTheSameToTheLastBitOnOneThreadOrMany) {
+    // 40 members of 64 x 64 x 40 points: several parts of blocks, summed on as many threads as
+    // run, must give exactly the matrix one thread gives, so a result never depends on the
+    // machine it was computed on.
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<float> value(0.0F, 60.0F);
+    const auto e =
+        test::analyticEnsemble(40, 64, 64, 40, [&](auto, auto, auto, auto) { return value(rng); });
+    auto computeOn = [&](int threads) {
+        prep::DistanceMatrix d;
+        tbb::task_arena(threads).execute([&] { d = prep::computeDistanceMatrix(e, 30.0F); });
+        return d;
+    };
+    const prep::DistanceMatrix one = computeOn(1), many = computeOn(4);
+    ASSERT_EQ(one.values.size(), many.values.size());
+    for (std::size_t k = 0; k < one.values.size(); ++k) {
+        ASSERT_EQ(one.values[k], many.values[k]) << "entry " << k;
     }
 }
 
