@@ -1,16 +1,62 @@
 #include "data/content_hash.h"
 
+#include <sys/stat.h>
 #include <xxhash.h>
 
+#include <atomic>
 #include <cstdio>
+#include <ctime>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <vector>
 
 #include "data/error.h"
 
 namespace ensil::data {
+namespace {
 
-std::uint64_t contentHash(const std::string& path) {
+// What says whether a file may have changed since it was hashed (content_hash.h).
+struct FileState {
+    dev_t device = 0;
+    ino_t inode = 0;
+    off_t size = 0;
+    std::int64_t modifiedNs = 0, changedNs = 0;
+    bool operator==(const FileState&) const = default;
+};
+
+std::int64_t nanoseconds(const timespec& t) {
+    return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
+
+std::optional<FileState> stateOf(const std::string& path) {
+    struct stat s {};
+    if (::stat(path.c_str(), &s) != 0) return std::nullopt;
+    return FileState{s.st_dev, s.st_ino, s.st_size, nanoseconds(s.st_mtim), nanoseconds(s.st_ctim)};
+}
+
+// Whether the file's change time is old enough that no later write can share it.
+bool settled(const FileState& state) {
+    constexpr std::int64_t kSettledNs = 1'000'000'000;
+    timespec now{};
+    std::timespec_get(&now, TIME_UTC);
+    return state.changedNs < nanoseconds(now) - kSettledNs;
+}
+
+struct Remembered {
+    FileState state;
+    std::uint64_t hash = 0;
+};
+
+// Few files are open at once; the memory is dropped whole when it holds more than this.
+constexpr std::size_t kMostRemembered = 64;
+
+std::mutex g_mutex;
+std::map<std::string, Remembered> g_remembered;  // under g_mutex
+std::atomic<std::size_t> g_fileReads{0};
+
+std::uint64_t hashFile(const std::string& path) {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                                &std::fclose);
     if (!file) throw Error(ErrorKind::FileNotFound, "cannot read '" + path + "' to identify it");
@@ -24,7 +70,32 @@ std::uint64_t contentHash(const std::string& path) {
     if (std::ferror(file.get()) != 0) {
         throw Error(ErrorKind::FileNotFound, "cannot read '" + path + "' to identify it");
     }
+    ++g_fileReads;
     return XXH3_64bits_digest(state.get());
 }
+
+}  // namespace
+
+std::uint64_t contentHash(const std::string& path) {
+    const std::optional<FileState> before = stateOf(path);
+    if (before) {
+        const std::lock_guard lock(g_mutex);
+        const auto known = g_remembered.find(path);
+        if (known != g_remembered.end() && known->second.state == *before) {
+            return known->second.hash;
+        }
+    }
+    const std::uint64_t hash = hashFile(path);
+    // Remembered only when nothing moved while it was read.
+    if (const std::optional<FileState> after = stateOf(path);
+        before && after && *after == *before && settled(*after)) {
+        const std::lock_guard lock(g_mutex);
+        if (g_remembered.size() >= kMostRemembered) g_remembered.clear();
+        g_remembered[path] = {*after, hash};
+    }
+    return hash;
+}
+
+std::size_t contentHashFileReads() { return g_fileReads.load(); }
 
 }  // namespace ensil::data

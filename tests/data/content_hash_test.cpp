@@ -37,3 +37,27 @@ TEST(ContentHash, ARewriteWithTheSameSizeAndTimeIsOtherData) {
 TEST(ContentHash, AFileThatCannotBeReadIsSaid) {
     EXPECT_THROW((void)data::contentHash("/nonexistent/members.nc"), data::Error);
 }
+
+TEST(ContentHash, AFileUnchangedSinceItWasHashedIsNotReadAgain) {
+    // A file of the repository's test data, written long before this test runs (a file written
+    // within the last second is always read again: content_hash.h says why).
+    const std::string path = ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc";
+    const std::size_t readsBefore = data::contentHashFileReads();
+    const std::uint64_t first = data::contentHash(path);
+    const std::size_t readsAfterFirst = data::contentHashFileReads();
+    EXPECT_LE(readsAfterFirst - readsBefore, 1U);
+    EXPECT_EQ(data::contentHash(path), first);
+    EXPECT_EQ(data::contentHashFileReads(), readsAfterFirst)
+        << "the hash of an unchanged file is given again without reading it";
+}
+
+TEST(ContentHash, AFileJustWrittenIsReadEachTime) {
+    // Its change time may be shared by a write in the same clock tick, so it is not remembered.
+    const test::TempDir dir;
+    const std::string path = dir.file("members.nc");
+    { std::ofstream(path, std::ios::binary) << "contents"; }
+    const std::size_t readsBefore = data::contentHashFileReads();
+    const std::uint64_t first = data::contentHash(path);
+    EXPECT_EQ(data::contentHash(path), first);
+    EXPECT_EQ(data::contentHashFileReads(), readsBefore + 2);
+}
