@@ -11,8 +11,10 @@ std::vector<float> computeColumnMaximum(const data::Grid& grid, const data::Memb
     for (std::size_t k = 0; k < grid.nz(); ++k) {
         const float* slab = member.values.data() + k * nxy;
         for (std::size_t p = 0; p < nxy; ++p) {
-            // NaN compares false, so a missing value never wins and never blocks a valid one.
-            if (!std::isnan(slab[p]) && !(slab[p] <= result[p])) result[p] = slab[p];
+            // NaN compares false, so a missing value never wins, and a missing maximum so far
+            // (r != r) always loses. A select, not a skip, so the loop vectorises.
+            const float v = slab[p], r = result[p];
+            result[p] = (v > r || r != r) ? v : r;
         }
     }
     return result;

@@ -3,9 +3,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
+#include <span>
 
 namespace ensil::prep {
 namespace {
@@ -17,6 +20,60 @@ struct MemberShare {
     double sum = 0.0;
     std::size_t valid = 0, missing = 0;
 };
+
+// Lanes of independent running results: one running sum in double is a chain of dependent
+// additions (one every four cycles), and consecutive values of a smooth field fall into the
+// same histogram bin, whose count each increment must wait for; four of each in turn keep the
+// core busy. The lanes are combined in order, so the result does not depend on the threads.
+constexpr std::size_t kLanes = 4;
+
+MemberShare shareOf(std::span<const float> values) {
+    std::array<MemberShare, kLanes> lanes;
+    const auto add = [](MemberShare& s, float v) {
+        if (std::isnan(v)) {
+            ++s.missing;
+            return;
+        }
+        s.lo = std::min(s.lo, v);
+        s.hi = std::max(s.hi, v);
+        s.sum += v;
+        ++s.valid;
+    };
+    std::size_t i = 0;
+    for (; i + kLanes <= values.size(); i += kLanes) {
+        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lanes[lane], values[i + lane]);
+    }
+    for (; i < values.size(); ++i) add(lanes[0], values[i]);
+    MemberShare share;
+    for (const MemberShare& lane : lanes) {
+        share.lo = std::min(share.lo, lane.lo);
+        share.hi = std::max(share.hi, lane.hi);
+        share.sum += lane.sum;
+        share.valid += lane.valid;
+        share.missing += lane.missing;
+    }
+    return share;
+}
+
+std::vector<std::uint64_t> histogramOf(std::span<const float> values, float lo, double scale,
+                                       std::size_t bins) {
+    std::vector<std::uint64_t> lanes(kLanes * bins, 0);
+    const auto add = [&](std::size_t lane, float v) {
+        if (std::isnan(v)) return;
+        const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
+        ++lanes[lane * bins + std::min(bin, bins - 1)];
+    };
+    std::size_t i = 0;
+    for (; i + kLanes <= values.size(); i += kLanes) {
+        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lane, values[i + lane]);
+    }
+    for (; i < values.size(); ++i) add(0, values[i]);
+    std::vector<std::uint64_t> histogram(bins, 0);
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+        for (std::size_t b = 0; b < bins; ++b) histogram[b] += lanes[lane * bins + b];
+    }
+    return histogram;
+}
 
 }  // namespace
 
@@ -32,17 +89,7 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
     data::PartsProgress rangesDone(progress, members, 0.0, 0.5);
     tbb::parallel_for(std::size_t{0}, members, [&](std::size_t m) {
         data::throwIfStopped(stop);
-        MemberShare& s = shares[m];
-        for (const float v : ensemble.members[m].values) {
-            if (std::isnan(v)) {
-                ++s.missing;
-                continue;
-            }
-            s.lo = std::min(s.lo, v);
-            s.hi = std::max(s.hi, v);
-            s.sum += v;
-            ++s.valid;
-        }
+        shares[m] = shareOf(ensemble.members[m].values);
         rangesDone.partDone();
     });
     float lo = std::numeric_limits<float>::infinity();
@@ -70,13 +117,7 @@ FieldStatistics computeFieldStatistics(const data::Ensemble& ensemble, std::size
         data::PartsProgress binsDone(progress, members, 0.5, 1.0);
         tbb::parallel_for(std::size_t{0}, members, [&](std::size_t m) {
             data::throwIfStopped(stop);
-            std::vector<std::uint64_t>& histogram = counts[m];
-            histogram.assign(bins, 0);
-            for (const float v : ensemble.members[m].values) {
-                if (std::isnan(v)) continue;
-                const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
-                ++histogram[std::min(bin, bins - 1)];
-            }
+            counts[m] = histogramOf(ensemble.members[m].values, lo, scale, bins);
             binsDone.partDone();
         });
         for (const std::vector<std::uint64_t>& histogram : counts) {

@@ -21,20 +21,20 @@ data::Member computeMeanMember(const data::Ensemble& ensemble, const std::stop_t
     mean.name = "mean";
     mean.values.resize(n);
     forEachPointBlock(n, stop, progress, 0.0, 1.0, [&](std::size_t first, std::size_t count) {
-        std::vector<double> sum(count, 0.0);
-        std::vector<std::uint32_t> valid(count, 0);
+        // Selects rather than skips, and the count in double (one vector width through the
+        // loop), so that each member's pass vectorises; counts stay exact in double.
+        std::vector<double> sum(count, 0.0), valid(count, 0.0);
         for (std::size_t m = 0; m < members; ++m) {
             const float* values = ensemble.members[m].values.data() + first;
             for (std::size_t p = 0; p < count; ++p) {
-                if (!std::isnan(values[p])) {
-                    sum[p] += values[p];
-                    ++valid[p];
-                }
+                const bool present = values[p] == values[p];  // NaN is missing
+                sum[p] += present ? static_cast<double>(values[p]) : 0.0;
+                valid[p] += present ? 1.0 : 0.0;
             }
         }
         for (std::size_t p = 0; p < count; ++p) {
-            mean.values[first + p] = valid[p] > 0 ? static_cast<float>(sum[p] / valid[p])
-                                                  : std::numeric_limits<float>::quiet_NaN();
+            mean.values[first + p] = valid[p] > 0.0 ? static_cast<float>(sum[p] / valid[p])
+                                                    : std::numeric_limits<float>::quiet_NaN();
         }
     });
     return mean;

@@ -6,7 +6,7 @@
 
 #include "app/headless/picture_title.h"
 #include "preprocessing/column_maximum.h"
-#include "preprocessing/ensemble_statistics.h"
+#include "preprocessing/member_spread.h"
 
 namespace ensil::app {
 
@@ -14,11 +14,10 @@ ColumnMaxima computeColumnMaxima(const data::Ensemble& ensemble, const data::Mem
                                  const std::stop_token& stop) {
     ColumnMaxima maxima;
     maxima.mean = prep::computeColumnMaximum(ensemble.grid, mean);
-    // The spread does not depend on the isovalue; any finite one will do.
-    const prep::EnsembleStatistics statistics =
-        prep::computeEnsembleStatistics(ensemble, 0.0F, stop);
-    maxima.spread = prep::computeColumnMaximum(ensemble.grid, {"stddev", statistics.stddev});
-    maxima.stddev = std::make_shared<const data::FieldValues>(statistics.stddev);
+    auto stddev =
+        std::make_shared<const data::FieldValues>(prep::computeMemberSpread(ensemble, stop));
+    maxima.spread = prep::computeColumnMaximum(ensemble.grid, {"stddev", *stddev});
+    maxima.stddev = std::move(stddev);
     return maxima;
 }
 

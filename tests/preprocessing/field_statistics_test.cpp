@@ -2,9 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
+#include <vector>
 
 #include "fixtures.h"
 
@@ -58,4 +61,53 @@ TEST(FieldStatistics, StopsWhenCancelled) {
     std::stop_source stop;
     stop.request_stop();
     EXPECT_THROW(prep::computeFieldStatistics(e, 4, stop.get_token()), data::Cancelled);
+}
+
+TEST(FieldStatistics, MatchesAPlainLoopOverEveryValueWhateverTheirCount) {
+    // 3 members of 7 x 5 x 3 = 105 values (not a multiple of the lanes the passes run in),
+    // random with NaNs, the extremes in the last values of a member.
+    std::uint64_t state = 12345;
+    const auto next = [&] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<float>(state >> 40) / static_cast<float>(1 << 24);
+    };
+    auto e = test::analyticEnsemble(3, 7, 5, 3, [&](auto m, auto i, auto j, auto k) {
+        if (i == 6 && j == 4 && k == 2) return m == 1 ? -50.0F : m == 2 ? 80.0F : 1.0F;
+        const float u = next();
+        return u < 0.1F ? std::numeric_limits<float>::quiet_NaN() : 100.0F * u - 20.0F;
+    });
+    const std::size_t bins = 16;
+    const prep::FieldStatistics s = prep::computeFieldStatistics(e, bins);
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    double sum = 0.0;
+    std::size_t valid = 0, missing = 0;
+    for (const auto& member : e.members) {
+        for (const float v : member.values) {
+            if (std::isnan(v)) {
+                ++missing;
+                continue;
+            }
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+            sum += v;
+            ++valid;
+        }
+    }
+    EXPECT_EQ(s.minimum, -50.0F);
+    EXPECT_EQ(s.maximum, 80.0F);
+    EXPECT_EQ(s.minimum, lo);
+    EXPECT_EQ(s.maximum, hi);
+    EXPECT_EQ(s.validCount, valid);
+    EXPECT_EQ(s.missingCount, missing);
+    EXPECT_NEAR(s.mean, sum / static_cast<double>(valid), 1e-12);
+    std::vector<std::uint64_t> histogram(bins, 0);
+    const double scale = static_cast<double>(bins) / (static_cast<double>(hi) - lo);
+    for (const auto& member : e.members) {
+        for (const float v : member.values) {
+            if (std::isnan(v)) continue;
+            const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
+            ++histogram[std::min(bin, bins - 1)];
+        }
+    }
+    EXPECT_EQ(s.histogram, histogram);
 }
