@@ -125,17 +125,17 @@ void checkMemoryFor(std::size_t bytes, const std::string& what) {
 
 void makeInfinitiesMissing(Ensemble& ensemble) {
     // An infinity is no value an isosurface can pass through; left in, it made the range
-    // [min, inf] (null in JSON) and the histogram's bins undefined. Branch-free, so it
-    // vectorises.
+    // [min, inf] (null in JSON) and the histogram's bins undefined. Each member is first only
+    // read (a count without branches, which vectorises) and written only if it has any: most
+    // have none, and writing every value back doubled the memory traffic of this pass, about a
+    // tenth of reading a time step.
     constexpr float kInfinity = std::numeric_limits<float>::infinity();
     constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
     for (Member& m : ensemble.members) {
         std::size_t infinite = 0;
-        for (float& v : m.values) {
-            const bool isInfinite = std::abs(v) == kInfinity;
-            infinite += isInfinite ? 1 : 0;
-            v = isInfinite ? kNaN : v;
-        }
+        for (const float v : m.values) infinite += std::abs(v) == kInfinity ? 1 : 0;
+        if (infinite == 0) continue;
+        for (float& v : m.values) v = std::abs(v) == kInfinity ? kNaN : v;
         ensemble.infiniteValues += infinite;
     }
 }
