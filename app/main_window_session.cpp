@@ -155,7 +155,10 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         }
         m_selection->setSelection(selected);
     }
-    m_view->update();
+    // Another time step alone changes nothing on screen until its surfaces are shown, which
+    // draws them: a frame of the step left here took a software frame's cores (200 ms at full
+    // resolution) from reading the next.
+    if (parts != session::SessionParts(SessionPart::Data)) m_view->update();
 }
 
 }  // namespace ensil::app

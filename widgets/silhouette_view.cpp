@@ -68,6 +68,14 @@ void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
     }
 }
 
+void SilhouetteView::beginInteraction() {
+    m_moving = true;
+    // A settling still pending (the last step's, when steps follow faster than it settles)
+    // would draw this interaction's frames at full resolution: on software OpenGL such a frame
+    // takes 200 ms of both cores, which a new step's build behind its preview needs.
+    m_settleTimer.stop();
+}
+
 void SilhouetteView::showPassingChange() {
     m_moving = true;
     m_settleTimer.start();
@@ -133,6 +141,7 @@ void SilhouetteView::paintGL() {
     QElapsedTimer timer;
     timer.start();
     m_renderer.render(defaultFramebufferObject(), w, h);
+    ++m_framesDrawn;
     if (m_adaptiveResolution) {
         // Timed to the end of the GPU's work: the next motion frame's resolution depends on it.
         context()->functions()->glFinish();

@@ -16,6 +16,7 @@
 #include <QPoint>
 #include <QStringList>
 #include <QTimer>
+#include <cstddef>
 #include <functional>
 
 #include "gl/renderer.h"
@@ -59,6 +60,9 @@ public:
     // Whether the picture is in motion now: the camera moves (a drag, or wheel turns in quick
     // succession), or a control is being dragged (beginInteraction).
     [[nodiscard]] bool inMotion() const { return m_moving; }
+    // The frames this view has drawn (paintGL with a renderer), for tests and benchmarks: a
+    // window composed again around an unchanged view does not count.
+    [[nodiscard]] std::size_t framesDrawn() const { return m_framesDrawn; }
     static constexpr double kDefaultMotionBudgetMs = 33.0;
 
     // Names shown in the hover tooltip, by member index; "member N" where none is given.
@@ -81,9 +85,10 @@ public:
 public slots:
     void resetCamera();
     void lookFrom(float azimuth, float elevation);
-    // Another control changes the picture continuously (a slider being dragged): its frames are
-    // drawn as camera motion is, until it ends.
-    void beginInteraction() { m_moving = true; }
+    // Another control changes the picture continuously (a slider being dragged, a time step's
+    // preview until its full surfaces): its frames are drawn as camera motion is, until it
+    // ends, even when a passing change (showPassingChange) would have settled meanwhile.
+    void beginInteraction();
     void endInteraction() { stopMoving(); }
     // A change that others may follow at once (a time step while stepping or playing): drawn
     // as a motion frame, at the resolution motion gets, and at full resolution once such
@@ -147,6 +152,7 @@ private:
     double m_motionBudgetMs = kDefaultMotionBudgetMs;
     int m_motionStep = 0;  // the resolution of motion frames, an index into the steps
     bool m_moving = false;
+    std::size_t m_framesDrawn = 0;
     // Wheel turns come one by one: the motion ends when they pause.
     QTimer m_settleTimer;
 };

@@ -277,6 +277,33 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
         << "the view settles at full resolution";
 }
 
+TEST(MainWindowTime, AStepAskedForDrawsNoFrameOfTheStepLeft) {
+    // Each such frame is a software frame's cores taken from reading and building the step
+    // asked for: the view draws again only when the step's preview or surfaces are shown.
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !window.view()->inMotion(); }, 10000));
+    const auto left = window.view()->renderer().meshes();
+    ASSERT_NE(left, nullptr);
+    std::size_t framesOfTheStepLeft = 0;
+    std::size_t framesSeen = window.view()->framesDrawn();
+    QObject::connect(window.view(), &QOpenGLWidget::frameSwapped, &window, [&] {
+        const std::size_t drawn = window.view()->framesDrawn();
+        if (drawn != framesSeen && window.view()->renderer().meshes() == left) {
+            ++framesOfTheStepLeft;
+        }
+        framesSeen = drawn;
+    });
+    const std::size_t before = window.view()->framesDrawn();
+    window.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(window, 1));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return window.view()->framesDrawn() > before; }, 10000))
+        << "the step itself is drawn";
+    EXPECT_NE(window.view()->renderer().meshes(), left);
+    EXPECT_EQ(framesOfTheStepLeft, 0U);
+}
+
 // Waits until the strip holds each of ERA5's four steps' clusters.
 bool stripFilled(const app::MainWindow& window) {
     const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
