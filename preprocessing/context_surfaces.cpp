@@ -3,7 +3,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "preprocessing/column_maximum.h"
-#include "preprocessing/ensemble_statistics.h"
+#include "preprocessing/exceedance.h"
 
 namespace ensil::prep {
 
@@ -12,13 +12,13 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                                      const PipelineOptions& options, const std::stop_token& stop,
                                      const data::Progress& progress) {
     ContextSurfaces out;
-    // The statistics and the boxplot read only the ensemble: side by side (the boxplot's loops
+    // The exceedance and the boxplot read only the ensemble: side by side (the boxplot's loops
     // are serial), each as it would be alone.
-    EnsembleStatistics statistics;
+    data::FieldValues exceedance;
     data::PartsProgress partsDone(progress, 2, 0.0, 0.7);
     tbb::parallel_invoke(
         [&] {
-            statistics = computeEnsembleStatistics(ensemble, options.isovalue, stop);
+            exceedance = computeExceedance(ensemble, options.isovalue, stop);
             partsDone.partDone();
         },
         [&] {
@@ -33,13 +33,12 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     const auto mesh = [&](const data::FieldValues& field, data::PackedMesh& into) {
         into = meshField(ensemble.grid, field, kHalf, axes, nullptr, options, stop).mesh;
     };
-    tbb::parallel_invoke([&] { mesh(statistics.exceedance, out.probability); },
+    tbb::parallel_invoke([&] { mesh(exceedance, out.probability); },
                          [&] { mesh(out.boxplot.bandInner, out.bandInner); },
                          [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
     data::throwIfStopped(stop);
-    out.exceedanceColumnMaximum =
-        computeColumnMaximum(ensemble.grid, {"exceedance", statistics.exceedance});
-    out.exceedance = std::move(statistics.exceedance);
+    out.exceedanceColumnMaximum = computeColumnMaximum(ensemble.grid, {"exceedance", exceedance});
+    out.exceedance = std::move(exceedance);
     data::report(progress, 1.0);
     return out;
 }

@@ -30,7 +30,7 @@ struct ContextSurfaces {
 };
 
 // Meshes the three surfaces at options.isovalue, as the members' are meshed (decimated alike,
-// no outlyingness). Throws data::Cancelled and the errors of computeEnsembleStatistics and
+// no outlyingness). Throws data::Cancelled and the errors of computeExceedance and
 // computeContourBoxplot.
 ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                                      const data::DisplayFrame& frame,
