@@ -1,5 +1,8 @@
 #include "preprocessing/member_summaries.h"
 
+#include <tbb/parallel_for.h>
+
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -21,6 +24,35 @@ void validate(const data::Ensemble& ensemble, std::span<const float> field, floa
     }
 }
 
+// The mean over the points valid in both of (sqrt|f - mu| - root)^2, infinite when there are
+// none. Four lanes of running sums, combined in order: one running sum is a chain of dependent
+// additions, and the selects (a missing value adds 0) keep the loop free of branches.
+double distanceToRoots(std::span<const float> values, std::span<const double> roots, double mu) {
+    constexpr std::size_t kLanes = 4;
+    std::array<double, kLanes> sums{};
+    std::array<std::size_t, kLanes> counts{};
+    const auto add = [&](std::size_t lane, std::size_t p) {
+        const double diff = std::abs(static_cast<double>(values[p]) - mu);
+        // NaN and infinity (in the member or the field) fail these comparisons.
+        const bool valid = diff <= std::numeric_limits<double>::max() && roots[p] == roots[p];
+        const double d = valid ? std::sqrt(diff) - roots[p] : 0.0;
+        sums[lane] += d * d;
+        counts[lane] += valid ? 1 : 0;
+    };
+    std::size_t p = 0;
+    for (; p + kLanes <= roots.size(); p += kLanes) {
+        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lane, p + lane);
+    }
+    for (; p < roots.size(); ++p) add(0, p);
+    double sum = 0.0;
+    std::size_t common = 0;
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+        sum += sums[lane];
+        common += counts[lane];
+    }
+    return common > 0 ? sum / static_cast<double>(common) : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
 std::vector<double> distancesToField(const data::Ensemble& ensemble, std::span<const float> field,
@@ -39,25 +71,14 @@ std::vector<double> distancesToField(const data::Ensemble& ensemble, std::span<c
     }
     const std::size_t n = ensemble.memberCount();
     std::vector<double> distances(n);
-    for (std::size_t m = 0; m < n; ++m) {
+    // The members on every core, each summed alone in the same order whatever the threads (and
+    // as the streamed preprocess sums one member read by itself).
+    data::PartsProgress membersDone(progress, n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t m) {
         data::throwIfStopped(stop);
-        const float* values = ensemble.members[m].values.data();
-        double sum = 0.0;
-        std::size_t common = 0;
-        for (std::size_t p = 0; p < fieldRoots.size(); ++p) {
-            const double diff = std::abs(static_cast<double>(values[p]) - mu);
-            // NaN and infinity (in the member or the field) fail these comparisons.
-            if (!(diff <= std::numeric_limits<double>::max()) || std::isnan(fieldRoots[p])) {
-                continue;
-            }
-            const double d = std::sqrt(diff) - fieldRoots[p];
-            sum += d * d;
-            ++common;
-        }
-        distances[m] = common > 0 ? sum / static_cast<double>(common)
-                                  : std::numeric_limits<double>::infinity();
-        data::report(progress, static_cast<double>(m + 1) / static_cast<double>(n));
-    }
+        distances[m] = distanceToRoots(ensemble.members[m].values, fieldRoots, mu);
+        membersDone.partDone();
+    });
     return distances;
 }
 
