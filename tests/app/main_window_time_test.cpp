@@ -277,13 +277,31 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
         << "the view settles at full resolution";
 }
 
+// Waits until the strip holds each of ERA5's four steps' clusters.
+bool stripFilled(const app::MainWindow& window) {
+    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
+    return QTest::qWaitFor(
+        [&] {
+            for (int s = 0; s < 4; ++s) {
+                if (strip.stepClusters(s).size() != 10u) return false;
+            }
+            return !strip.fillingButton()->isVisible();
+        },
+        120000);
+}
+
 TEST(MainWindowTime, AStepAskedForDrawsNoFrameOfTheStepLeft) {
     // Each such frame is a software frame's cores taken from reading and building the step
     // asked for: the view draws again only when the step's preview or surfaces are shown.
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return !window.view()->inMotion(); }, 10000));
+    // The background work done first (the strip filled, the next step read and built ahead),
+    // so that only the step asked for can draw.
+    ASSERT_TRUE(stripFilled(window));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return !window.view()->inMotion() && !window.isovalueSession()->isPreparing(); },
+        30000));
     const auto left = window.view()->renderer().meshes();
     ASSERT_NE(left, nullptr);
     std::size_t framesOfTheStepLeft = 0;
@@ -296,25 +314,13 @@ TEST(MainWindowTime, AStepAskedForDrawsNoFrameOfTheStepLeft) {
         framesSeen = drawn;
     });
     const std::size_t before = window.view()->framesDrawn();
-    window.timeBar()->step(1);
-    ASSERT_TRUE(stepShown(window, 1));
+    // Step 3: neither kept nor read ahead (that is step 1), so it is read after the request.
+    window.timeBar()->requestStep(3);
+    ASSERT_TRUE(stepShown(window, 3));
     ASSERT_TRUE(QTest::qWaitFor([&] { return window.view()->framesDrawn() > before; }, 10000))
         << "the step itself is drawn";
     EXPECT_NE(window.view()->renderer().meshes(), left);
     EXPECT_EQ(framesOfTheStepLeft, 0U);
-}
-
-// Waits until the strip holds each of ERA5's four steps' clusters.
-bool stripFilled(const app::MainWindow& window) {
-    const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
-    return QTest::qWaitFor(
-        [&] {
-            for (int s = 0; s < 4; ++s) {
-                if (strip.stepClusters(s).size() != 10u) return false;
-            }
-            return !strip.fillingButton()->isVisible();
-        },
-        120000);
 }
 
 // Without visiting them, the strip gets every step's clusters (computed in the background,
