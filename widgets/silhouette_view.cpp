@@ -49,13 +49,17 @@ float SilhouetteView::frameResolutionScale() const {
 
 void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
     if (!m_moving) {
-        // A still frame at full resolution: motion starts from the step whose pixels fit the
-        // budget, as a software renderer's time goes with them.
+        // A still frame at full resolution: motion starts no finer than the step whose pixels
+        // fit the budget, as a software renderer's time goes with them. Never finer than the
+        // step motion frames themselves arrived at: part of a frame's time does not shrink
+        // with its pixels, so the estimate from a still frame is too fine on software OpenGL
+        // (the demo's still frame of 200 ms asked for 0.35, whose frames took 57 ms of a 33 ms
+        // budget, and every time step's first frame was drawn there). Motion frames measured
+        // faster than half the budget still make it finer, below.
         const auto wanted = static_cast<float>(std::sqrt(m_motionBudgetMs / frameMs));
-        m_motionStep = 0;
-        while (m_motionStep < kCoarsestMotionStep && kMotionScales[m_motionStep] > wanted) {
-            ++m_motionStep;
-        }
+        int estimate = 0;
+        while (estimate < kCoarsestMotionStep && kMotionScales[estimate] > wanted) ++estimate;
+        m_motionStep = std::max(m_motionStep, estimate);
         return;
     }
     // During motion, what each frame took decides the next: part of a frame's time does not

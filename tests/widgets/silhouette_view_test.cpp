@@ -186,6 +186,26 @@ TEST_F(ShownView, MotionKeepsFullResolutionWhenFramesAreFastOrTheOptionIsOff) {
     EXPECT_LT(m_view.renderer().resolutionScale(), 1.0F) << "each slow frame steps down";
 }
 
+TEST_F(ShownView, MotionStartsWhereMotionFramesLeftItNotFinerThanAStillFrameSuggests) {
+    // Motion frames too slow for the budget step the resolution down to the coarsest.
+    m_view.setMotionFrameBudget(0.001);
+    (void)m_view.grabFramebuffer();
+    m_view.showPassingChange();
+    (void)m_view.grabFramebuffer();
+    ASSERT_EQ(m_view.renderer().resolutionScale(), gl::Renderer::kMinimumResolutionScale);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !m_view.inMotion(); }, 2000));
+    // A still frame that looks fast (as a software renderer's does, its time not shrinking
+    // with its pixels) does not undo what motion measured: the next motion frame starts there.
+    m_view.setMotionFrameBudget(1e9);
+    (void)m_view.grabFramebuffer();
+    m_view.showPassingChange();
+    (void)m_view.grabFramebuffer();
+    EXPECT_EQ(m_view.renderer().resolutionScale(), gl::Renderer::kMinimumResolutionScale);
+    // Motion frames measured fast make it finer, one step at a time.
+    (void)m_view.grabFramebuffer();
+    EXPECT_GT(m_view.renderer().resolutionScale(), gl::Renderer::kMinimumResolutionScale);
+}
+
 TEST_F(ShownView, ADragAcrossTheWholeViewTurnsItHalfWayRound) {
     // A 240 px drag once turned the view about 100 degrees and pushed the box off screen.
     gl::Camera& cam = m_view.renderer().camera();
