@@ -50,8 +50,8 @@ float SilhouetteView::frameResolutionScale() const {
 void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
     if (!m_moving) {
         // A still frame at full resolution: motion starts no finer than the step whose pixels
-        // fit the budget, as a software renderer's time goes with them. Never finer than the
-        // step motion frames themselves arrived at: part of a frame's time does not shrink
+        // fit the budget, as a software renderer's time goes with them, and never finer than
+        // the step motion frames themselves arrived at: part of a frame's time does not shrink
         // with its pixels, so the estimate from a still frame is too fine on software OpenGL
         // (the demo's still frame of 200 ms asked for 0.35, whose frames took 57 ms of a 33 ms
         // budget, and every time step's first frame was drawn there). Motion frames measured
@@ -59,7 +59,7 @@ void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
         const auto wanted = static_cast<float>(std::sqrt(m_motionBudgetMs / frameMs));
         int estimate = 0;
         while (estimate < kCoarsestMotionStep && kMotionScales[estimate] > wanted) ++estimate;
-        m_motionStep = std::max(m_motionStep, estimate);
+        m_motionStep = std::max(estimate, m_measuredMotionStep);
         return;
     }
     // During motion, what each frame took decides the next: part of a frame's time does not
@@ -70,6 +70,7 @@ void SilhouetteView::adaptMotionStep(double frameMs, float scale) {
     } else if (frameMs < 0.5 * m_motionBudgetMs && m_motionStep > 0) {
         --m_motionStep;
     }
+    m_measuredMotionStep = m_motionStep;
 }
 
 void SilhouetteView::beginInteraction() {

@@ -150,7 +150,8 @@ private:
     QString m_glError;
     bool m_adaptiveResolution = true;
     double m_motionBudgetMs = kDefaultMotionBudgetMs;
-    int m_motionStep = 0;  // the resolution of motion frames, an index into the steps
+    int m_motionStep = 0;          // the resolution of motion frames, an index into the steps
+    int m_measuredMotionStep = 0;  // where the last motion frames left m_motionStep
     bool m_moving = false;
     std::size_t m_framesDrawn = 0;
     // Wheel turns come one by one: the motion ends when they pause.

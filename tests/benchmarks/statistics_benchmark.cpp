@@ -1,8 +1,11 @@
 // Speed of the ensemble statistics and the contour boxplot on the paper-sized demo ensemble
 // (50 members, 256 x 128 x 16 points) at its default isovalue: computeEnsembleStatistics (every
 // per-point statistic and the cells' level-crossing probability) and computeContourBoxplot
-// (the inclusion depths of all members, median, band and outliers). Prints medians over several
-// runs, in seconds, and what the boxplot found, with the demo's regime of each outlier.
+// (the inclusion depths of all members, median, band and outliers); then what a data set's
+// or a time step's overview and each isovalue compute beside them: the value statistics, the
+// moments, the spread alone, the exceedance alone and the distances to the mean. Prints medians
+// over several runs, in seconds, and what the boxplot found, with the demo's regime of each
+// outlier.
 //
 //   ensil_statistics_benchmark [--runs N]   (7 by default)
 #include <algorithm>
@@ -14,9 +17,13 @@
 #include "data/demo_ensemble.h"
 #include "data/working_memory.h"
 #include "preprocessing/default_isovalue.h"
+#include "preprocessing/ensemble_moments.h"
 #include "preprocessing/ensemble_statistics.h"
+#include "preprocessing/exceedance.h"
 #include "preprocessing/field_statistics.h"
 #include "preprocessing/inclusion_depth.h"
+#include "preprocessing/member_spread.h"
+#include "preprocessing/member_summaries.h"
 #include "timing.h"
 
 using ensil::bench::medianMs;
@@ -65,6 +72,20 @@ int main(int argc, char** argv) {
     const double boxplotMs =
         medianMs(runs, [&] { box = prep::computeContourBoxplot(e, isovalue); });
     std::printf("computeContourBoxplot:      %7.3f s  (median of %d)\n", boxplotMs / 1000.0, runs);
+
+    const auto time = [&](const char* what, const auto& work) {
+        std::printf("%-28s%7.3f s  (median of %d)\n", what, medianMs(runs, work) / 1000.0, runs);
+    };
+    time("computeFieldStatistics:",
+         [&] { (void)prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins); });
+    prep::EnsembleMoments moments;
+    time("computeEnsembleMoments:", [&] { moments = prep::computeEnsembleMoments(e); });
+    time("computeMemberSpread:", [&] { (void)prep::computeMemberSpread(e); });
+    time("computeExceedance:", [&] { (void)prep::computeExceedance(e, isovalue); });
+    const auto& mean = moments.mean.values;
+    time("distancesToField (mean):", [&] {
+        (void)prep::distancesToField(e, {mean.data(), mean.size()}, isovalue);
+    });
 
     const auto [lowest, highest] = std::minmax_element(box.depth.begin(), box.depth.end());
     std::printf(
