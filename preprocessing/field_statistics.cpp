@@ -10,6 +10,8 @@
 #include <numeric>
 #include <span>
 
+#include "preprocessing/lanes.h"
+
 namespace ensil::prep {
 namespace {
 
@@ -21,15 +23,11 @@ struct MemberShare {
     std::size_t valid = 0, missing = 0;
 };
 
-// Lanes of independent running results: one running sum in double is a chain of dependent
-// additions (one every four cycles), and consecutive values of a smooth field fall into the
-// same histogram bin, whose count each increment must wait for; four of each in turn keep the
-// core busy. The lanes are combined in order, so the result does not depend on the threads.
-constexpr std::size_t kLanes = 4;
-
 MemberShare shareOf(std::span<const float> values) {
     std::array<MemberShare, kLanes> lanes;
-    const auto add = [](MemberShare& s, float v) {
+    forEachInLanes(values.size(), [&](std::size_t lane, std::size_t i) {
+        MemberShare& s = lanes[lane];
+        const float v = values[i];
         if (std::isnan(v)) {
             ++s.missing;
             return;
@@ -38,12 +36,7 @@ MemberShare shareOf(std::span<const float> values) {
         s.hi = std::max(s.hi, v);
         s.sum += v;
         ++s.valid;
-    };
-    std::size_t i = 0;
-    for (; i + kLanes <= values.size(); i += kLanes) {
-        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lanes[lane], values[i + lane]);
-    }
-    for (; i < values.size(); ++i) add(lanes[0], values[i]);
+    });
     MemberShare share;
     for (const MemberShare& lane : lanes) {
         share.lo = std::min(share.lo, lane.lo);
@@ -58,16 +51,11 @@ MemberShare shareOf(std::span<const float> values) {
 std::vector<std::uint64_t> histogramOf(std::span<const float> values, float lo, double scale,
                                        std::size_t bins) {
     std::vector<std::uint64_t> lanes(kLanes * bins, 0);
-    const auto add = [&](std::size_t lane, float v) {
-        if (std::isnan(v)) return;
-        const auto bin = static_cast<std::size_t>((static_cast<double>(v) - lo) * scale);
+    forEachInLanes(values.size(), [&](std::size_t lane, std::size_t i) {
+        if (std::isnan(values[i])) return;
+        const auto bin = static_cast<std::size_t>((static_cast<double>(values[i]) - lo) * scale);
         ++lanes[lane * bins + std::min(bin, bins - 1)];
-    };
-    std::size_t i = 0;
-    for (; i + kLanes <= values.size(); i += kLanes) {
-        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lane, values[i + lane]);
-    }
-    for (; i < values.size(); ++i) add(0, values[i]);
+    });
     std::vector<std::uint64_t> histogram(bins, 0);
     for (std::size_t lane = 0; lane < kLanes; ++lane) {
         for (std::size_t b = 0; b < bins; ++b) histogram[b] += lanes[lane * bins + b];

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "data/error.h"
+#include "preprocessing/lanes.h"
 #include "preprocessing/mesh_packing.h"
 #include "preprocessing/similarity.h"
 
@@ -25,25 +26,19 @@ void validate(const data::Ensemble& ensemble, std::span<const float> field, floa
 }
 
 // The mean over the points valid in both of (sqrt|f - mu| - root)^2, infinite when there are
-// none. Four lanes of running sums, combined in order: one running sum is a chain of dependent
-// additions, and the selects (a missing value adds 0) keep the loop free of branches.
+// none. Summed in lanes (preprocessing/lanes.h), the selects (a missing value adds 0) keeping the
+// loop free of branches.
 double distanceToRoots(std::span<const float> values, std::span<const double> roots, double mu) {
-    constexpr std::size_t kLanes = 4;
     std::array<double, kLanes> sums{};
     std::array<std::size_t, kLanes> counts{};
-    const auto add = [&](std::size_t lane, std::size_t p) {
+    forEachInLanes(roots.size(), [&](std::size_t lane, std::size_t p) {
         const double diff = std::abs(static_cast<double>(values[p]) - mu);
         // NaN and infinity (in the member or the field) fail these comparisons.
         const bool valid = diff <= std::numeric_limits<double>::max() && roots[p] == roots[p];
         const double d = valid ? std::sqrt(diff) - roots[p] : 0.0;
         sums[lane] += d * d;
         counts[lane] += valid ? 1 : 0;
-    };
-    std::size_t p = 0;
-    for (; p + kLanes <= roots.size(); p += kLanes) {
-        for (std::size_t lane = 0; lane < kLanes; ++lane) add(lane, p + lane);
-    }
-    for (; p < roots.size(); ++p) add(0, p);
+    });
     double sum = 0.0;
     std::size_t common = 0;
     for (std::size_t lane = 0; lane < kLanes; ++lane) {
