@@ -138,7 +138,7 @@ std::string pipelineKey(const PipelineOptions& options, float verticalExaggerati
     key.precision(9);  // round-trips a float exactly
     key << "isovalue=" << options.isovalue << " decimate=" << options.decimate
         << " error=" << options.maxErrorCells << " exaggeration=" << verticalExaggeration
-        << " format=" << kCacheFormatVersion;
+        << " format=" << kCacheFormatVersion << " meshes=" << kMeshMakingVersion;
     return key.str();
 }
 

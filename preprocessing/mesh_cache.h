@@ -1,8 +1,8 @@
 // A disk cache of preprocessed isovalues, so reopening an ensemble at a known isovalue is
 // instant. One file per entry, named by a hash of its key; the key (input files with their
 // sizes and modification times, variable, member dimension, time index, isovalue, decimation,
-// vertical exaggeration, format version) is stored inside and compared on load, so a hash
-// collision or a changed input is never trusted.
+// vertical exaggeration, format and mesh-making versions) is stored inside and compared on load, so
+// a hash collision or a changed input is never trusted.
 //
 // File format (little-endian, as written by the machine that reads it; the cache is local):
 //   8 bytes  magic "ENSILMC1"
@@ -28,6 +28,9 @@
 namespace ensil::prep {
 
 inline constexpr std::uint32_t kCacheFormatVersion = 1;
+// How the meshes are made (marching cubes, decimation): part of the key, so that entries made
+// by an earlier way are not shown as this one's. 2: ensil's own simplification.
+inline constexpr std::uint32_t kMeshMakingVersion = 2;
 
 class MeshCache {
 public:

@@ -5,6 +5,7 @@
 //   ensil_preprocess_benchmark [--runs N] [--iso X] [--error CELLS] [--no-decimation]
 //                              [--no-vtk-decimation]
 // (--no-vtk-decimation leaves out VTK's decimation and curvatures, which take most of the run.)
+#include <meshoptimizer.h>
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include "data/demo_ensemble.h"
 #include "data/working_memory.h"
 #include "hausdorff.h"
+#include "meshoptimizer_reference.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/decimation.h"
 #include "preprocessing/ensemble_moments.h"
@@ -108,27 +110,59 @@ int main(int argc, char** argv) {
         "(goal <= 2 x)\n",
         peakMiB, peakMiB / ensembleMiB, ensembleMiB);
 
-    // Decimation quality: every full-resolution vertex's distance to the decimated surface, on a
-    // few members (the one-sided Hausdorff distance, in grid cells).
-    double worstDistance = 0.0, meanDistance = 0.0;
+    // Decimation quality and speed on a few members, against meshoptimizer's simplifier under the
+    // same bound: every full-resolution vertex's distance to the decimated surface (the
+    // one-sided Hausdorff distance, in grid cells), triangles kept, and the time of each alone
+    // on one core, alternating so that both see the same load.
+    const float bound = options.decimate ? options.maxErrorCells : 0.0F;
     const std::size_t sampled = std::min<std::size_t>(5, e.memberCount());
+    std::vector<ensil::data::TriangleMesh> fullMeshes;
     for (std::size_t m = 0; m < sampled; ++m) {
         const std::size_t member = m * e.memberCount() / sampled;
-        const auto full =
-            ensil::prep::extractIsosurface(e.grid, e.members[member].values, options.isovalue);
-        const auto reduced =
-            ensil::prep::decimateMesh(full, options.decimate ? options.maxErrorCells : 0.0F);
-        const SurfaceDistance d = distanceToSurface(full, reduced.mesh);
-        worstDistance = std::max(worstDistance, d.maximum);
-        meanDistance += d.mean / static_cast<double>(sampled);
+        fullMeshes.push_back(
+            ensil::prep::extractIsosurface(e.grid, e.members[member].values, options.isovalue));
+    }
+    struct Quality {
+        double worst = 0.0, mean = 0.0;
+        std::size_t triangles = 0;
+        std::vector<double> seconds;  // per run, all sampled members
+    } ensilRun, meshoptRun;
+    for (int r = 0; r < runs; ++r) {
+        ensilRun.seconds.push_back(0.0);
+        meshoptRun.seconds.push_back(0.0);
+        for (const auto& full : fullMeshes) {
+            auto t = Clock::now();
+            const auto reduced = ensil::prep::decimateMesh(full, bound);
+            ensilRun.seconds.back() += std::chrono::duration<double>(Clock::now() - t).count();
+            t = Clock::now();
+            const auto referenceReduced = simplifyWithMeshoptimizer(full, bound);
+            meshoptRun.seconds.back() += std::chrono::duration<double>(Clock::now() - t).count();
+            if (r > 0) continue;
+            for (auto [q, mesh] : {std::pair{&ensilRun, &reduced.mesh},
+                                   std::pair{&meshoptRun, &referenceReduced.mesh}}) {
+                const SurfaceDistance d = distanceToSurface(full, *mesh);
+                q->worst = std::max(q->worst, d.maximum);
+                q->mean += d.mean / static_cast<double>(sampled);
+                q->triangles += mesh->triangleCount();
+            }
+        }
     }
     std::printf(
         "decimation quality on %zu members: Hausdorff (full -> decimated) max %.3f cells, "
-        "mean %.3f cells; the setting, %.2f cells, bounds meshoptimizer's estimate (%.3f: a "
-        "root-mean-square distance to the planes of the triangles merged into a vertex), not "
+        "mean %.3f cells; the setting, %.2f cells, bounds the simplification's estimate (%.3f: "
+        "a root-mean-square distance to the planes of the triangles merged into a vertex), not "
         "this distance\n",
-        sampled, worstDistance, meanDistance, options.decimate ? options.maxErrorCells : 0.0F,
-        result.worstErrorCells);
+        sampled, ensilRun.worst, ensilRun.mean, bound, result.worstErrorCells);
+    const double msPerSampledMember = 1000.0 / static_cast<double>(sampled);
+    std::printf(
+        "decimation alone on those members (one core, median of %d): ensil %.1f ms a member, "
+        "%zu triangles, Hausdorff max %.3f mean %.3f; meshoptimizer %d.%d (meshopt_simplify) "
+        "%.1f ms a member, %zu triangles, Hausdorff max %.3f mean %.3f: ensil is %.2fx as "
+        "fast\n",
+        runs, msPerSampledMember * median(ensilRun.seconds), ensilRun.triangles, ensilRun.worst,
+        ensilRun.mean, MESHOPTIMIZER_VERSION / 1000, MESHOPTIMIZER_VERSION % 1000 / 10,
+        msPerSampledMember * median(meshoptRun.seconds), meshoptRun.triangles, meshoptRun.worst,
+        meshoptRun.mean, median(meshoptRun.seconds) / median(ensilRun.seconds));
 
     // Cancel latency: stop the pipeline at several moments, time until it has returned.
     std::vector<double> latencies;

@@ -117,7 +117,7 @@ TEST_F(SectionTest, TheCurvesOfMembersCrossingThePlaneAreDrawnOverTheFace) {
     m_renderer.settings().plane.fill = gl::SectionField::Mean;
     const int filled = pointsOnTheCurve();
     EXPECT_GE(unfilled, 30);
-    EXPECT_GE(filled, 31) << "the face hides none of the member's curve";
+    EXPECT_GE(filled, unfilled) << "the face hides none of the member's curve";
 }
 
 TEST_F(SectionTest, PickingTheFaceGivesItsPointAndValueAndNotTheMemberBehindIt) {
@@ -198,10 +198,11 @@ TEST_F(SectionTest, TheContextSurfaceTakesTheColourOfTheSpreadWhereItLies) {
     m_renderer.settings().contextBySpread = true;
     const QImage coloured = draw();
     // High up the spread is large (viridis' yellow-green end: more green than blue), low down
-    // it is small (its purple-blue end: more blue than green).
+    // it is small (its purple-blue end: more blue than green; compared as a ratio, since the
+    // low point lies where the surface turns away from the light and shading darkens both).
     const QColor top = coloured.pixelColor(high), bottom = coloured.pixelColor(low);
     EXPECT_GT(top.green(), top.blue() + 30) << top.name().toStdString();
-    EXPECT_GT(bottom.blue(), bottom.green() + 30) << bottom.name().toStdString();
+    EXPECT_GT(bottom.blue(), 1.3 * bottom.green()) << bottom.name().toStdString();
     const gl::ViewOverlay overlay = m_renderer.overlay(kWidth, kHeight);
     ASSERT_EQ(overlay.colourScales.size(), 1u);
     EXPECT_EQ(overlay.colourScales[0].caption,
