@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace ensil::prep {
@@ -233,27 +234,32 @@ public:
 
 private:
     // Vertex `i` of triangle t as this pass has moved it so far.
-    [[nodiscard]] Index corner(Index t, int i) const { return m_movedTo[m_.indices[3 * t + i]]; }
+    // The two corners of triangle t other than v (which has not moved), as this pass has moved
+    // them so far, in winding order after v.
+    [[nodiscard]] std::pair<Index, Index> othersOf(Index t, Index v) const {
+        const Index* c = &m_.indices[3 * std::size_t(t)];
+        const std::size_t at = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
+        return {m_movedTo[c[(at + 1) % 3]], m_movedTo[c[(at + 2) % 3]]};
+    }
 
     // Moving a onto b must not turn any of a's other triangles too far, must keep the surface one
     // sheet (a and b share exactly the two neighbours of the edge's two triangles: the link
     // condition), and must not flatten a closed tetrahedron.
     bool mayCollapse(Index a, Index b) {
         const std::uint32_t aroundA = ++m_stamp, shared = ++m_stamp;
-        const glm::vec3 pb = m_.positions[b];
+        const glm::vec3 pa = m_.positions[a], pb = m_.positions[b];
         int trianglesA = 0;
         for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k) {
-            const Index t = m_.triangles[k];
-            const Index i[3] = {corner(t, 0), corner(t, 1), corner(t, 2)};
-            if (isDegenerate(i[0], i[1], i[2])) continue;
+            // a has not moved this pass (it would be locked), so it is still a corner: x and y
+            // are the other two, in winding order.
+            const auto [x, y] = othersOf(m_.triangles[k], a);
+            if (x == y || x == a || y == a) continue;  // collapsed this pass
             ++trianglesA;
-            m_mark[i[0]] = m_mark[i[1]] = m_mark[i[2]] = aroundA;
-            if (i[0] == b || i[1] == b || i[2] == b) continue;
-            const glm::vec3 p[3] = {m_.positions[i[0]], m_.positions[i[1]], m_.positions[i[2]]};
-            const glm::vec3 q[3] = {i[0] == a ? pb : p[0], i[1] == a ? pb : p[1],
-                                    i[2] == a ? pb : p[2]};
-            const glm::vec3 before = glm::cross(p[1] - p[0], p[2] - p[0]);
-            const glm::vec3 after = glm::cross(q[1] - q[0], q[2] - q[0]);
+            m_mark[x] = m_mark[y] = aroundA;
+            if (x == b || y == b) continue;  // one of the two triangles that go
+            const glm::vec3 px = m_.positions[x], py = m_.positions[y];
+            const glm::vec3 before = glm::cross(px - pa, py - pa);
+            const glm::vec3 after = glm::cross(px - pb, py - pb);
             // cos > k, squared (no square roots): dot > 0 and dot^2 > k^2 |before|^2 |after|^2.
             const float dot = glm::dot(before, after);
             if (!(dot > 0.0F && dot * dot > kMinTurnCosine * kMinTurnCosine *
@@ -262,12 +268,11 @@ private:
         }
         int common = 0, trianglesB = 0;
         for (Index k = m_.firstTriangle[b]; k < m_.firstTriangle[b + 1]; ++k) {
-            const Index t = m_.triangles[k];
-            const Index i[3] = {corner(t, 0), corner(t, 1), corner(t, 2)};
-            if (isDegenerate(i[0], i[1], i[2])) continue;
+            const auto [x, y] = othersOf(m_.triangles[k], b);
+            if (x == y || x == b || y == b) continue;
             ++trianglesB;
-            for (const Index x : i)
-                if (x != a && x != b && m_mark[x] == aroundA) m_mark[x] = shared, ++common;
+            if (x != a && m_mark[x] == aroundA) m_mark[x] = shared, ++common;
+            if (y != a && m_mark[y] == aroundA) m_mark[y] = shared, ++common;
         }
         return common == 2 && !(trianglesA == 3 && trianglesB == 3);
     }
