@@ -19,6 +19,7 @@ constexpr Index kNoVertex = std::numeric_limits<Index>::max();
 // on ten demo members the farthest full-resolution vertex lay 0.68 cells from the decimated
 // surface against 0.59 with this limit, for 2 % more triangles (still fewer than meshoptimizer's).
 constexpr float kMinTurnCosine = 0.3F;
+constexpr std::size_t kLastPassShare = 200;
 
 // The sum of area-weighted squared distances to a set of planes, as a function of the offset d
 // from the vertex that owns it: d'Ad + 2b'd + c. Kept relative to its own vertex so that every
@@ -340,8 +341,13 @@ SimplifiedMesh simplifyMesh(const data::TriangleMesh& mesh, float maxError) {
         const std::vector<Candidate> candidates = cheapestCollapses(m, limit, target);
         if (candidates.empty()) break;
         CollapsePass pass(m);
-        if (pass.run(inErrorBands(candidates), target, limit, worst) == 0) break;
+        const std::size_t made = pass.run(inErrorBands(candidates), target, limit, worst);
+        if (made == 0) break;
         pass.apply();
+        // A pass that removes under 1 in kLastPassShare of the vertices left is the last: what
+        // remains is held by the shape checks, and every further pass would cost a whole pass
+        // for a handful (on a terraced exceedance surface, ten passes for 0.2 % of its vertices).
+        if (made * kLastPassShare < m.positions.size()) break;
     }
     result.mesh.positions = std::move(m.positions);
     result.mesh.indices = std::move(m.indices);
