@@ -1,7 +1,9 @@
-// Allocator for the large value blocks of ensemble members. Two things make loading fast:
-//  - Blocks of 1 MiB and more are mapped with MAP_POPULATE on Linux, which maps all pages in
-//    one call. Touching fresh pages one by one costs a fault each; on virtual machines that is
-//    ~10 us per 4 KiB page, 250 ms for a 100 MB ensemble, ten times the cost of reading it.
+// Allocator for the large value blocks of ensemble members and other grid-sized fields. Two
+// things make loading fast:
+//  - Blocks of 1 MiB and more are mapped on Linux starting on a 2 MiB boundary, advised for
+//    transparent huge pages and mapped in one call (data/bulk_allocator.cpp says why: on
+//    virtual machines each 4 KiB page costs a fault of several microseconds at its first use,
+//    and reading a time step paid for 25,000 of them twice).
 //  - Elements are default-initialised, not zeroed: readers overwrite every value anyway, and
 //    zeroing 100 MB is another pass over memory.
 // Stateless, thread-safe; other platforms fall back to operator new.
