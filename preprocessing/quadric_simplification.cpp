@@ -121,35 +121,35 @@ struct Candidate {
     Index vertex;
 };
 
-// The cheapest collapse of every vertex that may move, cheaper than the bound, in vertex order.
-// Round a closed fan every neighbour follows the vertex in exactly one triangle, so each is
-// costed once; open fans are on the border and do not move.
+// The cheapest collapse of every vertex that may move, cheaper than the bound. Each edge is
+// taken once, from the triangle where it runs from the lower index to the higher (its twin
+// runs the other way; an open border edge's ends are both on the border and stay).
 std::vector<Candidate> cheapestCollapses(const WorkingMesh& m, double limit,
                                          std::vector<Index>& target) {
     const std::size_t n = m.positions.size();
+    std::vector<float> cheapest(n, std::numeric_limits<float>::infinity());
     target.assign(n, kNoVertex);
+    for (std::size_t t = 0; t < m.indices.size(); t += 3)
+        for (std::size_t e = 0; e < 3; ++e) {
+            const Index u = m.indices[t + e], v = m.indices[t + (e == 2 ? 0 : e + 1)];
+            if (u > v) continue;
+            const glm::vec3 d = m.positions[v] - m.positions[u];
+            // Compared unnormalised: the weight is the moving vertex's own.
+            if (m.border[u] == 0) {
+                const float s = std::abs(m.quadrics[u].sum(d));
+                if (s < cheapest[u]) cheapest[u] = s, target[u] = v;
+            }
+            if (m.border[v] == 0) {
+                const float s = std::abs(m.quadrics[v].sum(-d));
+                if (s < cheapest[v]) cheapest[v] = s, target[v] = u;
+            }
+        }
     std::vector<Candidate> candidates;
-    for (Index u = 0; u < n; ++u) {
-        if (m.border[u] != 0) continue;
-        const LocalQuadric& q = m.quadrics[u];
-        const glm::vec3 p = m.positions[u];
-        float cheapest = std::numeric_limits<float>::infinity();
-        Index best = kNoVertex;
-        for (Index k = m.firstTriangle[u]; k < m.firstTriangle[u + 1]; ++k) {
-            const Index t = 3 * m.triangles[k];
-            const Index next = m.indices[t] == u       ? m.indices[t + 1]
-                               : m.indices[t + 1] == u ? m.indices[t + 2]
-                                                       : m.indices[t];
-            // Compared unnormalised: the weight is u's own.
-            const float s = std::abs(q.sum(m.positions[next] - p));
-            if (s < cheapest) cheapest = s, best = next;
-        }
-        if (best == kNoVertex) continue;
-        const float error = q.weight > 0.0F ? cheapest / q.weight : 0.0F;
-        if (error <= limit) {
-            target[u] = best;
-            candidates.push_back({error, u});
-        }
+    for (Index v = 0; v < n; ++v) {
+        if (target[v] == kNoVertex) continue;
+        const float w = m.quadrics[v].weight;
+        const float error = w > 0.0F ? cheapest[v] / w : 0.0F;
+        if (error <= limit) candidates.push_back({error, v});
     }
     return candidates;
 }
