@@ -5,11 +5,13 @@
 // be thread-safe).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <mutex>
 #include <stdexcept>
 #include <stop_token>
+#include <vector>
 
 namespace ensil::data {
 
@@ -47,6 +49,40 @@ private:
     std::size_t m_parts;
     double m_from, m_to;
     std::size_t m_done = 0;
+    std::mutex m_mutex;
+};
+
+// Progress of parts that run at the same time, each reporting its own fraction: the whole is
+// their sum weighted by each part's share of the work, reported under one lock and never
+// backwards (a part may report while another's larger sum is being reported).
+class WeightedPartsProgress {
+public:
+    WeightedPartsProgress(Progress progress, std::vector<double> weights)
+        : m_progress(std::move(progress)),
+          m_weights(std::move(weights)),
+          m_fractions(m_weights.size(), 0.0) {
+        for (const double w : m_weights) m_total += w;
+    }
+    // The Progress of part i (0 .. 1); valid while this object lives.
+    Progress part(std::size_t i) {
+        return [this, i](double fraction) { partAt(i, fraction); };
+    }
+
+private:
+    void partAt(std::size_t i, double fraction) {
+        const std::lock_guard lock(m_mutex);
+        m_fractions[i] = std::max(m_fractions[i], fraction);
+        double sum = 0.0;
+        for (std::size_t k = 0; k < m_weights.size(); ++k) sum += m_weights[k] * m_fractions[k];
+        const double whole = m_total > 0.0 ? sum / m_total : 1.0;
+        if (whole <= m_reported) return;
+        m_reported = whole;
+        report(m_progress, whole);
+    }
+
+    Progress m_progress;
+    std::vector<double> m_weights, m_fractions;
+    double m_total = 0.0, m_reported = -1.0;
     std::mutex m_mutex;
 };
 

@@ -25,17 +25,27 @@ std::string defaultMeshCacheDirectory() {
         .toStdString();
 }
 
-void addContextOf(const IsovalueJobInput& in, IsovalueOutcome& out, double from, double to,
-                  const std::stop_token& stop, const data::Progress& progress) {
-    const auto start = Clock::now();
-    prep::ContextSurfaces context = prep::buildContextSurfaces(
+prep::ContextSurfaces buildContextOf(const IsovalueJobInput& in, const std::stop_token& stop,
+                                     const data::Progress& progress) {
+    return prep::buildContextSurfaces(
         *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
-        stop, [&](double f) { data::report(progress, from + (to - from) * f); });
+        stop, progress);
+}
+
+void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seconds) {
     prep::addContextSurfaces(out.meshes, context);
     out.boxplot = std::move(context.boxplot);
     out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
     out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
-    out.seconds["context_surfaces"] = since(start);
+    out.seconds["context_surfaces"] = seconds;
+}
+
+void addContextOf(const IsovalueJobInput& in, IsovalueOutcome& out, double from, double to,
+                  const std::stop_token& stop, const data::Progress& progress) {
+    const auto start = Clock::now();
+    prep::ContextSurfaces context =
+        buildContextOf(in, stop, [&](double f) { data::report(progress, from + (to - from) * f); });
+    addContext(out, std::move(context), since(start));
 }
 
 IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token& stop,
@@ -45,61 +55,72 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         in.sourceKey + "; " + prep::pipelineKey(in.options, in.verticalExaggeration);
     std::optional<prep::MeshCache> cache;
     if (in.cacheDirectory) cache.emplace(*in.cacheDirectory);
-    auto start = Clock::now();
-    std::optional<prep::IsovalueMeshes> cached;
-    if (cache) cached = cache->load(key);
-    if (cached) {
-        out.meshes = std::move(*cached);
-        out.fromCache = true;
-        out.seconds["cache_read"] = since(start);
-    } else {
-        out.meshes = prep::buildIsovalueMeshes(
-            *in.ensemble, *in.moments,
-            data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options, stop,
-            [&](double f) { data::report(progress, 0.75 * f); });
-        out.seconds["meshes"] = out.meshes.seconds.meshes;
-        out.seconds["decimation"] = out.meshes.seconds.decimation;
-        out.seconds["attributes"] = out.meshes.seconds.attributes;
-        if (cache) {
-            try {
-                cache->store(key, out.meshes);
-            } catch (const data::Error& e) {
-                // A cache that cannot be written only costs time next time: said, not fatal.
-                out.cacheWarning = e.what();
-            }
-        }
-    }
-    // The context surfaces, the distances and each member's distance to the mean read only the
-    // ensemble and write parts of their own: run side by side (each is parallel inside, but
-    // partly serial), so the cores stay busy. Each result is what it is when run alone; their
-    // seconds overlap. The summaries are cheap beside the meshes and depend on nothing the
-    // cache keeps: made afresh, so the cache's format stays as it is.
-    // Only the context's part writes out.seconds while they run.
-    data::PartsProgress partsDone(progress, 3, 0.75, 1.0);
+    // The members' meshes (or the cache's), the context surfaces, the distances and each
+    // member's distance to the mean read only the ensemble and write results of their own: all
+    // run side by side, so that the serial parts of each (the context's largest surface, the
+    // last members' meshes, the distances' merge) leave no core idle. Each result is what it is
+    // when run alone; their seconds overlap. The summaries are cheap beside the meshes and
+    // depend on nothing the cache keeps: made afresh, so the cache's format stays as it is.
+    // The meshes are most of the work: three quarters of the progress.
+    data::WeightedPartsProgress parts(progress, {0.75, 0.25 / 3, 0.25 / 3, 0.25 / 3});
+    std::optional<prep::IsovalueMeshes> meshes;
+    std::map<std::string, double> meshSeconds;
+    prep::ContextSurfaces context;
+    double contextSeconds = 0.0, similaritySeconds = 0.0, toMeanSeconds = 0.0;
     const auto& mean = in.moments->mean.values;
-    double similaritySeconds = 0.0, toMeanSeconds = 0.0;
     tbb::parallel_invoke(
         [&] {
-            addContextOf(in, out, 0.0, 0.0, stop, {});
-            partsDone.partDone();
+            const auto start = Clock::now();
+            if (cache) meshes = cache->load(key);
+            if (meshes) {
+                out.fromCache = true;
+                meshSeconds["cache_read"] = since(start);
+            } else {
+                meshes = prep::buildIsovalueMeshes(
+                    *in.ensemble, *in.moments,
+                    data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
+                    stop, parts.part(0));
+                meshSeconds["meshes"] = meshes->seconds.meshes;
+                meshSeconds["decimation"] = meshes->seconds.decimation;
+                meshSeconds["attributes"] = meshes->seconds.attributes;
+                if (cache) {
+                    try {
+                        cache->store(key, *meshes);
+                    } catch (const data::Error& e) {
+                        // A cache that cannot be written only costs time next time: said, not
+                        // fatal.
+                        out.cacheWarning = e.what();
+                    }
+                }
+            }
+            parts.part(0)(1.0);
+        },
+        [&] {
+            const auto t = Clock::now();
+            context = buildContextOf(in, stop, {});
+            contextSeconds = since(t);
+            parts.part(1)(1.0);
         },
         [&] {
             const auto t = Clock::now();
             out.distances = prep::computeDistanceMatrix(*in.ensemble, in.options.isovalue, stop);
             similaritySeconds = since(t);
-            partsDone.partDone();
+            parts.part(2)(1.0);
         },
         [&] {
             const auto t = Clock::now();
             out.distancesToMean = prep::distancesToField(*in.ensemble, {mean.data(), mean.size()},
                                                          in.options.isovalue, stop);
             toMeanSeconds = since(t);
-            partsDone.partDone();
+            parts.part(3)(1.0);
         });
     data::throwIfStopped(stop);
+    out.meshes = std::move(*meshes);
+    out.seconds = std::move(meshSeconds);
+    addContext(out, std::move(context), contextSeconds);
     out.seconds["similarity"] = similaritySeconds;
     out.seconds["member_summaries"] = toMeanSeconds;
-    start = Clock::now();
+    auto start = Clock::now();
     out.tree = prep::clusterMembers(out.distances, in.linkage, stop);
     out.seconds["clustering"] = since(start);
     start = Clock::now();

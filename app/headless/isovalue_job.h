@@ -13,6 +13,7 @@
 
 #include "data/ensemble.h"
 #include "preprocessing/clustering.h"
+#include "preprocessing/context_surfaces.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/inclusion_depth.h"
 #include "preprocessing/isosurface_pipeline.h"
@@ -41,21 +42,26 @@ struct IsovalueOutcome {
     // The contour boxplot (METHODS.md section 17): depths, median member, band and outliers;
     // its surfaces are in `meshes`.
     prep::ContourBoxplot boxplot;
-    std::vector<float> exceedanceColumnMaximum;  // for the floor: max over z of P(f > c)
+    std::vector<float> exceedanceColumnMaximum;           // for the floor: max over z of P(f > c)
     std::shared_ptr<const data::FieldValues> exceedance;  // P(f > c), for a section
     bool fromCache = false;
     // Why the results could not be stored in the cache (a read-only folder, a full disk);
     // empty when they were, or when there is no cache.
     std::string cacheWarning;
-    std::map<std::string, double>
-        seconds;  // cache_read or meshes/decimation/attributes, context_surfaces, similarity,
-                  // clustering
+    std::map<std::string, double> seconds;  // cache_read or meshes/decimation/attributes,
+                                            // context_surfaces, similarity, clustering
 };
 
 // The context surfaces (P = 0.5, the 50 % band), the contour boxplot and P(f > c) of
 // input.ensemble, added to out.meshes and out; `progress` runs from `from` to `to`.
 void addContextOf(const IsovalueJobInput& input, IsovalueOutcome& out, double from, double to,
                   const std::stop_token& stop, const data::Progress& progress);
+
+// addContextOf in two halves: the work (any thread, touches nothing shared) and the hand-over
+// into `out` (with its seconds).
+prep::ContextSurfaces buildContextOf(const IsovalueJobInput& input, const std::stop_token& stop,
+                                     const data::Progress& progress);
+void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seconds);
 
 // Throws Cancelled; data::Error from the steps. A cache that cannot be written is ignored.
 IsovalueOutcome runIsovalueJob(const IsovalueJobInput& input, const std::stop_token& stop = {},
