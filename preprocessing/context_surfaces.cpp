@@ -1,9 +1,8 @@
 #include "preprocessing/context_surfaces.h"
 
-#include <tbb/parallel_invoke.h>
-
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/exceedance.h"
+#include "preprocessing/side_by_side.h"
 
 namespace ensil::prep {
 
@@ -16,7 +15,7 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     // are serial), each as it would be alone.
     data::FieldValues exceedance;
     data::PartsProgress partsDone(progress, 2, 0.0, 0.7);
-    tbb::parallel_invoke(
+    runSideBySide(
         [&] {
             exceedance = computeExceedance(ensemble, options.isovalue, stop);
             partsDone.partDone();
@@ -33,9 +32,9 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     const auto mesh = [&](const data::FieldValues& field, data::PackedMesh& into) {
         into = meshField(ensemble.grid, field, kHalf, axes, nullptr, options, stop).mesh;
     };
-    tbb::parallel_invoke([&] { mesh(exceedance, out.probability); },
-                         [&] { mesh(out.boxplot.bandInner, out.bandInner); },
-                         [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
+    runSideBySide([&] { mesh(exceedance, out.probability); },
+                  [&] { mesh(out.boxplot.bandInner, out.bandInner); },
+                  [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
     data::throwIfStopped(stop);
     out.exceedanceColumnMaximum = computeColumnMaximum(ensemble.grid, {"exceedance", exceedance});
     out.exceedance = std::move(exceedance);

@@ -1,6 +1,7 @@
 #include "app/headless/isovalue_job.h"
 
-// oneTBB before Qt: Qt defines `emit` as a macro, and oneTBB declares functions of that name.
+// oneTBB before Qt: Qt defines `emit` as a macro, and oneTBB declares functions of that name
+// (preprocessing/side_by_side.h includes this too, after Qt).
 #include <tbb/parallel_invoke.h>
 
 #include <QStandardPaths>
@@ -10,6 +11,7 @@
 #include "preprocessing/context_surfaces.h"
 #include "preprocessing/member_summaries.h"
 #include "preprocessing/mesh_cache.h"
+#include "preprocessing/side_by_side.h"
 
 namespace ensil::app {
 namespace {
@@ -68,7 +70,7 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
     prep::ContextSurfaces context;
     double contextSeconds = 0.0, similaritySeconds = 0.0, toMeanSeconds = 0.0;
     const auto& mean = in.moments->mean.values;
-    tbb::parallel_invoke(
+    prep::runSideBySide(
         [&] {
             const auto start = Clock::now();
             if (cache) meshes = cache->load(key);
