@@ -18,7 +18,9 @@ TEST(SideBySide, APartThatThrowsDoesNotCutTheOthersInnerLoopsShort) {
     std::atomic<int> done{0};
     constexpr int kItems = 2000;
     const auto throwing = [&] {
-        while (!inside.load()) std::this_thread::yield();
+        // Bounded, so that with a single worker (the parts then run one after the other) it
+        // throws anyway, and the loop still has to run all its items.
+        for (int k = 0; k < 1000000 && !inside.load(); ++k) std::this_thread::yield();
         thrown = true;
         throw std::runtime_error("part one failed");
     };
@@ -26,7 +28,7 @@ TEST(SideBySide, APartThatThrowsDoesNotCutTheOthersInnerLoopsShort) {
         tbb::parallel_for(0, kItems, [&](int i) {
             if (i == 0) {
                 inside = true;
-                while (!thrown.load()) std::this_thread::yield();
+                for (int k = 0; k < 1000000 && !thrown.load(); ++k) std::this_thread::yield();
                 // Give a cancellation every chance to arrive (a bounded wait on its flag).
                 for (int k = 0; k < 200000 && !tbb::is_current_task_group_canceling(); ++k) {
                     std::this_thread::yield();
