@@ -30,6 +30,8 @@ struct LocalQuadric {
     float b0 = 0, b1 = 0, b2 = 0, c = 0;
     float weight = 0;  // the planes' summed area
 
+    // A sum of squared distances as the mean over the planes' area (0 without planes).
+    [[nodiscard]] float mean(float summed) const { return weight > 0.0F ? summed / weight : 0.0F; }
     [[nodiscard]] float sum(const glm::vec3& d) const {
         return d.x * (a00 * d.x + 2.0F * (a01 * d.y + a02 * d.z + b0)) +
                d.y * (a11 * d.y + 2.0F * (a12 * d.z + b1)) + d.z * (a22 * d.z + 2.0F * b2) + c;
@@ -147,8 +149,7 @@ std::vector<Candidate> cheapestCollapses(const WorkingMesh& m, double limit,
     std::vector<Candidate> candidates;
     for (Index v = 0; v < n; ++v) {
         if (target[v] == kNoVertex) continue;
-        const float w = m.quadrics[v].weight;
-        const float error = w > 0.0F ? cheapest[v] / w : 0.0F;
+        const float error = m.quadrics[v].mean(cheapest[v]);
         if (error <= limit) candidates.push_back({error, v});
     }
     return candidates;
@@ -234,7 +235,6 @@ public:
     }
 
 private:
-    // Vertex `i` of triangle t as this pass has moved it so far.
     // The two corners of triangle t other than v (which has not moved), as this pass has moved
     // them so far, in winding order after v.
     [[nodiscard]] std::pair<Index, Index> othersOf(Index t, Index v) const {
@@ -282,7 +282,6 @@ private:
     Index nextAllowedTarget(Index a, Index refused, double limit, float& error) {
         m_options.clear();
         const LocalQuadric& q = m_.quadrics[a];
-        const float w = q.weight;
         for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k)
             for (int i = 0; i < 3; ++i) {
                 const Index x = m_.indices[3 * m_.triangles[k] + i];
@@ -290,8 +289,7 @@ private:
                 if (std::any_of(m_options.begin(), m_options.end(),
                                 [x](const Candidate& o) { return o.vertex == x; }))
                     continue;
-                const float s = std::abs(q.sum(m_.positions[x] - m_.positions[a]));
-                const float e = w > 0.0F ? s / w : 0.0F;
+                const float e = q.mean(std::abs(q.sum(m_.positions[x] - m_.positions[a])));
                 if (e <= limit) m_options.push_back({e, x});
             }
         std::sort(m_options.begin(), m_options.end(),
@@ -335,7 +333,8 @@ SimplifiedMesh simplifyMesh(const data::TriangleMesh& mesh, float maxError) {
     double worst = 0.0;
     std::vector<Index> target;
     // Each pass removes about four in ten of the vertices left, so the passes together cost
-    // about two and a half of the first; it stops when no collapse within the bound is left.
+    // about two and a half of the first; they stop when no collapse within the bound is left,
+    // or after a pass that removed almost nothing (below).
     for (;;) {
         m.findTrianglesAroundVertices();
         const std::vector<Candidate> candidates = cheapestCollapses(m, limit, target);

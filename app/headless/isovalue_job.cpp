@@ -19,14 +19,9 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
-}  // namespace
 
-std::string defaultMeshCacheDirectory() {
-    return (QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
-            QStringLiteral("/meshes"))
-        .toStdString();
-}
-
+// addContextOf in two halves: the work (any thread, touches nothing shared) and the hand-over
+// into `out` (with its seconds).
 prep::ContextSurfaces buildContextOf(const IsovalueJobInput& in, const std::stop_token& stop,
                                      const data::Progress& progress) {
     return prep::buildContextSurfaces(
@@ -40,6 +35,13 @@ void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seco
     out.exceedanceColumnMaximum = std::move(context.exceedanceColumnMaximum);
     out.exceedance = std::make_shared<const data::FieldValues>(std::move(context.exceedance));
     out.seconds["context_surfaces"] = seconds;
+}
+}  // namespace
+
+std::string defaultMeshCacheDirectory() {
+    return (QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +
+            QStringLiteral("/meshes"))
+        .toStdString();
 }
 
 void addContextOf(const IsovalueJobInput& in, IsovalueOutcome& out, double from, double to,

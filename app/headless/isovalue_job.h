@@ -13,7 +13,6 @@
 
 #include "data/ensemble.h"
 #include "preprocessing/clustering.h"
-#include "preprocessing/context_surfaces.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/inclusion_depth.h"
 #include "preprocessing/isosurface_pipeline.h"
@@ -56,12 +55,6 @@ struct IsovalueOutcome {
 // input.ensemble, added to out.meshes and out; `progress` runs from `from` to `to`.
 void addContextOf(const IsovalueJobInput& input, IsovalueOutcome& out, double from, double to,
                   const std::stop_token& stop, const data::Progress& progress);
-
-// addContextOf in two halves: the work (any thread, touches nothing shared) and the hand-over
-// into `out` (with its seconds).
-prep::ContextSurfaces buildContextOf(const IsovalueJobInput& input, const std::stop_token& stop,
-                                     const data::Progress& progress);
-void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seconds);
 
 // Throws Cancelled; data::Error from the steps. A cache that cannot be written is ignored.
 IsovalueOutcome runIsovalueJob(const IsovalueJobInput& input, const std::stop_token& stop = {},
