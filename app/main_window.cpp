@@ -19,6 +19,7 @@
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUnhandledException>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -36,18 +37,22 @@
 #include "data/error.h"
 #include "geo/map_projection.h"
 #include "widgets/cluster_panel.h"
+#include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
+#include "widgets/frame_paced_repaints.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/cluster_timeline.h"
-#include "widgets/time_bar.h"
 #include "widgets/session/session_model.h"
 #include "widgets/session/view_presets.h"
 #include "widgets/silhouette_view.h"
+#include "widgets/time_bar.h"
 
 namespace ensil::app {
 namespace {
 constexpr int kProgressSteps = 1000;
+// How long the isovalue's slider, spin box and marker may wait for a preview frame to be drawn
+// with (ui::FramePacedRepaints): ten repaints a second at the least.
+constexpr std::chrono::milliseconds kLongestScrubRepaintWait{100};
 
 // QtConcurrent wraps exceptions it does not know in QUnhandledException; unwrap them.
 std::exception_ptr unwrap(const std::exception_ptr& error) {
@@ -220,6 +225,7 @@ void MainWindow::createMenus() {
 void MainWindow::createToolbar() {
     m_toolbar = new ui::RenderToolbar(this);
     addToolBar(Qt::TopToolBarArea, m_toolbar);
+    m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
     m_session = new IsovalueSession(
         m_view, m_selection,
         QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
@@ -307,16 +313,15 @@ std::size_t MainWindow::memoryLimit() const {
 }
 
 EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
-                                         const std::function<std::string()>& identify,
-                                         const std::stop_token& stop,
-                                         const data::Progress& progress) {
-    WorkbenchEnsemble loaded =
-        source(stop, [&](double f) { data::report(progress, 0.6 * f); });
+                                          const std::function<std::string()>& identify,
+                                          const std::stop_token& stop,
+                                          const data::Progress& progress) {
+    WorkbenchEnsemble loaded = source(stop, [&](double f) { data::report(progress, 0.6 * f); });
     // As the command line does: no NaN distance of theirs may reach the clustering.
     std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
-    EnsembleOverview overview = buildEnsembleOverview(
-        std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
-        [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+    EnsembleOverview overview =
+        buildEnsembleOverview(std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)),
+                              stop, [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
     overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
     overview.membersWithoutData = std::move(withoutData);
     if (loaded.streamed) {

@@ -33,6 +33,7 @@ namespace ensil::ui {
 class SilhouetteView;
 class EnsembleInfoPanel;
 class RenderToolbar;
+class FramePacedRepaints;
 class RenderPanel;
 class CuttingPlanePanel;
 class AnimationBar;
@@ -241,6 +242,8 @@ private:
     QLabel* m_pointText = nullptr;  // what lies under the cursor: place, level, values
     QMenu* m_recentMenu = nullptr;
     ui::RenderToolbar* m_toolbar = nullptr;
+    // While the isovalue is scrubbed, the toolbar repaints with the view's preview frames.
+    ui::FramePacedRepaints* m_scrubRepaints = nullptr;
     ui::RenderPanel* m_renderPanel = nullptr;
     ui::CuttingPlanePanel* m_planePanel = nullptr;
     ui::AnimationBar* m_animation = nullptr;

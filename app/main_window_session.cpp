@@ -12,6 +12,7 @@
 #include "app/main_window.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
+#include "widgets/frame_paced_repaints.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
@@ -57,9 +58,12 @@ void MainWindow::bindSession() {
     // (saved, undoable); the preview is the view following the pointer.
     connect(m_toolbar, &ui::RenderToolbar::isovalueScrubbed, this, [this](double v) {
         if (!m_overview) return;
+        m_scrubRepaints->begin();
+        m_scrubRepaints->changed();
         m_session->previewIsovalue(static_cast<float>(v), m_model->state().verticalExaggeration);
     });
     connect(m_toolbar, &ui::RenderToolbar::isovalueScrubEnded, this, [this] {
+        m_scrubRepaints->end();
         m_session->endPreview();
         // The title names the value committed (the preview's may have been a dropped one).
         const std::optional<float> committed = m_model->state().isovalue;
@@ -68,6 +72,7 @@ void MainWindow::bindSession() {
             QString::fromStdString(pictureTitle(*m_overview->ensemble, *committed)));
     });
     connect(m_session, &IsovalueSession::previewShown, this, [this](float isovalue) {
+        m_scrubRepaints->frameComing();  // the toolbar's held-back repaints drawn with it
         if (!m_overview) return;
         m_view->renderer().setTitle(
             QString::fromStdString(pictureTitle(*m_overview->ensemble, isovalue)));

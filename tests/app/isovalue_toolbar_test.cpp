@@ -78,6 +78,8 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
         ASSERT_LE(session->pendingPreviews(), 1) << "at position " << p;
     }
     EXPECT_EQ(session->pendingPreviews(), 1);
+    EXPECT_FALSE(window.renderToolbar()->updatesEnabled())
+        << "while scrubbing, the toolbar repaints with the preview frames (FramePacedRepaints)";
     const auto last = static_cast<float>(control->value());
     ASSERT_TRUE(QTest::qWaitFor(
         [&] { return !shown.isEmpty() && shown.last().at(0).toFloat() == last; }, 60000));
@@ -100,6 +102,7 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
     // The release builds the full surfaces; the preview stays until they are ready.
     slider->setSliderDown(false);
     EXPECT_FALSE(session->isPreviewing());
+    EXPECT_TRUE(window.renderToolbar()->updatesEnabled()) << "the release repaints it at once";
     EXPECT_EQ(window.view()->renderer().meshes()->isovalue, last);
     ASSERT_TRUE(built.wait(60000));
     const auto final = window.view()->renderer().meshes();

@@ -131,7 +131,9 @@ int main(int argc, char** argv) {
         if (s > 0.0) previewBuildMs.push_back(s * 1e3);
     });
     bool scrubbing = true;
+    int framesWhileScrubbing = 0;  // every frame drawn, new value or not
     QObject::connect(view, &QOpenGLWidget::frameSwapped, [&] {
+        if (scrubbing) ++framesWhileScrubbing;
         const auto& meshes = view->renderer().meshes();
         if (!scrubbing || !meshes || meshes->isovalue == lastDrawn) return;
         lastDrawn = meshes->isovalue;
@@ -146,6 +148,7 @@ int main(int argc, char** argv) {
     const int from = ui::IsovalueControl::kSliderSteps * 3 / 10;
     const int to = ui::IsovalueControl::kSliderSteps * 7 / 10;
     const double durationMs = seconds * 1000.0;
+    const std::size_t framesBefore = view->framesDrawn();
     clock.start();
     slider.setSliderDown(true);
     int events = 0;
@@ -156,6 +159,7 @@ int main(int argc, char** argv) {
     }
     if (!pictures.isEmpty()) view->renderImage(view->size()).save(pictures + "_preview.png");
     // The release, and the full-detail surfaces of the value released drawn.
+    const std::size_t viewFramesWhileScrubbing = view->framesDrawn() - framesBefore;
     QElapsedTimer release;
     release.start();
     scrubbing = false;
@@ -194,6 +198,9 @@ int main(int argc, char** argv) {
     std::printf(
         "  updates a second                  %6.1f  (%zu frames with a new value; goal >= 10)\n",
         static_cast<double>(updateTimesMs.size()) / seconds, updateTimesMs.size());
+    std::printf(
+        "  frames while scrubbing            %zu drawn by the view, %d window compositions\n",
+        viewFramesWhileScrubbing, framesWhileScrubbing);
     std::printf("  pointer move to picture           median %6.0f ms, worst %6.0f ms\n",
                 orZero(latencyMs),
                 latencyMs.empty() ? 0.0 : *std::max_element(latencyMs.begin(), latencyMs.end()));
