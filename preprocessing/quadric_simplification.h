@@ -21,7 +21,9 @@ struct SimplifiedMesh {
     float error = 0.0F;
 };
 
-// maxError <= 0 (or NaN) returns the mesh unchanged.
-SimplifiedMesh simplifyMesh(const data::TriangleMesh& mesh, float maxError);
+// maxError <= 0 (or NaN) returns the mesh unchanged. The mesh is taken by value: handed over
+// with std::move, its arrays become the working ones instead of being copied (a full-resolution
+// mesh less in memory for every member being meshed).
+SimplifiedMesh simplifyMesh(data::TriangleMesh mesh, float maxError);
 
 }  // namespace ensil::prep
