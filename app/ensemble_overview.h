@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "app/headless/floor_map.h"
+#include "app/headless/workbench_reading.h"
 #include "data/ensemble.h"
 #include "data/job.h"
 #include "geo/map_lines.h"
-#include "app/headless/floor_map.h"
-#include "app/headless/workbench_reading.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
 
@@ -35,8 +35,22 @@ struct EnsembleOverview {
     std::shared_ptr<const StreamedSource> streamed;
 };
 
-// Throws data::Cancelled, data::Error.
+// What another time step of the data shown shares with the step on screen, so that reading a
+// step does not compute it again: the isovalue the data opened at (a step keeps the session's
+// isovalue; this is only its fallback), and the map lines (tens of milliseconds through PROJ
+// for the 1:50m coastlines) when the grid and its mapping are the same.
+struct SameDataParts {
+    float defaultIsovalue = 0.0F;
+    std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
+    data::Grid grid;
+    data::GridMapping gridMapping;
+};
+SameDataParts sameDataParts(const EnsembleOverview& overview);
+
+// Throws data::Cancelled, data::Error. With `sameData` from another time step of the same data
+// on the same grid and mapping, its isovalue and map lines are taken instead of computed.
 EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
-                                       const std::stop_token& stop, const data::Progress& progress);
+                                       const std::stop_token& stop, const data::Progress& progress,
+                                       const SameDataParts* sameData = nullptr);
 
 }  // namespace ensil::app

@@ -315,13 +315,14 @@ std::size_t MainWindow::memoryLimit() const {
 EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
                                           const std::function<std::string()>& identify,
                                           const std::stop_token& stop,
-                                          const data::Progress& progress) {
+                                          const data::Progress& progress,
+                                          const SameDataParts* sameData) {
     WorkbenchEnsemble loaded = source(stop, [&](double f) { data::report(progress, 0.6 * f); });
     // As the command line does: no NaN distance of theirs may reach the clustering.
     std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
-    EnsembleOverview overview =
-        buildEnsembleOverview(std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)),
-                              stop, [&](double f) { data::report(progress, 0.6 + 0.4 * f); });
+    EnsembleOverview overview = buildEnsembleOverview(
+        std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
+        [&](double f) { data::report(progress, 0.6 + 0.4 * f); }, sameData);
     overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
     overview.membersWithoutData = std::move(withoutData);
     if (loaded.streamed) {

@@ -160,17 +160,19 @@ private:
     // Reads an ensemble and builds its overview (on a worker). `identify` gives the data's
     // identity for the mesh cache; it runs on the worker, since it reads the files (a content
     // hash).
+    // `sameData`: another time step's parts that this one shares (buildEnsembleOverview).
     static EnsembleOverview loadOverview(const EnsembleSource& source,
                                          const std::function<std::string()>& identify,
                                          const std::stop_token& stop,
-                                         const data::Progress& progress);
+                                         const data::Progress& progress,
+                                         const SameDataParts* sameData = nullptr);
     // Time as an axis of the session (main_window_time.cpp): the time bar, a step asked for
     // (read in the background, the last step kept on screen until this one is built), the
     // step shown, and the steps read ahead or visited, kept within a memory budget.
     void createTimeBar();
-    // A step's ensemble read and its overview built, on a worker.
-    static BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection,
-                                                             std::size_t memoryLimit);
+    // A step's ensemble read and its overview built, on a worker; what it shares with the step
+    // shown (the opening isovalue, the map lines) is taken from that one.
+    BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection) const;
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     void goToTimeStep(std::size_t step);
     void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);

@@ -36,14 +36,15 @@ std::size_t timeStepBudget() {
 
 }  // namespace
 
-BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(const data::DataSelection& selection,
-                                                              std::size_t memoryLimit) {
-    return [selection, memoryLimit](const std::stop_token& stop, const data::Progress& progress) {
+BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(
+    const data::DataSelection& selection) const {
+    return [selection, memoryLimit = memoryLimit(), sameData = sameDataParts(*m_overview)](
+               const std::stop_token& stop, const data::Progress& progress) {
         return loadOverview(
             [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
                 return readForWorkbench(selection, memoryLimit, s, p);
             },
-            [selection] { return data::sourceIdentity(selection); }, stop, progress);
+            [selection] { return data::sourceIdentity(selection); }, stop, progress, &sameData);
     };
 }
 
@@ -228,7 +229,7 @@ void MainWindow::goToTimeStep(std::size_t step) {
     setBusy(tr("Reading time step %1...").arg(step + 1));
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
-        readingStep(selection, memoryLimit()),
+        readingStep(selection),
         [this, step](EnsembleOverview overview) {
             if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
             showTimeStep(std::make_unique<EnsembleOverview>(std::move(overview)), step);
@@ -311,7 +312,7 @@ void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
 }
 
 void MainWindow::readAhead() {
-    if (!m_requested || m_timeBar->stepCount() < 2) return;
+    if (!m_requested || !m_overview || m_timeBar->stepCount() < 2) return;
     const auto n = static_cast<std::size_t>(m_timeBar->stepCount());
     const std::size_t current = m_requested->timeIndex;
     std::size_t next = 0;
@@ -332,7 +333,7 @@ void MainWindow::readAhead() {
     m_readingAhead = next;
     const data::DataSelection selection = timeStepSelection(next);
     m_readAhead.start(
-        readingStep(selection, memoryLimit()),
+        readingStep(selection),
         [this, next](EnsembleOverview overview) {
             m_readingAhead = kNoStep;
             auto read = std::make_unique<EnsembleOverview>(std::move(overview));
