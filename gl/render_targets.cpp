@@ -88,37 +88,55 @@ int supportedSamples(GlFunctions& f, int wanted) {
 }
 }  // namespace
 
-void RenderTargets::ensure(GlFunctions& f, int width, int height, int samples) {
-    if (width == m_width && height == m_height && samples == m_requestedSamples && m_scene != 0) {
-        return;
+void RenderTargets::ensure(GlFunctions& f, int width, int height, int samples, bool reduced) {
+    if (m_sets[m_current].is(width, height, samples)) return;
+    const std::size_t other = 1 - m_current;
+    if (!m_sets[other].is(width, height, samples)) {
+        releaseSet(f, m_sets[other]);
+        make(f, m_sets[other], width, height, samples);
     }
-    release(f);
-    m_width = width;
-    m_height = height;
-    m_requestedSamples = samples;
-    m_samples = supportedSamples(f, samples);
-    m_color = renderbuffer(f, GL_RGBA8, m_samples, width, height);
-    m_depth = renderbuffer(f, GL_DEPTH_COMPONENT24, m_samples, width, height);
-    m_accumulation = multisampledTexture(f, GL_RGBA16F, m_samples, width, height);
-    m_revealage = multisampledTexture(f, GL_R16F, m_samples, width, height);
-    // Filtered: a scene drawn smaller than the frame is scaled up from it (Renderer::present).
-    m_resolvedColor = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height, GL_LINEAR);
+    m_current = other;
+    SceneSet& left = m_sets[1 - m_current];
+    if (!reduced && left.pixels() > current().pixels()) releaseSet(f, left);
+}
 
-    const Attachment depth{GL_RENDERBUFFER, m_depth};
-    m_scene = framebuffer(f, {{GL_RENDERBUFFER, m_color}}, depth, "scene");
+void RenderTargets::make(GlFunctions& f, SceneSet& set, int width, int height, int samples) {
+    set.width = width;
+    set.height = height;
+    set.requestedSamples = samples;
+    set.samples = supportedSamples(f, samples);
+    set.color = renderbuffer(f, GL_RGBA8, set.samples, width, height);
+    set.depth = renderbuffer(f, GL_DEPTH_COMPONENT24, set.samples, width, height);
+    set.accumulation = multisampledTexture(f, GL_RGBA16F, set.samples, width, height);
+    set.revealage = multisampledTexture(f, GL_R16F, set.samples, width, height);
+    // Filtered: a scene drawn smaller than the frame is scaled up from it (Renderer::present).
+    set.resolvedColor = texture(f, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, width, height, GL_LINEAR);
+
+    const Attachment depth{GL_RENDERBUFFER, set.depth};
+    set.scene = framebuffer(f, {{GL_RENDERBUFFER, set.color}}, depth, "scene");
     // The transparent members test against the opaque scene's depth.
-    m_transparency = framebuffer(
-        f, {{GL_TEXTURE_2D_MULTISAMPLE, m_accumulation}, {GL_TEXTURE_2D_MULTISAMPLE, m_revealage}},
+    set.transparency = framebuffer(
+        f,
+        {{GL_TEXTURE_2D_MULTISAMPLE, set.accumulation}, {GL_TEXTURE_2D_MULTISAMPLE, set.revealage}},
         depth, "transparency");
-    m_resolved = framebuffer(f, {{GL_TEXTURE_2D, m_resolvedColor}}, {}, "resolved scene");
+    set.resolved = framebuffer(f, {{GL_TEXTURE_2D, set.resolvedColor}}, {}, "resolved scene");
+    ++m_setsMade;
 }
 
 void RenderTargets::resolve(GlFunctions& f) {
-    f.glBindFramebuffer(GL_READ_FRAMEBUFFER, m_scene);
-    f.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_resolved);
-    f.glBlitFramebuffer(0, 0, m_width, m_height, 0, 0, m_width, m_height, GL_COLOR_BUFFER_BIT,
-                        GL_NEAREST);
+    const SceneSet& set = current();
+    f.glBindFramebuffer(GL_READ_FRAMEBUFFER, set.scene);
+    f.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, set.resolved);
+    f.glBlitFramebuffer(0, 0, set.width, set.height, 0, 0, set.width, set.height,
+                        GL_COLOR_BUFFER_BIT, GL_NEAREST);
     f.glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+long long RenderTargets::pixelsHeld() const {
+    long long pixels = 0;
+    for (const SceneSet& set : m_sets)
+        if (set.scene != 0) pixels += set.pixels();
+    return pixels;
 }
 
 void RenderTargets::ensurePick(GlFunctions& f, int width, int height) {
@@ -141,21 +159,22 @@ void RenderTargets::releasePick(GlFunctions& f) {
     m_pickWidth = m_pickHeight = 0;
 }
 
+void RenderTargets::releaseSet(GlFunctions& f, SceneSet& set) {
+    for (GLuint* fbo : {&set.scene, &set.transparency, &set.resolved}) {
+        if (*fbo != 0) f.glDeleteFramebuffers(1, fbo);
+    }
+    for (GLuint* r : {&set.color, &set.depth}) {
+        if (*r != 0) f.glDeleteRenderbuffers(1, r);
+    }
+    for (GLuint* t : {&set.accumulation, &set.revealage, &set.resolvedColor}) {
+        if (*t != 0) f.glDeleteTextures(1, t);
+    }
+    set = SceneSet{};
+}
+
 void RenderTargets::release(GlFunctions& f) {
     releasePick(f);
-    for (GLuint* fbo : {&m_scene, &m_transparency, &m_resolved}) {
-        if (*fbo != 0) f.glDeleteFramebuffers(1, fbo);
-        *fbo = 0;
-    }
-    for (GLuint* r : {&m_color, &m_depth}) {
-        if (*r != 0) f.glDeleteRenderbuffers(1, r);
-        *r = 0;
-    }
-    for (GLuint* t : {&m_accumulation, &m_revealage, &m_resolvedColor}) {
-        if (*t != 0) f.glDeleteTextures(1, t);
-        *t = 0;
-    }
-    m_width = m_height = m_requestedSamples = m_samples = 0;
+    for (SceneSet& set : m_sets) releaseSet(f, set);
 }
 
 }  // namespace ensil::gl

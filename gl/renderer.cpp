@@ -363,7 +363,7 @@ void Renderer::render(unsigned framebuffer, int width, int height) {
     m_scene.sceneSize = {scaled(width), scaled(height)};
     const int sceneWidth = m_scene.sceneSize.x, sceneHeight = m_scene.sceneSize.y;
     GlFunctions& f = *m_gpu->f;
-    m_gpu->targets.ensure(f, sceneWidth, sceneHeight, kSceneSamples);
+    m_gpu->targets.ensure(f, sceneWidth, sceneHeight, kSceneSamples, m_resolutionScale < 1.0F);
     f.glBindFramebuffer(GL_FRAMEBUFFER, m_gpu->targets.sceneFramebuffer());
     f.glViewport(0, 0, sceneWidth, sceneHeight);
     f.glClearColor(m_background.r, m_background.g, m_background.b, m_background.a);
