@@ -146,7 +146,7 @@ struct Candidate {
 // taken from the triangle where it runs from the lower index to the higher (its twin runs the
 // other way; an open border edge's ends are both on the border and stay), and a vertex's edges in
 // the order of those triangles, then of the edges within one (u -> next is the triangle's edge
-// number `corner`, previous -> u the one before it): the first of equally cheap collapses is
+// number cornerAt, previous -> u the one before it): the first of equally cheap collapses is
 // kept, so this order decides between them (the test spheres are full of exact ties).
 std::vector<Candidate> cheapestCollapses(const WorkingMesh& m, double limit,
                                          std::vector<Index>& target) {
@@ -314,7 +314,7 @@ private:
         for (Index k = m_.firstTriangle[a]; k < m_.firstTriangle[a + 1]; ++k) {
             const auto [first, second] = m_.inTriangleOrder(k);
             for (const Index x : {first, second}) {
-                if (x == refused || m_locked[x] != 0) continue;
+                if (x == a || x == refused || m_locked[x] != 0) continue;
                 if (std::any_of(m_options.begin(), m_options.end(),
                                 [x](const Candidate& o) { return o.vertex == x; }))
                     continue;
