@@ -15,7 +15,6 @@
 #include <QScopedValueRollback>
 #include <QScrollArea>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QStatusBar>
 #include <QToolButton>
 #include <QUnhandledException>
@@ -226,9 +225,9 @@ void MainWindow::createToolbar() {
     m_toolbar = new ui::RenderToolbar(this);
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
+    // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
     m_session = new IsovalueSession(
-        m_view, m_selection,
-        QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + "/meshes", this);
+        m_view, m_selection, QString::fromStdString(defaultMeshCacheDirectory()), this);
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
     connect(m_session, &IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
