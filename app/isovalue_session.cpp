@@ -357,8 +357,14 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
         m_view->renderer().setMeshes(m_result->meshes);
         m_view->renderer().setMotionMeshes(m_result->motionMeshes);
     }
-    // After the result's first frame, whose cores the build would take.
-    if (!m_result->motionMeshes) {
+    // Motion meshes not built or kept with the result (as a step prepared ahead has them):
+    if (auto preview = m_result->motionMeshes ? nullptr : keptPreview(key)) {
+        // the preview of this very isovalue and step (a step never seen was on screen in it),
+        // from the result's first frame on, a motion frame: drawing the full meshes there took
+        // 60 to 110 ms of software OpenGL, the preview 40;
+        attachMotionMeshes(key, m_result->meshes, std::move(preview));
+    } else if (!m_result->motionMeshes) {
+        // otherwise built after that frame, whose cores the build would take.
         const auto shown = m_result->meshes;
         m_view->afterNextFrame(this, [this, key, exaggeration, shown] {
             if (m_result && m_result->meshes == shown) buildMotionMeshes(key, exaggeration);
