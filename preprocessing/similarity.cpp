@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -246,17 +247,11 @@ DistanceMatrix DistanceSums::finish() const {
     result.size = n;
     result.values.assign(n * n, 0.0);
     if (n == 0) return result;
-    const PairSumsView<const Matrix> sums(m_sums.data(), static_cast<Eigen::Index>(n));
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t j = 0; j < i; ++j) {
-            const auto ii = static_cast<Eigen::Index>(i), jj = static_cast<Eigen::Index>(j);
-            const double count = sums.common(ii, jj);
-            // The expanded form loses the exact zero of identical members to rounding; clamp
-            // the tiny negative values that can result.
-            const double sum = std::max(
-                0.0, sums.squares(ii, jj) + sums.squares(jj, ii) - 2.0 * sums.cross(ii, jj));
-            if (count > 0.0) {
-                result.values[i * n + j] = result.values[j * n + i] = sum / count;
+            const double d = distance(i, j);
+            if (std::isfinite(d)) {
+                result.values[i * n + j] = result.values[j * n + i] = d;
             } else {
                 result.pairsWithoutOverlap.emplace_back(j, i);
             }
@@ -264,6 +259,21 @@ DistanceMatrix DistanceSums::finish() const {
     }
     placePairsWithoutOverlap(result);
     return result;
+}
+
+double DistanceSums::distance(std::size_t i, std::size_t j) const {
+    if (i == j) return 0.0;
+    // The matrices' lower triangles hold the symmetric sums.
+    const auto lower = static_cast<Eigen::Index>(std::max(i, j));
+    const auto upper = static_cast<Eigen::Index>(std::min(i, j));
+    const PairSumsView<const Matrix> sums(m_sums.data(), static_cast<Eigen::Index>(m_members));
+    const double count = sums.common(lower, upper);
+    if (!(count > 0.0)) return std::numeric_limits<double>::infinity();
+    // The expanded form loses the exact zero of identical members to rounding; clamp the tiny
+    // negative values that can result.
+    const double sum = std::max(0.0, sums.squares(lower, upper) + sums.squares(upper, lower) -
+                                         2.0 * sums.cross(lower, upper));
+    return sum / count;
 }
 
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
@@ -282,6 +292,38 @@ DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isova
     sums.add(values, stop, progress);
     data::throwIfStopped(stop);
     DistanceMatrix result = sums.finish();
+    data::report(progress, 1.0);
+    return result;
+}
+
+DistancesAndReference computeDistancesAndReference(const data::Ensemble& ensemble,
+                                                   std::span<const float> reference, float isovalue,
+                                                   const std::stop_token& stop,
+                                                   const data::Progress& progress) {
+    checkDistanceArguments(ensemble, isovalue, "compare the members");
+    const std::size_t n = ensemble.memberCount();
+    const std::size_t points = ensemble.grid.pointCount();
+    if (reference.size() != points) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "the reference field has " + std::to_string(reference.size()) +
+                              " values but the grid has " + std::to_string(points) + " points");
+    }
+    // The reference is member n of the sums.
+    DistanceSums sums(n + 1, isovalue);
+    std::vector<std::span<const float>> values;
+    values.reserve(n + 1);
+    for (const data::Member& member : ensemble.members) {
+        values.emplace_back(member.values.data(), points);
+    }
+    values.push_back(reference);
+    sums.add(values, stop, progress);
+    data::throwIfStopped(stop);
+    DistancesAndReference result;
+    result.toReference.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) result.toReference.push_back(sums.distance(i, n));
+    std::vector<std::size_t> members(n);
+    std::iota(members.begin(), members.end(), std::size_t{0});
+    result.matrix = sums.subset(members).finish();
     data::report(progress, 1.0);
     return result;
 }

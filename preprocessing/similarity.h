@@ -69,6 +69,9 @@ public:
     // The distance matrix of the points added, as computeDistanceMatrix describes it. Throws
     // data::Error(AllValuesMissing) when no two members share a valid point.
     [[nodiscard]] DistanceMatrix finish() const;
+    // The distance of the points added between members i and j (both < members()), +infinity
+    // when they share no valid point.
+    [[nodiscard]] double distance(std::size_t i, std::size_t j) const;
 
 private:
     std::size_t m_members = 0;
@@ -98,6 +101,23 @@ void checkDistanceArguments(const data::Ensemble& ensemble, float isovalue,
 DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
                                      const std::stop_token& stop = {},
                                      const data::Progress& progress = {});
+
+// computeDistanceMatrix's matrix and, from the same pass over the points, every member's
+// distance to `reference` (a field on the grid's points, such as the mean member): the
+// distance above with the reference as member j, +infinity for a member that shares no valid
+// point with it (as distancesToField gives it, member_summaries.h, to the rounding of the
+// expanded square). The reference is one more column of the matrix products, so this costs a
+// few percent more than the matrix alone instead of another pass over every member's values.
+// Throws as computeDistanceMatrix, and data::Error(InvalidArgument) when the reference's value
+// count differs from the grid's point count.
+struct DistancesAndReference {
+    DistanceMatrix matrix;
+    std::vector<double> toReference;  // one per member
+};
+DistancesAndReference computeDistancesAndReference(const data::Ensemble& ensemble,
+                                                   std::span<const float> reference, float isovalue,
+                                                   const std::stop_token& stop = {},
+                                                   const data::Progress& progress = {});
 
 // What a user is told when some pairs share no valid point (empty when none): how many, the
 // first few by member name, and the rule that placed them. One text for every command and the

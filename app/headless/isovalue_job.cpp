@@ -59,18 +59,19 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         in.sourceKey + "; " + prep::pipelineKey(in.options, in.verticalExaggeration);
     std::optional<prep::MeshCache> cache;
     if (in.cacheDirectory) cache.emplace(*in.cacheDirectory);
-    // The members' meshes (or the cache's), the context surfaces, the distances and each
-    // member's distance to the mean read only the ensemble and write results of their own: all
-    // run side by side, so that the serial parts of each (the context's largest surface, the
-    // last members' meshes, the distances' merge) leave no core idle. Each result is what it is
-    // when run alone; their seconds overlap. The summaries are cheap beside the meshes and
-    // depend on nothing the cache keeps: made afresh, so the cache's format stays as it is.
-    // The meshes are most of the work: three quarters of the progress.
-    data::WeightedPartsProgress parts(progress, {0.75, 0.25 / 3, 0.25 / 3, 0.25 / 3});
+    // The members' meshes (or the cache's), the context surfaces, and the distances (between
+    // members and from each to the mean member, in one pass) read only the ensemble and write
+    // results of their own: all run side by side, so that the serial parts of each (the
+    // context's largest surface, the last members' meshes, the distances' merge) leave no core
+    // idle. Each result is what it is when run alone; their seconds overlap. The distances to
+    // the mean are cheap beside the meshes and depend on nothing the cache keeps: made afresh,
+    // so the cache's format stays as it is. The meshes are most of the work: three quarters of
+    // the progress.
+    data::WeightedPartsProgress parts(progress, {0.75, 0.125, 0.125});
     std::optional<prep::IsovalueMeshes> meshes;
     std::map<std::string, double> meshSeconds;
     prep::ContextSurfaces context;
-    double contextSeconds = 0.0, similaritySeconds = 0.0, toMeanSeconds = 0.0;
+    double contextSeconds = 0.0, similaritySeconds = 0.0;
     const auto& mean = in.moments->mean.values;
     prep::runSideBySide(
         [&] {
@@ -107,23 +108,18 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
         },
         [&] {
             const auto t = Clock::now();
-            out.distances = prep::computeDistanceMatrix(*in.ensemble, in.options.isovalue, stop);
+            prep::DistancesAndReference distances = prep::computeDistancesAndReference(
+                *in.ensemble, {mean.data(), mean.size()}, in.options.isovalue, stop);
+            out.distances = std::move(distances.matrix);
+            out.distancesToMean = std::move(distances.toReference);
             similaritySeconds = since(t);
             parts.part(2)(1.0);
-        },
-        [&] {
-            const auto t = Clock::now();
-            out.distancesToMean = prep::distancesToField(*in.ensemble, {mean.data(), mean.size()},
-                                                         in.options.isovalue, stop);
-            toMeanSeconds = since(t);
-            parts.part(3)(1.0);
         });
     data::throwIfStopped(stop);
     out.meshes = std::move(*meshes);
     out.seconds = std::move(meshSeconds);
     addContext(out, std::move(context), contextSeconds);
     out.seconds["similarity"] = similaritySeconds;
-    out.seconds["member_summaries"] = toMeanSeconds;
     auto start = Clock::now();
     out.tree = prep::clusterMembers(out.distances, in.linkage, stop);
     out.seconds["clustering"] = since(start);
@@ -132,7 +128,7 @@ IsovalueOutcome runIsovalueJob(const IsovalueJobInput& in, const std::stop_token
     for (const data::PackedMesh& mesh : out.meshes.members) {
         out.meanOutlyingness.push_back(prep::meanOutlyingness(mesh));
     }
-    out.seconds["member_summaries"] += since(start);
+    out.seconds["member_summaries"] = since(start);
     return out;
 }
 

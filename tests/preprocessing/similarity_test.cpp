@@ -232,3 +232,57 @@ TEST(Similarity, OneMemberGivesAZeroMatrix) {
     ASSERT_EQ(d.size, 1u);
     EXPECT_EQ(d.at(0, 0), 0.0);
 }
+
+TEST(Similarity, TheDistancesToAReferenceComeWithTheMatrixFromOnePass) {
+    // 6 members of 64 x 64 x 40 points with gaps (both block paths), a reference field with
+    // gaps of its own, and a member that shares no valid point with it: the matrix is the one
+    // computeDistanceMatrix gives, and each distance to the reference the plain loop's.
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<float> value(0.0F, 60.0F);
+    std::uniform_int_distribution<int> missing(0, 9);
+    const std::size_t members = 6, points = 64 * 64 * 40;
+    std::size_t point = 0;
+    auto e = test::analyticEnsemble(members, 64, 64, 40, [&](std::size_t m, auto, auto, auto) {
+        const std::size_t p = point++ % points;
+        if (m == 5) return p < points / 2 ? value(rng) : kNaN;  // only where the reference is not
+        return p < 60000 && missing(rng) == 0 ? kNaN : value(rng);
+    });
+    std::vector<float> reference(points);
+    for (std::size_t p = 0; p < points; ++p) {
+        reference[p] = p < points / 2 ? kNaN : (missing(rng) == 0 ? kNaN : value(rng));
+    }
+    const float isovalue = 30.0F;
+    const prep::DistancesAndReference got =
+        prep::computeDistancesAndReference(e, reference, isovalue);
+    const prep::DistanceMatrix want = prep::computeDistanceMatrix(e, isovalue);
+    ASSERT_EQ(got.matrix.size, members);
+    EXPECT_EQ(got.matrix.pairsWithoutOverlap, want.pairsWithoutOverlap);
+    for (std::size_t k = 0; k < want.values.size(); ++k) {
+        EXPECT_NEAR(got.matrix.values[k], want.values[k], 1e-12 * want.values[k]) << k;
+    }
+    // The reference as one more member of a copy of the ensemble, measured point by point.
+    data::Ensemble withReference = e;
+    withReference.members.push_back(withReference.members.front());
+    std::copy(reference.begin(), reference.end(), withReference.members.back().values.begin());
+    ASSERT_EQ(got.toReference.size(), members);
+    for (std::size_t m = 0; m + 1 < members; ++m) {
+        const double expected = referenceDistance(withReference, isovalue, m, members);
+        EXPECT_NEAR(got.toReference[m], expected, 1e-9 * expected) << "member " << m;
+    }
+    EXPECT_TRUE(std::isinf(got.toReference[5])) << "no point in common with the reference";
+}
+
+TEST(Similarity, TheDistancesToAReferenceRejectAReferenceOfAnotherSize) {
+    const auto e = test::analyticEnsemble(
+        3, 4, 3, 2, [](auto m, auto, auto, auto) { return static_cast<float>(m); });
+    const std::vector<float> shorter(e.grid.pointCount() - 1, 1.0F);
+    try {
+        (void)prep::computeDistancesAndReference(e, shorter, 0.5F);
+        FAIL() << "a reference of another size was accepted";
+    } catch (const data::Error& error) {
+        EXPECT_EQ(error.kind(), data::ErrorKind::InvalidArgument);
+        EXPECT_NE(std::string(error.what()).find("23 values but the grid has 24"),
+                  std::string::npos)
+            << error.what();
+    }
+}

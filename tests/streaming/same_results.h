@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <vector>
 
 #include "data/packed_mesh.h"
 #include "preprocessing/clustering.h"
@@ -23,6 +24,17 @@ inline void expectSameDistances(const prep::DistanceMatrix& got, const prep::Dis
     ASSERT_EQ(got.values.size(), want.values.size());
     for (std::size_t i = 0; i < want.values.size(); ++i) {
         EXPECT_NEAR(got.values[i], want.values[i], 1e-9 * want.values[i]) << "entry " << i;
+    }
+}
+
+// Each member's distance to the mean: the in-memory job sums it with the matrix (one more
+// column of its products), a streamed run member by member, so they agree to the matrix's
+// tolerance.
+inline void expectSameDistancesToMean(const std::vector<double>& got,
+                                      const std::vector<double>& want) {
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t m = 0; m < want.size(); ++m) {
+        EXPECT_NEAR(got[m], want[m], 1e-9 * want[m]) << "member " << m;
     }
 }
 
