@@ -74,6 +74,7 @@ IsovalueResult buildResult(const IsovalueJobInput& input, const StreamedSource* 
     r.fromCache = outcome.fromCache;
     r.triangles = outcome.meshes.triangles;
     r.meshes = std::make_shared<data::MeshSet>(std::move(outcome.meshes));
+    r.contextSurfaces = input.context == prep::ContextParts::FiguresAndSurfaces;
     r.distances = std::move(outcome.distances);
     r.tree = std::move(outcome.tree);
     r.distancesToMean = std::move(outcome.distancesToMean);
@@ -288,6 +289,8 @@ void IsovalueSession::endStepPreview(bool settle) {
 void IsovalueSession::cancel() {
     m_job.cancel();
     m_prepareJob.cancel();
+    m_contextJob.cancel();
+    m_contextFor.reset();
 }
 
 void IsovalueSession::keep(const std::string& key, const IsovalueResult& result) {
@@ -320,6 +323,8 @@ IsovalueJobInput IsovalueSession::jobInput(std::string sourceKey, float isovalue
     input.cacheDirectory = m_cacheDirectory.toStdString();
     input.sourceKey = std::move(sourceKey);
     input.linkage = m_linkage;
+    input.context =
+        m_contextWanted ? prep::ContextParts::FiguresAndSurfaces : prep::ContextParts::FiguresOnly;
     return input;
 }
 
@@ -352,6 +357,8 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
                            const std::string& key) {
     endStepPreview(true);
     m_result = std::make_unique<IsovalueResult>(std::move(result));
+    m_shownKey = key;
+    m_shownExaggeration = exaggeration;
     // While the user scrubs, the view follows the pointer; endPreview shows these after.
     if (!m_previewing) {
         m_view->renderer().setMeshes(m_result->meshes);
@@ -370,6 +377,7 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
             if (m_result && m_result->meshes == shown) buildMotionMeshes(key, exaggeration);
         });
     }
+    addContextSurfacesIfWanted();
     // Same names: the selection keeps what the user selected and hid.
     ui::MemberFigures figures;
     figures.names = memberNames();
@@ -393,6 +401,51 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
                       .arg(warning.empty()
                                ? QString()
                                : tr(". Note: %1").arg(QString::fromStdString(warning))));
+}
+
+void IsovalueSession::setContextSurfacesWanted(bool wanted) {
+    m_contextWanted = wanted;
+    addContextSurfacesIfWanted();
+}
+
+void IsovalueSession::addContextSurfacesIfWanted() {
+    if (!m_contextWanted || !m_result || m_result->contextSurfaces || !m_ensemble ||
+        m_buildInFlight || m_contextFor == m_result->meshes) {
+        return;
+    }
+    const auto shown = m_result->meshes;
+    m_contextFor = shown;
+    IsovalueJobInput input = jobInput(m_sourceKey, shown->isovalue, m_shownExaggeration);
+    m_contextJob.start(
+        [input, ensemble = m_ensemble, shown](const std::stop_token& stop,
+                                              const data::Progress& progress) {
+            const prep::ContextSurfaces context = prep::buildContextSurfaces(
+                *ensemble, data::DisplayFrame(ensemble->grid, input.verticalExaggeration),
+                input.options, stop, progress, prep::ContextParts::FiguresAndSurfaces);
+            auto withContext = std::make_shared<data::MeshSet>(*shown);
+            prep::addContextSurfaces(*withContext, context);
+            return std::shared_ptr<const data::MeshSet>(std::move(withContext));
+        },
+        [this, shown, key = m_shownKey](std::shared_ptr<const data::MeshSet> withContext) {
+            m_contextFor.reset();
+            if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
+            m_result->meshes = withContext;
+            m_result->contextSurfaces = true;
+            for (auto& [keptKey, kept] : m_kept) {
+                if (keptKey != key || kept->meshes != shown) continue;
+                auto updated = std::make_shared<IsovalueResult>(*kept);
+                updated->meshes = withContext;
+                updated->contextSurfaces = true;
+                kept = std::move(updated);
+            }
+            if (m_view->renderer().meshes() == shown) {
+                m_view->renderer().setMeshes(withContext);
+                m_view->renderer().setMotionMeshes(m_result->motionMeshes);
+                m_view->update();
+            }
+        },
+        // A surface that could not be made is not drawn; the result stays as it is.
+        [this](const std::exception_ptr&, bool) { m_contextFor.reset(); });
 }
 
 void IsovalueSession::forgetPreviews() {

@@ -53,6 +53,9 @@ struct IsovalueResult {
     // (gl::Renderer::setMotionMeshes); built after the result is shown, or with a step built
     // ahead. Null until then.
     std::shared_ptr<const data::MeshSet> motionMeshes;
+    // Whether `meshes` holds the context surfaces (P = 0.5, the 50 % band): made only while
+    // the view draws them (IsovalueSession::setContextSurfacesWanted).
+    bool contextSurfaces = false;
     std::size_t triangles = 0;
     double seconds = 0.0;
     bool fromCache = false;
@@ -103,6 +106,11 @@ public:
     [[nodiscard]] bool isPreparing() const { return m_prepareJob.isRunning(); }
     // The surfaces asked for are those being prepared ahead, and are waited for.
     [[nodiscard]] bool awaitsPreparedStep() const { return m_awaitingPrepared; }
+    // Whether the view draws the context surfaces (gl::RenderSettings::drawsContextSurfaces).
+    // The jobs make their meshes only then (on the demo 120 ms of a core of every new
+    // isovalue or time step, for surfaces drawn only on request), and a result shown without
+    // them gets them in the background once they are wanted.
+    void setContextSurfacesWanted(bool wanted);
     void setClusterCount(int k);
     // Clusters the current distances again (at once) and uses this linkage from now on.
     void setLinkage(prep::Linkage linkage);
@@ -153,6 +161,9 @@ private:
     void attachMotionMeshes(const std::string& key,
                             const std::shared_ptr<const data::MeshSet>& shown,
                             std::shared_ptr<const data::MeshSet> motion);
+    // Makes the context surfaces of the result shown when they are wanted and it has none
+    // (not while another result is on its way: it gets them when shown).
+    void addContextSurfacesIfWanted();
     [[nodiscard]] std::shared_ptr<const data::MeshSet> keptPreview(const std::string& key) const;
     void keepPreview(const std::string& key, std::shared_ptr<const data::MeshSet> meshes);
     // A job's input for this data, isovalue and exaggeration (its ensemble and moments not set).
@@ -185,6 +196,12 @@ private:
     std::string m_sourceKey;
     std::shared_ptr<const StreamedSource> m_streamed;
     std::unique_ptr<IsovalueResult> m_result;
+    // The result shown: its key and display exaggeration, for the context surfaces made later.
+    std::string m_shownKey;
+    float m_shownExaggeration = 1.0F;
+    bool m_contextWanted = true;
+    BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
+    std::shared_ptr<const data::MeshSet> m_contextFor;  // the meshes m_contextJob completes
     prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};
     // The step prepared ahead: its key, and whether the surfaces asked for are that build's.

@@ -226,8 +226,9 @@ void MainWindow::createToolbar() {
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
     // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
-    m_session = new IsovalueSession(
-        m_view, m_selection, QString::fromStdString(defaultMeshCacheDirectory()), this);
+    m_session = new IsovalueSession(m_view, m_selection,
+                                    QString::fromStdString(defaultMeshCacheDirectory()), this);
+    m_session->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
     connect(m_session, &IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });

@@ -111,6 +111,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         }
         renderer.settings() = s.render;
         m_renderPanel->setSettings(s.render);
+        m_session->setContextSurfacesWanted(s.render.drawsContextSurfaces());
         showSection();
     }
     if (parts & SessionPart::Plane) {

@@ -22,9 +22,9 @@ enum class SectionField { None, Member, Mean, StandardDeviation, Probability };
 // isosurface crosses the plane, its intersection curve is drawn `thickness` wide.
 struct CuttingPlane {
     bool enabled = false;
-    glm::vec3 normal{0.0F, 0.0F, 1.0F};  // unit length, display space
-    float offset = 0.0F;                 // display units
-    float thickness = 0.004F;            // eps, display units
+    glm::vec3 normal{0.0F, 0.0F, 1.0F};      // unit length, display space
+    float offset = 0.0F;                     // display units
+    float thickness = 0.004F;                // eps, display units
     SectionField fill = SectionField::None;  // the cut face, coloured with a colour bar
 
     // The plane with this normal through the given display-space point.
@@ -100,6 +100,12 @@ struct RenderSettings {
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;
+
+    // Whether the picture shows a context surface of the ensemble's own (the band's two, or
+    // P = 0.5), which the workbench then has made (app/isovalue_session.h).
+    [[nodiscard]] bool drawsContextSurfaces() const {
+        return showBand || (showMean && context == ContextSurface::Probability);
+    }
 
     bool operator==(const RenderSettings&) const = default;
 };

@@ -9,7 +9,7 @@ namespace ensil::prep {
 ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                                      const data::DisplayFrame& frame,
                                      const PipelineOptions& options, const std::stop_token& stop,
-                                     const data::Progress& progress) {
+                                     const data::Progress& progress, ContextParts parts) {
     ContextSurfaces out;
     // The exceedance and the boxplot read only the ensemble: side by side (the boxplot's loops
     // are serial), each as it would be alone.
@@ -25,18 +25,20 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
             partsDone.partDone();
         });
     data::throwIfStopped(stop);
-    // Each of the three fields runs from 0 to 1 (a share of members, or inside / outside), so
-    // its surface is at one half whatever the variable's isovalue.
-    constexpr float kHalf = 0.5F;
-    const AxisTables axes = axisTables(frame);
-    const auto mesh = [&](const data::FieldValues& field, data::PackedMesh& into) {
-        into = meshField(ensemble.grid, field, kHalf, axes, nullptr, options, stop).mesh;
-    };
-    runSideBySide([&] { mesh(exceedance, out.probability); },
-                  [&] { mesh(out.boxplot.bandInner, out.bandInner); },
-                  [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
-    data::throwIfStopped(stop);
     out.exceedanceColumnMaximum = computeColumnMaximum(ensemble.grid, {"exceedance", exceedance});
+    if (parts == ContextParts::FiguresAndSurfaces) {
+        // Each of the three fields runs from 0 to 1 (a share of members, or inside / outside),
+        // so its surface is at one half whatever the variable's isovalue.
+        constexpr float kHalf = 0.5F;
+        const AxisTables axes = axisTables(frame);
+        const auto mesh = [&](const data::FieldValues& field, data::PackedMesh& into) {
+            into = meshField(ensemble.grid, field, kHalf, axes, nullptr, options, stop).mesh;
+        };
+        runSideBySide([&] { mesh(exceedance, out.probability); },
+                      [&] { mesh(out.boxplot.bandInner, out.bandInner); },
+                      [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
+        data::throwIfStopped(stop);
+    }
     out.exceedance = std::move(exceedance);
     data::report(progress, 1.0);
     return out;

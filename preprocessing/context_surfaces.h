@@ -29,14 +29,21 @@ struct ContextSurfaces {
     data::FieldValues exceedance;
 };
 
+// Which parts buildContextSurfaces makes: the boxplot and P(f > c) always (the member table,
+// the floor and a section show them), the three meshes only when asked for (the workbench
+// draws them only with the band or the P = 0.5 context surface on, and they are most of the
+// work: on the demo 120 ms of one core of 180).
+enum class ContextParts { FiguresOnly, FiguresAndSurfaces };
+
 // Meshes the three surfaces at options.isovalue, as the members' are meshed (decimated alike,
-// no outlyingness). Throws data::Cancelled and the errors of computeExceedance and
-// computeContourBoxplot.
+// no outlyingness); with ContextParts::FiguresOnly they are left empty. Throws data::Cancelled
+// and the errors of computeExceedance and computeContourBoxplot.
 ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
                                      const data::DisplayFrame& frame,
                                      const PipelineOptions& options,
                                      const std::stop_token& stop = {},
-                                     const data::Progress& progress = {});
+                                     const data::Progress& progress = {},
+                                     ContextParts parts = ContextParts::FiguresAndSurfaces);
 
 // Copies the surfaces and the boxplot's median and outliers into the renderer's mesh set.
 void addContextSurfaces(data::MeshSet& meshes, const ContextSurfaces& context);

@@ -8,7 +8,6 @@
 #include <chrono>
 
 #include "data/error.h"
-#include "preprocessing/context_surfaces.h"
 #include "preprocessing/member_summaries.h"
 #include "preprocessing/mesh_cache.h"
 #include "preprocessing/side_by_side.h"
@@ -26,7 +25,7 @@ prep::ContextSurfaces buildContextOf(const IsovalueJobInput& in, const std::stop
                                      const data::Progress& progress) {
     return prep::buildContextSurfaces(
         *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
-        stop, progress);
+        stop, progress, in.context);
 }
 
 void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seconds) {

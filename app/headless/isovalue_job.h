@@ -13,6 +13,7 @@
 
 #include "data/ensemble.h"
 #include "preprocessing/clustering.h"
+#include "preprocessing/context_surfaces.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/inclusion_depth.h"
 #include "preprocessing/isosurface_pipeline.h"
@@ -28,6 +29,9 @@ struct IsovalueJobInput {
     prep::Linkage linkage = prep::Linkage::Average;
     std::optional<std::string> cacheDirectory;  // no cache when empty
     std::string sourceKey;                      // identity of the data, for the cache key
+    // Whether the context surfaces' meshes are made (prep::ContextParts); the boxplot's
+    // figures and P(f > c) always are. The workbench leaves them out while nothing draws them.
+    prep::ContextParts context = prep::ContextParts::FiguresAndSurfaces;
 };
 
 struct IsovalueOutcome {

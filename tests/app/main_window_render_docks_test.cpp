@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QSettings>
@@ -156,4 +157,49 @@ TEST(MainWindowRenderDocks, TheCutFaceShowsTheFieldChosenInThePlanePanelAndTheMe
     fill->setCurrentIndex(static_cast<int>(gl::SectionField::Probability));
     QCoreApplication::processEvents();
     EXPECT_TRUE(renderer.sectionVolume().quantity.startsWith("P(wind_speed > "));
+}
+
+TEST(MainWindowRenderDocks, TheContextSurfacesAreMadeOnlyWhileTheViewDrawsThem) {
+    // The band's surfaces and P = 0.5 cost most of a summary's time and are drawn only on
+    // request: the surfaces of a new isovalue come without them, and get them once the band is
+    // switched on (kept with the result), and so does the next isovalue.
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 8, .nx = 48, .ny = 40, .nz = 12, .seed = 3}));
+    app::IsovalueSession& session = *window.isovalueSession();
+    gl::Renderer& renderer = window.view()->renderer();
+    ASSERT_NE(session.result(), nullptr);
+    EXPECT_FALSE(session.result()->contextSurfaces);
+    EXPECT_TRUE(renderer.meshes()->bandOuter.vertices.empty()) << "not made while not drawn";
+    EXPECT_TRUE(renderer.meshes()->probability.vertices.empty());
+    EXPECT_FALSE(session.result()->depth.empty()) << "the boxplot's figures always are";
+    ASSERT_NE(session.result()->exceedance, nullptr);
+
+    auto* band = window.renderPanel()->findChild<QCheckBox*>("band");
+    ASSERT_NE(band, nullptr);
+    band->setChecked(true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return session.result()->contextSurfaces; }, 60000));
+    const auto withBand = renderer.meshes();
+    EXPECT_EQ(withBand, session.result()->meshes) << "drawn";
+    EXPECT_FALSE(withBand->bandOuter.vertices.empty());
+    EXPECT_FALSE(withBand->bandInner.vertices.empty());
+    EXPECT_FALSE(withBand->probability.vertices.empty());
+    // The same surfaces as a job that makes everything at once.
+    app::IsovalueJobInput input;
+    input.ensemble = window.overview()->ensemble.get();
+    input.moments = window.overview()->moments.get();
+    input.options.isovalue = withBand->isovalue;
+    const app::IsovalueOutcome all = app::runIsovalueJob(input);
+    EXPECT_EQ(withBand->bandOuter.indices, all.meshes.bandOuter.indices);
+    EXPECT_EQ(withBand->probability.indices, all.meshes.probability.indices);
+    EXPECT_EQ(withBand->members.size(), all.meshes.members.size());
+
+    // Another isovalue while the band is on: made with it.
+    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    session.setIsovalue(withBand->isovalue * 1.1F, 1.0F);
+    ASSERT_TRUE(built.wait(60000));
+    EXPECT_TRUE(session.result()->contextSurfaces);
+    EXPECT_FALSE(renderer.meshes()->bandOuter.vertices.empty());
 }
