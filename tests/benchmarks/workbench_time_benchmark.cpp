@@ -104,6 +104,10 @@ void report(const char* what, const std::vector<Step>& steps) {
                 bench::median(started), bench::median(frames));
     std::printf("  %-42s  first frame of the step, in reduced or full detail, at %.0f ms)\n", "",
                 bench::median(onScreen));
+    // Every step's, not only the median: the goal holds for each step.
+    std::printf("  %-42s  each step drawn at:", "");
+    for (const double ms : drawn) std::printf(" %.0f", ms);
+    std::printf(" ms\n");
 }
 
 }  // namespace
@@ -136,8 +140,17 @@ int main(int argc, char** argv) {
     data::DataSelection selection;
     selection.paths = {path};
     window.openFiles(selection);
+    QSignalSpy swapped(window.view(), &QOpenGLWidget::frameSwapped);
     if (!built.wait(600000)) {
         std::fprintf(stderr, "the first step did not load\n");
+        return 1;
+    }
+    // The user steps once the first step is on screen (its first frame, a full-resolution one
+    // of several hundred ms on software OpenGL, is not counted against the next step).
+    swapped.clear();
+    if (!QTest::qWaitFor([&] { return !swapped.isEmpty() && !window.view()->inMotion(); },
+                         600000)) {
+        std::fprintf(stderr, "the first step was not drawn\n");
         return 1;
     }
     std::printf(
