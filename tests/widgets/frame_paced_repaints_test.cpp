@@ -101,8 +101,11 @@ TEST_F(PacedWindow, AChangeIsDrawnWithoutAFrameOnceTheLongestWaitHasPassed) {
     const int paintsBefore = m_sliderPaints.paints;
     m_slider->setValue(50);
     pacing.changed();
-    ASSERT_TRUE(composed.wait(10000)) << "a slow frame does not freeze the slider";
-    EXPECT_GT(m_sliderPaints.paints, paintsBefore);
+    // Waited for on the slider's own paint: a composition left from showing the window (Xvfb
+    // may expose it twice on a busy machine) can come before the wait is over.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return m_sliderPaints.paints > paintsBefore; }, 10000))
+        << "a slow frame does not freeze the slider";
+    ASSERT_TRUE(composed.count() > 0 || composed.wait(10000)) << "composed";
     EXPECT_FALSE(m_slider->updatesEnabled()) << "and it is held back again after that";
     pacing.end();
 }
