@@ -50,9 +50,11 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey,
                                   std::shared_ptr<const StreamedSource> streamed) {
-    // A step prepared ahead goes on: it may be this one (setIsovalue then waits for it).
+    // A step prepared ahead goes on: it may be this one (setIsovalue then waits for it). So
+    // do the motion meshes of the step left, for its return (attachMotionMeshes keeps them):
+    // the step opened first gets its own only after its first frame, and without them its
+    // first frame when visited again drew the full meshes (100 ms of software OpenGL, not 40).
     m_job.cancel();
-    m_motionJob.cancel();
     m_awaitingPrepared = false;
     forgetPreviews();
     m_streamed = std::move(streamed);
@@ -117,7 +119,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
         return;
     }
     m_prepareJob.cancel();  // a guess the user did not follow: its cores are wanted here
-    m_motionJob.cancel();
+    if (m_motionSourceKey == m_sourceKey) m_motionJob.cancel();  // not a step left's
     IsovalueJobInput input = jobInput(m_sourceKey, isovalue, exaggeration);
     m_buildInFlight = true;
     m_job.start(
@@ -213,6 +215,7 @@ void IsovalueSession::buildMotionMeshes(const std::string& key, float exaggerati
     // is; otherwise it is built. The renderer takes the median and outliers from the full
     // meshes, so the motion meshes need none.
     if (auto preview = keptPreview(key)) return attachMotionMeshes(key, shown, std::move(preview));
+    m_motionSourceKey = m_sourceKey;
     m_motionJob.start(
         previewWork(m_ensemble, m_moments, shown->isovalue, exaggeration, -1, {}),
         [this, key, shown](BuiltPreview built) {
@@ -225,14 +228,15 @@ void IsovalueSession::buildMotionMeshes(const std::string& key, float exaggerati
 void IsovalueSession::attachMotionMeshes(const std::string& key,
                                          const std::shared_ptr<const data::MeshSet>& shown,
                                          std::shared_ptr<const data::MeshSet> motion) {
-    if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
-    m_result->motionMeshes = motion;
+    // Kept with the result, also when another is shown now (a time step left), for its return.
     for (auto& [keptKey, kept] : m_kept) {
         if (keptKey != key || kept->meshes != shown) continue;
         auto withMotion = std::make_shared<IsovalueResult>(*kept);
         withMotion->motionMeshes = motion;
         kept = std::move(withMotion);
     }
+    if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
+    m_result->motionMeshes = motion;
     if (m_view->renderer().meshes() == shown) m_view->renderer().setMotionMeshes(std::move(motion));
 }
 
@@ -372,9 +376,13 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
         attachMotionMeshes(key, m_result->meshes, std::move(preview));
     } else if (!m_result->motionMeshes) {
         // otherwise built after that frame, whose cores the build would take.
+        // Not when another time step was asked for before that frame: the data at hand is
+        // that step's (this result gets its motion meshes when visited again).
         const auto shown = m_result->meshes;
-        m_view->afterNextFrame(this, [this, key, exaggeration, shown] {
-            if (m_result && m_result->meshes == shown) buildMotionMeshes(key, exaggeration);
+        m_view->afterNextFrame(this, [this, key, exaggeration, shown, source = m_sourceKey] {
+            if (m_result && m_result->meshes == shown && m_sourceKey == source) {
+                buildMotionMeshes(key, exaggeration);
+            }
         });
     }
     addContextSurfacesIfWanted();

@@ -201,6 +201,7 @@ private:
     float m_shownExaggeration = 1.0F;
     bool m_contextWanted = true;
     BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
+    std::string m_motionSourceKey;  // the data of the result m_motionJob builds for
     std::shared_ptr<const data::MeshSet> m_contextFor;  // the meshes m_contextJob completes
     prep::Linkage m_linkage = prep::Linkage::Average;
     BackgroundJob<IsovalueResult> m_job{this};
@@ -225,7 +226,8 @@ private:
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
     BackgroundJob<BuiltPreview> m_previewJob{this};
-    BackgroundJob<BuiltPreview> m_motionJob{this};  // the shown result's motion meshes
+    // A result's motion meshes: the one shown, or that of a time step just left.
+    BackgroundJob<BuiltPreview> m_motionJob{this};
     std::optional<PreviewRequest> m_pendingPreview;
     bool m_previewing = false;
     // A preview job started and not yet handed back (done or dropped): until then new values

@@ -374,3 +374,39 @@ TEST(MainWindowTime, TheStripFillsEveryStepInTheBackgroundAsTheCommandLineCluste
     }
     twin.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_grib_strip_step1.png"));
 }
+
+TEST(MainWindowTime, TheStepOpenedFirstComesBackWithItsMotionMeshes) {
+    // The opened step's motion meshes are built after its first frame; stepping on at once
+    // must not drop them, or its first frame when visited again draws the full meshes.
+    const test::ScopedCacheHome cache;
+    test::TempDir dir;
+    constexpr data::DemoEnsembleParams kDemo{.members = 12, .nx = 64, .ny = 48, .nz = 12};
+    const std::string path = dir.file("steps.nc");
+    data::writeNetcdfSteps(
+        [&](std::size_t step) { return data::makeDemoEnsembleAt(kDemo, step, 2).ensemble; },
+        {data::kDemoTimeUnits, {0.0, 12.0}}, path);
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    app::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    QSignalSpy drawn(window.view(), &QOpenGLWidget::frameSwapped);
+    window.openFiles(data::DataSelection{.paths = {path}});
+    ASSERT_TRUE(built.wait(120000));
+    drawn.clear();
+    ASSERT_TRUE(drawn.wait(30000)) << "the opened step's first frame";
+    const auto opened = window.view()->renderer().meshes();
+
+    window.timeBar()->step(1);
+    ASSERT_TRUE(stepShown(window, 1));
+    std::shared_ptr<const data::MeshSet> motionAtReturn;
+    QObject::connect(&session, &app::IsovalueSession::finished, &window,
+                     [&] { motionAtReturn = window.view()->renderer().motionMeshes(); });
+    window.timeBar()->step(-1);
+    ASSERT_TRUE(stepShown(window, 0));
+    ASSERT_EQ(window.view()->renderer().meshes(), opened) << "kept, shown again";
+    ASSERT_NE(motionAtReturn, nullptr) << "its first frame again has its motion meshes";
+    EXPECT_EQ(motionAtReturn->members.size(), kDemo.members);
+    EXPECT_LT(motionAtReturn->members.front().indices.size(),
+              opened->members.front().indices.size())
+        << "reduced detail";
+}
