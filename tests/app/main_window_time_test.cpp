@@ -29,6 +29,15 @@
 using namespace ensil;
 
 namespace {
+// Writes the demo over two steps, 12 hours apart, into `dir`; returns the file's path.
+std::string writeTwoDemoSteps(const test::TempDir& dir, const data::DemoEnsembleParams& demo) {
+    const std::string path = dir.file("steps.nc");
+    data::writeNetcdfSteps(
+        [&](std::size_t step) { return data::makeDemoEnsembleAt(demo, step, 2).ensemble; },
+        {data::kDemoTimeUnits, {0.0, 12.0}}, path);
+    return path;
+}
+
 // Waits until the step's surfaces are on screen.
 bool stepShown(app::MainWindow& window, int step) {
     return QTest::qWaitFor(
@@ -232,10 +241,7 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     test::TempDir dir;
     // The demo over two steps, large enough that its full surfaces take many times a preview's.
     constexpr data::DemoEnsembleParams kDemo{.members = 24, .nx = 97, .ny = 96, .nz = 25};
-    const std::string path = dir.file("steps.nc");
-    data::writeNetcdfSteps(
-        [&](std::size_t step) { return data::makeDemoEnsembleAt(kDemo, step, 2).ensemble; },
-        {data::kDemoTimeUnits, {0.0, 12.0}}, path);
+    const std::string path = writeTwoDemoSteps(dir, kDemo);
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     app::IsovalueSession& session = *window.isovalueSession();
@@ -381,10 +387,7 @@ TEST(MainWindowTime, TheStepOpenedFirstComesBackWithItsMotionMeshes) {
     const test::ScopedCacheHome cache;
     test::TempDir dir;
     constexpr data::DemoEnsembleParams kDemo{.members = 12, .nx = 64, .ny = 48, .nz = 12};
-    const std::string path = dir.file("steps.nc");
-    data::writeNetcdfSteps(
-        [&](std::size_t step) { return data::makeDemoEnsembleAt(kDemo, step, 2).ensemble; },
-        {data::kDemoTimeUnits, {0.0, 12.0}}, path);
+    const std::string path = writeTwoDemoSteps(dir, kDemo);
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     app::IsovalueSession& session = *window.isovalueSession();
