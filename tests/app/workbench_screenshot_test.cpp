@@ -5,6 +5,7 @@
 // run beside this one.
 #include <gtest/gtest.h>
 
+#include <QCheckBox>
 #include <QPainter>
 #include <QSignalSpy>
 #include <QTest>
@@ -14,6 +15,7 @@
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
+#include "widgets/render_panel.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -66,4 +68,36 @@ TEST(WorkbenchScreenshot, Era5Temperature) {
     window.openFiles(selection);
     ASSERT_TRUE(built.wait(120000));
     checkAndKeep(window, QStringLiteral("workbench_era5_1600x1000.png"));
+}
+
+TEST(WorkbenchScreenshot, Era5TemperatureWithTheContourBoxplotsBand) {
+    // The band's surfaces are made when it is switched on (not with every isovalue): once made,
+    // the view draws them, a translucent envelope round the members.
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
+    app::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(built.wait(120000));
+    ASSERT_FALSE(session.result()->contextSurfaces);
+    const QImage without = window.view()->grabFramebuffer();
+
+    auto* band = window.renderPanel()->findChild<QCheckBox*>("band");
+    ASSERT_NE(band, nullptr);
+    band->setChecked(true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return session.result()->contextSurfaces; }, 60000));
+    ASSERT_FALSE(window.view()->renderer().meshes()->bandOuter.vertices.empty());
+    const QImage with = window.view()->grabFramebuffer();
+    ASSERT_EQ(with.size(), without.size());
+    int changed = 0;
+    for (int y = 0; y < with.height(); y += 2) {
+        for (int x = 0; x < with.width(); x += 2)
+            changed += with.pixel(x, y) != without.pixel(x, y);
+    }
+    EXPECT_GT(changed, with.width() * with.height() / 400) << "the band is drawn";
+    checkAndKeep(window, QStringLiteral("workbench_era5_band_1600x1000.png"));
 }
