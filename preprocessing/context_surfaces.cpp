@@ -1,5 +1,6 @@
 #include "preprocessing/context_surfaces.h"
 
+#include "preprocessing/band_envelope.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/exceedance.h"
 #include "preprocessing/side_by_side.h"
@@ -27,16 +28,17 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     data::throwIfStopped(stop);
     out.exceedanceColumnMaximum = computeColumnMaximum(ensemble.grid, {"exceedance", exceedance});
     if (parts == ContextParts::FiguresAndSurfaces) {
-        // Each of the three fields runs from 0 to 1 (a share of members, or inside / outside),
-        // so its surface is at one half whatever the variable's isovalue.
+        // P(f > c) runs from 0 to 1: its surface is at one half. The band's two are the
+        // isovalue's surfaces of its members' lowest and highest values (band_envelope.h).
         constexpr float kHalf = 0.5F;
+        const BandEnvelope band = computeBandEnvelope(ensemble, out.boxplot.bandMembers, stop);
         const AxisTables axes = axisTables(frame);
-        const auto mesh = [&](const data::FieldValues& field, data::PackedMesh& into) {
-            into = meshField(ensemble.grid, field, kHalf, axes, nullptr, options, stop).mesh;
+        const auto mesh = [&](const data::FieldValues& field, float level, data::PackedMesh& into) {
+            into = meshField(ensemble.grid, field, level, axes, nullptr, options, stop).mesh;
         };
-        runSideBySide([&] { mesh(exceedance, out.probability); },
-                      [&] { mesh(out.boxplot.bandInner, out.bandInner); },
-                      [&] { mesh(out.boxplot.bandOuter, out.bandOuter); });
+        runSideBySide([&] { mesh(exceedance, kHalf, out.probability); },
+                      [&] { mesh(band.lowest, options.isovalue, out.bandInner); },
+                      [&] { mesh(band.highest, options.isovalue, out.bandOuter); });
         data::throwIfStopped(stop);
     }
     out.exceedance = std::move(exceedance);
