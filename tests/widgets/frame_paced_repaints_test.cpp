@@ -73,17 +73,20 @@ TEST_F(PacedWindow, WhilePacingTheWidgetRepaintsOnlyWithTheViewsFrames) {
     QSignalSpy composed(m_view, &QOpenGLWidget::frameSwapped);
     pacing.begin();
     const int paintsBefore = m_sliderPaints.paints;
+    // Counted in the slider's own paints: a composition left from showing the window (Xvfb
+    // may expose it twice on a busy machine) can come at any time, and paints nothing of a
+    // widget held back.
     drag(pacing, 1, 20);
     EXPECT_EQ(m_sliderPaints.paints, paintsBefore) << "twenty moves, no frame: nothing drawn";
-    EXPECT_EQ(composed.count(), 0) << "and the window never composed";
 
     // The view's next frame: the slider, as it is now, is drawn in the same composition.
     m_view->update();
     pacing.frameComing();
     ASSERT_TRUE(composed.wait(10000));
-    EXPECT_GT(m_sliderPaints.paints, paintsBefore);
+    const int paintsWithTheFrame = m_sliderPaints.paints;
+    EXPECT_GT(paintsWithTheFrame, paintsBefore);
     drag(pacing, 21, 30);
-    EXPECT_EQ(composed.count(), 1) << "held back again after the frame";
+    EXPECT_EQ(m_sliderPaints.paints, paintsWithTheFrame) << "held back again after the frame";
 
     // The end of the drag draws what is left at once.
     const int paintsAtEnd = m_sliderPaints.paints;
