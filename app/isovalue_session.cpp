@@ -1,6 +1,7 @@
 #include "app/isovalue_session.h"
 
 #include <QElapsedTimer>
+#include <functional>
 #include <numeric>
 #include <utility>
 
@@ -229,12 +230,7 @@ void IsovalueSession::attachMotionMeshes(const std::string& key,
                                          const std::shared_ptr<const data::MeshSet>& shown,
                                          std::shared_ptr<const data::MeshSet> motion) {
     // Kept with the result, also when another is shown now (a time step left), for its return.
-    for (auto& [keptKey, kept] : m_kept) {
-        if (keptKey != key || kept->meshes != shown) continue;
-        auto withMotion = std::make_shared<IsovalueResult>(*kept);
-        withMotion->motionMeshes = motion;
-        kept = std::move(withMotion);
-    }
+    changeKept(key, shown, [&motion](IsovalueResult& kept) { kept.motionMeshes = motion; });
     if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
     m_result->motionMeshes = motion;
     if (m_view->renderer().meshes() == shown) m_view->renderer().setMotionMeshes(std::move(motion));
@@ -295,6 +291,17 @@ void IsovalueSession::cancel() {
     m_prepareJob.cancel();
     m_contextJob.cancel();
     m_contextFor.reset();
+}
+
+void IsovalueSession::changeKept(const std::string& key,
+                                 const std::shared_ptr<const data::MeshSet>& meshes,
+                                 const std::function<void(IsovalueResult&)>& change) {
+    for (auto& [keptKey, kept] : m_kept) {
+        if (keptKey != key || kept->meshes != meshes) continue;
+        auto changed = std::make_shared<IsovalueResult>(*kept);  // kept results are shared
+        change(*changed);
+        kept = std::move(changed);
+    }
 }
 
 void IsovalueSession::keep(const std::string& key, const IsovalueResult& result) {
@@ -424,12 +431,12 @@ void IsovalueSession::addContextSurfacesIfWanted() {
     const auto shown = m_result->meshes;
     m_contextFor = shown;
     IsovalueJobInput input = jobInput(m_sourceKey, shown->isovalue, m_shownExaggeration);
+    input.context = prep::ContextParts::FiguresAndSurfaces;
     m_contextJob.start(
         [input, ensemble = m_ensemble, shown](const std::stop_token& stop,
-                                              const data::Progress& progress) {
-            const prep::ContextSurfaces context = prep::buildContextSurfaces(
-                *ensemble, data::DisplayFrame(ensemble->grid, input.verticalExaggeration),
-                input.options, stop, progress, prep::ContextParts::FiguresAndSurfaces);
+                                              const data::Progress& progress) mutable {
+            input.ensemble = ensemble.get();
+            const prep::ContextSurfaces context = buildContextOf(input, stop, progress);
             auto withContext = std::make_shared<data::MeshSet>(*shown);
             prep::addContextSurfaces(*withContext, context);
             return std::shared_ptr<const data::MeshSet>(std::move(withContext));
@@ -437,15 +444,12 @@ void IsovalueSession::addContextSurfacesIfWanted() {
         [this, shown, key = m_shownKey](std::shared_ptr<const data::MeshSet> withContext) {
             m_contextFor.reset();
             if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
-            m_result->meshes = withContext;
-            m_result->contextSurfaces = true;
-            for (auto& [keptKey, kept] : m_kept) {
-                if (keptKey != key || kept->meshes != shown) continue;
-                auto updated = std::make_shared<IsovalueResult>(*kept);
-                updated->meshes = withContext;
-                updated->contextSurfaces = true;
-                kept = std::move(updated);
-            }
+            const auto addContext = [&withContext](IsovalueResult& r) {
+                r.meshes = withContext;
+                r.contextSurfaces = true;
+            };
+            changeKept(key, shown, addContext);
+            addContext(*m_result);
             if (m_view->renderer().meshes() == shown) {
                 m_view->renderer().setMeshes(withContext);
                 m_view->renderer().setMotionMeshes(m_result->motionMeshes);

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <QObject>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -174,6 +175,10 @@ private:
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
     void forgetPreviews();
     void keep(const std::string& key, const IsovalueResult& result);
+    // Applies `change` to a copy of the result kept under `key` that shows `meshes` (if any),
+    // which replaces it.
+    void changeKept(const std::string& key, const std::shared_ptr<const data::MeshSet>& meshes,
+                    const std::function<void(IsovalueResult&)>& change);
     void reportFailure(const std::exception_ptr& error, bool cancelled);
     // A step's preview gives way: to the full surfaces (settle: the view's motion ends as after
     // a passing change), or to nothing (a failure or cancel: it ends now).

@@ -7,12 +7,14 @@
 
 #include "data/error.h"
 #include "preprocessing/point_blocks.h"
+#include "preprocessing/similarity.h"
 
 namespace ensil::prep {
 
 BandEnvelope computeBandEnvelope(const data::Ensemble& ensemble,
                                  std::span<const std::size_t> members,
                                  const std::stop_token& stop) {
+    checkDistanceArguments(ensemble, 0.0F, "make the band's envelope");  // the value counts
     if (members.empty()) {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           "the band's envelope needs at least one member");
@@ -24,12 +26,6 @@ BandEnvelope computeBandEnvelope(const data::Ensemble& ensemble,
                               "member index " + std::to_string(m) + " is out of range: the " +
                                   "ensemble has " + std::to_string(ensemble.memberCount()) +
                                   " members");
-        }
-        if (ensemble.members[m].values.size() != points) {
-            throw data::Error(data::ErrorKind::InvalidArgument,
-                              "member '" + ensemble.members[m].name + "' has " +
-                                  std::to_string(ensemble.members[m].values.size()) +
-                                  " values but the grid has " + std::to_string(points) + " points");
         }
     }
     constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();

@@ -276,22 +276,34 @@ double DistanceSums::distance(std::size_t i, std::size_t j) const {
     return sum / count;
 }
 
-DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
-                                     const std::stop_token& stop, const data::Progress& progress) {
-    checkDistanceArguments(ensemble, isovalue, "compare the members");
-    const std::size_t n = ensemble.memberCount();
+namespace {
+
+// The sums over every grid point of the members, then of `more` fields on the grid (members
+// n, n + 1, ... of the sums). The arguments are checked by the caller.
+DistanceSums sumOverTheGrid(const data::Ensemble& ensemble,
+                            std::span<const std::span<const float>> more, float isovalue,
+                            const std::stop_token& stop, const data::Progress& progress) {
     const std::size_t points = ensemble.grid.pointCount();
     // All points in one add(): its block matrices are allocated once (a fresh 4 MiB pair for
     // every block cost more in page faults than the products themselves).
-    DistanceSums sums(n, isovalue);
+    DistanceSums sums(ensemble.memberCount() + more.size(), isovalue);
     std::vector<std::span<const float>> values;
-    values.reserve(n);
+    values.reserve(ensemble.memberCount() + more.size());
     for (const data::Member& member : ensemble.members) {
         values.emplace_back(member.values.data(), points);
     }
+    values.insert(values.end(), more.begin(), more.end());
     sums.add(values, stop, progress);
     data::throwIfStopped(stop);
-    DistanceMatrix result = sums.finish();
+    return sums;
+}
+
+}  // namespace
+
+DistanceMatrix computeDistanceMatrix(const data::Ensemble& ensemble, float isovalue,
+                                     const std::stop_token& stop, const data::Progress& progress) {
+    checkDistanceArguments(ensemble, isovalue, "compare the members");
+    DistanceMatrix result = sumOverTheGrid(ensemble, {}, isovalue, stop, progress).finish();
     data::report(progress, 1.0);
     return result;
 }
@@ -309,15 +321,7 @@ DistancesAndReference computeDistancesAndReference(const data::Ensemble& ensembl
                               " values but the grid has " + std::to_string(points) + " points");
     }
     // The reference is member n of the sums.
-    DistanceSums sums(n + 1, isovalue);
-    std::vector<std::span<const float>> values;
-    values.reserve(n + 1);
-    for (const data::Member& member : ensemble.members) {
-        values.emplace_back(member.values.data(), points);
-    }
-    values.push_back(reference);
-    sums.add(values, stop, progress);
-    data::throwIfStopped(stop);
+    const DistanceSums sums = sumOverTheGrid(ensemble, {&reference, 1}, isovalue, stop, progress);
     DistancesAndReference result;
     result.toReference.reserve(n);
     for (std::size_t i = 0; i < n; ++i) result.toReference.push_back(sums.distance(i, n));

@@ -19,15 +19,8 @@ double since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// addContextOf in two halves: the work (any thread, touches nothing shared) and the hand-over
-// into `out` (with its seconds).
-prep::ContextSurfaces buildContextOf(const IsovalueJobInput& in, const std::stop_token& stop,
-                                     const data::Progress& progress) {
-    return prep::buildContextSurfaces(
-        *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
-        stop, progress, in.context);
-}
-
+// addContextOf's second half: the hand-over of buildContextOf's surfaces into `out` (with
+// its seconds).
 void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seconds) {
     prep::addContextSurfaces(out.meshes, context);
     out.boxplot = std::move(context.boxplot);
@@ -36,6 +29,13 @@ void addContext(IsovalueOutcome& out, prep::ContextSurfaces context, double seco
     out.seconds["context_surfaces"] = seconds;
 }
 }  // namespace
+
+prep::ContextSurfaces buildContextOf(const IsovalueJobInput& in, const std::stop_token& stop,
+                                     const data::Progress& progress) {
+    return prep::buildContextSurfaces(
+        *in.ensemble, data::DisplayFrame(in.ensemble->grid, in.verticalExaggeration), in.options,
+        stop, progress, in.context);
+}
 
 std::string defaultMeshCacheDirectory() {
     return (QStandardPaths::writableLocation(QStandardPaths::CacheLocation) +

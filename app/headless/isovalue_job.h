@@ -55,8 +55,13 @@ struct IsovalueOutcome {
                                             // context_surfaces, similarity, clustering
 };
 
-// The context surfaces (P = 0.5, the 50 % band), the contour boxplot and P(f > c) of
-// input.ensemble, added to out.meshes and out; `progress` runs from `from` to `to`.
+// The context surfaces (P = 0.5, the 50 % band, as input.context asks), the contour boxplot
+// and P(f > c) of input.ensemble, in the display space of input.verticalExaggeration. Any
+// thread; touches nothing shared.
+prep::ContextSurfaces buildContextOf(const IsovalueJobInput& input, const std::stop_token& stop,
+                                     const data::Progress& progress);
+
+// The same, added to out.meshes and out; `progress` runs from `from` to `to`.
 void addContextOf(const IsovalueJobInput& input, IsovalueOutcome& out, double from, double to,
                   const std::stop_token& stop, const data::Progress& progress);
 
