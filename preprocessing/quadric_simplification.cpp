@@ -241,26 +241,25 @@ public:
         std::vector<Index>& renumbered = m_renumbered;
         Index kept = 0;
         for (Index v = 0; v < n; ++v) {
-            if (m_movedTo[v] != v) continue;
             renumbered[v] = kept;
             m_.positions[kept] = m_.positions[v];
             m_.quadrics[kept] = m_.quadrics[v];
             m_.border[kept] = m_.border[v];
-            ++kept;
+            kept += m_movedTo[v] == v ? 1 : 0;
         }
         m_.positions.resize(kept);
         m_.quadrics.resize(kept);
         m_.border.resize(kept);
         // Each vertex's new number, where it went: one lookup a corner below, not two.
         for (Index v = 0; v < n; ++v) renumbered[v] = renumbered[m_movedTo[v]];
+        // Every triangle is written, and kept by moving on past it (as every vertex above):
+        // which ones collapsed is as good as random, so a branch on it is often mispredicted.
         std::size_t out = 0;
         for (std::size_t t = 0; t < m_.indices.size(); t += 3) {
             const Index i0 = renumbered[m_.indices[t]], i1 = renumbered[m_.indices[t + 1]],
                         i2 = renumbered[m_.indices[t + 2]];
-            if (isDegenerate(i0, i1, i2)) continue;
-            m_.indices[out++] = i0;
-            m_.indices[out++] = i1;
-            m_.indices[out++] = i2;
+            m_.indices[out] = i0, m_.indices[out + 1] = i1, m_.indices[out + 2] = i2;
+            out += isDegenerate(i0, i1, i2) ? 0 : 3;
         }
         m_.indices.resize(out);
     }
@@ -302,7 +301,10 @@ private:
         // are the x's, and on an open border also the y's (the last one round is no x).
         int common = 0, trianglesB = 0;
         const auto countShared = [&](Index x) {
-            if (x != a && m_mark[x] == aroundA) m_mark[x] = shared, ++common;
+            // Without a branch: whether b's neighbour is also a's is as good as random.
+            const bool both = x != a && m_mark[x] == aroundA;
+            common += both ? 1 : 0;
+            m_mark[x] = both ? shared : m_mark[x];
         };
         const bool open = m_.border[b] != 0;
         for (Index v = b; v != kNoVertex; v = v == b ? m_firstMerged[b] : m_nextMerged[v])
