@@ -200,7 +200,6 @@ public:
         m_role.assign(n, Role::Untouched);
         m_firstMerged.assign(n, kNoVertex);
         m_nextMerged.resize(n);  // written when a vertex joins a list
-        m_renumbered.resize(n);  // read only for the vertices kept, which apply() numbers
         m_mark.resize(n);        // stamps only grow, so the old marks never match
     }
 
@@ -238,7 +237,8 @@ public:
     // Renumbers the kept vertices in order and drops the triangles that collapsed.
     void apply() {
         const std::size_t n = m_.positions.size();
-        std::vector<Index>& renumbered = m_renumbered;
+        // The lists of moved vertices are not needed any more; their array is reused.
+        std::vector<Index>& renumbered = m_firstMerged;
         Index kept = 0;
         for (Index v = 0; v < n; ++v) {
             renumbered[v] = kept;
@@ -345,7 +345,6 @@ private:
     std::vector<Role> m_role;
     // The vertices moved onto each kept vertex this pass, as a list through m_nextMerged.
     std::vector<Index> m_firstMerged, m_nextMerged;
-    std::vector<Index> m_renumbered;
     std::vector<std::uint32_t> m_mark;
     std::uint32_t m_stamp = 0;
     std::vector<Candidate> m_options;
@@ -382,10 +381,11 @@ SimplifiedMesh simplifyMesh(data::TriangleMesh mesh, float maxError) {
     // or after a pass that removed almost nothing (below).
     for (;;) {
         m.findTrianglesAroundVertices();
-        const std::vector<Candidate> candidates = cheapestCollapses(m, limit);
-        if (candidates.empty()) break;
+        // The unordered list goes before the pass: this is when the working memory is largest.
+        const std::vector<Candidate> ordered = inErrorBands(cheapestCollapses(m, limit));
+        if (ordered.empty()) break;
         pass.start();
-        const std::size_t made = pass.run(inErrorBands(candidates), limit, worst);
+        const std::size_t made = pass.run(ordered, limit, worst);
         if (made == 0) break;
         pass.apply();
         // A pass that removes under 1 in kLastPassShare of the vertices left is the last: what
