@@ -205,7 +205,12 @@ TEST(Similarity, CancelThrowsAndProgressIsMonotonic) {
                                                  if (++calls == 1) stop.request_stop();
                                              }),
                  data::Cancelled);
-    EXPECT_EQ(calls, 1) << "the step must stop at the next block after the request";
+    // Blocks run on every core: those begun on other threads when the stop came still finish
+    // and report; no other starts.
+    EXPECT_GE(calls, 1);
+    EXPECT_LE(calls, tbb::this_task_arena::max_concurrency())
+        << "the step must stop at the blocks begun before the request";
+    EXPECT_LT(static_cast<std::size_t>(calls), fractions.size());
 
     std::stop_source stopped;
     stopped.request_stop();
