@@ -1,4 +1,5 @@
-// Runs one job at a time on Qt's thread pool and hands its result back on the GUI thread. A
+// Runs one job at a time on Qt's thread pool (or a pool of its owner's) and hands its result
+// back on the GUI thread. A
 // job is a function (stop token, progress) -> T that captures its inputs by value. Starting a
 // new job cancels the running one and drops its result (the user changed the isovalue
 // meanwhile); cancel() asks the running job to stop. Jobs run at a lower priority than the GUI
@@ -9,6 +10,7 @@
 #include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QPromise>
+#include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 #include <functional>
@@ -37,8 +39,12 @@ public:
     // work that captures nothing but values (a probe of files for a dialog being closed).
     enum class WhenDestroyed { Wait, Abandon };
 
-    explicit BackgroundJob(QObject* context, WhenDestroyed whenDestroyed = WhenDestroyed::Wait)
-        : m_whenDestroyed(whenDestroyed) {
+    // `pool`, when given, runs the jobs instead of Qt's global pool (which has as many threads
+    // as cores, so a job started while every one is busy waits for one); it must outlive this.
+    explicit BackgroundJob(QObject* context, WhenDestroyed whenDestroyed = WhenDestroyed::Wait,
+                           QThreadPool* pool = nullptr)
+        : m_whenDestroyed(whenDestroyed),
+          m_pool(pool != nullptr ? pool : QThreadPool::globalInstance()) {
         QObject::connect(&m_watcher, &QFutureWatcher<T>::progressValueChanged, context,
                          [this](int value) {
                              if (!m_progressed || !progressDue()) return;
@@ -60,13 +66,14 @@ public:
         m_progressed = std::move(progressed);
         auto stop = std::make_shared<std::stop_source>();
         m_stop = stop;
-        m_watcher.setFuture(QtConcurrent::run([work = std::move(work), stop](QPromise<T>& promise) {
-            lowerThisThreadPriority();  // the GUI thread must not wait for a core
-            promise.setProgressRange(0, kSteps);
-            promise.addResult(work(stop->get_token(), [&promise](double f) {
-                promise.setProgressValue(static_cast<int>(f * kSteps));
+        m_watcher.setFuture(
+            QtConcurrent::run(m_pool, [work = std::move(work), stop](QPromise<T>& promise) {
+                lowerThisThreadPriority();  // the GUI thread must not wait for a core
+                promise.setProgressRange(0, kSteps);
+                promise.addResult(work(stop->get_token(), [&promise](double f) {
+                    promise.setProgressValue(static_cast<int>(f * kSteps));
+                }));
             }));
-        }));
     }
 
     void cancel() {
@@ -107,6 +114,7 @@ private:
     }
 
     WhenDestroyed m_whenDestroyed;
+    QThreadPool* m_pool;
     QFutureWatcher<T> m_watcher;
     std::shared_ptr<std::stop_source> m_stop;
     Done m_done;

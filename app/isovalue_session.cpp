@@ -18,7 +18,9 @@ IsovalueSession::IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* 
     : QObject(parent),
       m_view(view),
       m_selection(selection),
-      m_cacheDirectory(std::move(cacheDirectory)) {}
+      m_cacheDirectory(std::move(cacheDirectory)) {
+    m_previewThread.setMaxThreadCount(1);  // one preview runs at a time anyway
+}
 
 QStringList IsovalueSession::memberNames() const {
     QStringList names;

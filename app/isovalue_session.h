@@ -14,6 +14,7 @@
 #pragma once
 
 #include <QObject>
+#include <QThreadPool>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -230,7 +231,12 @@ private:
         std::shared_ptr<const data::Ensemble> ensemble,
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
-    BackgroundJob<BuiltPreview> m_previewJob{this};
+    // Previews have a thread of their own: on Qt's global pool (a thread a core) one would wait
+    // while a full build and a time step's motion meshes, or the reading ahead, held every
+    // thread, and a step never seen could then reach full detail with no preview first.
+    QThreadPool m_previewThread;
+    BackgroundJob<BuiltPreview> m_previewJob{this, BackgroundJob<BuiltPreview>::WhenDestroyed::Wait,
+                                             &m_previewThread};
     // A result's motion meshes: the one shown, or that of a time step just left.
     BackgroundJob<BuiltPreview> m_motionJob{this};
     std::optional<PreviewRequest> m_pendingPreview;

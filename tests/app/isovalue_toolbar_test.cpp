@@ -2,9 +2,11 @@
 // committed on it rebuilds the surfaces in the background while the previous ones stay shown.
 #include <gtest/gtest.h>
 
+#include <QSemaphore>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
+#include <QThreadPool>
 
 #include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
@@ -125,4 +127,39 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
     // And a preview is not: it would have shown the coarser surfaces.
     window.view()->renderer().setMeshes(preview);
     EXPECT_NE(window.view()->renderImage(size), directly);
+}
+
+TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    app::IsovalueSession* session = window.isovalueSession();
+    QSignalSpy built(session, &app::IsovalueSession::finished);
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
+    ASSERT_TRUE(loaded.wait(30000));
+    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
+
+    // Every thread of Qt's global pool held, as a full build beside a time step's motion
+    // meshes or the reading ahead can hold them (one a core).
+    QThreadPool* shared = QThreadPool::globalInstance();
+    const int threads = shared->maxThreadCount();
+    QSemaphore holding, released;
+    for (int t = 0; t < threads; ++t) {
+        shared->start([&holding, &released] {
+            holding.release();
+            released.acquire();
+        });
+    }
+    ASSERT_TRUE(holding.tryAcquire(threads, 30000)) << "the shared threads are all held";
+
+    QSignalSpy shown(session, &app::IsovalueSession::previewShown);
+    QSlider* slider = window.renderToolbar()->isovalueControl()->slider();
+    slider->setSliderDown(true);
+    slider->setSliderPosition(slider->maximum() / 3);
+    const bool previewed = shown.wait(20000);
+    released.release(threads);
+    EXPECT_TRUE(previewed) << "the preview waited for a shared thread";
+    slider->setSliderDown(false);
+    ASSERT_TRUE(built.wait(60000)) << "the release's full surfaces, once the threads are free";
 }
