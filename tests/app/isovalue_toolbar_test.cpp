@@ -21,6 +21,17 @@
 using namespace ensil;
 using ensil::ui::IsovalueControl;
 
+namespace {
+// Shows the workbench on a small demo and waits for its first surfaces.
+bool showSmallDemo(app::MainWindow& window) {
+    if (!test::showWorkbench(window, {1000, 700})) return false;
+    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
+    return loaded.wait(30000) && (built.count() > 0 || built.wait(60000));
+}
+}  // namespace
+
 TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAreReady) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
@@ -61,13 +72,9 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
 TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurfacesOfTheRelease) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    ASSERT_TRUE(showSmallDemo(window));
     app::IsovalueSession* session = window.isovalueSession();
     QSignalSpy built(session, &app::IsovalueSession::finished);
-    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
-    ASSERT_TRUE(loaded.wait(30000));
-    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
     ui::IsovalueControl* control = window.renderToolbar()->isovalueControl();
     QSignalSpy shown(session, &app::IsovalueSession::previewShown);
 
@@ -90,7 +97,7 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
     const auto preview = window.view()->renderer().meshes();
     ASSERT_NE(preview, nullptr);
     EXPECT_EQ(preview->isovalue, last) << "the view shows the value under the pointer";
-    EXPECT_EQ(built.count(), 1) << "no full build while dragging";
+    EXPECT_EQ(built.count(), 0) << "no full build while dragging";
 
     // Dragging back over a value seen is shown from memory, at once, without a build.
     const qsizetype before = shown.count();
@@ -132,13 +139,9 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
 TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
+    ASSERT_TRUE(showSmallDemo(window));
     app::IsovalueSession* session = window.isovalueSession();
     QSignalSpy built(session, &app::IsovalueSession::finished);
-    window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
-    ASSERT_TRUE(loaded.wait(30000));
-    ASSERT_TRUE(built.count() > 0 || built.wait(60000));
 
     // Every thread of Qt's global pool held, as a full build beside a time step's motion
     // meshes or the reading ahead can hold them (one a core).
