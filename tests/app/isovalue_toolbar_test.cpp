@@ -2,11 +2,13 @@
 // committed on it rebuilds the surfaces in the background while the previous ones stay shown.
 #include <gtest/gtest.h>
 
+#include <QScopeGuard>
 #include <QSemaphore>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
 #include <QThreadPool>
+#include <memory>
 
 #include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
@@ -147,21 +149,25 @@ TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
     // meshes or the reading ahead can hold them (one a core).
     QThreadPool* shared = QThreadPool::globalInstance();
     const int threads = shared->maxThreadCount();
-    QSemaphore holding, released;
+    // Shared with the held threads, which may still be leaving acquire() when this test ends.
+    const auto holding = std::make_shared<QSemaphore>(), released = std::make_shared<QSemaphore>();
+    // Freed however this test ends: a thread still held would hang the process's exit.
+    auto freeThreads = qScopeGuard([released, threads] { released->release(threads); });
     for (int t = 0; t < threads; ++t) {
-        shared->start([&holding, &released] {
-            holding.release();
-            released.acquire();
+        shared->start([holding, released] {
+            holding->release();
+            released->acquire();
         });
     }
-    ASSERT_TRUE(holding.tryAcquire(threads, 30000)) << "the shared threads are all held";
+    ASSERT_TRUE(holding->tryAcquire(threads, 30000)) << "the shared threads are all held";
 
     QSignalSpy shown(session, &app::IsovalueSession::previewShown);
     QSlider* slider = window.renderToolbar()->isovalueControl()->slider();
     slider->setSliderDown(true);
     slider->setSliderPosition(slider->maximum() / 3);
     const bool previewed = shown.wait(20000);
-    released.release(threads);
+    released->release(threads);
+    freeThreads.dismiss();
     EXPECT_TRUE(previewed) << "the preview waited for a shared thread";
     slider->setSliderDown(false);
     ASSERT_TRUE(built.wait(60000)) << "the release's full surfaces, once the threads are free";
