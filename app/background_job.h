@@ -1,4 +1,4 @@
-// Runs one job at a time on Qt's thread pool (or a pool of its owner's) and hands its result
+// Runs one job at a time on ensil's job threads (or a pool of its owner's) and hands its result
 // back on the GUI thread. A
 // job is a function (stop token, progress) -> T that captures its inputs by value. Starting a
 // new job cancels the running one and drops its result (the user changed the isovalue
@@ -22,6 +22,15 @@
 
 namespace ensil::app {
 
+// The threads background jobs run on: ensil's own pool, a thread a core. Not Qt's global pool:
+// Qt's raster painting hands parts of a paint to that one and waits for them, so with its
+// threads all held by jobs a widget's repaint waited for a job to end (a test that held every
+// one of them hung in QHeaderView::paintEvent).
+inline QThreadPool* jobThreadPool() {
+    static QThreadPool pool;
+    return &pool;
+}
+
 template <typename T>
 class BackgroundJob {
 public:
@@ -39,12 +48,11 @@ public:
     // work that captures nothing but values (a probe of files for a dialog being closed).
     enum class WhenDestroyed { Wait, Abandon };
 
-    // `pool`, when given, runs the jobs instead of Qt's global pool (which has as many threads
-    // as cores, so a job started while every one is busy waits for one); it must outlive this.
+    // `pool`, when given, runs the jobs instead of jobThreadPool() (which has as many threads as
+    // cores, so a job started while every one is busy waits for one); it must outlive this.
     explicit BackgroundJob(QObject* context, WhenDestroyed whenDestroyed = WhenDestroyed::Wait,
                            QThreadPool* pool = nullptr)
-        : m_whenDestroyed(whenDestroyed),
-          m_pool(pool != nullptr ? pool : QThreadPool::globalInstance()) {
+        : m_whenDestroyed(whenDestroyed), m_pool(pool != nullptr ? pool : jobThreadPool()) {
         QObject::connect(&m_watcher, &QFutureWatcher<T>::progressValueChanged, context,
                          [this](int value) {
                              if (!m_progressed || !progressDue()) return;

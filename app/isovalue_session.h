@@ -231,7 +231,7 @@ private:
         std::shared_ptr<const data::Ensemble> ensemble,
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
-    // Previews have a thread of their own: on Qt's global pool (a thread a core) one would wait
+    // Previews have a thread of their own: on the jobs' pool (a thread a core) one would wait
     // while a full build and a time step's motion meshes, or the reading ahead, held every
     // thread, and a step never seen could then reach full detail with no preview first.
     QThreadPool m_previewThread;

@@ -10,6 +10,7 @@
 #include <QThreadPool>
 #include <memory>
 
+#include "app/background_job.h"
 #include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
@@ -145,9 +146,10 @@ TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
     app::IsovalueSession* session = window.isovalueSession();
     QSignalSpy built(session, &app::IsovalueSession::finished);
 
-    // Every thread of Qt's global pool held, as a full build beside a time step's motion
-    // meshes or the reading ahead can hold them (one a core).
-    QThreadPool* shared = QThreadPool::globalInstance();
+    // Every thread of the jobs' pool held, as a full build beside a time step's motion meshes
+    // or the reading ahead can hold them (one a core). (Held on Qt's global pool, as the jobs
+    // were before, the window's next repaint waited for them: Qt's raster painting uses it.)
+    QThreadPool* shared = app::jobThreadPool();
     const int threads = shared->maxThreadCount();
     // Shared with the held threads, which may still be leaving acquire() when this test ends.
     const auto holding = std::make_shared<QSemaphore>(), released = std::make_shared<QSemaphore>();
