@@ -1,9 +1,8 @@
 // Runs one job at a time on ensil's job threads (or a pool of its owner's) and hands its result
-// back on the GUI thread. A
-// job is a function (stop token, progress) -> T that captures its inputs by value. Starting a
-// new job cancels the running one and drops its result (the user changed the isovalue
-// meanwhile); cancel() asks the running job to stop. Jobs run at a lower priority than the GUI
-// thread (app/worker_priority.h). Callbacks run on the GUI thread, through
+// back on the GUI thread. A job is a function (stop token, progress) -> T that captures its
+// inputs by value. Starting a new job cancels the running one and drops its result (the user
+// changed the isovalue meanwhile); cancel() asks the running job to stop. Jobs run at a lower
+// priority than the GUI thread (app/worker_priority.h). Callbacks run on the GUI thread, through
 // QFutureWatcher's queued signals. GUI thread only; wait() before destroying what callbacks use.
 #pragma once
 
