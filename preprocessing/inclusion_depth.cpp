@@ -150,23 +150,6 @@ ContourBoxplot computeContourBoxplot(const data::Ensemble& ensemble, float isova
     box.median = order.front();
     box.bandMembers.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>((n + 1) / 2));
 
-    std::vector<std::uint64_t> all(words, ~std::uint64_t{0});
-    std::vector<std::uint64_t> any(words, 0);
-    for (const std::size_t m : box.bandMembers) {
-        const std::uint64_t* set = bits.data() + m * words;
-        for (std::size_t w = 0; w < words; ++w) {
-            all[w] &= set[w];
-            any[w] |= set[w];
-        }
-    }
-    box.bandInner.resize(points);
-    box.bandOuter.resize(points);
-    for (std::size_t p = 0; p < points; ++p) {
-        const std::uint64_t bit = std::uint64_t{1} << (p % kWordBits);
-        box.bandInner[p] = (all[p / kWordBits] & bit) != 0 ? 1.0F : 0.0F;
-        box.bandOuter[p] = (any[p / kWordBits] & bit) != 0 ? 1.0F : 0.0F;
-    }
-
     // Sun and Genton's fence, 1.5 interquartile ranges below the first quartile, with numpy's
     // default ("linear") quartiles. Depth measures centrality, so only the low side has outliers.
     std::vector<double> sorted = box.depth;

@@ -30,12 +30,9 @@ struct ContourBoxplot {
     std::vector<std::size_t> insidePoints;  // |B_i|, one per member (0: no surface, depth 0)
     std::size_t median = 0;                 // the deepest member; of equals, the lowest index
     // The ceil(N / 2) deepest members, deepest first (of equals, the lower index first), so
-    // bandMembers.front() == median.
+    // bandMembers.front() == median. The band's bounding fields are their lowest and highest
+    // values (band_envelope.h).
     std::vector<std::size_t> bandMembers;
-    // On the grid's points: 1 where every band member (bandInner) or any band member (bandOuter)
-    // has the point inside, else 0; their 0.5 isosurfaces bound the 50 % band.
-    data::FieldValues bandInner;
-    data::FieldValues bandOuter;
     // Depths below lowerFence = Q1 - 1.5 (Q3 - Q1) of all N depths (Sun and Genton's rule for
     // functional boxplots; quartiles as in linearQuantile): the outliers, in index order.
     double lowerFence = 0.0;
