@@ -6,8 +6,10 @@
 // QFutureWatcher's queued signals. GUI thread only; wait() before destroying what callbacks use.
 #pragma once
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFutureWatcher>
+#include <QPointer>
 #include <QPromise>
 #include <QThreadPool>
 #include <QtConcurrent/QtConcurrentRun>
@@ -25,9 +27,14 @@ namespace ensil::app {
 // Qt's raster painting hands parts of a paint to that one and waits for them, so with its
 // threads all held by jobs a widget's repaint waited for a job to end (a test that held every
 // one of them hung in QHeaderView::paintEvent).
+// The pool is the application object's child, so its threads end before main() returns, as
+// Qt's global pool's do: a thread still alive when the libraries' exit handlers run keeps
+// state they free for live threads only (OpenSSL's per-thread error state, allocated when
+// netCDF opens a file on a job thread, was then reported lost by LeakSanitizer). GUI thread.
 inline QThreadPool* jobThreadPool() {
-    static QThreadPool pool;
-    return &pool;
+    static QPointer<QThreadPool> pool;
+    if (pool.isNull()) pool = new QThreadPool(QCoreApplication::instance());
+    return pool.data();
 }
 
 template <typename T>
