@@ -2,18 +2,15 @@
 // committed on it rebuilds the surfaces in the background while the previous ones stay shown.
 #include <gtest/gtest.h>
 
-#include <QScopeGuard>
-#include <QSemaphore>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTest>
-#include <QThreadPool>
 #include <memory>
 
-#include "app/background_job.h"
 #include "app/headless/isovalue_job.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "tests/app/held_job_threads.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/histogram_strip.h"
@@ -146,30 +143,17 @@ TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
     app::IsovalueSession* session = window.isovalueSession();
     QSignalSpy built(session, &app::IsovalueSession::finished);
 
-    // Every thread of the jobs' pool held, as a full build beside a time step's motion meshes
-    // or the reading ahead can hold them (one a core). (Held on Qt's global pool, as the jobs
-    // were before, the window's next repaint waited for them: Qt's raster painting uses it.)
-    QThreadPool* shared = app::jobThreadPool();
-    const int threads = shared->maxThreadCount();
-    // Shared with the held threads, which may still be leaving acquire() when this test ends.
-    const auto holding = std::make_shared<QSemaphore>(), released = std::make_shared<QSemaphore>();
-    // Freed however this test ends: a thread still held would hang the process's exit.
-    auto freeThreads = qScopeGuard([released, threads] { released->release(threads); });
-    for (int t = 0; t < threads; ++t) {
-        shared->start([holding, released] {
-            holding->release();
-            released->acquire();
-        });
-    }
-    ASSERT_TRUE(holding->tryAcquire(threads, 30000)) << "the shared threads are all held";
+    // Every thread of the jobs' pool held. (Held on Qt's global pool, as the jobs were before,
+    // the window's next repaint waited for them: Qt's raster painting uses it.)
+    test::HeldJobThreads jobThreads;
+    ASSERT_TRUE(jobThreads.held()) << "the jobs' threads are all held";
 
     QSignalSpy shown(session, &app::IsovalueSession::previewShown);
     QSlider* slider = window.renderToolbar()->isovalueControl()->slider();
     slider->setSliderDown(true);
     slider->setSliderPosition(slider->maximum() / 3);
     const bool previewed = shown.wait(20000);
-    released->release(threads);
-    freeThreads.dismiss();
+    jobThreads.release();
     EXPECT_TRUE(previewed) << "the preview waited for a shared thread";
     slider->setSliderDown(false);
     ASSERT_TRUE(built.wait(60000)) << "the release's full surfaces, once the threads are free";

@@ -16,6 +16,7 @@
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "tests/app/held_job_threads.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -250,13 +251,19 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     ASSERT_TRUE(built.wait(120000));
     const auto first = window.view()->renderer().meshes();
 
-    // Asked for at once (its reading ahead just begun): read, then built, with a preview.
+    // Asked for at once (its reading ahead just begun): read, then built, with a preview. The
+    // jobs' threads are held until the preview is shown, so that the full build cannot end
+    // first, as it may on a busy machine (the preview has a thread of its own; the full
+    // surfaces are then shown without it, and this test saw {full}).
+    test::HeldJobThreads jobThreads;  // from when the reading ahead has ended
+    ASSERT_TRUE(jobThreads.held());
     std::vector<std::string> order;
     std::shared_ptr<const data::MeshSet> previewed;
     QObject::connect(&session, &app::IsovalueSession::previewShown, &window, [&] {
         order.emplace_back("preview");
         previewed = window.view()->renderer().meshes();
         EXPECT_TRUE(window.view()->inMotion()) << "a preview is drawn as motion frames";
+        jobThreads.release();
     });
     std::shared_ptr<const data::MeshSet> motionAtFirstFrame;
     QObject::connect(&session, &app::IsovalueSession::finished, &window, [&] {
