@@ -3,6 +3,7 @@
 #include "preprocessing/band_envelope.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/exceedance.h"
+#include "preprocessing/member_median.h"
 #include "preprocessing/side_by_side.h"
 
 namespace ensil::prep {
@@ -28,15 +29,17 @@ ContextSurfaces buildContextSurfaces(const data::Ensemble& ensemble,
     data::throwIfStopped(stop);
     out.exceedanceColumnMaximum = computeColumnMaximum(ensemble.grid, {"exceedance", exceedance});
     if (parts == ContextParts::FiguresAndSurfaces) {
-        // P(f > c) runs from 0 to 1: its surface is at one half. The band's two are the
-        // isovalue's surfaces of its members' lowest and highest values (band_envelope.h).
-        constexpr float kHalf = 0.5F;
+        // Each is the isovalue's surface of a field that separates the same grid points as
+        // its definition and is interpolated as the members are: where half the members
+        // exceed c, of their median (member_median.h); the band's, of its members' lowest and
+        // highest values (band_envelope.h).
+        const data::FieldValues median = computeMemberMedian(ensemble, stop);
         const BandEnvelope band = computeBandEnvelope(ensemble, out.boxplot.bandMembers, stop);
         const AxisTables axes = axisTables(frame);
         const auto mesh = [&](const data::FieldValues& field, float level, data::PackedMesh& into) {
             into = meshField(ensemble.grid, field, level, axes, nullptr, options, stop).mesh;
         };
-        runSideBySide([&] { mesh(exceedance, kHalf, out.probability); },
+        runSideBySide([&] { mesh(median, options.isovalue, out.probability); },
                       [&] { mesh(band.lowest, options.isovalue, out.bandInner); },
                       [&] { mesh(band.highest, options.isovalue, out.bandOuter); });
         data::throwIfStopped(stop);

@@ -1,6 +1,6 @@
 // The surfaces that summarise an ensemble at one isovalue, drawn as context around the members
 // (METHODS.md section 17): the surface where half the members exceed the isovalue (P(f > c) =
-// 0.5, the "median" surface of the exceedance probability), the two surfaces that bound the
+// 0.5, the isosurface of the members' median), the two surfaces that bound the
 // contour boxplot's 50 % band, and the boxplot itself (depths, median member, outliers).
 // Pure function; any thread.
 #pragma once
@@ -17,7 +17,7 @@
 namespace ensil::prep {
 
 struct ContextSurfaces {
-    data::PackedMesh probability;  // P(f > c) = 0.5
+    data::PackedMesh probability;  // P(f > c) = 0.5: the members' median at c
     data::PackedMesh bandInner;    // inside every member of the 50 % band
     data::PackedMesh bandOuter;    // inside any of them
     ContourBoxplot boxplot;

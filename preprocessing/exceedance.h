@@ -1,7 +1,7 @@
 // The exceedance probability alone, P(f > c) at every grid point (METHODS.md section 17): the
 // share of the members with a finite value there that exceed c, by the rule of
-// EnsembleStatistics::exceedance (NaN where no member has a value). The context surfaces mesh
-// this field at one half and need nothing else of the statistics; computing all of them
+// EnsembleStatistics::exceedance (NaN where no member has a value). The context surfaces (the
+// floor's column maximum, a section) need nothing else of the statistics; computing all of them
 // (mean, standard deviation, minimum, maximum, level crossings) took about five times as long,
 // at every isovalue and time step. Pure function; any thread.
 #pragma once

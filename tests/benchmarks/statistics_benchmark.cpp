@@ -3,7 +3,8 @@
 // per-point statistic and the cells' level-crossing probability) and computeContourBoxplot
 // (the inclusion depths of all members, median, band and outliers); then what a data set's
 // or a time step's overview and each isovalue compute beside them: the value statistics, the
-// moments, the spread alone, the exceedance alone and the distances to the mean. Prints medians
+// moments, the spread alone, the exceedance alone and the distances to the mean, and the fields
+// of the context surfaces: the members' median and the band's envelope. Prints medians
 // over several runs, in seconds, and what the boxplot found, with the demo's regime of each
 // outlier.
 //
@@ -16,12 +17,14 @@
 
 #include "data/demo_ensemble.h"
 #include "data/working_memory.h"
+#include "preprocessing/band_envelope.h"
 #include "preprocessing/default_isovalue.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/ensemble_statistics.h"
 #include "preprocessing/exceedance.h"
 #include "preprocessing/field_statistics.h"
 #include "preprocessing/inclusion_depth.h"
+#include "preprocessing/member_median.h"
 #include "preprocessing/member_spread.h"
 #include "preprocessing/member_summaries.h"
 #include "timing.h"
@@ -82,6 +85,8 @@ int main(int argc, char** argv) {
     time("computeEnsembleMoments:", [&] { moments = prep::computeEnsembleMoments(e); });
     time("computeMemberSpread:", [&] { (void)prep::computeMemberSpread(e); });
     time("computeExceedance:", [&] { (void)prep::computeExceedance(e, isovalue); });
+    time("computeMemberMedian:", [&] { (void)prep::computeMemberMedian(e); });
+    time("computeBandEnvelope:", [&] { (void)prep::computeBandEnvelope(e, box.bandMembers); });
     const auto& mean = moments.mean.values;
     time("distancesToField (mean):", [&] {
         (void)prep::distancesToField(e, {mean.data(), mean.size()}, isovalue);

@@ -21,7 +21,7 @@ namespace {
 // - the band is members 1 and 0 (member 0 loses only the thin shell 6..7 in member 1, member 2
 //   the thick shell 7..12), so its inner surface is radius 7 and its outer one radius 6;
 // - P(f > 8) is 1/3 between radii 6 and 7 and 2/3 between 7 and 12: its 0.5 surface is
-//   radius 7.
+//   radius 7, where the members' median (member 1's value everywhere) crosses 8.
 constexpr float kOffsets[] = {-2.0F, -1.0F, 4.0F};
 const glm::vec3 kCentre(15.5F);
 
@@ -53,21 +53,19 @@ TEST(ContextSurfaces, LieWhereTheDefinitionsPutThemOnNestedSpheres) {
         prep::buildContextSurfaces(e, data::DisplayFrame(e.grid, 1.0F), options);
     EXPECT_EQ(s.boxplot.median, 1u);
     EXPECT_EQ(s.boxplot.bandMembers, (std::vector<std::size_t>{1, 0}));
-    // P(f > c) is a step field: its 0.5 surface lies between the grid points on either side
-    // of the step, within half a cell along an axis, a little more along a diagonal. The
-    // band's surfaces are the members' lowest and highest values at c, interpolated as the
-    // members' own surfaces are: on the sphere, to within the interpolation's error (a 0.5
-    // surface of an inside / outside indicator would be off by up to half a cell too).
-    constexpr float kStep = 0.75F, kInterpolated = 0.1F;
-    for (const auto& [name, mesh, radius, within] :
-         {std::tuple{"probability", &s.probability, 7.0F, kStep},
-          std::tuple{"band inner", &s.bandInner, 7.0F, kInterpolated},
-          std::tuple{"band outer", &s.bandOuter, 6.0F, kInterpolated}}) {
+    // Each surface is that of a field interpolated as the members' own surfaces are (the
+    // members' median; the band members' lowest and highest values): on the sphere, to within
+    // the interpolation's error. The 0.5 surface of P(f > c), a step field, or of an inside /
+    // outside indicator would be off by up to three quarters of a cell.
+    constexpr float kInterpolated = 0.1F;
+    for (const auto& [name, mesh, radius] : {std::tuple{"probability", &s.probability, 7.0F},
+                                             std::tuple{"band inner", &s.bandInner, 7.0F},
+                                             std::tuple{"band outer", &s.bandOuter, 6.0F}}) {
         SCOPED_TRACE(name);
         ASSERT_FALSE(mesh->vertices.empty());
         const auto [lo, hi] = radii(*mesh);
-        EXPECT_GT(lo, radius - within);
-        EXPECT_LT(hi, radius + within);
+        EXPECT_GT(lo, radius - kInterpolated);
+        EXPECT_LT(hi, radius + kInterpolated);
     }
 
     // The floor's column maximum of P(f > 8): of the exceedance the statistics give.
