@@ -224,6 +224,9 @@ private:
     void createHistory(QMenu* edit);  // main_window_history.cpp
     void bindSession();               // main_window_session.cpp
     void showSessionParts(session::SessionParts parts);
+    // The view's title names this ensemble and the isovalue of the surfaces drawn, whatever is
+    // being built meanwhile (gl::Renderer::setTitleOf).
+    void titleTheView(const data::Ensemble& ensemble);
     void chooseScreenshot();
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);

@@ -65,22 +65,21 @@ void MainWindow::bindSession() {
     connect(m_toolbar, &ui::RenderToolbar::isovalueScrubEnded, this, [this] {
         m_scrubRepaints->end();
         m_session->endPreview();
-        // The title names the value committed (the preview's may have been a dropped one).
-        const std::optional<float> committed = m_model->state().isovalue;
-        if (!m_overview || !committed) return;
-        m_view->renderer().setTitle(
-            QString::fromStdString(pictureTitle(*m_overview->ensemble, *committed)));
     });
-    connect(m_session, &IsovalueSession::previewShown, this, [this](float isovalue) {
+    // (The view's title names the isovalue of the surfaces drawn, the preview's too.)
+    connect(m_session, &IsovalueSession::previewShown, this, [this] {
         m_scrubRepaints->frameComing();  // the toolbar's held-back repaints drawn with it
-        if (!m_overview) return;
-        m_view->renderer().setTitle(
-            QString::fromStdString(pictureTitle(*m_overview->ensemble, isovalue)));
     });
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this,
             [this](int k) { m_model->update([k](session::SessionState& s) { s.clusters = k; }); });
     connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, [this](prep::Linkage l) {
         m_model->update([l](session::SessionState& s) { s.linkage = l; });
+    });
+}
+
+void MainWindow::titleTheView(const data::Ensemble& ensemble) {
+    m_view->renderer().setTitleOf([words = pictureTitleOf(ensemble)](float isovalue) {
+        return QString::fromStdString(words(isovalue));
     });
 }
 
@@ -142,7 +141,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
                                     QString::fromStdString(m_overview->ensemble->units));
     }
     if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview) {
-        renderer.setTitle(QString::fromStdString(pictureTitle(*m_overview->ensemble, *s.isovalue)));
+        titleTheView(*m_overview->ensemble);
     }
     // Normals and curvatures live in display space: a new exaggeration rebuilds them (the
     // meshes come from the cache when this isovalue and exaggeration were seen before).

@@ -294,7 +294,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
                                     QString::fromStdString(e.units));
         m_toolbar->setIsovalueHistogram(stats.histogram);
     }
-    m_view->renderer().setTitle(QString::fromStdString(pictureTitle(e, isovalue)));
+    titleTheView(e);
     updateWindowTitle();
     showStepSurfaces(isovalue, s.verticalExaggeration);
 }

@@ -162,7 +162,7 @@ ViewOverlay Renderer::overlay(int width, int height) const {
     in.planeColor = glm::vec3(kPlaneColor);
     in.showAxes = m_scene.settings.showAxes;
     in.showLegend = m_scene.settings.showLegend;
-    if (m_scene.settings.showTitle) in.title = m_title;
+    if (m_scene.settings.showTitle) in.title = title();
     if (m_scene.settings.showGraticule && m_scene.mapLines && m_scene.hasGrid) {
         for (const geo::MapLine& line : *m_scene.mapLines) {
             if (line.label.empty() || line.points.empty()) continue;

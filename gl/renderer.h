@@ -13,6 +13,7 @@
 #include <QString>
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 #include <memory>
@@ -134,9 +135,20 @@ public:
     [[nodiscard]] int highlightedMember() const { return m_highlighted; }
 
     // The line above the picture saying what it shows (variable, isovalue, time, members);
-    // painted with the overlay when RenderSettings::showTitle.
-    void setTitle(QString title) { m_title = std::move(title); }
-    [[nodiscard]] const QString& title() const { return m_title; }
+    // painted with the overlay when RenderSettings::showTitle. Either fixed, or made from the
+    // isovalue of the meshes drawn (setTitleOf), so that a view still drawing the last
+    // surfaces while the next ones are built (seconds for large data) names what it draws.
+    void setTitle(QString title) {
+        m_title = std::move(title);
+        m_titleOf = {};
+    }
+    void setTitleOf(std::function<QString(float isovalue)> titleOf) {
+        m_title.clear();
+        m_titleOf = std::move(titleOf);
+    }
+    [[nodiscard]] QString title() const {
+        return m_titleOf && m_scene.meshes ? m_titleOf(m_scene.meshes->isovalue) : m_title;
+    }
     // The labels and legend to paint over a frame of this size (see gl/view_overlay.h).
     [[nodiscard]] ViewOverlay overlay(int width, int height) const;
 
@@ -366,6 +378,7 @@ private:
     float m_lineScale = 1.0F;
     int m_highlighted = -1;
     QString m_title;
+    std::function<QString(float)> m_titleOf;
     int m_animated = -1;
 };
 

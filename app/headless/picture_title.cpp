@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <cstdio>
+#include <functional>
 #include <vector>
 
 #include "gl/axis_ticks.h"
@@ -40,20 +41,26 @@ std::string shortFixedDimension(const std::string& line) {
 
 }  // namespace
 
-std::string pictureTitle(const data::Ensemble& e, float isovalue) {
-    std::string title = e.variable;
-    if (!e.longName.empty() && e.longName != e.variable) title += " (" + e.longName + ")";
-    if (!e.units.empty()) title += " [" + e.units + "]";
+std::function<std::string(float)> pictureTitleOf(const data::Ensemble& e) {
+    std::string head = e.variable;
+    if (!e.longName.empty() && e.longName != e.variable) head += " (" + e.longName + ")";
+    if (!e.units.empty()) head += " [" + e.units + "]";
     const std::string separator = " \u00b7 ";
-    title +=
-        separator + "isovalue " + formatValue(isovalue) + (e.units.empty() ? "" : " " + e.units);
+    head += separator + "isovalue ";
+    std::string tail = e.units.empty() ? "" : " " + e.units;
     for (const std::string& fixed : e.fixedDimensions) {
-        title += separator + shortFixedDimension(fixed);
+        tail += separator + shortFixedDimension(fixed);
     }
-    title += separator + std::to_string(e.memberCount()) +
-             (e.memberCount() == 1 ? " member" : " members");
-    if (!e.memberDimension.empty()) title += " along " + e.memberDimension;
-    return title;
+    tail += separator + std::to_string(e.memberCount()) +
+            (e.memberCount() == 1 ? " member" : " members");
+    if (!e.memberDimension.empty()) tail += " along " + e.memberDimension;
+    return [head = std::move(head), tail = std::move(tail)](float isovalue) {
+        return head + formatValue(isovalue) + tail;
+    };
+}
+
+std::string pictureTitle(const data::Ensemble& e, float isovalue) {
+    return pictureTitleOf(e)(isovalue);
 }
 
 std::string floorCaption(const data::Ensemble& e) {
@@ -73,8 +80,8 @@ std::string floorCaption(const data::Ensemble& e, int level) {
 }
 
 std::string exceedanceText(const data::Ensemble& e, float isovalue) {
-    return "P(" + e.variable + " > " + formatValue(isovalue) + (e.units.empty() ? "" : " " + e.units) +
-           ")";
+    return "P(" + e.variable + " > " + formatValue(isovalue) +
+           (e.units.empty() ? "" : " " + e.units) + ")";
 }
 
 std::string sectionQuantity(const data::Ensemble& e, gl::SectionField field, int member,

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/headless/isovalue_job.h"
+#include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/held_job_threads.h"
@@ -60,11 +61,18 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
     slider->setSliderDown(false);
     EXPECT_EQ(started.count(), 1);
     // The result comes back through the event loop, so it cannot have replaced the old one yet.
+    // The title names what is drawn, not the value being built (for large data, seconds).
+    const auto titleOf = [&](float isovalue) {
+        return QString::fromStdString(app::pictureTitle(*window.overview()->ensemble, isovalue));
+    };
     EXPECT_EQ(window.view()->renderer().meshes(), first) << "the last result stays until then";
+    EXPECT_EQ(window.view()->renderer().title(), titleOf(first->isovalue));
     ASSERT_TRUE(built.wait(60000));
     const auto second = window.view()->renderer().meshes();
     ASSERT_NE(second, first);
     EXPECT_NEAR(second->isovalue, control->value(), 1e-3);
+    EXPECT_EQ(window.view()->renderer().title(), titleOf(second->isovalue));
+    EXPECT_NE(titleOf(second->isovalue), titleOf(first->isovalue));
     EXPECT_NEAR(control->value(), 0.5 * (stats.minimum + stats.maximum),
                 (stats.maximum - stats.minimum) / 1000.0);
 }
