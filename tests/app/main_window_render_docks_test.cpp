@@ -33,7 +33,7 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
 
     // Keys 1 to 4 switch the mode, as the panel does.
     window.view()->setFocus();
-    QTest::keyClick(window.view(), Qt::Key_2);
+    ASSERT_TRUE(test::pressKey(window, window.view(), Qt::Key_2));
     EXPECT_EQ(renderer.settings().mode, gl::RenderMode::Spaghetti);
     window.renderPanel()->setMode(gl::RenderMode::Surfaces);
     EXPECT_EQ(renderer.settings().mode, gl::RenderMode::Surfaces);
@@ -48,7 +48,8 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     ui::CuttingPlanePanel& plane = *window.cuttingPlanePanel();
     plane.setOrientation(ui::CuttingPlanePanel::AlongZ);
     plane.findChild<QDoubleSpinBox*>("dataValue")->setValue(500.0);
-    QTest::keyClick(window.view(), Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_TRUE(
+        test::pressKey(window, window.view(), Qt::Key_P, Qt::ControlModifier | Qt::ShiftModifier));
     const data::DisplayFrame& frame = renderer.frame();
     const data::Grid& grid = window.overview()->ensemble->grid;
     const float z500 = frame.toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;

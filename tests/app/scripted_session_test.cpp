@@ -70,7 +70,7 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     // Start another and cancel it with Esc: the surfaces on screen stay.
     typeIsovalue(window, 35.0);
     ASSERT_TRUE(session.isRunning());
-    QTest::keyClick(&window, Qt::Key_Escape);
+    ASSERT_TRUE(test::pressKey(window, &window, Qt::Key_Escape));
     QTRY_VERIFY_WITH_TIMEOUT(failed.count() >= 1, 30000);
     EXPECT_FALSE(session.isRunning());
     EXPECT_EQ(failed.last()[0].toString(), QStringLiteral("Isosurfaces cancelled"));
@@ -112,7 +112,8 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     ASSERT_GE(shown.count(), 1);
     EXPECT_EQ(shown[0][0].toInt(), expected);
     EXPECT_EQ(view.renderer().animatedMember(), expected);
-    QTest::keyClick(&window, Qt::Key_Escape);  // nothing running: clears the selection
+    ASSERT_TRUE(
+        test::pressKey(window, &window, Qt::Key_Escape));  // nothing running: clears the selection
     EXPECT_TRUE(selection.selectedMembers().isEmpty());
     shown.clear();
     animation.playAction()->trigger();

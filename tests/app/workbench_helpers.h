@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QSignalSpy>
 #include <QSize>
 #include <QTest>
@@ -28,6 +29,20 @@ namespace ensil::test {
     if (!showWorkbench(window, size)) return false;
     window.activateWindow();
     return QTest::qWaitForWindowActive(&window);
+}
+
+// Clicks a key on a widget of the window as a user would, the window made active again first
+// when it is not: shortcuts reach only the active window, and a test running beside this one
+// on the same virtual display may have taken that since (a key was then lost). False when the
+// window never became active.
+[[nodiscard]] inline bool pressKey(app::MainWindow& window, QWidget* target, Qt::Key key,
+                                   Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    if (QApplication::activeWindow() != &window) {
+        window.activateWindow();
+        if (!QTest::qWaitForWindowActive(&window)) return false;
+    }
+    QTest::keyClick(target, key, modifiers);
+    return true;
 }
 
 // Loads the demo and waits until its first surfaces are built; false when they never came.
