@@ -34,6 +34,7 @@
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
+#include "data/units_text.h"
 #include "geo/map_projection.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cluster_timeline.h"
@@ -482,7 +483,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const int members = static_cast<int>(e.memberCount());
     m_toolbar->setMemberCount(members, std::min(5, members));
     m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, m_overview->defaultIsovalue,
-                                QString::fromStdString(e.units));
+                                QString::fromStdString(data::readableUnits(e.units)));
     m_toolbar->setIsovalueHistogram(stats.histogram);
     updatePlaneBox();
     {

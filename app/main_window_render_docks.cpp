@@ -13,6 +13,7 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "data/units_text.h"
 #include "preprocessing/mesh_packing.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
@@ -120,8 +121,9 @@ void MainWindow::createRenderDocks() {
     connect(m_session, &IsovalueSession::finished, this, [this] {
         const auto& meshes = m_view->renderer().meshes();
         if (!meshes || !m_overview) return;
-        const QString units = QString::fromStdString(m_overview->ensemble->units);
-        // "K" squared is "K²", "m s-1" squared is "(m s-1)²".
+        const QString units =
+            QString::fromStdString(data::readableUnits(m_overview->ensemble->units));
+        // "K" squared is "K²", "m s⁻¹" squared is "(m s⁻¹)²".
         const QString squared = units.isEmpty() ? QString()
                                 : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
                                     ? QStringLiteral("(%1)\u00b2").arg(units)

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "data/field_sampling.h"
+#include "data/units_text.h"
 #include "gl/axis_ticks.h"
 
 namespace ensil::app {
@@ -54,7 +55,7 @@ QString formatLonLat(double lon, double lat) {
 QString describePoint(const PointContext& c, const gl::PickResult& hit) {
     if (c.ensemble == nullptr || c.frame == nullptr || c.mean == nullptr) return {};
     const data::Ensemble& e = *c.ensemble;
-    const std::string& units = e.units;
+    const std::string units = data::readableUnits(e.units);
     const QString variable = QString::fromStdString(e.variable);
     if (hit.surface && hit.member >= 0 && static_cast<std::size_t>(hit.member) < e.memberCount()) {
         const glm::dvec3 index = c.frame->displayToIndex(*hit.surface);
@@ -65,8 +66,7 @@ QString describePoint(const PointContext& c, const gl::PickResult& hit) {
             .arg(place(c, index), level(e.grid.z(), index.z), variable, value(member, units),
                  value(mean, units));
     }
-    if (hit.section && c.section != nullptr &&
-        c.section->values.size() == e.grid.pointCount()) {
+    if (hit.section && c.section != nullptr && c.section->values.size() == e.grid.pointCount()) {
         const glm::dvec3 index = c.frame->displayToIndex(*hit.section);
         const float v = gl::sectionValueAt(*c.section, e.grid, *c.frame, *hit.section);
         return QStringLiteral("%1 \u00b7 %2 \u00b7 %3 %4")

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "data/units_text.h"
 #include "gl/axis_ticks.h"
 
 namespace ensil::app {
@@ -39,15 +40,21 @@ std::string shortFixedDimension(const std::string& line) {
     }
 }
 
+// " [m s⁻¹]", or nothing for data without units.
+std::string unitsInBrackets(const data::Ensemble& e) {
+    return e.units.empty() ? "" : " [" + data::readableUnits(e.units) + "]";
+}
+
 }  // namespace
 
 std::function<std::string(float)> pictureTitleOf(const data::Ensemble& e) {
     std::string head = e.variable;
     if (!e.longName.empty() && e.longName != e.variable) head += " (" + e.longName + ")";
-    if (!e.units.empty()) head += " [" + e.units + "]";
+    const std::string units = data::readableUnits(e.units);
+    if (!units.empty()) head += " [" + units + "]";
     const std::string separator = " \u00b7 ";
     head += separator + "isovalue ";
-    std::string tail = e.units.empty() ? "" : " " + e.units;
+    std::string tail = units.empty() ? "" : " " + units;
     for (const std::string& fixed : e.fixedDimensions) {
         tail += separator + shortFixedDimension(fixed);
     }
@@ -64,8 +71,7 @@ std::string pictureTitle(const data::Ensemble& e, float isovalue) {
 }
 
 std::string floorCaption(const data::Ensemble& e) {
-    return "floor: column maximum of the mean " + e.variable +
-           (e.units.empty() ? "" : " [" + e.units + "]");
+    return "floor: column maximum of the mean " + e.variable + unitsInBrackets(e);
 }
 
 std::string floorCaption(const data::Ensemble& e, int level) {
@@ -75,13 +81,12 @@ std::string floorCaption(const data::Ensemble& e, int level) {
     std::array<char, 32> value{};
     std::snprintf(value.data(), value.size(), "%.4g", z.values[k] * labelling.shownPerUnit);
     return "floor: mean " + e.variable + " at " + value.data() + " " +
-           (labelling.units.empty() ? z.name : labelling.units) +
-           (e.units.empty() ? "" : " [" + e.units + "]");
+           (labelling.units.empty() ? z.name : labelling.units) + unitsInBrackets(e);
 }
 
 std::string exceedanceText(const data::Ensemble& e, float isovalue) {
     return "P(" + e.variable + " > " + formatValue(isovalue) +
-           (e.units.empty() ? "" : " " + e.units) + ")";
+           (e.units.empty() ? "" : " " + data::readableUnits(e.units)) + ")";
 }
 
 std::string sectionQuantity(const data::Ensemble& e, gl::SectionField field, int member,

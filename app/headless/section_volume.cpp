@@ -1,6 +1,7 @@
 #include "app/headless/section_volume.h"
 
 #include "app/headless/picture_title.h"
+#include "data/units_text.h"
 
 namespace ensil::app {
 namespace {
@@ -12,7 +13,7 @@ gl::SectionVolume volumeOf(const data::FieldValues& field, float minimum, float 
     volume.minimum = minimum;
     volume.maximum = maximum;
     volume.quantity = QString::fromStdString(quantity);
-    volume.units = QString::fromStdString(units);
+    volume.units = QString::fromStdString(data::readableUnits(units));
     return volume;
 }
 

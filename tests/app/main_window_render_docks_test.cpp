@@ -42,7 +42,7 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     auto* removalMax = window.renderPanel()->findChild<QDoubleSpinBox*>("removalMax");
     ASSERT_NE(removalMax, nullptr);
     EXPECT_GT(removalMax->maximum(), 0.0);
-    EXPECT_EQ(removalMax->suffix(), QStringLiteral(" (m s-1)\u00b2")) << "units squared";
+    EXPECT_EQ(removalMax->suffix(), QStringLiteral(" (m s\u207b\u00b9)\u00b2")) << "units squared";
 
     // A horizontal plane at the 500 hPa level, typed in hPa, lands at that level's height.
     ui::CuttingPlanePanel& plane = *window.cuttingPlanePanel();
@@ -136,7 +136,7 @@ TEST(MainWindowRenderDocks, TheCutFaceShowsTheFieldChosenInThePlanePanelAndTheMe
     EXPECT_TRUE(renderer.settings().plane.enabled);
     ASSERT_TRUE(renderer.sectionShown());
     EXPECT_EQ(renderer.sectionVolume().caption(),
-              QStringLiteral("section: standard deviation of wind_speed [m s-1]"));
+              QStringLiteral("section: standard deviation of wind_speed [m s\u207b\u00b9]"));
 
     // A member section shows the selected member, else the one last hovered.
     fill->setCurrentIndex(static_cast<int>(gl::SectionField::Member));
