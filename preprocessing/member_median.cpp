@@ -65,11 +65,14 @@ void mediansOfGather(const std::int32_t* keys, std::size_t members, std::size_t 
         for (std::size_t p = 0; p < count; ++p) {
             const bool enough = atOrBelow[p] > valid[p] / 2;
             hi[p] = enough ? mid[p] : hi[p];
-            lo[p] = enough ? lo[p] : mid[p] + 1;
+            // Unsigned: a point without values (never enough) runs past the range, harmlessly
+            // (its median is NaN), and must not overflow.
+            lo[p] =
+                enough ? lo[p] : static_cast<std::int32_t>(static_cast<std::uint32_t>(mid[p]) + 1U);
         }
     }
-    // The lower middle value (index n / 2 - 1), for an even n: the upper one when n / 2 keys or
-    // more equal it, else the largest key below it.
+    // The lower middle value (index n / 2 - 1), for an even n: the largest key below the upper
+    // one when n / 2 keys or more are below it, else the upper one itself (the two are equal).
     std::int32_t* below = mid;  // reused: the count of keys below the upper middle one
     std::int32_t* largestBelow = atOrBelow;
     for (std::size_t p = 0; p < count; ++p) {

@@ -257,7 +257,10 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     // jobs' threads are held until the preview is shown, so that the full build cannot end
     // first, as it may on a busy machine (the preview has a thread of its own; the full
     // surfaces are then shown without it, and this test saw {full}).
-    test::HeldJobThreads jobThreads;  // from when the reading ahead has ended
+    // From when the jobs already running (the reading ahead among them) have ended, which under
+    // ASan beside other work took longer than 30 s once. (The GUI thread waits, so nothing new
+    // starts meanwhile.)
+    test::HeldJobThreads jobThreads(120000);
     ASSERT_TRUE(jobThreads.held());
     std::vector<std::string> order;
     std::shared_ptr<const data::MeshSet> previewed;
