@@ -41,10 +41,6 @@ QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* nam
     dock->setWidget(content);
     return dock;
 }
-
-// The hovered member stands out in the view. gl::Renderer::setHighlightedMember is on its way;
-// until then the hovered member is drawn in a lighter tint of its colour. After the merge this
-// becomes: renderer.setHighlightedMember(hovered).
 }  // namespace
 
 void MainWindow::createPanels() {
