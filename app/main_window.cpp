@@ -34,7 +34,6 @@
 #include "app/recent_selections.h"
 #include "app/version.h"
 #include "data/error.h"
-#include "data/units_text.h"
 #include "geo/map_projection.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cluster_timeline.h"
@@ -458,6 +457,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const data::Ensemble& e = *m_overview->ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
+    titleTheView(e);
     // The map spans its own range: the mean's column maxima cover only part of the values.
     showFloor(m_model->state().render);
     m_lastHoveredMember = -1;
@@ -482,8 +482,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     const prep::FieldStatistics& stats = m_overview->statistics;
     const int members = static_cast<int>(e.memberCount());
     m_toolbar->setMemberCount(members, std::min(5, members));
-    m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, m_overview->defaultIsovalue,
-                                QString::fromStdString(data::readableUnits(e.units)));
+    showIsovalueRange(m_overview->defaultIsovalue);
     m_toolbar->setIsovalueHistogram(stats.histogram);
     updatePlaneBox();
     {

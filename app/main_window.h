@@ -227,6 +227,8 @@ private:
     // The view's title names this ensemble and the isovalue of the surfaces drawn, whatever is
     // being built meanwhile (gl::Renderer::setTitleOf).
     void titleTheView(const data::Ensemble& ensemble);
+    // The toolbar's isovalue range: the data's values, with its units as people read them.
+    void showIsovalueRange(float isovalue);
     void chooseScreenshot();
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);

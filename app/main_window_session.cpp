@@ -10,6 +10,7 @@
 #include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "data/units_text.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/frame_paced_repaints.h"
@@ -83,6 +84,13 @@ void MainWindow::titleTheView(const data::Ensemble& ensemble) {
     });
 }
 
+void MainWindow::showIsovalueRange(float isovalue) {
+    const prep::FieldStatistics& stats = m_overview->statistics;
+    m_toolbar->setIsovalueRange(
+        stats.minimum, stats.maximum, isovalue,
+        QString::fromStdString(data::readableUnits(m_overview->ensemble->units)));
+}
+
 void MainWindow::showSessionParts(session::SessionParts parts) {
     gl::Renderer& renderer = m_view->renderer();
     // Another time step of the data shown (the time bar, undo): read in the background.
@@ -136,12 +144,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     if (parts & SessionPart::Clusters) m_selection->setClusterCount(s.clusters);
     if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview &&
         static_cast<float>(m_toolbar->isovalue()) != *s.isovalue) {
-        const prep::FieldStatistics& stats = m_overview->statistics;
-        m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, *s.isovalue,
-                                    QString::fromStdString(m_overview->ensemble->units));
-    }
-    if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview) {
-        titleTheView(*m_overview->ensemble);
+        showIsovalueRange(*s.isovalue);
     }
     // Normals and curvatures live in display space: a new exaggeration rebuilds them (the
     // meshes come from the cache when this isovalue and exaggeration were seen before).

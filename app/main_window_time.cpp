@@ -14,7 +14,6 @@
 #include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "data/units_text.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/member_selection.h"
@@ -291,8 +290,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     const prep::FieldStatistics& stats = m_overview->statistics;
     {
         const QSignalBlocker block(m_toolbar);
-        m_toolbar->setIsovalueRange(stats.minimum, stats.maximum, isovalue,
-                                    QString::fromStdString(data::readableUnits(e.units)));
+        showIsovalueRange(isovalue);
         m_toolbar->setIsovalueHistogram(stats.histogram);
     }
     titleTheView(e);

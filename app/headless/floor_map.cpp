@@ -5,7 +5,6 @@
 #include <cstdio>
 
 #include "app/headless/picture_title.h"
-#include "data/units_text.h"
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/member_spread.h"
 
@@ -42,11 +41,9 @@ gl::FloorMap floorMapFor(const data::Ensemble& e, const data::Member& mean,
         case gl::FloorContent::SpreadMaximum:
             return gl::FloorMap::spanning(
                 columnMaxima.spread,
-                QString::fromStdString(
-                    "floor: column maximum of the members' standard "
-                    "deviation of " +
-                    e.variable +
-                    (e.units.empty() ? "" : " [" + data::readableUnits(e.units) + "]")));
+                QString::fromStdString("floor: column maximum of the members' standard "
+                                       "deviation of " +
+                                       e.variable + unitsInBrackets(e)));
         case gl::FloorContent::MeanAtLevel: {
             const std::size_t nx = e.grid.nx(), ny = e.grid.ny();
             const auto k = static_cast<std::size_t>(

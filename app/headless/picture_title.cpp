@@ -40,21 +40,19 @@ std::string shortFixedDimension(const std::string& line) {
     }
 }
 
-// " [m s⁻¹]", or nothing for data without units.
+}  // namespace
+
 std::string unitsInBrackets(const data::Ensemble& e) {
     return e.units.empty() ? "" : " [" + data::readableUnits(e.units) + "]";
 }
 
-}  // namespace
-
 std::function<std::string(float)> pictureTitleOf(const data::Ensemble& e) {
     std::string head = e.variable;
     if (!e.longName.empty() && e.longName != e.variable) head += " (" + e.longName + ")";
-    const std::string units = data::readableUnits(e.units);
-    if (!units.empty()) head += " [" + units + "]";
+    head += unitsInBrackets(e);
     const std::string separator = " \u00b7 ";
     head += separator + "isovalue ";
-    std::string tail = units.empty() ? "" : " " + units;
+    std::string tail = e.units.empty() ? "" : " " + data::readableUnits(e.units);
     for (const std::string& fixed : e.fixedDimensions) {
         tail += separator + shortFixedDimension(fixed);
     }

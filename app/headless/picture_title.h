@@ -16,6 +16,8 @@ std::string pictureTitle(const data::Ensemble& ensemble, float isovalue);
 // pictureTitle of this ensemble for any isovalue, holding only the words (not the data): the
 // workbench's view titles each frame with the isovalue of the surfaces it draws.
 std::function<std::string(float isovalue)> pictureTitleOf(const data::Ensemble& ensemble);
+// " [m s⁻¹]" (the units as people read them, data/units_text.h), or nothing without units.
+std::string unitsInBrackets(const data::Ensemble& ensemble);
 // What the floor map shows, for its colour bar: "floor: column maximum of the mean t [K]",
 // "floor: mean t at 850 hPa [K]" (level: a vertical grid index, clamped to the grid).
 std::string floorCaption(const data::Ensemble& ensemble);

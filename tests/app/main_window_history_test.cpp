@@ -72,6 +72,8 @@ TEST_F(History, UndoingAnIsovalueShowsTheEarlierSurfacesAgain) {
     EXPECT_NEAR(window.renderToolbar()->isovalue(), first, 1e-6);
     EXPECT_NEAR(window.view()->renderer().meshes()->isovalue, first, 1e-4);
     EXPECT_NE(window.view()->renderer().meshes()->isovalue, second);
+    EXPECT_EQ(window.renderToolbar()->isovalueBox()->suffix(), QStringLiteral(" m s\u207b\u00b9"))
+        << "the demo's m s-1, as people read it, also after an undo";
     EXPECT_EQ(stack()->count(), 1) << "undoing records nothing new";
 }
 
