@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "data/eccodes_library.h"
 #include "data/error.h"
 #include "data/job.h"
 
@@ -21,55 +22,6 @@ namespace ensil::data {
 namespace {
 
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-
-std::mutex& eccodesMutex() {
-    static std::mutex mutex;
-    return mutex;
-}
-
-// ecCodes prints its complaints to stderr; ensil's messages say what went wrong instead, with
-// the library's last words appended. Written only under eccodesMutex().
-std::string& lastLibraryMessage() {
-    static std::string message;
-    return message;
-}
-
-void keepLibraryMessage(const codes_context* /*context*/, int /*level*/, const char* text) {
-    lastLibraryMessage() = text != nullptr ? text : "";
-}
-
-// An assertion inside ecCodes: on some damaged messages (a bitmap section where none can be,
-// say) ecCodes 2.28 asserts, and by default aborts the program. ensil has it throw this instead
-// (ecCodes takes no lock and is built with unwind tables, so the exception passes through it;
-// what it had allocated is lost), and turns it into a skipped message or a data::Error.
-class LibraryAssertion : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void throwLibraryAssertion(const char* message) {
-    throw LibraryAssertion(message != nullptr ? message : "an internal check failed");
-}
-
-// Takes the ecCodes lock; the first one also routes ecCodes's log into lastLibraryMessage()
-// and its assertions into LibraryAssertion.
-std::unique_lock<std::mutex> lockEccodes() {
-    std::unique_lock lock(eccodesMutex());
-    static const bool quiet = [] {
-        codes_context_set_logging_proc(codes_context_get_default(), keepLibraryMessage);
-        codes_set_codes_assertion_failed_proc(throwLibraryAssertion);
-        return true;
-    }();
-    (void)quiet;
-    lastLibraryMessage().clear();
-    return lock;
-}
-
-std::string libraryWords(int code) {
-    std::string words = codes_get_error_message(code);
-    if (!lastLibraryMessage().empty()) words += " (ecCodes: " + lastLibraryMessage() + ")";
-    return words;
-}
 
 struct HandleDeleter {
     void operator()(codes_handle* h) const { codes_handle_delete(h); }
@@ -180,8 +132,7 @@ std::size_t gribFieldCount(std::FILE* file, long start, std::uint64_t length) {
 // only for this message's bytes, so ecCodes never reads past them into the next message.
 class MessageFields {
 public:
-    MessageFields(std::FILE* file, std::size_t offset, std::size_t length)
-        : m_bytes(length, '\0') {
+    MessageFields(std::FILE* file, std::size_t offset, std::size_t length) : m_bytes(length, '\0') {
         if (std::fseek(file, static_cast<long>(offset), SEEK_SET) != 0 ||
             std::fread(m_bytes.data(), 1, length, file) != length) {
             return;
@@ -309,12 +260,13 @@ void addFurtherFields(std::FILE* file, const GribMessage& first, const std::stri
         m.offset = first.offset;
         m.length = first.length;
         m.field = f;
-        const long packed = std::max(getLong(h.get(), "numberOfValues"),
-                                     getLong(h.get(), "numberOfCodedValues"));
+        const long packed =
+            std::max(getLong(h.get(), "numberOfValues"), getLong(h.get(), "numberOfCodedValues"));
         const std::string where = atOffset(path, m.number, m.offset, f);
         if (m.validity < 0) {
-            inventory.warnings.push_back(where + " is damaged (its reference date, time or "
-                                                 "forecast step is impossible); ensil skipped it");
+            inventory.warnings.push_back(where +
+                                         " is damaged (its reference date, time or "
+                                         "forecast step is impossible); ensil skipped it");
         } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
             inventory.warnings.push_back(where + " is damaged (it says it packs " +
                                          std::to_string(packed) + " values, but its grid has " +
