@@ -11,11 +11,13 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 
 #include "data/eccodes_library.h"
 #include "data/error.h"
+#include "data/grib_complex_packing.h"
 #include "data/job.h"
 
 namespace ensil::data {
@@ -236,6 +238,55 @@ std::size_t nearestIndex(const std::vector<double>& list, double value, double t
     return list.size();
 }
 
+// The complex packing's description (templates 5.2 and 5.3) checked against the data section's
+// bytes: ecCodes would decode it without checking (data/grib_complex_packing.h).
+std::optional<std::string> complexPackingDamageOf(codes_handle* h) {
+    const long templateNumber = getLong(h, "dataRepresentationTemplateNumber", -1);
+    if (getLong(h, "edition") != 2 || (templateNumber != 2 && templateNumber != 3)) {
+        return std::nullopt;
+    }
+    ComplexPacking p;
+    p.spatialDifferencing = templateNumber == 3;
+    p.numberOfValues = getLong(h, "numberOfValues");
+    p.bitsPerValue = getLong(h, "bitsPerValue");
+    p.numberOfGroupsOfDataValues = getLong(h, "numberOfGroupsOfDataValues");
+    p.referenceForGroupWidths = getLong(h, "referenceForGroupWidths");
+    p.numberOfBitsUsedForTheGroupWidths = getLong(h, "numberOfBitsUsedForTheGroupWidths");
+    p.referenceForGroupLengths = getLong(h, "referenceForGroupLengths");
+    p.lengthIncrementForTheGroupLengths = getLong(h, "lengthIncrementForTheGroupLengths");
+    p.trueLengthOfLastGroup = getLong(h, "trueLengthOfLastGroup");
+    p.numberOfBitsUsedForTheScaledGroupLengths =
+        getLong(h, "numberOfBitsUsedForTheScaledGroupLengths");
+    if (p.spatialDifferencing) {
+        p.orderOfSpatialDifferencing = getLong(h, "orderOfSpatialDifferencing");
+        p.numberOfOctetsExtraDescriptors = getLong(h, "numberOfOctetsExtraDescriptors");
+    }
+    const void* bytes = nullptr;
+    std::size_t size = 0;
+    const long offset = getLong(h, "offsetSection7", -1), length = getLong(h, "section7Length");
+    if (codes_get_message(h, &bytes, &size) != CODES_SUCCESS || offset < 0 || length < 5 ||
+        static_cast<std::size_t>(offset) + static_cast<std::size_t>(length) > size) {
+        return std::string("its data section lies outside the message");
+    }
+    const std::span<const std::uint8_t> data(static_cast<const std::uint8_t*>(bytes) + offset + 5,
+                                             static_cast<std::size_t>(length) - 5);
+    return complexPackingDamage(p, data);
+}
+
+// Why a message whose keys were read cannot be decoded safely, in words for the user; nullopt
+// when it can. ecCodes allocates what a message says it packs when it decodes it: a damaged
+// count would take gigabytes for a grid of a few hundred points.
+std::optional<std::string> damageBeforeDecoding(codes_handle* h, const GribMessage& m) {
+    if (m.validity < 0)
+        return std::string("its reference date, time or forecast step is impossible");
+    const long packed = std::max(getLong(h, "numberOfValues"), getLong(h, "numberOfCodedValues"));
+    if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
+        return "it says it packs " + std::to_string(packed) + " values, but its grid has " +
+               std::to_string(m.values) + " points";
+    }
+    return complexPackingDamageOf(h);
+}
+
 // The fields after the first of a GRIB 2 message that holds several, with the first's place
 // in the file (a field is decoded from its message, GribFile::decode). Skipped with a warning
 // like a damaged message when one does not read or packs more values than its grid has.
@@ -260,17 +311,9 @@ void addFurtherFields(std::FILE* file, const GribMessage& first, const std::stri
         m.offset = first.offset;
         m.length = first.length;
         m.field = f;
-        const long packed =
-            std::max(getLong(h.get(), "numberOfValues"), getLong(h.get(), "numberOfCodedValues"));
         const std::string where = atOffset(path, m.number, m.offset, f);
-        if (m.validity < 0) {
-            inventory.warnings.push_back(where +
-                                         " is damaged (its reference date, time or "
-                                         "forecast step is impossible); ensil skipped it");
-        } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
-            inventory.warnings.push_back(where + " is damaged (it says it packs " +
-                                         std::to_string(packed) + " values, but its grid has " +
-                                         std::to_string(m.values) + " points); ensil skipped it");
+        if (const auto why = damageBeforeDecoding(h.get(), m)) {
+            inventory.warnings.push_back(where + " is damaged (" + *why + "); ensil skipped it");
         } else {
             inventory.messages.push_back(std::move(m));
         }
@@ -332,15 +375,8 @@ GribInventory scanGribFile(const std::string& path, const std::stop_token& stop)
             GribMessage m = readKeys(h.get(), number);
             m.offset = static_cast<std::size_t>(*start);
             m.length = static_cast<std::size_t>(*length);
-            // ecCodes allocates what a message says it packs when it decodes it: a damaged
-            // count would take gigabytes for a grid of a few hundred points.
-            const long packed = std::max(getLong(h.get(), "numberOfValues"),
-                                         getLong(h.get(), "numberOfCodedValues"));
-            if (m.validity < 0) {
-                skip("its reference date, time or forecast step is impossible");
-            } else if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
-                skip("it says it packs " + std::to_string(packed) + " values, but its grid has " +
-                     std::to_string(m.values) + " points");
+            if (const auto why = damageBeforeDecoding(h.get(), m)) {
+                skip(*why);
             } else {
                 const GribMessage first = m;
                 inventory.messages.push_back(std::move(m));

@@ -592,6 +592,67 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     }
 }
 
+// Complex packing (templates 5.2 and 5.3, NCEP's GFS and GEFS files) reads, and a message whose
+// group count is damaged is skipped before ecCodes decodes it: ecCodes 2.28 would walk the
+// groups past the end of the message and crash the program.
+TEST(GribReader, ComplexPackingReadsAndADamagedGroupCountIsSkippedNotDecoded) {
+    for (const std::string packing : {"grid_complex", "grid_complex_spatial_differencing"}) {
+        SCOPED_TRACE(packing);
+        const test::TempDir dir;
+        std::vector<GribField> fields;
+        for (long step : {0L, 6L}) {
+            for (long member : {0L, 1L}) {
+                for (long level : {500L, 850L}) {
+                    // Simple packing at 16 bits and 0.01 K first: complex packing keeps them.
+                    std::vector<GribKey> grid = test::smallGrid();
+                    grid.front() = {"packingType", std::string("grid_simple")};
+                    grid.emplace_back("bitsPerValue", 16L);
+                    grid.emplace_back("decimalScaleFactor", 2L);
+                    fields.push_back(field(
+                        "t", "isobaricInhPa", level, member,
+                        [=](double lat, double lon) {
+                            return 250.0 + lat + lon / 8 + member + step;
+                        },
+                        step, grid));
+                    fields.back().packingOfValues = packing;
+                }
+            }
+        }
+        std::vector<std::size_t> offsets;
+        const std::string path = writeGrib(dir.file("complex.grib2"), fields, &offsets);
+        const data::Ensemble e = data::openEnsemble(select(path, "t", 0));
+        EXPECT_TRUE(e.warnings.empty());
+        expectValues(
+            e,
+            [](std::size_t m, double lat, double lon, double) { return 250.0 + lat + lon / 8 + m; },
+            packingError(path, "t") + 1e-4);
+
+        // The fifth message (time 1, member 0, 500 hPa) says its values form 2^32 - 16 groups.
+        std::string bytes = test::readBytes(path);
+        codes_handle* h = codes_handle_new_from_message(nullptr, bytes.data() + offsets[4],
+                                                        offsets[5] - offsets[4]);
+        ASSERT_NE(h, nullptr);
+        long section5 = 0;
+        ASSERT_EQ(codes_get_long(h, "offsetSection5", &section5), 0);
+        codes_handle_delete(h);
+        for (std::size_t i = 0; i < 4; ++i) {
+            bytes[offsets[4] + static_cast<std::size_t>(section5) + 31 + i] =
+                static_cast<char>(i == 3 ? 0xf0 : 0xff);
+        }
+        const std::string damaged = dir.file("damaged.grib2");
+        test::writeBytes(damaged, bytes);
+        const data::Ensemble early = data::openEnsemble(select(damaged, "t", 0));
+        ASSERT_EQ(early.warnings.size(), 1u);
+        const std::string& warning = early.warnings.front();
+        EXPECT_NE(warning.find("byte offset " + std::to_string(offsets[4]) + " is damaged"),
+                  std::string::npos)
+            << warning;
+        EXPECT_NE(warning.find("form 4294967280 groups"), std::string::npos) << warning;
+        const data::Error late = test::errorOpening(select(damaged, "t", 1));
+        EXPECT_TRUE(mentions(late, "member 0 at 500 hPa")) << late.what();
+    }
+}
+
 TEST(GribReader, ReducedGaussianAndSphericalHarmonicsAreRefusedWithARegridCommand) {
     const test::TempDir dir;
     for (const auto& [sample, command] :

@@ -23,6 +23,9 @@ struct GribField {
     std::vector<GribKey> keys;
     // The value at a point; NaN makes the point missing (a bitmap).
     std::function<double(double lat, double lon)> value;
+    // A packing set once the values are (ecCodes cannot switch an empty field to a complex
+    // packing); empty: the keys' packing.
+    std::string packingOfValues;
 };
 
 // An 8 x 5 latitude-longitude grid, 0..70 E and 40..0 N in steps of 10 degrees, scanned in the
@@ -84,6 +87,10 @@ inline std::string encodeGrib(const GribField& field) {
             EXPECT_EQ(codes_set_long(h, "bitmapPresent", 1), 0);
         }
         EXPECT_EQ(codes_set_double_array(h, "values", values.data(), n), 0);
+        if (!field.packingOfValues.empty()) {
+            EXPECT_TRUE(setKey(h, {"packingType", field.packingOfValues}));
+            EXPECT_EQ(codes_set_double_array(h, "values", values.data(), n), 0);
+        }
     }
     const void* bytes = nullptr;
     std::size_t size = 0;
