@@ -277,8 +277,9 @@ std::optional<std::string> complexPackingDamageOf(codes_handle* h) {
 // when it can. ecCodes allocates what a message says it packs when it decodes it: a damaged
 // count would take gigabytes for a grid of a few hundred points.
 std::optional<std::string> damageBeforeDecoding(codes_handle* h, const GribMessage& m) {
-    if (m.validity < 0)
+    if (m.validity < 0) {
         return std::string("its reference date, time or forecast step is impossible");
+    }
     const long packed = std::max(getLong(h, "numberOfValues"), getLong(h, "numberOfCodedValues"));
     if (packed < 0 || static_cast<std::size_t>(packed) > m.values) {
         return "it says it packs " + std::to_string(packed) + " values, but its grid has " +
@@ -548,6 +549,10 @@ void GribFile::decodeLocked(const GribMessage& message, float* out,
                     where +
                         " no longer matches what its header said when the file was opened; "
                         "was the file changed while ensil read it?");
+    }
+    // Checked when the file was opened; again here, as the message is read anew.
+    if (const auto why = complexPackingDamageOf(h.get())) {
+        throw Error(ErrorKind::CorruptFile, where + " is damaged: " + *why);
     }
     scratch.resize(n);
     error = codes_get_double_array(h.get(), "values", scratch.data(), &size);
