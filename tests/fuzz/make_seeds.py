@@ -210,7 +210,7 @@ def ensemble_reader_seeds():
 def grib_seeds(out):
     """Two members on two pressure levels, from ecCodes's smallest samples (16 x 31 lat-lon),
     in GRIB 1 (ECMWF local definition 1 for the member number) and GRIB 2 (an ensemble
-    template), the second with a bitmap; and the GRIB 2 one in complex packing."""
+    template), the second with a bitmap; and both again in packings that group the values."""
     samples = subprocess.run(["codes_info", "-s"], check=True, capture_output=True,
                              text=True).stdout.strip()
     editions = {
@@ -233,26 +233,40 @@ def grib_seeds(out):
                                     str(pathlib.Path(samples, sample)), str(part)], check=True)
                     parts.append(part.read_bytes())
             (out / name).write_bytes(b"".join(parts))
-        # Complex packing with spatial differencing (NCEP's GFS and GEFS files), of a field that
-        # varies: ecCodes cannot pack a constant one (the sample's) that way. grib_filter sets
-        # the values first, then packs them.
-        parts = []
-        for member in (0, 1):
-            for level in (500, 850):
-                values = ",".join(f"{250 + (i % 16) * 0.7 + (i // 16) * 0.3 + member:.2f}"
-                                  for i in range(16 * 31))
-                rules = pathlib.Path(tmp, "rules")
-                rules.write_text(f"set productDefinitionTemplateNumber=1;\n"
-                                 f"set perturbationNumber={member};\nset level={level};\n"
-                                 f"set bitsPerValue=16;\nset decimalScaleFactor=2;\n"
-                                 f"set values={{{values}}};\n"
-                                 f'set packingType="grid_complex_spatial_differencing";\nwrite;\n')
-                part = pathlib.Path(tmp, "part")
-                part.unlink(missing_ok=True)
-                subprocess.run(["grib_filter", "-o", str(part), str(rules),
-                                str(pathlib.Path(samples, "regular_ll_pl_grib2.tmpl"))], check=True)
-                parts.append(part.read_bytes())
-        (out / "grib2_members_levels_complex.grib2").write_bytes(b"".join(parts))
+        # Complex packing with spatial differencing (NCEP's GFS and GEFS files) in GRIB 2, and
+        # GRIB 1's second-order packing (older ECMWF archives).
+        packed = {
+            "grib2_members_levels_complex.grib2": (
+                "regular_ll_pl_grib2.tmpl", "grid_complex_spatial_differencing",
+                "productDefinitionTemplateNumber=1,perturbationNumber={m},level={l}"),
+            "grib1_members_levels_second_order.grib1": (
+                "regular_ll_pl_grib1.tmpl", "grid_second_order",
+                "setLocalDefinition=1,localDefinitionNumber=1,indicatorOfParameter=130,"
+                "number={m},level={l}"),
+        }
+        for name, (sample, packing, keys) in packed.items():
+            parts = []
+            for member in (0, 1):
+                for level in (500, 850):
+                    part = pathlib.Path(tmp, "part")
+                    part.unlink(missing_ok=True)
+                    packed_field(pathlib.Path(samples, sample), packing,
+                                 keys.format(m=member, l=level), member, part)
+                    parts.append(part.read_bytes())
+            (out / name).write_bytes(b"".join(parts))
+
+
+def packed_field(sample, packing, keys, member, out):
+    """One message of `sample` (16 x 31 points) with `keys`, whose field varies (ecCodes packs
+    no constant field, the samples', in these packings), at 16 bits and 0.01, then `packing`:
+    grib_filter sets the values first, then packs them."""
+    values = ",".join(f"{250 + (i % 16) * 0.7 + (i // 16) * 0.3 + member:.2f}"
+                      for i in range(16 * 31))
+    rules = out.with_suffix(".rules")
+    rules.write_text("".join(f"set {k};\n" for k in keys.split(",")) +
+                     f"set bitsPerValue=16;\nset decimalScaleFactor=2;\n"
+                     f"set values={{{values}}};\nset packingType=\"{packing}\";\nwrite;\n")
+    subprocess.run(["grib_filter", "-o", str(out), str(rules), str(sample)], check=True)
 
 
 def vtk_seeds():
