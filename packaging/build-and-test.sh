@@ -32,9 +32,9 @@ cmake --build --preset asan
 xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" ctest --preset asan --repeat until-pass:2
 
 # Each libFuzzer target (the readers, the mesh cache, projects, command-line values) on its
-# seed corpus and then 1500 inputs from a fixed seed (the same inputs on every machine, so CI
-# cannot pass or fail by chance; the longer runs are by hand, README "Fuzzing"); a crash,
-# leak or hang fails the run. ENSIL_SKIP_FUZZ=1 skips it.
+# seed corpus and then 1500 inputs from a fixed seed (a fixed budget, not the clock's; the
+# inputs still vary a little from run to run, run-fuzzers.sh says why; the longer runs are by
+# hand, README "Fuzzing"); a crash, leak or hang fails the run. ENSIL_SKIP_FUZZ=1 skips it.
 if [ "${ENSIL_SKIP_FUZZ:-0}" != 1 ]; then
     ENSIL_FUZZ_RUNS=1500 tests/fuzz/run-fuzzers.sh 120
 fi

@@ -51,9 +51,12 @@ for name in "${fuzzers[@]}"; do
     echo "run-fuzzers: $name for $seconds s"
     status=0
     # TMPDIR: the targets' temporary files land in the work folder, removed afterwards.
-    # ENSIL_FUZZ_RUNS=N: a fixed budget of N inputs from a fixed seed, the same inputs on
-    # every machine, so a CI run cannot fail or pass by luck of the clock (SECONDS still caps
-    # it); unset, the time decides and each run explores anew.
+    # ENSIL_FUZZ_RUNS=N: a fixed budget of N inputs from a fixed seed, so a CI run does not
+    # fail or pass by luck of the clock (SECONDS still caps it); unset, the time decides and
+    # each run explores anew. The inputs are not quite the same from run to run: the readers'
+    # threads and the random names of the temporary files change the coverage libFuzzer sees
+    # (two runs here differed already after the seeds), and so its mutations. CI once found in
+    # its 1500 what a run here did not; longer runs by hand (README "Fuzzing") look further.
     budget=()
     if [ -n "${ENSIL_FUZZ_RUNS:-}" ]; then budget=(-seed=1 -runs="$ENSIL_FUZZ_RUNS"); fi
     TMPDIR=$work/$name/tmp "$binary" "${budget[@]}" -max_total_time="$seconds" \
