@@ -9,10 +9,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <span>
-#include <stdexcept>
 #include <string_view>
 
 #include "data/eccodes_library.h"

@@ -46,13 +46,20 @@ std::string unitsInBrackets(const data::Ensemble& e) {
     return e.units.empty() ? "" : " [" + data::readableUnits(e.units) + "]";
 }
 
+namespace {
+// " m s⁻¹", after a value; nothing without units.
+std::string unitsAfterValue(const data::Ensemble& e) {
+    return e.units.empty() ? "" : " " + data::readableUnits(e.units);
+}
+}  // namespace
+
 std::function<std::string(float)> pictureTitleOf(const data::Ensemble& e) {
     std::string head = e.variable;
     if (!e.longName.empty() && e.longName != e.variable) head += " (" + e.longName + ")";
     head += unitsInBrackets(e);
     const std::string separator = " \u00b7 ";
     head += separator + "isovalue ";
-    std::string tail = e.units.empty() ? "" : " " + data::readableUnits(e.units);
+    std::string tail = unitsAfterValue(e);
     for (const std::string& fixed : e.fixedDimensions) {
         tail += separator + shortFixedDimension(fixed);
     }
@@ -83,8 +90,7 @@ std::string floorCaption(const data::Ensemble& e, int level) {
 }
 
 std::string exceedanceText(const data::Ensemble& e, float isovalue) {
-    return "P(" + e.variable + " > " + formatValue(isovalue) +
-           (e.units.empty() ? "" : " " + data::readableUnits(e.units)) + ")";
+    return "P(" + e.variable + " > " + formatValue(isovalue) + unitsAfterValue(e) + ")";
 }
 
 std::string sectionQuantity(const data::Ensemble& e, gl::SectionField field, int member,
