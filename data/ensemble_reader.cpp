@@ -9,15 +9,16 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 
 #include "data/content_hash.h"
 #include "data/error.h"
-#include "data/reader_support.h"
 #include "data/grib_reader.h"
 #include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
+#include "data/reader_support.h"
 #include "data/vtk_reader.h"
 
 namespace ensil::data {
@@ -58,6 +59,22 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
                         "'" + p +
                             "' is not a regular file (a named pipe, a device or a socket); "
                             "name a file that holds the data");
+        }
+    }
+    // One file, one member: a file named twice (perhaps through another path or a link) would
+    // become two identical members, and every cluster and statistic would count it twice.
+    std::map<std::filesystem::path, const std::string*> seen;
+    for (const std::string& p : selection.paths) {
+        std::error_code error;
+        const std::filesystem::path canonical = std::filesystem::canonical(p, error);
+        if (error) continue;  // read by the reader, which names what is wrong
+        const auto [it, added] = seen.emplace(canonical, &p);
+        if (!added) {
+            throw Error(ErrorKind::InvalidArgument,
+                        "'" + *it->second + "' is given twice" +
+                            (*it->second == p ? std::string() : " (also as '" + p + "')") +
+                            ": each file is read as its own member(s), so the same data would "
+                            "count twice in every cluster and statistic. Name each file once");
         }
     }
     std::string names;

@@ -48,6 +48,32 @@ std::shared_ptr<const GribInventory> inventoryOf(const std::string& path,
     return inventory;
 }
 
+// The plan; a refusal names every message the scan skipped as damaged, since a damaged
+// message is often why a variable lacks a level, a member or a time ("'t' has one level only"
+// where the other level's message was the damaged one).
+GribPlan planWithSkippedMessagesNamed(const GribInventory& inventory, const std::string& path,
+                                      const DataSelection& selection) {
+    try {
+        return planGribVariable(inventory, path, selection);
+    } catch (const Error& e) {
+        if (inventory.warnings.empty()) throw;
+        constexpr std::size_t kNamed = 10;
+        std::string skipped;
+        for (std::size_t i = 0; i < inventory.warnings.size() && i < kNamed; ++i) {
+            skipped += (i == 0 ? "" : "; ") + inventory.warnings[i];
+        }
+        if (inventory.warnings.size() > kNamed) {
+            skipped += "; and " + std::to_string(inventory.warnings.size() - kNamed) + " more";
+        }
+        const std::size_t n = inventory.warnings.size();
+        throw Error(e.kind(),
+                    std::string(e.what()) + ". " + std::to_string(n) +
+                        (n == 1 ? " message was" : " messages were") +
+                        " skipped as damaged, which may be why: " + skipped,
+                    e.choices());
+    }
+}
+
 // The files' inventories and plans, and what they say together. The plans point into the
 // inventories, which therefore stay where they are.
 struct OpenedFiles {
@@ -62,11 +88,12 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
     const std::vector<std::string> stems = memberNamesFromPaths(selection.paths);
     OpenedFiles opened;
     EnsembleDescription& d = opened.description;
+    std::string firstLabel;  // the first file's step at the time index
     for (std::size_t f = 0; f < selection.paths.size(); ++f) {
         const std::string& path = selection.paths[f];
         const GribInventory& inventory = *opened.inventories.emplace_back(inventoryOf(path, stop));
         const GribPlan& plan =
-            opened.plans.emplace_back(planGribVariable(inventory, path, selection));
+            opened.plans.emplace_back(planWithSkippedMessagesNamed(inventory, path, selection));
         if (f == 0) {
             d.format = formatOf(inventory);
             d.variables = listGribVariables(inventory, path);
@@ -76,6 +103,9 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
             d.grid = plan.grid;
             d.fixedDimensions = plan.fixedDimensions;
             d.timeSteps = plan.timeSteps;
+            if (selection.timeIndex < d.timeSteps.count()) {
+                firstLabel = d.timeSteps.labels[selection.timeIndex];
+            }
             d.memberDimension = plan.memberDimension;
             d.memberDimensionReason = oneFile ? plan.memberReason : "one file per member";
         } else {
@@ -87,6 +117,8 @@ OpenedFiles openFiles(const DataSelection& selection, const std::stop_token& sto
                                 "with --var (the Variable box of the Open dialog)");
             }
             checkSameGrid(selection.paths.front(), d.grid, path, plan.grid);
+            noteTimesThatDiffer(d, selection.timeIndex, firstLabel, selection.paths.front(),
+                                plan.timeSteps, path);
         }
         if (oneFile && plan.oneMember && plan.memberDimension == "number") {
             throw Error(ErrorKind::MemberDimensionNotFound,

@@ -18,9 +18,9 @@ struct GridMapping {
     std::string name;
     // The mapping variable's numeric attributes, in file order; a list-valued attribute (two
     // standard parallels) keeps all its values. A mapping made from WRF's global attributes
-    // (data/wrf_conventions.h) has CF names plus centre_longitude and centre_latitude, the
-    // point where the grid's x and y are 0 (the geo layer sets the false easting and northing
-    // so), and wrf_map_proj, WRF's MAP_PROJ.
+    // (data/wrf_conventions.h) has CF names plus origin_longitude and origin_latitude, the
+    // point where the grid's x and y are 0 (data/proj_definition.h sets the false easting and
+    // northing so), and wrf_map_proj, WRF's MAP_PROJ.
     std::vector<std::pair<std::string, std::vector<double>>> parameters;
 
     [[nodiscard]] bool empty() const { return name.empty(); }

@@ -493,6 +493,43 @@ std::vector<double> NetcdfFile::readDoubles(const NcVariable& var) const {
     return values;
 }
 
+std::vector<double> NetcdfFile::readDoubles(const NcVariable& var,
+                                            const std::vector<std::size_t>& start,
+                                            const std::vector<std::size_t>& count) const {
+    std::size_t n = 1;
+    for (const std::size_t c : count) n *= c;
+    std::vector<double> values(n);
+    check(nc_get_vara_double(m_id, var.id, start.data(), count.data(), values.data()),
+          "read variable '" + var.name + "'");
+    return values;
+}
+
+std::optional<std::uint64_t> NetcdfFile::storedBytes(const NcVariable& var) const {
+    int format = 0;
+    if (nc_inq_format(m_id, &format) != NC_NOERR ||
+        (format != NC_FORMAT_NETCDF4 && format != NC_FORMAT_NETCDF4_CLASSIC)) {
+        return std::nullopt;
+    }
+    // netCDF-C has no query for this; its HDF5 file is opened a second time, read-only, which
+    // HDF5 shares with netCDF's own handle.
+    quietHdf5OnThisThread();
+    const hid_t file = H5Fopen(m_path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file < 0) return std::nullopt;
+    std::optional<std::uint64_t> bytes;
+    // netCDF-4 names the dataset of a variable that shares a dimension's name without being
+    // its coordinate variable with this prefix.
+    for (const std::string& name : {var.name, "_nc4_non_coord_" + var.name}) {
+        if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0) continue;
+        const hid_t dataset = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+        if (dataset < 0) continue;
+        bytes = static_cast<std::uint64_t>(H5Dget_storage_size(dataset));
+        H5Dclose(dataset);
+        break;
+    }
+    H5Fclose(file);
+    return bytes;
+}
+
 std::string describeDimensions(const NetcdfFile& file, const NcVariable& var) {
     std::string text = "(";
     for (std::size_t i = 0; i < var.dimIds.size(); ++i) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -59,6 +60,17 @@ public:
 
     // Values of a 1D variable as doubles. Throws Error(CorruptFile).
     [[nodiscard]] std::vector<double> readDoubles(const NcVariable& var) const;
+    // Values of the hyperslab start .. start + count of a variable as doubles. Throws
+    // Error(CorruptFile).
+    [[nodiscard]] std::vector<double> readDoubles(const NcVariable& var,
+                                                  const std::vector<std::size_t>& start,
+                                                  const std::vector<std::size_t>& count) const;
+
+    // The bytes a netCDF-4 variable's values take in the file (HDF5's storage size): 0 when no
+    // chunk was ever written, so that every value would read as the fill value. nullopt for the
+    // classic formats, whose variables always have their bytes (or the file is truncated), and
+    // when HDF5 cannot tell.
+    [[nodiscard]] std::optional<std::uint64_t> storedBytes(const NcVariable& var) const;
 
     // Throws Error(CorruptFile) with the library's reason when status is not NC_NOERR.
     void check(int status, const std::string& what) const;

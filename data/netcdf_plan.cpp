@@ -149,11 +149,13 @@ Grid makeGrid(const NetcdfFile& file, NcPlan& plan) {
     // The mass grid: along each axis the smallest size among the components (WRF's staggered
     // U and V have one more point along x or y), coordinates from a component that has it.
     std::array<Axis, 3> axes;
+    std::array<int, 3> axisDims{};  // the dimension each axis was made from
     for (std::size_t s = 0; s < 3; ++s) {
         const NcComponent* best = &plan.components.front();
         for (const NcComponent& c : plan.components) {
             if (c.sizes[s] < best->sizes[s]) best = &c;
         }
+        axisDims[s] = best->spatialDims[s];
         axes[s] = makeAxis(file, file.dimension(best->spatialDims[s]), best->sizes[s],
                            static_cast<int>(s));
     }
@@ -165,8 +167,11 @@ Grid makeGrid(const NetcdfFile& file, NcPlan& plan) {
             return isWrfHorizontalDimension(dim.name) && file.coordinateVariable(dim) == nullptr;
         };
         if (isWrfIndexAxis(0) && isWrfIndexAxis(1)) {
-            if (const auto wrf = readWrfProjection(file)) {
-                if (wrf->usable) applyWrfAxes(*wrf, axes[0], axes[1]);
+            if (auto wrf = readWrfProjection(file)) {
+                const auto staggered = [&](std::size_t s) {
+                    return file.dimension(axisDims[s]).name.ends_with("_stag");
+                };
+                placeWrfGrid(file, *wrf, axes[0], staggered(0), axes[1], staggered(1));
                 plan.gridMapping = wrf->mapping;
             }
         }
@@ -324,6 +329,24 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool
             throw Error(ErrorKind::GridMismatch, "'" + file.path() + "': " + parts[0]->name +
                                                      " and " + part->name +
                                                      " have different member dimensions");
+        }
+    }
+    // A netCDF-4 variable may declare any size and never be written (a template, an aborted
+    // run): every value would be the fill value, and reading them all took minutes and more
+    // memory than the machine has. Told from the file's own metadata, before anything is read.
+    for (const NcVariable* part : parts) {
+        if (const auto stored = file.storedBytes(*part); stored && *stored == 0) {
+            std::size_t values = 1;
+            for (const int d : part->dimIds) values *= file.dimension(d).size;
+            std::size_t valueBytes = 0;
+            nc_inq_type(file.id(), part->type, nullptr, &valueBytes);
+            throw Error(
+                ErrorKind::AllValuesMissing,
+                "'" + file.path() + "', variable '" + part->name + "' " +
+                    describeDimensions(file, *part) + " holds no values: its " +
+                    sizeText(static_cast<double>(values) * static_cast<double>(valueBytes)) +
+                    " are declared, but none was ever written to the file (each would "
+                    "read as the fill value)");
         }
     }
     for (std::size_t s = 0; s < 3; ++s) {

@@ -218,6 +218,7 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
     const bool oneFile = selection.paths.size() == 1;
     const std::vector<std::string> stems = memberNamesFromPaths(selection.paths);
     EnsembleDescription d;
+    std::string firstLabel;  // the first file's step at the time index
     for (std::size_t f = 0; f < selection.paths.size(); ++f) {
         const NetcdfFile file(selection.paths[f]);
         const NcPlan plan = planVariable(file, selection, oneFile);
@@ -231,6 +232,9 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
             d.gridMapping = plan.gridMapping;
             d.fixedDimensions = describeFixedDimensions(file, plan);
             d.timeSteps = describeTimeSteps(file, plan);
+            if (selection.timeIndex < d.timeSteps.count()) {
+                firstLabel = d.timeSteps.labels[selection.timeIndex];
+            }
             if (plan.memberDim >= 0) {
                 d.memberDimension = file.dimension(plan.memberDim).name;
                 d.memberDimensionReason = plan.memberReason;
@@ -248,6 +252,8 @@ EnsembleDescription NetcdfReader::describe(const DataSelection& selection) const
                                 "with --var (the Variable box of the Open dialog)");
             }
             checkSameGrid(selection.paths.front(), d.grid, file.path(), plan.grid);
+            noteTimesThatDiffer(d, selection.timeIndex, firstLabel, selection.paths.front(),
+                                describeTimeSteps(file, plan), file.path());
         }
         std::vector<std::string> names = memberNames(file, plan);
         if (names.empty()) names.push_back(stems[f]);

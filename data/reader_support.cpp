@@ -150,4 +150,18 @@ void checkSameGrid(const std::string& firstPath, const Grid& first, const std::s
                     ". Every member of an ensemble must share one grid");
 }
 
+void noteTimesThatDiffer(EnsembleDescription& d, std::size_t timeIndex,
+                         const std::string& firstLabel, const std::string& firstPath,
+                         const TimeSteps& steps, const std::string& path) {
+    if (timeIndex >= steps.count() || timeIndex >= d.timeSteps.count()) return;
+    const std::string& label = steps.labels[timeIndex];
+    if (label == firstLabel) return;
+    d.warnings.push_back("'" + path + "' is at " + steps.dimension + " " + label + " where '" +
+                         firstPath + "' is at " + firstLabel +
+                         ": the members are not of one time, and are compared as if they were");
+    static constexpr std::string_view kDiffer = " (members' times differ)";
+    std::string& shown = d.timeSteps.labels[timeIndex];
+    if (!shown.ends_with(kDiffer)) shown += kDiffer;
+}
+
 }  // namespace ensil::data

@@ -54,6 +54,14 @@ Axis uniformAxis(std::string name, double origin, double spacing, std::size_t n,
 void requireThreeDimensional(const std::string& what, std::size_t nx, std::size_t ny,
                              std::size_t nz);
 
+// Members from several files must be of one time: where a later file's step at the time index
+// is not the first file's (two forecasts valid on different days), a warning names both files
+// and both times, and the step's label, which the picture's title shows, says that the
+// members' times differ. firstLabel is the first file's own label at the time index.
+void noteTimesThatDiffer(EnsembleDescription& d, std::size_t timeIndex,
+                         const std::string& firstLabel, const std::string& firstPath,
+                         const TimeSteps& steps, const std::string& path);
+
 // The derived variable wind_speed that the NetCDF and GRIB readers offer when a file holds u and
 // v: its long name, "wind speed sqrt(u^2 + v^2), derived by ensil" for components u and v...
 std::string windSpeedLongName(const std::string& u, const std::string& v);

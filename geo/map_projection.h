@@ -1,9 +1,9 @@
 // Where a grid's horizontal coordinates lie on the Earth: longitude/latitude in degrees to the
 // grid's own x and y (axis units: degrees, rotated degrees, metres or kilometres) and back,
-// through PROJ. The CF grid mapping's attributes become a PROJ string (METHODS.md section 17);
-// the projection formulas themselves are PROJ's. A grid without a grid mapping whose axes are
-// longitude and latitude maps onto itself, longitudes wrapped into its range.
-// Move-only (it owns a PROJ context); use one object from one thread at a time.
+// through PROJ. The CF grid mapping's attributes become a PROJ string (data/proj_definition.h,
+// METHODS.md section 16); the projection formulas themselves are PROJ's. A grid without a grid
+// mapping whose axes are longitude and latitude maps onto itself, longitudes wrapped into its
+// range. Move-only (it owns a PROJ context); use one object from one thread at a time.
 #pragma once
 
 #include <glm/vec2.hpp>
@@ -62,12 +62,5 @@ private:
     double m_metresPerUnit = 1.0;  // projected axes in kilometres: 1000
     std::unique_ptr<Proj> m_proj;
 };
-
-// The PROJ string for a CF grid mapping (the longitude/latitude side in radians, as a PROJ
-// pipeline step takes it), or an Error(UnsupportedFormat) naming the mapping and its missing
-// attribute. With centre_longitude and centre_latitude (WRF's domain centre) the false easting
-// and northing are minus that point's projected x and y, found through PROJ. Exposed for tests
-// and `ensil info`.
-std::string projStringFor(const data::GridMapping& mapping);
 
 }  // namespace ensil::geo

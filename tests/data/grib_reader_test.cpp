@@ -555,6 +555,28 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
         << later.warnings.front();
     EXPECT_EQ(test::errorOpening(select(damaged, "t", 0)).kind(), data::ErrorKind::CorruptFile);
 
+    // Where damaged messages leave a variable unusable (here the 500 hPa fields of a two-level
+    // file, one time), the refusal names the messages skipped, not only the level that is left.
+    const std::vector<GribField> twoLevels(fields.begin(), fields.begin() + 4);
+    std::vector<std::size_t> twoOffsets;
+    std::string levelBytes =
+        test::readBytes(writeGrib(dir.file("levels.grib2"), twoLevels, &twoOffsets));
+    ASSERT_EQ(twoOffsets.size(), 4u);
+    levelBytes[twoOffsets[0] + 12] = static_cast<char>(0x7f);  // member 0 at 500 hPa
+    levelBytes[twoOffsets[2] + 12] = static_cast<char>(0x7f);  // member 1 at 500 hPa
+    const std::string oneLevelLeft = dir.file("one_level_left.grib2");
+    test::writeBytes(oneLevelLeft, levelBytes);
+    try {
+        (void)data::describeEnsemble(select(oneLevelLeft, "t", 0));
+        ADD_FAILURE() << "a file with one readable level was accepted";
+    } catch (const data::Error& e) {
+        EXPECT_TRUE(mentions(e, "has one level only")) << e.what();
+        EXPECT_TRUE(mentions(e, "2 messages were skipped as damaged, which may be why: '" +
+                                    oneLevelLeft + "', GRIB message 1 at byte offset 0 is damaged"))
+            << e.what();
+        EXPECT_TRUE(mentions(e, "byte offset " + std::to_string(twoOffsets[2]))) << e.what();
+    }
+
     // A length shorter than GRIB's own first sections (ecCodes would copy them past the end of
     // the buffer it allocates) is skipped too: the fifth message, time 1.
     bytes = good;

@@ -389,6 +389,93 @@ TEST(NetcdfReader, TwoDimensionalAndAllMissingDataAreRefused) {
     EXPECT_EQ(errorKindOf({.paths = {empty}}, &message), ErrorKind::AllValuesMissing);
 }
 
+// A netCDF-4 variable declared at 30 x 100 x 1000 x 2500 floats (28 GiB) with no chunk ever
+// written: the file's own metadata says so before anything is read or allocated, and both
+// describing (`ensil info`) and opening refuse it, naming the file, the variable and its size.
+// Before, opening read 28 GiB of fill values for minutes, past 12 GiB of memory.
+TEST(NetcdfReader, AVariableWhoseValuesWereNeverWrittenIsRefusedBeforeAnythingIsRead) {
+    test::TempDir dir;
+    const std::string path = dir.file("declared_only.nc");
+    {
+        NcTestFile f(path);
+        const int m = f.dim("member", 30);
+        const int z = f.dim("level", 100, range(100));
+        const int y = f.dim("lat", 1000);
+        const int x = f.dim("lon", 2500);
+        f.variable("t", NC_FLOAT, {m, z, y, x});
+        f.endDefinitions();
+    }
+    ASSERT_LT(std::filesystem::file_size(path), 100000u);
+    for (const bool describeOnly : {true, false}) {
+        std::string message;
+        try {
+            if (describeOnly) {
+                (void)data::describeEnsemble({.paths = {path}});
+            } else {
+                (void)data::openEnsemble({.paths = {path}});
+            }
+            ADD_FAILURE() << "accepted a file that holds no values";
+        } catch (const data::Error& e) {
+            EXPECT_EQ(e.kind(), ErrorKind::AllValuesMissing) << e.what();
+            message = e.what();
+        }
+        EXPECT_NE(message.find("declared_only.nc', variable 't' (member, level, lat, lon) "
+                               "holds no values: its 27.94 GiB are declared"),
+                  std::string::npos)
+            << message;
+    }
+}
+
+// A file named twice, even through another path, is refused: it would be two identical
+// members. Describing (`ensil info`) and opening say so, naming both spellings.
+TEST(EnsembleReader, AFileNamedTwiceIsRefusedNotReadAsTwoMembers) {
+    test::TempDir dir;
+    const std::string path = writeStandard(dir, "member");
+    const std::string again = dir.file(".") + "/member.nc";
+    std::string message;
+    EXPECT_EQ(errorKindOf({.paths = {path, again}}, &message), ErrorKind::InvalidArgument);
+    EXPECT_NE(message.find("' is given twice (also as '" + again + "')"), std::string::npos)
+        << message;
+    EXPECT_THROW((void)data::describeEnsemble({.paths = {path, path}}), data::Error);
+}
+
+// One member per file, the files valid at different times (two GFS runs a season apart):
+// they are still read, but a warning names both files and both times, and the step's label,
+// which the picture's title shows, says that the members' times differ.
+TEST(EnsembleReader, MemberFilesOfDifferentTimesAreNamedInAWarningAndTheLabel) {
+    test::TempDir dir;
+    const auto write = [&](const std::string& name, const std::string& since) {
+        const std::string path = dir.file(name);
+        NcTestFile f(path);
+        const int t = f.dim("time", 1, {0.0}, {{"units", "hours since " + since}});
+        const int z = f.dim("level", 3, range(3));
+        const int y = f.dim("lat", 4, range(4), {{"units", "degrees_north"}});
+        const int x = f.dim("lon", 5, range(5), {{"units", "degrees_east"}});
+        const int v = f.variable("t", NC_FLOAT, {t, z, y, x});
+        f.write(v, 60, [](std::size_t n) { return static_cast<double>(n); });
+        return path;
+    };
+    const std::string january = write("gfs_a.nc", "2011-01-15 12:00:00");
+    const std::string october = write("gfs_b.nc", "2011-10-11 00:00:00");
+    const std::string alsoJanuary = write("gfs_c.nc", "2011-01-15 12:00:00");
+    const data::EnsembleDescription same =
+        data::describeEnsemble({.paths = {january, alsoJanuary}});
+    EXPECT_TRUE(same.warnings.empty());
+    ASSERT_EQ(same.timeSteps.count(), 1u);
+    EXPECT_EQ(same.timeSteps.labels[0].find("differ"), std::string::npos);
+
+    const data::EnsembleDescription d = data::describeEnsemble({.paths = {january, october}});
+    EXPECT_EQ(d.members, 2u);
+    ASSERT_EQ(d.warnings.size(), 1u);
+    const std::string& w = d.warnings.front();
+    EXPECT_NE(w.find("'" + october + "' is at time 2011-10-11"), std::string::npos) << w;
+    EXPECT_NE(w.find("where '" + january + "' is at 2011-01-15"), std::string::npos) << w;
+    ASSERT_EQ(d.timeSteps.count(), 1u);
+    EXPECT_TRUE(d.timeSteps.labels[0].starts_with("2011-01-15")) << d.timeSteps.labels[0];
+    EXPECT_TRUE(d.timeSteps.labels[0].ends_with("(members' times differ)"))
+        << d.timeSteps.labels[0];
+}
+
 TEST(NetcdfReader, TimeIndexSelectsAndIsChecked) {
     test::TempDir dir;
     const std::string path = dir.file("times.nc");

@@ -89,11 +89,23 @@ Projection mercator(double latTs, double lon0) {
             }};
 }
 
+// Cylindrical equidistant on WRF's sphere (MAP_PROJ 6): metres along the equator and meridians.
+Projection plateCarree() {
+    return {[](LonLat q) { return glm::dvec2(kR * rad(q.lon), kR * rad(q.lat)); },
+            [](glm::dvec2 p) {
+                return LonLat{deg(p.x / kR), deg(p.y / kR)};
+            }};
+}
+
 struct WrfCase {
     int mapProj = 1;
     double truelat1 = 30, truelat2 = 60, standLon = -98, cenLat = 39, cenLon = -98;
     std::size_t nx = 40, ny = 30, nz = 5;
     double dx = 12000, dy = 12000;
+    // The whole domain's mass points (WEST-EAST_GRID_DIMENSION - 1, ...; 0: the file's own) and
+    // where the file's first point lies in it: a file may hold only part of its domain.
+    std::size_t domainNx = 0, domainNy = 0, firstI = 0, firstJ = 0;
+    bool writeXlatXlong = true;
 };
 
 struct WrfFiles {
@@ -107,15 +119,17 @@ WrfFiles writeWrf(const test::TempDir& dir, const WrfCase& c, const Projection* 
     WrfFiles files;
     files.xlat.assign(c.nx * c.ny, 0.0);
     files.xlong.assign(c.nx * c.ny, 0.0);
+    const std::size_t domainNx = c.domainNx == 0 ? c.nx : c.domainNx;
+    const std::size_t domainNy = c.domainNy == 0 ? c.ny : c.domainNy;
     if (projection != nullptr) {
         const glm::dvec2 centre = projection->forward({c.cenLon, c.cenLat});
         for (std::size_t j = 0; j < c.ny; ++j) {
             for (std::size_t i = 0; i < c.nx; ++i) {
+                const double di = static_cast<double>(c.firstI + i);
+                const double dj = static_cast<double>(c.firstJ + j);
                 const glm::dvec2 p{
-                    centre.x +
-                        (static_cast<double>(i) - 0.5 * static_cast<double>(c.nx - 1)) * c.dx,
-                    centre.y +
-                        (static_cast<double>(j) - 0.5 * static_cast<double>(c.ny - 1)) * c.dy};
+                    centre.x + (di - 0.5 * static_cast<double>(domainNx - 1)) * c.dx,
+                    centre.y + (dj - 0.5 * static_cast<double>(domainNy - 1)) * c.dy};
                 const LonLat q = projection->inverse(p);
                 files.xlat[j * c.nx + i] = q.lat;
                 files.xlong[j * c.nx + i] = std::remainder(q.lon, 360.0);
@@ -129,12 +143,17 @@ WrfFiles writeWrf(const test::TempDir& dir, const WrfCase& c, const Projection* 
         const int z = f.dim("bottom_top", c.nz);
         const int y = f.dim("south_north", c.ny);
         const int x = f.dim("west_east", c.nx);
-        const int lat = f.variable("XLAT", NC_FLOAT, {t, y, x});
-        f.text(lat, "units", "degree_north");
-        const int lon = f.variable("XLONG", NC_FLOAT, {t, y, x});
-        f.text(lon, "units", "degree_east");
+        const int xStag = f.dim("west_east_stag", c.nx + 1);
+        const int lat = c.writeXlatXlong ? f.variable("XLAT", NC_FLOAT, {t, y, x}) : -1;
+        const int lon = c.writeXlatXlong ? f.variable("XLONG", NC_FLOAT, {t, y, x}) : -1;
+        if (c.writeXlatXlong) {
+            f.text(lat, "units", "degree_north");
+            f.text(lon, "units", "degree_east");
+        }
         const int temperature = f.variable("T", NC_FLOAT, {t, z, y, x});
         f.text(temperature, "units", "K");
+        const int wind = f.variable("U", NC_FLOAT, {t, z, y, xStag});
+        f.text(wind, "units", "m s-1");
         const auto global = [&](const char* name, double value) {
             f.number(NC_GLOBAL, name, NC_FLOAT, {value});
         };
@@ -148,12 +167,21 @@ WrfFiles writeWrf(const test::TempDir& dir, const WrfCase& c, const Projection* 
         global("DY", c.dy);
         global("POLE_LAT", 90.0);
         global("POLE_LON", 0.0);
-        f.write(lat, files.xlat.size(), [&](std::size_t n) { return files.xlat[n]; });
-        f.write(lon, files.xlong.size(), [&](std::size_t n) { return files.xlong[n]; });
+        f.number(NC_GLOBAL, "WEST-EAST_GRID_DIMENSION", NC_INT,
+                 {static_cast<double>(domainNx + 1)});
+        f.number(NC_GLOBAL, "SOUTH-NORTH_GRID_DIMENSION", NC_INT,
+                 {static_cast<double>(domainNy + 1)});
+        if (c.writeXlatXlong) {
+            f.write(lat, files.xlat.size(), [&](std::size_t n) { return files.xlat[n]; });
+            f.write(lon, files.xlong.size(), [&](std::size_t n) { return files.xlong[n]; });
+        }
         const std::size_t plane = c.nx * c.ny;
         f.write(temperature, plane * c.nz, [&](std::size_t n) {
             return 280.0 + static_cast<double>(m) + std::sin(0.3 * static_cast<double>(n % c.nx)) +
                    static_cast<double>(n / plane);
+        });
+        f.write(wind, (c.nx + 1) * c.ny * c.nz, [&](std::size_t n) {
+            return static_cast<double>(m) + std::cos(0.2 * static_cast<double>(n % (c.nx + 1)));
         });
         files.paths.push_back(path);
     }
@@ -230,10 +258,10 @@ TEST(WrfProjection, LambertConformalGridLiesWhereItsXlatAndXlongSay) {
     EXPECT_EQ(d.gridMapping.parameter("standard_parallel", 0), 30.0);
     EXPECT_EQ(d.gridMapping.parameter("standard_parallel", 1), 60.0);
     EXPECT_EQ(d.gridMapping.parameter("earth_radius"), 6370000.0);
-    // The axes are map metres from the domain's centre, 12 km apart.
+    // The axes are map metres from the file's first point, 12 km apart.
     EXPECT_EQ(d.grid.x().units, "m");
-    EXPECT_DOUBLE_EQ(d.grid.x().front(), -19.5 * 12000.0);
-    EXPECT_DOUBLE_EQ(d.grid.y().back(), 14.5 * 12000.0);
+    EXPECT_DOUBLE_EQ(d.grid.x().front(), 0.0);
+    EXPECT_DOUBLE_EQ(d.grid.y().back(), 29.0 * 12000.0);
     EXPECT_DOUBLE_EQ(d.grid.z().back(), 4.0);  // bottom_top stays in indices
 
     const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
@@ -285,7 +313,8 @@ TEST(WrfProjection, UnrotatedLatLonGridGetsLongitudeAndLatitudeAxes) {
     c.cenLat = 10;
     c.cenLon = 20;
     c.dx = c.dy = kR * kPi / 180.0 * 0.5;  // half a degree along the equator
-    const WrfFiles files = writeWrf(dir, c, nullptr);
+    const Projection projection = plateCarree();
+    const WrfFiles files = writeWrf(dir, c, &projection);
     const data::EnsembleDescription d = describe(files);
     ASSERT_EQ(d.gridMapping.name, "latitude_longitude");
     EXPECT_EQ(d.grid.x().units, "degrees_east");
@@ -309,4 +338,77 @@ TEST(WrfProjection, AnUnknownMapProjKeepsIndicesAndSaysWhy) {
     EXPECT_NE(map.reason().find("MAP_PROJ 1 (Lambert conformal)"), std::string::npos)
         << map.reason();
     EXPECT_FALSE(geo::lonLatBounds(d.grid, map).has_value());
+}
+
+// A wrfout that holds part of its domain (as WRF's split output and cropped files do): CEN_LAT
+// and CEN_LON are the whole domain's centre, not the file's, so only XLAT/XLONG place it. The
+// piece below lies about 290 km south-west of where the domain's centre would put it.
+TEST(WrfProjection, PartOfADomainLiesWhereItsXlatAndXlongSayNotAroundTheDomainsCentre) {
+    const test::TempDir dir;
+    WrfCase c;
+    c.truelat1 = 20;
+    c.truelat2 = 30;
+    c.standLon = -88;
+    c.cenLat = 25;
+    c.cenLon = -88;
+    c.nx = c.ny = 48;
+    c.domainNx = c.domainNy = 96;
+    c.firstI = 2;
+    c.firstJ = 5;
+    const Projection projection = lambert(c.truelat1, c.truelat2, c.standLon);
+    const WrfFiles files = writeWrf(dir, c, &projection);
+    expectTheGridWhereXlatAndXlongSay(files, "lambert_conformal_conic");
+
+    // U on west_east_stag: its points lie half a cell west of the mass points.
+    const data::EnsembleDescription u =
+        data::describeEnsemble({.paths = files.paths, .variable = "U"});
+    ASSERT_EQ(u.grid.nx(), 49u);
+    EXPECT_DOUBLE_EQ(u.grid.x().front(), -0.5 * c.dx);
+    EXPECT_DOUBLE_EQ(u.grid.x().back(), 47.5 * c.dx);
+    EXPECT_DOUBLE_EQ(u.grid.y().back(), 47.0 * c.dy);
+}
+
+// XLAT/XLONG that the map attributes cannot reproduce (here written for another central
+// meridian) mean one of them is wrong: the grid is not placed on the map, and the reason names
+// the point and how far off it is.
+TEST(WrfProjection, XlatAndXlongThatContradictTheMapAttributesLeaveTheGridUnplacedAndSayWhy) {
+    const test::TempDir dir;
+    const WrfCase c;
+    const Projection elsewhere = lambert(c.truelat1, c.truelat2, c.standLon + 3.0);
+    const WrfFiles files = writeWrf(dir, c, &elsewhere);
+    const data::EnsembleDescription d = describe(files);
+    EXPECT_DOUBLE_EQ(d.grid.x().back(), 39.0);  // indices
+    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
+    EXPECT_NE(map.reason().find("XLAT/XLONG at point ("), std::string::npos) << map.reason();
+    EXPECT_NE(map.reason().find("cells from where its map attributes"), std::string::npos)
+        << map.reason();
+    EXPECT_FALSE(geo::lonLatBounds(d.grid, map).has_value());
+}
+
+// Without XLAT/XLONG the domain's centre places a file only when it holds the whole domain.
+TEST(WrfProjection, PartOfADomainWithoutXlatAndXlongIsNotPlacedAndTheWholeDomainIs) {
+    const test::TempDir dir;
+    WrfCase c;
+    c.writeXlatXlong = false;
+    c.domainNx = 80;
+    c.domainNy = 60;
+    const WrfFiles part = writeWrf(dir, c, nullptr);
+    const data::EnsembleDescription d = describe(part);
+    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
+    EXPECT_NE(map.reason().find("holds 40 x 30 points of its domain's 80 x 60"), std::string::npos)
+        << map.reason();
+
+    const test::TempDir wholeDir;
+    c.domainNx = c.domainNy = 0;
+    const WrfFiles whole = writeWrf(wholeDir, c, nullptr);
+    const data::EnsembleDescription w = describe(whole);
+    EXPECT_DOUBLE_EQ(w.grid.x().front(), -19.5 * c.dx);  // around the domain's centre
+    const geo::MapProjection wholeMap = geo::MapProjection::forGrid(w.grid, w.gridMapping);
+    ASSERT_EQ(wholeMap.kind(), geo::MapProjection::Kind::Projected) << wholeMap.reason();
+    std::vector<glm::dvec2> centre{{c.cenLon, c.cenLat}};
+    wholeMap.toGrid(centre);
+    EXPECT_NEAR(centre[0].x, 0.0, 1e-3);
+    EXPECT_NEAR(centre[0].y, 0.0, 1e-3);
 }
