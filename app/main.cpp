@@ -70,20 +70,6 @@ int main(int argc, char* argv[]) {
     QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/ensil.svg")));
     ensil::app::MainWindow window;
     window.setMemoryLimit(outcome.workbench->memoryLimit);
-    // The first run has no saved layout: the view and its three docks want the whole screen.
-    if (window.hasSavedLayout()) {
-        window.show();
-    } else {
-        window.showMaximized();
-    }
-    const auto& paths = outcome.workbench->selection.paths;
-    if (paths.empty()) {
-        window.loadDemo();
-    } else if (paths.size() == 1 &&
-               QString::fromStdString(paths.front()).endsWith(QLatin1String(".ensil"))) {
-        window.openProject(QString::fromStdString(paths.front()));
-    } else {
-        window.openFiles(outcome.workbench->selection);
-    }
+    window.showAndOpen(outcome.workbench->selection);
     return QApplication::exec();
 }

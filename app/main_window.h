@@ -101,6 +101,10 @@ public:
     [[nodiscard]] ui::DendrogramView* dendrogram() const { return m_dendrogram; }
     // Whether a window layout was saved by an earlier run (the first run starts maximised).
     [[nodiscard]] bool hasSavedLayout() const { return m_hasSavedLayout; }
+    // What `ensil [FILES | PROJECT.ensil]` (and a double-click on a file) does: shows the
+    // window, with the remembered layout or maximised on the first run, and opens the demo,
+    // the project or the files (main_window_project.cpp).
+    void showAndOpen(const data::DataSelection& selection);
 
     // Saves the view (without the UI) as an image, at the view's size or any other; returns
     // false with a message on failure.

@@ -102,6 +102,24 @@ bool MainWindow::saveProjectTo(const QString& path, QString* error) {
     return true;
 }
 
+void MainWindow::showAndOpen(const data::DataSelection& selection) {
+    // The first run has no saved layout: the view and its three docks want the whole screen.
+    if (hasSavedLayout()) {
+        show();
+    } else {
+        showMaximized();
+    }
+    const auto& paths = selection.paths;
+    if (paths.empty()) {
+        loadDemo();
+    } else if (paths.size() == 1 &&
+               QString::fromStdString(paths.front()).endsWith(QLatin1String(".ensil"))) {
+        openProject(QString::fromStdString(paths.front()));
+    } else {
+        openFiles(selection);
+    }
+}
+
 bool MainWindow::openProject(const QString& path) {
     session::SessionState project;
     try {

@@ -5,6 +5,7 @@
 
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTextStream>
@@ -239,4 +240,33 @@ TEST_F(ProjectWindow, AProjectSavedByEnsilRenderOpensInTheWorkbenchAsDrawn) {
     EXPECT_NEAR(r.camera().distance(), drawn.camera.placement->distance, 1e-5F);
     EXPECT_NEAR(window.renderToolbar()->isovalue(), 260.0, 1e-3);
     EXPECT_EQ(window.memberSelection()->clusterCount(), 3);
+}
+
+// `ensil PROJECT.ensil`, what a double-click on a project does (MainWindow::showAndOpen, as
+// main() calls it), over a remembered window layout and a project saved from the workbench
+// with its layout block: both layouts are restored before the loading starts. Issue 37 saw a
+// segmentation fault there in QLayoutPrivate::doResize with a window maximised by a window
+// manager; this virtual display has none, and this test has not reproduced that crash.
+TEST_F(ProjectWindow, AProjectGivenOnTheCommandLineOpensOverARememberedLayout) {
+    const QString path = QString::fromStdString(m_dir.file("remembered.ensil"));
+    {
+        app::MainWindow window;
+        ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
+        ASSERT_TRUE(test::loadDemoAndWait(window, kSmallDemo));
+        QString error;
+        ASSERT_TRUE(window.saveProjectTo(path, &error)) << error.toStdString();
+        window.resize(1000, 700);
+        window.close();  // remembers the window's geometry and layout, as on quitting
+    }
+    ASSERT_TRUE(QSettings().contains(QStringLiteral("window/state")));
+    app::MainWindow window;
+    ASSERT_TRUE(window.hasSavedLayout());
+    QSignalSpy opened(&window, &app::MainWindow::projectOpened);
+    data::DataSelection selection;
+    selection.paths = {path.toStdString()};
+    window.showAndOpen(selection);
+    ASSERT_TRUE(opened.count() > 0 || opened.wait(120000));
+    EXPECT_TRUE(window.isVisible());
+    EXPECT_EQ(window.size(), QSize(1000, 700));  // the remembered geometry
+    EXPECT_EQ(window.memberSelection()->memberCount(), 6);
 }

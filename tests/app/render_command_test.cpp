@@ -11,7 +11,6 @@
 #include "tests/app/default_isovalue.h"
 #include "tests/app/ensil_run.h"
 #include "tests/support/image_compare.h"
-#include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -171,13 +170,13 @@ TEST(RenderCommand, AProjectDefinesThePictureSoSceneOptionsAreRefusedWithIt) {
 
 TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
     test::TempDir dir;
-    const test::EnsilRun r =
-        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
-                        "--out", QString::fromStdString(dir.file("t.png")), "--size", "320x240",
-                        "--frames", "1", "--no-cache", "--json"});
+    const test::EnsilRun r = test::runEnsil(
+        {"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t", "--out",
+         QString::fromStdString(dir.file("t.png")), "--size", "320x240", "--no-cache", "--json"});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     const QJsonObject o = QJsonDocument::fromJson(r.out.toUtf8()).object();
     EXPECT_EQ(o["variable"].toString(), "t");
+    EXPECT_EQ(o["frames"].toInt(), 1);  // a picture is drawn once unless timing is asked for
     EXPECT_FLOAT_EQ(
         static_cast<float>(o["isovalue"].toDouble()),
         test::workbenchDefaultIsovalue(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "t"));
@@ -327,14 +326,15 @@ TEST(RenderCommand, TheSectionFillsThePlanesCutFaceAndIsRefusedWhereNothingWould
                         "--out", out, "--section", "mean"});
     EXPECT_EQ(noPlane.code, 2);
     EXPECT_TRUE(noPlane.err.contains("--section mean needs --plane")) << noPlane.err.toStdString();
-    const test::EnsilRun member = test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                                                  "--var", "t", "--out", out, "--plane", "0,1,0,0",
-                                                  "--section", "member"});
+    const test::EnsilRun member =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", out, "--plane", "0,1,0,0", "--section", "member"});
     EXPECT_EQ(member.code, 2);
     EXPECT_TRUE(member.err.contains("select members in the workbench")) << member.err.toStdString();
-    const test::EnsilRun unknown = test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc",
-                                                   "--var", "t", "--out", out, "--plane", "0,1,0,0",
-                                                   "--section", "spread"});
+    const test::EnsilRun unknown =
+        test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                        "--out", out, "--plane", "0,1,0,0", "--section", "spread"});
     EXPECT_EQ(unknown.code, 2);
-    EXPECT_TRUE(unknown.err.contains("stddev")) << "names what is allowed: " << unknown.err.toStdString();
+    EXPECT_TRUE(unknown.err.contains("stddev"))
+        << "names what is allowed: " << unknown.err.toStdString();
 }

@@ -324,20 +324,30 @@ TEST(WrfProjection, UnrotatedLatLonGridGetsLongitudeAndLatitudeAxes) {
     EXPECT_EQ(map.kind(), geo::MapProjection::Kind::LonLat) << map.reason();
 }
 
+namespace {
+// The files' grid keeps index axes (x from 0 to nx - 1), has no geography, and the reason
+// holds each phrase.
+void expectIndexAxesAndAReasonSaying(const WrfFiles& files, std::size_t nx,
+                                     const std::vector<std::string>& phrases) {
+    const data::EnsembleDescription d = describe(files);
+    EXPECT_DOUBLE_EQ(d.grid.x().front(), 0.0);
+    EXPECT_DOUBLE_EQ(d.grid.x().back(), static_cast<double>(nx - 1));
+    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
+    for (const std::string& phrase : phrases) {
+        EXPECT_NE(map.reason().find(phrase), std::string::npos) << map.reason();
+    }
+    EXPECT_FALSE(geo::lonLatBounds(d.grid, map).has_value());
+}
+}  // namespace
+
 TEST(WrfProjection, AnUnknownMapProjKeepsIndicesAndSaysWhy) {
     const test::TempDir dir;
     WrfCase c;
     c.mapProj = 4;  // WRF's Gaussian grid
     const WrfFiles files = writeWrf(dir, c, nullptr);
-    const data::EnsembleDescription d = describe(files);
-    EXPECT_EQ(d.gridMapping.name, "WRF MAP_PROJ = 4");
-    EXPECT_DOUBLE_EQ(d.grid.x().front(), 0.0);
-    EXPECT_DOUBLE_EQ(d.grid.x().back(), 39.0);
-    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
-    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
-    EXPECT_NE(map.reason().find("MAP_PROJ 1 (Lambert conformal)"), std::string::npos)
-        << map.reason();
-    EXPECT_FALSE(geo::lonLatBounds(d.grid, map).has_value());
+    EXPECT_EQ(describe(files).gridMapping.name, "WRF MAP_PROJ = 4");
+    expectIndexAxesAndAReasonSaying(files, c.nx, {"MAP_PROJ 1 (Lambert conformal)"});
 }
 
 // A wrfout that holds part of its domain (as WRF's split output and cropped files do): CEN_LAT
@@ -376,14 +386,8 @@ TEST(WrfProjection, XlatAndXlongThatContradictTheMapAttributesLeaveTheGridUnplac
     const WrfCase c;
     const Projection elsewhere = lambert(c.truelat1, c.truelat2, c.standLon + 3.0);
     const WrfFiles files = writeWrf(dir, c, &elsewhere);
-    const data::EnsembleDescription d = describe(files);
-    EXPECT_DOUBLE_EQ(d.grid.x().back(), 39.0);  // indices
-    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
-    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
-    EXPECT_NE(map.reason().find("XLAT/XLONG at point ("), std::string::npos) << map.reason();
-    EXPECT_NE(map.reason().find("cells from where its map attributes"), std::string::npos)
-        << map.reason();
-    EXPECT_FALSE(geo::lonLatBounds(d.grid, map).has_value());
+    expectIndexAxesAndAReasonSaying(
+        files, c.nx, {"XLAT/XLONG at point (", "cells from where its map attributes"});
 }
 
 // Without XLAT/XLONG the domain's centre places a file only when it holds the whole domain.
@@ -394,11 +398,7 @@ TEST(WrfProjection, PartOfADomainWithoutXlatAndXlongIsNotPlacedAndTheWholeDomain
     c.domainNx = 80;
     c.domainNy = 60;
     const WrfFiles part = writeWrf(dir, c, nullptr);
-    const data::EnsembleDescription d = describe(part);
-    const geo::MapProjection map = geo::MapProjection::forGrid(d.grid, d.gridMapping);
-    EXPECT_EQ(map.kind(), geo::MapProjection::Kind::None);
-    EXPECT_NE(map.reason().find("holds 40 x 30 points of its domain's 80 x 60"), std::string::npos)
-        << map.reason();
+    expectIndexAxesAndAReasonSaying(part, c.nx, {"holds 40 x 30 points of its domain's 80 x 60"});
 
     const test::TempDir wholeDir;
     c.domainNx = c.domainNy = 0;
