@@ -56,19 +56,24 @@ GribPlan planWithSkippedMessagesNamed(const GribInventory& inventory, const std:
     try {
         return planGribVariable(inventory, path, selection);
     } catch (const Error& e) {
-        if (inventory.warnings.empty()) throw;
+        // Those the refusal does not name already (a missing field's refusal names them).
+        const std::string what = e.what();
+        std::vector<std::string> unnamed;
+        for (const std::string& w : inventory.warnings) {
+            if (what.find(w) == std::string::npos) unnamed.push_back(w);
+        }
+        if (unnamed.empty()) throw;
         constexpr std::size_t kNamed = 10;
         std::string skipped;
-        for (std::size_t i = 0; i < inventory.warnings.size() && i < kNamed; ++i) {
-            skipped += (i == 0 ? "" : "; ") + inventory.warnings[i];
+        for (std::size_t i = 0; i < unnamed.size() && i < kNamed; ++i) {
+            skipped += (i == 0 ? "" : "; ") + unnamed[i];
         }
-        if (inventory.warnings.size() > kNamed) {
-            skipped += "; and " + std::to_string(inventory.warnings.size() - kNamed) + " more";
+        if (unnamed.size() > kNamed) {
+            skipped += "; and " + std::to_string(unnamed.size() - kNamed) + " more";
         }
-        const std::size_t n = inventory.warnings.size();
+        const std::size_t n = unnamed.size();
         throw Error(e.kind(),
-                    std::string(e.what()) + ". " + std::to_string(n) +
-                        (n == 1 ? " message was" : " messages were") +
+                    what + ". " + std::to_string(n) + (n == 1 ? " message was" : " messages were") +
                         " skipped as damaged, which may be why: " + skipped,
                     e.choices());
     }

@@ -539,6 +539,8 @@ TEST(GribReader, DamagedMessagesAreSkippedWithTheirOffsetOrRefused) {
     EXPECT_EQ(late.kind(), data::ErrorKind::CorruptFile);
     EXPECT_TRUE(mentions(late, offset7)) << late.what();
     EXPECT_TRUE(mentions(late, "member 1 at 850 hPa")) << late.what();
+    const std::string lateWords = late.what();
+    EXPECT_EQ(lateWords.find(offset7), lateWords.rfind(offset7)) << "named once: " << lateWords;
 
     // A message whose length field is wrong (the third, time 0) is skipped, before ecCodes
     // allocates the 2 GB it claims: time 1 reads.
