@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <random>
 
@@ -127,8 +128,12 @@ TEST(DataProbe, AMissingFileIsNamed) {
 }
 
 TEST(DataProbe, VtkFilesAreOneMemberEachWithNothingToChooseAlong) {
+    // Two member files: a copy, since the same file named twice is refused.
     data::DataSelection selection = fileSelection("ironProt.vtk");
-    selection.paths.push_back(selection.paths.front());
+    const test::TempDir dir;
+    const std::string copy = dir.file("ironProt_copy.vtk");
+    std::filesystem::copy_file(selection.paths.front(), copy);
+    selection.paths.push_back(copy);
     const ui::DataProbe probe = app::probeData(selection);
     ASSERT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
     EXPECT_EQ(probe.format, "VTK legacy");
