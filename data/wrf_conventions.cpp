@@ -103,6 +103,9 @@ namespace {
 
 // XLAT and XLONG at the first time, over south_north x west_east of the mass grid (x fastest);
 // empty when the file lacks them or their shape is not that grid's.
+// Metres along the equator of WRF's sphere per degree (lat-lon grids' DX and DY are metres).
+constexpr double kMetresPerDegree = kWrfEarthRadius * std::numbers::pi / 180.0;
+
 struct MassLonLat {
     std::vector<double> longitudes, latitudes;
 };
@@ -147,9 +150,8 @@ struct Misplacement {
 
 Misplacement worstMisplacement(const WrfProjection& wrf, const MassLonLat& lonLat, std::size_t nx) {
     const bool degrees = wrf.mapping.name == "latitude_longitude";
-    const double metresPerDegree = kWrfEarthRadius * std::numbers::pi / 180.0;
-    const double dx = degrees ? wrf.dx / metresPerDegree : wrf.dx;
-    const double dy = degrees ? wrf.dy / metresPerDegree : wrf.dy;
+    const double dx = degrees ? wrf.dx / kMetresPerDegree : wrf.dx;
+    const double dy = degrees ? wrf.dy / kMetresPerDegree : wrf.dy;
     std::vector<glm::dvec2> points(lonLat.longitudes.size());
     for (std::size_t n = 0; n < points.size(); ++n) {
         points[n] = {lonLat.longitudes[n], lonLat.latitudes[n]};
@@ -181,7 +183,6 @@ void placeWrfGrid(const NetcdfFile& file, WrfProjection& wrf, Axis& x, bool xSta
     const std::size_t ny = y.size() - (yStaggered ? 1 : 0);
     const std::string name = "WRF MAP_PROJ = " + numberText(*wrf.mapping.parameter("wrf_map_proj"));
     const bool degrees = wrf.mapping.name == "latitude_longitude";
-    const double metresPerDegree = kWrfEarthRadius * std::numbers::pi / 180.0;
 
     // The anchor: the mass point at index (i0, j0) lies at (lon0, lat0).
     double i0 = 0.0, j0 = 0.0, lon0 = 0.0, lat0 = 0.0;
@@ -242,8 +243,8 @@ void placeWrfGrid(const NetcdfFile& file, WrfProjection& wrf, Axis& x, bool xSta
         }
     };
     if (degrees) {
-        fill(x, xStaggered, i0, wrf.dx / metresPerDegree, lon0);
-        fill(y, yStaggered, j0, wrf.dy / metresPerDegree, lat0);
+        fill(x, xStaggered, i0, wrf.dx / kMetresPerDegree, lon0);
+        fill(y, yStaggered, j0, wrf.dy / kMetresPerDegree, lat0);
         x.units = "degrees_east";
         x.standardName = "longitude";
         y.units = "degrees_north";
