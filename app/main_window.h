@@ -237,6 +237,11 @@ private:
     void chooseProjectPathAndSave();
     void saveProjectReporting(const QString& path);
     QString locateMissingFileWithDialog(const QString& missing);
+    // Opening a project in two steps, so that the command line can restore its layout before
+    // the window is shown: reading (a refusal is reported and changes nothing), then locating
+    // moved data files and loading (main_window_project.cpp).
+    std::optional<session::SessionState> readProject(const QString& path);
+    bool openReadProject(session::SessionState project, const QString& path);
     void applyPendingProjectCamera();
     // Width over height of the 3D view, for fitting the camera.
     [[nodiscard]] float viewAspect() const;

@@ -103,27 +103,43 @@ bool MainWindow::saveProjectTo(const QString& path, QString* error) {
 }
 
 void MainWindow::showAndOpen(const data::DataSelection& selection) {
+    const auto& paths = selection.paths;
+    const bool isProject = paths.size() == 1 &&
+                           QString::fromStdString(paths.front()).endsWith(QLatin1String(".ensil"));
+    std::optional<session::SessionState> project;
+    if (isProject) {
+        project = readProject(QString::fromStdString(paths.front()));
+        // The project's layout is restored before the window is shown. Restoring a layout
+        // into a shown window whose own remembered layout (the constructor's) is still
+        // waiting for the window manager to maximise it leaves Qt 6.4's main window layout
+        // with dock items it has freed: the next layout pass crashed (issue 37).
+        if (project && !project->windowState.isEmpty()) restoreState(project->windowState);
+    }
     // The first run has no saved layout: the view and its three docks want the whole screen.
     if (hasSavedLayout()) {
         show();
     } else {
         showMaximized();
     }
-    const auto& paths = selection.paths;
-    if (paths.empty()) {
+    if (isProject) {
+        if (project) openReadProject(std::move(*project), QString::fromStdString(paths.front()));
+    } else if (paths.empty()) {
         loadDemo();
-    } else if (paths.size() == 1 &&
-               QString::fromStdString(paths.front()).endsWith(QLatin1String(".ensil"))) {
-        openProject(QString::fromStdString(paths.front()));
     } else {
         openFiles(selection);
     }
 }
 
 bool MainWindow::openProject(const QString& path) {
-    session::SessionState project;
+    std::optional<session::SessionState> project = readProject(path);
+    if (!project) return false;
+    if (!project->windowState.isEmpty()) restoreState(project->windowState);
+    return openReadProject(std::move(*project), path);
+}
+
+std::optional<session::SessionState> MainWindow::readProject(const QString& path) {
     try {
-        project = session::loadProject(path);
+        return session::loadProject(path);
     } catch (const session::ProjectError& e) {
         const QString message = QString::fromStdString(e.what());
         auto* box =
@@ -132,8 +148,11 @@ bool MainWindow::openProject(const QString& path) {
         box->setAttribute(Qt::WA_DeleteOnClose);
         box->open();
         emit loadingFailed(message);
-        return false;
+        return std::nullopt;
     }
+}
+
+bool MainWindow::openReadProject(session::SessionState project, const QString& path) {
     // Data files that moved: the user points at them, or nothing changes.
     for (std::string& file : project.data.paths) {
         const QString missing = QString::fromStdString(file);
@@ -152,7 +171,6 @@ bool MainWindow::openProject(const QString& path) {
     QSettings().setValue("project/lastFolder", QFileInfo(path).absolutePath());
     m_pendingProject = std::make_unique<session::SessionState>(project);
     m_pendingProjectPath = path;
-    if (!project.windowState.isEmpty()) restoreState(project.windowState);
     if (project.demo) {
         loadDemo(project.demoParams);
     } else {

@@ -31,6 +31,9 @@ packages=(
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
     # that an X display answers before Qt is started on it
     xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev libxcb1-dev
+    # a window manager for the tests of what only one does, such as maximising a window
+    # (tests/support/with-window-manager.sh), and wmctrl to know when it has started
+    openbox wmctrl
     # packages and desktop integration: dpkg-shlibdeps for CPack's Debian dependencies, the
     # validators of the desktop entry, AppStream metadata and MIME type, and the package checks
     # (x11-utils: xwininfo and xprop read the workbench window's icon)

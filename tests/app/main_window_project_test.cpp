@@ -244,9 +244,8 @@ TEST_F(ProjectWindow, AProjectSavedByEnsilRenderOpensInTheWorkbenchAsDrawn) {
 
 // `ensil PROJECT.ensil`, what a double-click on a project does (MainWindow::showAndOpen, as
 // main() calls it), over a remembered window layout and a project saved from the workbench
-// with its layout block: both layouts are restored before the loading starts. Issue 37 saw a
-// segmentation fault there in QLayoutPrivate::doResize with a window maximised by a window
-// manager; this virtual display has none, and this test has not reproduced that crash.
+// with its layout block: both layouts are restored before the loading starts. The crash issue
+// 37 saw here needs a window manager to maximise the window: tests/app/window_manager_test.cpp.
 TEST_F(ProjectWindow, AProjectGivenOnTheCommandLineOpensOverARememberedLayout) {
     const QString path = QString::fromStdString(m_dir.file("remembered.ensil"));
     {
