@@ -79,6 +79,7 @@ session::SessionState MainWindow::captureSession() const {
     p.camera.azimuth = camera.azimuth();
     p.camera.elevation = camera.elevation();
     p.camera.placement = session::CameraState::Placement{camera.distance(), camera.target()};
+    p.memberClusters = m_selection->memberClusterNumbers();
     p.windowGeometry = saveGeometry();
     p.windowState = saveState();
     return p;
@@ -200,6 +201,9 @@ void MainWindow::applyPendingProjectMembers() {
     if (!m_pendingProject) return;
     const session::SessionState p = *m_pendingProject;
     m_pendingProject.reset();
+    // The clusters numbered and coloured as they were saved (hidden clusters below are by
+    // label of the saved cut, which the same data and k give again).
+    m_selection->numberClustersAs(p.memberClusters);
     // Hidden clusters are hidden by their members, now that the clusters are known.
     const session::MemberFlags flags =
         session::memberFlags(p, m_selection->labels(), m_selection->memberCount());

@@ -17,6 +17,7 @@
 #ifdef ENSIL_WITH_MPI
 #include "app/preprocess_mpi.h"
 #endif
+#include "app/command_progress.h"
 #include "app/headless/time_series.h"
 #include "app/subcommand.h"
 #include "data/demo_ensemble.h"
@@ -63,6 +64,10 @@ struct Options {
                        "instead, with the same results but no contour boxplot; --iso is then "
                        "needed. E.g. 1GiB, 512M."),
         QStringLiteral("SIZE")};
+    QCommandLineOption quiet{QStringLiteral("quiet"),
+                             QStringLiteral("Print no progress. Progress is printed on stderr "
+                                            "only when it is a terminal and the run lasts over "
+                                            "a second.")};
 };
 
 // Clusters and linkage, with their ranges from the one setting table.
@@ -120,19 +125,24 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
         matrix.append(row);
     }
     o[QStringLiteral("distance_matrix")] = matrix;
+    // Members are named by their numbers, 1..N in the ensemble's order (the member table's #);
+    // rows and columns of the matrix above and every per-member array are in that order.
+    const auto memberNumber = [](std::size_t index) { return static_cast<qint64>(index) + 1; };
     QJsonArray withoutOverlap;  // pairs whose distance was placed, not measured
     for (const auto& [i, j] : r.distances.pairsWithoutOverlap) {
-        withoutOverlap.append(QJsonArray{static_cast<qint64>(i), static_cast<qint64>(j)});
+        withoutOverlap.append(QJsonArray{memberNumber(i), memberNumber(j)});
     }
     o[QStringLiteral("pairs_without_overlap")] = withoutOverlap;
     o[QStringLiteral("linkage_method")] = QString::fromStdString(prep::linkageName(linkage));
+    // SciPy's linkage matrix as it is (its node indices count from 0, members first).
     QJsonArray rows;
     for (const prep::Merge& m : r.tree.merges) rows.append(QJsonArray{m.a, m.b, m.height, m.size});
     o[QStringLiteral("linkage")] = rows;
     o[QStringLiteral("k")] = r.k;
-    QJsonArray labels;
-    for (int l : r.labels) labels.append(l);
-    o[QStringLiteral("clusters")] = labels;
+    // Each member's cluster by the number the legend, the cluster list and the table show.
+    QJsonArray clusterNumbers;
+    for (const int number : r.clusterNumbers) clusterNumbers.append(number);
+    o[QStringLiteral("clusters")] = clusterNumbers;
     // The colour each member is drawn in (the workbench's for this tree and k).
     QJsonArray colors;
     for (const std::string& color : r.colors) colors.append(QString::fromStdString(color));
@@ -141,8 +151,9 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     const auto figure = [](double v) { return std::isfinite(v) ? QJsonValue(v) : QJsonValue(); };
     QJsonArray members;
     for (std::size_t m = 0; m < e.memberCount(); ++m) {
-        members.append(QJsonObject{{"name", memberName(e.members[m], m)},
-                                   {"cluster", m < r.labels.size() ? r.labels[m] : -1},
+        members.append(QJsonObject{{"number", memberNumber(m)},
+                                   {"name", memberName(e.members[m], m)},
+                                   {"cluster", r.clusterNumbers.at(m)},
                                    {"distance_to_mean", figure(r.distancesToMean[m])},
                                    {"mean_outlyingness", figure(r.meanOutlyingness[m])}});
     }
@@ -150,9 +161,9 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     // The contour boxplot (METHODS.md section 17): one depth per member, in member order.
     QJsonArray depth, outliers;
     for (const double d : r.boxplot.depth) depth.append(d);
-    for (const std::size_t m : r.boxplot.outliers) outliers.append(static_cast<qint64>(m));
+    for (const std::size_t m : r.boxplot.outliers) outliers.append(memberNumber(m));
     o[QStringLiteral("depth")] = depth;
-    o[QStringLiteral("median_member")] = static_cast<qint64>(r.boxplot.median);
+    o[QStringLiteral("median_member")] = memberNumber(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
     if (r.memory) {
         o[QStringLiteral("memory")] =
@@ -207,10 +218,10 @@ void printText(QTextStream& out, const Result& r) {
         out << "Memory:     peak " << mibText(r.memory->peakResident) << " MiB resident, "
             << mibText(r.memory->residentAtStart) << " MiB of it before the run\n";
     }
-    std::vector<int> sizes(static_cast<std::size_t>(k), 0);
-    for (int l : r.labels) ++sizes[static_cast<std::size_t>(l)];
-    out << "Clusters:   " << k << ", sizes";
-    for (int s : sizes) out << " " << s;
+    std::map<int, int> sizes;  // by cluster number
+    for (const int number : r.clusterNumbers) ++sizes[number];
+    out << "Clusters:   " << k << ", members in each (cluster:members)";
+    for (const auto& [number, size] : sizes) out << " " << number << ":" << size;
     out << "\n";
     if (!r.boxplot.depth.empty()) {
         const std::size_t median = r.boxplot.median;
@@ -230,7 +241,8 @@ void printText(QTextStream& out, const Result& r) {
     }
 }
 
-// What a step adds to the one-isovalue JSON: its time and each cluster's identity.
+// What a step adds to the one-isovalue JSON: its time (its "clusters" are numbered as matched
+// to the previous step's, so that a group keeps its number).
 QJsonObject stepJson(const TimeStepResult& step, prep::Linkage linkage, const QString& cache) {
     Result r;
     static_cast<PreprocessResult&>(r) = step.result;
@@ -238,9 +250,6 @@ QJsonObject stepJson(const TimeStepResult& step, prep::Linkage linkage, const QS
     QJsonObject o = toJson(r, linkage);
     o[QStringLiteral("time")] = QString::fromStdString(step.time);
     o[QStringLiteral("time_index")] = static_cast<qint64>(step.index);
-    QJsonArray identities;
-    for (const int identity : step.identities) identities.append(identity);
-    o[QStringLiteral("identities")] = identities;
     return o;
 }
 
@@ -274,8 +283,8 @@ void printStep(QTextStream& out, const TimeStepResult& step, const TimeStepResul
 }
 
 int runTimeSeries(const QString& times, const data::DataSelection& selection,
-                  const PreprocessRequest& preprocess, bool json, QTextStream& out,
-                  QTextStream& err) {
+                  const PreprocessRequest& preprocess, bool json, CommandProgress& progress,
+                  QTextStream& out, QTextStream& err) {
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     std::string problem;
     const auto range = parseStepRange(times.toStdString(), d.timeSteps.count(),
@@ -286,13 +295,15 @@ int runTimeSeries(const QString& times, const data::DataSelection& selection,
     }
     TimeSeriesRequest request{.selection = selection, .steps = *range, .preprocess = preprocess};
     const QString cache = !preprocess.cacheDirectory ? QStringLiteral("off") : QString();
-    std::vector<TimeStepResult> steps =
-        preprocessTimeSeries(request,
-                             [&](const std::string& kind, const std::string& text) {
-                                 err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
-                                     << QString::fromStdString(text) << "\n";
-                             },
-                             {}, {});
+    std::vector<TimeStepResult> steps = preprocessTimeSeries(
+        request,
+        [&](const std::string& kind, const std::string& text) {
+            progress.endLine();
+            err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
+                << QString::fromStdString(text) << "\n";
+        },
+        {}, progress.callback(QStringLiteral("time steps")));
+    progress.endLine();
     const auto cacheOf = [&](const TimeStepResult& step) {
         return !cache.isEmpty()        ? cache
                : step.result.fromCache ? QStringLiteral("hit")
@@ -335,7 +346,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     selectionOptions.addTo(parser);
     const Options o;
     parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json,
-                       o.times, o.memoryLimit});
+                       o.times, o.memoryLimit, o.quiet});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -382,6 +393,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         return 2;
     }
     const RunMemoryMeter memory;
+    CommandProgress progress(err, QStringLiteral("ensil preprocess"),
+                             CommandProgress::shownOnThisTerminal(parser.isSet(o.quiet)));
     QElapsedTimer total, stage;
     total.start();
     try {
@@ -405,6 +418,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          : defaultMeshCacheDirectory();
         }
         const auto printResult = [&](Result& r) {
+            progress.endLine();
             r.seconds["total"] = seconds(total);
             r.memory = memory.read();
             if (parser.isSet(o.json)) {
@@ -434,9 +448,10 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
 #endif
         if (parser.isSet(o.times)) {
             return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
-                                 out, err);
+                                 progress, out, err);
         }
         const auto notice = [&](const std::string& kind, const std::string& text) {
+            progress.endLine();
             err << "ensil preprocess: " << QString::fromStdString(kind) << ": "
                 << QString::fromStdString(text) << "\n";
         };
@@ -448,7 +463,8 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                 request.sourceKey = data::sourceIdentity(*selection);
                 Result r;
                 static_cast<PreprocessResult&>(r) =
-                    preprocessStreaming(*selection, description, request, limit, notice);
+                    preprocessStreaming(*selection, description, request, limit, notice, {},
+                                        progress.callback(QStringLiteral("preprocessing")));
                 r.cache = request.cacheDirectory ? QStringLiteral("stored") : QStringLiteral("off");
                 printResult(r);
                 return 0;
@@ -456,15 +472,18 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
         stage.start();
         auto ensemble = std::make_shared<const data::Ensemble>(
-            parser.isSet(o.demo) ? data::makeDemoEnsemble(demo).ensemble
-                                 : data::openEnsemble(*selection));
+            parser.isSet(o.demo)
+                ? data::makeDemoEnsemble(demo, {}, progress.callback(QStringLiteral("generating")))
+                      .ensemble
+                : data::openEnsemble(*selection, {}, progress.callback(QStringLiteral("reading"))));
         const double loadSeconds = seconds(stage);
         request.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
                                                        " seed=" + std::to_string(demo.seed)
                                                  : data::sourceIdentity(*selection);
         Result r;
         static_cast<PreprocessResult&>(r) =
-            preprocessEnsemble(std::move(ensemble), request, notice);
+            preprocessEnsemble(std::move(ensemble), request, notice, {},
+                               progress.callback(QStringLiteral("preprocessing")));
         r.seconds["load"] = loadSeconds;
         r.cache = !request.cacheDirectory ? QStringLiteral("off")
                   : r.fromCache           ? QStringLiteral("hit")
@@ -472,12 +491,15 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         printResult(r);
         return 0;
     } catch (const PreprocessRefused& e) {
+        progress.endLine();
         err << "ensil preprocess: " << e.what() << "\n";
         return e.exitCode();
     } catch (const data::Error& e) {
+        progress.endLine();
         err << "ensil preprocess: " << e.what() << "\n";
         return 1;
     } catch (const std::bad_alloc&) {
+        progress.endLine();
         err << "ensil preprocess: not enough memory\n";
         return 1;
     }

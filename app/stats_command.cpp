@@ -36,8 +36,9 @@ struct Options {
                            QStringLiteral("C")};
     QCommandLineOption members{
         QStringLiteral("members"),
-        QStringLiteral("The members to summarise, 0-based in the order the file holds them, as "
-                       "indices and ranges: 0,3,5-9 (default: every member with data)."),
+        QStringLiteral("The members to summarise, by their numbers (1 to N in the order the file "
+                       "holds them, the member table's #), as numbers and ranges: 1,3,5-9 "
+                       "(default: every member with data)."),
         QStringLiteral("LIST")};
     QCommandLineOption output{QStringLiteral("out"),
                               QStringLiteral("The NetCDF file to write (required; an existing "
@@ -160,8 +161,8 @@ void printText(QTextStream& out, const Result& r) {
     }
 }
 
-// The members to summarise, as indices in the file's order: those listed (nullopt, with the
-// fault said on `err`, when one is out of range or has no data), or every member with data
+// The members to summarise, as indices (number - 1) in the file's order: those listed (nullopt,
+// with the fault said on `err`, when one is out of range or has no data), or every member with data
 // (each one without named on `err` and in `r.membersWithoutData`). Members without data are
 // skipped here rather than taken out of the ensemble (data::leaveOutMembersWithoutData), which
 // would shift the indices a user's list refers to; the rule is the same
@@ -190,16 +191,16 @@ std::optional<std::vector<std::size_t>> chooseMembers(
         return chosen;
     }
     for (const MemberRange& range : *ranges) {
-        if (range.last >= inFile) {
-            err << "ensil stats: --members: member index "
-                << (range.first >= inFile ? range.first : range.last)
-                << " is out of range: " << fileNames << " holds " << inFile << " members of '"
-                << r.variable << "' (0 to " << inFile - 1 << ")\n";
+        if (range.last > inFile) {
+            err << "ensil stats: --members: there is no member "
+                << (range.first > inFile ? range.first : range.last) << ": " << fileNames
+                << " holds " << inFile << " members of '" << r.variable << "' (1 to " << inFile
+                << ")\n";
             return std::nullopt;
         }
-        for (std::size_t m = range.first; m <= range.last; ++m) {
+        for (std::size_t m = range.first - 1; m < range.last; ++m) {
             if (hasNoData(m)) {
-                err << "ensil stats: --members: member " << m << " ('"
+                err << "ensil stats: --members: member " << m + 1 << " ('"
                     << memberName(ensemble.members[m], m) << "') has no valid value of '"
                     << r.variable << "' (every value is missing); leave it out of --members\n";
                 return std::nullopt;
@@ -234,19 +235,26 @@ std::optional<std::vector<MemberRange>> parseMemberList(const QString& text, QSt
         if (!match.hasMatch()) {
             problem = part.trimmed().isEmpty()
                           ? QStringLiteral(
-                                "--members '%1' has an empty entry; write indices "
-                                "and ranges such as 0,3,5-9")
+                                "--members '%1' has an empty entry; write member numbers "
+                                "and ranges such as 1,3,5-9")
                                 .arg(text)
                           : QStringLiteral(
-                                "--members '%1': '%2' is neither a member index nor a "
-                                "range; write whole numbers from 0 and ranges such as "
-                                "0,3,5-9")
+                                "--members '%1': '%2' is neither a member number nor a "
+                                "range; write whole numbers from 1 (the member table's #) "
+                                "and ranges such as 1,3,5-9")
                                 .arg(text, part.trimmed());
             return std::nullopt;
         }
         MemberRange r;
         r.first = match.captured(1).toULongLong();
         r.last = match.captured(2).isEmpty() ? r.first : match.captured(2).toULongLong();
+        if (r.first == 0) {
+            problem = QStringLiteral(
+                          "--members '%1': there is no member 0; members are numbered from 1, "
+                          "as the member table's # shows them")
+                          .arg(text);
+            return std::nullopt;
+        }
         if (r.last < r.first) {
             problem = QStringLiteral("--members '%1': the range %2-%3 runs backwards; write %3-%2")
                           .arg(text)

@@ -444,7 +444,9 @@ std::vector<std::string> memberNames(const NetcdfFile& file, const NcPlan& plan)
     }
     for (std::size_t m = 0; m < dim.size; ++m) {
         if (values.empty()) {
-            names[m] = "member " + std::to_string(m);
+            // Without a coordinate the file names no member: the name is ensil's number, 1..N,
+            // as the demo's, HDF5's and every output's (METHODS.md, numbers of members).
+            names[m] = "member " + std::to_string(m + 1);
             continue;
         }
         if (auto date = formatCfTime(values[m], units, calendar)) {

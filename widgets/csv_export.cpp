@@ -30,7 +30,7 @@ QString number(double value) {
 QString memberTableCsv(const MemberSelection& selection) {
     QStringList lines;
     lines << QStringLiteral(
-        "index,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
+        "number,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
         "selected");
     for (int m = 0; m < selection.memberCount(); ++m) {
         const int cluster = selection.clusterNumber(selection.clusterOf(m));

@@ -113,6 +113,24 @@ void MemberSelection::relabel(bool newTree, int previousK) {
     m_labels = labels;
 }
 
+std::vector<int> MemberSelection::memberClusterNumbers() const {
+    if (!isClustered()) return {};
+    std::vector<int> numbers;
+    for (const int identity : prep::memberIdentities(m_labels, m_identities)) {
+        numbers.push_back(identity + 1);
+    }
+    return numbers;
+}
+
+void MemberSelection::numberClustersAs(const std::vector<int>& numbers) {
+    if (!isClustered() || numbers.size() != m_labels.size()) return;
+    std::vector<int> identities;
+    for (const int number : numbers) identities.push_back(number - 1);
+    emit clustersAboutToChange();
+    m_identities = prep::matchIdentities(m_labels, m_clusters, identities);
+    emit clustersChanged();
+}
+
 double MemberSelection::distanceToMean(int member) const {
     return entry(m_figures.distanceToMean, member);
 }

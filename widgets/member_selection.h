@@ -84,6 +84,12 @@ public:
     [[nodiscard]] int identityOf(int cluster) const;
     [[nodiscard]] int clusterNumber(int cluster) const { return identityOf(cluster) + 1; }
     [[nodiscard]] QColor clusterColor(int cluster) const;  // gray for -1
+    // Each member's cluster number (clusterNumber), empty when not clustered: what a project
+    // keeps. Numbering the clusters as `numbers` did (a project's, per member) matches the
+    // current clusters to them by shared members, as after a new tree; ignored unless clustered
+    // and one number per member.
+    [[nodiscard]] std::vector<int> memberClusterNumbers() const;
+    void numberClustersAs(const std::vector<int>& numbers);
     [[nodiscard]] QColor memberColor(int member) const { return clusterColor(clusterOf(member)); }
 
     [[nodiscard]] bool isMemberVisible(int member) const;

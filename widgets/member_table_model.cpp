@@ -1,6 +1,5 @@
 #include "widgets/member_table_model.h"
 
-#include <QRegularExpression>
 #include <cmath>
 
 #include "widgets/member_selection.h"
@@ -12,13 +11,6 @@ QVariant number(double value) { return std::isnan(value) ? QVariant() : QVariant
 // The member's number as the file names it: "member 0" (ERA5's `number` coordinate runs 0-9)
 // is number 0, so the # column and the name never disagree; names that carry no number (dates,
 // file names) are counted from 1 in file order.
-int memberNumber(const QString& name, int row) {
-    static const QRegularExpression numbered(QStringLiteral("^member (-?\\d+)$"));
-    const QRegularExpressionMatch match = numbered.match(name);
-    bool ok = false;
-    const int number = match.hasMatch() ? match.captured(1).toInt(&ok) : 0;
-    return ok ? number : row + 1;
-}
 
 QString numberText(double value) {
     if (std::isnan(value)) return QStringLiteral("-");
@@ -111,7 +103,9 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
         const bool sort = role == SortRole;
         switch (column) {
             case Index:
-                return memberNumber(m_selection->name(m), m);
+                // The member's number, 1..N in the ensemble's order, in every output (METHODS.md
+                // "Numbers of members and clusters"); the name column says what the file calls it.
+                return m + 1;
             case Name:
                 return m_selection->name(m);
             case Cluster: {
@@ -201,7 +195,9 @@ QVariant MemberTableModel::headerData(int section, Qt::Orientation orientation, 
     const bool tip = role == Qt::ToolTipRole;
     switch (section) {
         case Index:
-            return tip ? tr("Member number") : tr("#");
+            return tip ? tr("Member number, 1 to N in the ensemble's order, as every output gives "
+                            "it")
+                       : tr("#");
         case Name:
             return tip ? tr("Member name, from the file") : tr("Member");
         case Cluster:

@@ -53,12 +53,21 @@ void checkIsovalueRange(double iso, double minimum, double maximum, const std::s
 
 void labelMembers(PreprocessResult& r) {
     r.labels = prep::clusterLabels(r.tree, r.k);
+    numberClusters(r, prep::identitiesFromTree(r.tree, r.k));
+}
+
+void numberClusters(PreprocessResult& r, const std::vector<int>& identities) {
+    r.clusterNumbers.clear();
     r.colors.clear();
-    for (const int identity :
-         prep::memberIdentities(r.labels, prep::identitiesFromTree(r.tree, r.k))) {
-        const glm::vec3 c = gl::clusterColor(identity);
-        r.colors.push_back(QColor::fromRgbF(c.r, c.g, c.b).name().toStdString());
+    for (const int identity : prep::memberIdentities(r.labels, identities)) {
+        r.clusterNumbers.push_back(identity + 1);
+        r.colors.push_back(identityColorName(identity));
     }
+}
+
+std::string identityColorName(int identity) {
+    const glm::vec3 c = gl::clusterColor(identity);
+    return QColor::fromRgbF(c.r, c.g, c.b).name().toStdString();
 }
 
 PreprocessResult preprocessEnsemble(std::shared_ptr<const data::Ensemble> given,

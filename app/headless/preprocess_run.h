@@ -46,9 +46,11 @@ struct PreprocessResult {
     prep::DistanceMatrix distances;
     prep::MergeTree tree;
     int k = 0;                // clusters, after lowering a default to the member count
-    std::vector<int> labels;  // each member's cluster, 0..k-1
-    // The colour each member is drawn in, "#rrggbb", by the stable identity rule from the tree
-    // (the workbench's colours for this tree and k).
+    std::vector<int> labels;  // each member's cluster label of the cut, 0..k-1 (internal)
+    // Each member's cluster by the number the legend shows (its stable identity + 1, METHODS.md
+    // "Numbers of members and clusters") and the colour it is drawn in, "#rrggbb": from the
+    // tree alone (the workbench's for this tree and k), or matched to the previous time step's.
+    std::vector<int> clusterNumbers;
     std::vector<std::string> colors;
     std::vector<double> distancesToMean;  // per member; NaN where it has no isosurface
     std::vector<double> meanOutlyingness;
@@ -92,6 +94,10 @@ void checkIsovalueRange(double iso, double minimum, double maximum, const std::s
                         const std::string& units);
 // ...and each member's cluster and colour from r.tree and r.k.
 void labelMembers(PreprocessResult& r);
+// "#rrggbb" of a cluster identity (gl::clusterColor), as preprocess and the workbench draw it.
+std::string identityColorName(int identity);
+// Each member's cluster number and colour from the identities of r.labels' clusters.
+void numberClusters(PreprocessResult& r, const std::vector<int>& identities);
 
 // Throws PreprocessRefused, data::Error, data::Cancelled. `progress` and `notice` are called on
 // the calling thread or on the job's workers.

@@ -110,9 +110,14 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     const std::vector<int> labels = prep::clusterLabels(outcome.tree, k);
     std::vector<std::string> names;
     for (const data::Member& member : ensemble.members) names.push_back(member.name);
-    const std::vector<int> identities = matchStepIdentities(
-        outcome.tree, k, labels,
-        previousIdentitiesByName(request.previousMembers, request.previousIdentities, names));
+    // Numbered as the previous time step's clusters, else as the project saved them.
+    std::vector<int> previous =
+        previousIdentitiesByName(request.previousMembers, request.previousIdentities, names);
+    if (request.previousMembers.empty() && state.memberClusters.size() == ensemble.memberCount()) {
+        previous.clear();
+        for (const int number : state.memberClusters) previous.push_back(number - 1);
+    }
+    const std::vector<int> identities = matchStepIdentities(outcome.tree, k, labels, previous);
     renderer.setAppearance(session::memberAppearance(labels, identities,
                                                      session::memberFlags(state, labels, members)));
     renderer.settings() = state.render;
@@ -177,6 +182,10 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     result.withoutDisplay = gl::renderingWithoutDisplay();
     result.memberNames = std::move(names);
     result.memberIdentities = prep::memberIdentities(labels, identities);
+    result.drawn.memberClusters.clear();
+    for (const int identity : result.memberIdentities) {
+        result.drawn.memberClusters.push_back(identity + 1);
+    }
     renderer.releaseGpuResources();
     return result;
 }

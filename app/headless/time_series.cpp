@@ -1,6 +1,5 @@
 #include "app/headless/time_series.h"
 
-#include <QColor>
 #include <algorithm>
 #include <charconv>
 #include <map>
@@ -9,7 +8,6 @@
 
 #include "app/headless/floor_map.h"
 #include "app/headless/workbench_reading.h"
-#include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/similarity.h"
@@ -157,11 +155,6 @@ std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelec
     return scale;
 }
 
-std::string identityColorName(int identity) {
-    const glm::vec3 c = gl::clusterColor(identity);
-    return QColor::fromRgbF(c.r, c.g, c.b).name().toStdString();
-}
-
 std::vector<TimeStepResult> preprocessTimeSeries(const TimeSeriesRequest& request,
                                                  const PreprocessNotice& notice,
                                                  const std::stop_token& stop,
@@ -216,10 +209,7 @@ std::vector<TimeStepResult> preprocessTimeSeries(const TimeSeriesRequest& reques
         step.identities =
             matchStepIdentities(step.result.tree, step.result.k, step.result.labels, previous);
         step.memberIdentities = prep::memberIdentities(step.result.labels, step.identities);
-        step.result.colors.clear();
-        for (const int identity : step.memberIdentities) {
-            step.result.colors.push_back(identityColorName(identity));
-        }
+        numberClusters(step.result, step.identities);
         previousMembers = std::move(members);
         previousIdentities = step.memberIdentities;
         reportStep(s, 1.0);

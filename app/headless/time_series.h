@@ -119,7 +119,4 @@ std::optional<std::pair<float, float>> floorScaleOverSteps(const data::DataSelec
                                                            const gl::RenderSettings& settings,
                                                            const std::stop_token& stop = {});
 
-// "#rrggbb" of a cluster identity (gl::clusterColor), as preprocess and the workbench draw it.
-std::string identityColorName(int identity);
-
 }  // namespace ensil::app

@@ -261,8 +261,11 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
             "k", [](const PyPreprocessResult& r) { return r.result->k; },
             "The number of clusters (a default lowered to the members there are).")
         .def_property_readonly(
-            "labels", [](const PyPreprocessResult& r) { return copyOf<int>(r.result->labels); },
-            "(n,) int: each member's cluster, 0..k-1, numbered in dendrogram leaf order.")
+            "clusters",
+            [](const PyPreprocessResult& r) { return copyOf<int>(r.result->clusterNumbers); },
+            "(n,) int: each member's cluster by the number the workbench's legend, cluster "
+            "list and member table show, and `ensil preprocess --json` writes (1..k here: "
+            "METHODS.md, numbers of members and clusters).")
         .def_property_readonly(
             "colors", [](const PyPreprocessResult& r) { return r.result->colors; },
             "Each member's colour as the workbench draws it, '#rrggbb'.")
@@ -288,13 +291,15 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
             "(n,) float64: each member's epsilon-inclusion depth (the contour boxplot).")
         .def_property_readonly(
             "median_member", [](const PyPreprocessResult& r) { return r.result->boxplot.median; },
-            "The index of the deepest member.")
+            "The position of the deepest member in the arrays (0-based, as NumPy indexes; its "
+            "number, as the member table and the JSON name it, is one more).")
         .def_property_readonly(
             "outliers",
             [](const PyPreprocessResult& r) {
                 return copyOf<long long>(r.result->boxplot.outliers);
             },
-            "(k,) int: the members whose depth is below Q1 - 1.5 IQR, in index order.")
+            "(k,) int: the positions (0-based) of the members whose depth is below Q1 - 1.5 "
+            "IQR, in order.")
         .def_property_readonly(
             "distances_to_mean",
             [](const PyPreprocessResult& r) { return copyOf<double>(r.result->distancesToMean); },

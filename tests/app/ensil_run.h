@@ -2,11 +2,13 @@
 // name), and keeps its exit status and what it printed.
 #pragma once
 
+#include <QJsonArray>
 #include <QString>
 #include <QStringList>
 #include <QTextStream>
 
 #include "app/command_line.h"
+#include "preprocessing/clustering.h"
 
 namespace ensil::test {
 
@@ -23,6 +25,17 @@ inline EnsilRun runEnsil(const QStringList& args) {
     out.flush();
     err.flush();
     return r;
+}
+
+// The merge tree of `ensil preprocess --json`'s "linkage" (SciPy's rows a, b, height, size).
+inline prep::MergeTree treeOfLinkageJson(const QJsonArray& linkage, int members) {
+    prep::MergeTree tree;
+    tree.memberCount = members;
+    for (const auto row : linkage) {
+        const QJsonArray r = row.toArray();
+        tree.merges.push_back({r[0].toInt(), r[1].toInt(), r[2].toDouble(), r[3].toInt()});
+    }
+    return tree;
 }
 
 }  // namespace ensil::test

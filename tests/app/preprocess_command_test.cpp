@@ -7,8 +7,10 @@
 
 #include "app/command_line.h"
 #include "data/ensemble_reader.h"
+#include "preprocessing/cluster_identity.h"
 #include "preprocessing/inclusion_depth.h"
 #include "tests/app/default_isovalue.h"
+#include "tests/app/ensil_run.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -64,6 +66,7 @@ TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
     for (int m = 0; m < members.size(); ++m) {
         const QJsonObject member = members[m].toObject();
         EXPECT_FALSE(member["name"].toString().isEmpty());
+        EXPECT_EQ(member["number"].toInt(), m + 1) << "the member table's #";
         EXPECT_EQ(member["cluster"].toInt(), memberClusters[m].toInt());
         EXPECT_GT(member["distance_to_mean"].toDouble(), 0.0) << m;
         EXPECT_GE(member["mean_outlyingness"].toDouble(-1.0), 0.0) << m;
@@ -92,9 +95,16 @@ TEST(PreprocessCommand, JsonHasTheContractAndTheSecondRunHitsTheCache) {
     const QJsonArray linkage = o["linkage"].toArray();
     ASSERT_EQ(linkage.size(), 9) << "N - 1 merges, SciPy's linkage-matrix rows";
     EXPECT_EQ(linkage.last().toArray()[3].toInt(), 10) << "the last merge holds every member";
-    const QJsonArray labels = o["clusters"].toArray();
-    ASSERT_EQ(labels.size(), 10);
-    for (const auto& l : labels) EXPECT_TRUE(l.toInt() >= 0 && l.toInt() < 3);
+    // The legend's numbers (issue 37: these were the tree's labels, from 0, while the legend
+    // said "Cluster 1"): the tree's stable identities + 1, which from one tree are 1..k.
+    const QJsonArray numbers = o["clusters"].toArray();
+    ASSERT_EQ(numbers.size(), 10);
+    const prep::MergeTree tree = test::treeOfLinkageJson(linkage, 10);
+    const std::vector<int> identities =
+        prep::memberIdentities(prep::clusterLabels(tree, 3), prep::identitiesFromTree(tree, 3));
+    for (int m = 0; m < 10; ++m) {
+        EXPECT_EQ(numbers[m].toInt(), identities[static_cast<std::size_t>(m)] + 1) << m;
+    }
 
     const CommandRun second = preprocess(args);
     ASSERT_EQ(second.code, 0);
@@ -159,10 +169,11 @@ TEST(PreprocessCommand, JsonGivesTheContourBoxplotOfTheMembers) {
     for (qsizetype m = 0; m < depth.size(); ++m) {
         EXPECT_DOUBLE_EQ(depth[m].toDouble(), expected.depth[static_cast<std::size_t>(m)]) << m;
     }
+    // Members by their numbers, from 1 (the member table's #).
     const auto median = json["median_member"].toInteger();
-    EXPECT_EQ(median, static_cast<qint64>(expected.median));
-    for (const QJsonValue d : depth) EXPECT_LE(d.toDouble(), depth[median].toDouble());
+    EXPECT_EQ(median, static_cast<qint64>(expected.median) + 1);
+    for (const QJsonValue d : depth) EXPECT_LE(d.toDouble(), depth[median - 1].toDouble());
     QJsonArray outliers;
-    for (const std::size_t m : expected.outliers) outliers.append(static_cast<qint64>(m));
+    for (const std::size_t m : expected.outliers) outliers.append(static_cast<qint64>(m) + 1);
     EXPECT_EQ(json["outliers"].toArray(), outliers);
 }

@@ -315,7 +315,7 @@ TEST(StatsCommand, MembersListedAreTheOnlyOnesSummarised) {
     const Generated gen;
     const QString out = gen.out("two.nc");
     const test::EnsilRun o =
-        run({"stats", gen.input, "--iso", gen.isoText, "--members", "0,2", "--out", out, "--json"});
+        run({"stats", gen.input, "--iso", gen.isoText, "--members", "1,3", "--out", out, "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     const data::Grid& g = gen.ensemble.grid;
     const StatsFile file(out.toStdString());
@@ -334,15 +334,15 @@ TEST(StatsCommand, MembersListedAreTheOnlyOnesSummarised) {
     // A range, and spaces as a user may type them.
     const QString threeOut = gen.out("three.nc");
     const test::EnsilRun range =
-        run({"stats", gen.input, "--iso", gen.isoText, "--members", "1 - 3", "--out", threeOut});
+        run({"stats", gen.input, "--iso", gen.isoText, "--members", "2 - 4", "--out", threeOut});
     ASSERT_EQ(range.code, 0) << range.err.toStdString();
     const StatsFile three(threeOut.toStdString());
     expectFieldsMatch(readFields(three, g), gen.ensemble, {1, 2, 3}, gen.isovalue);
 }
 
 TEST(StatsCommand, MissingValuesAndAMemberWithoutDataAreLeftOut) {
-    // Member 2 is all _FillValue (left out, with a warning); one point misses member 0's value
-    // and another every member's.
+    // The third member (number 3) is all _FillValue (left out, with a warning); one point misses
+    // member 0's value and another every member's.
     test::TempDir dir;
     data::Ensemble e =
         data::makeDemoEnsemble({.members = 4, .nx = 6, .ny = 5, .nz = 3, .seed = 3}).ensemble;
@@ -374,9 +374,9 @@ TEST(StatsCommand, MissingValuesAndAMemberWithoutDataAreLeftOut) {
 
     // Listing the member without data is refused.
     const test::EnsilRun listed = run({"stats", QString::fromStdString(input), "--iso", shortest(c),
-                                       "--members", "1-2", "--out", out});
+                                       "--members", "2-3", "--out", out});
     EXPECT_EQ(listed.code, 2);
-    EXPECT_TRUE(listed.err.contains("member 2 ('member 3') has no valid value"))
+    EXPECT_TRUE(listed.err.contains("member 3 ('member 3') has no valid value"))
         << listed.err.toStdString();
 }
 
@@ -431,21 +431,24 @@ TEST(StatsCommand, BadArgumentsAreRefusedNamingWhatIsWrong) {
         {{"stats", gen.input, "--iso", gen.isoText, "--members", "3-1", "--out", out},
          2,
          "the range 3-1 runs backwards; write 1-3"},
-        {{"stats", gen.input, "--iso", gen.isoText, "--members", "0,0", "--out", out},
+        {{"stats", gen.input, "--iso", gen.isoText, "--members", "1,1", "--out", out},
          2,
-         "lists member 0 twice"},
+         "lists member 1 twice"},
+        {{"stats", gen.input, "--iso", gen.isoText, "--members", "0,2", "--out", out},
+         2,
+         "there is no member 0; members are numbered from 1"},
         {{"stats", gen.input, "--iso", gen.isoText, "--members", "1-3,2", "--out", out},
          2,
          "lists member 2 twice"},
         {{"stats", gen.input, "--iso", gen.isoText, "--members", "99", "--out", out},
          2,
-         "member index 99 is out of range"},
-        {{"stats", gen.input, "--iso", gen.isoText, "--members", "0,,2", "--out", out},
+         "there is no member 99: "},
+        {{"stats", gen.input, "--iso", gen.isoText, "--members", "1,,2", "--out", out},
          2,
          "has an empty entry"},
         {{"stats", gen.input, "--iso", gen.isoText, "--members", "-1", "--out", out},
          2,
-         "'-1' is neither a member index nor a range"},
+         "'-1' is neither a member number nor a range"},
         {{"stats", gen.input, "--iso", gen.isoText}, 2, "say where to write the statistics"},
         {{"stats", "--iso", gen.isoText, "--out", out}, 2, "name the files to summarise"},
         {{"stats", gen.input, "--iso", gen.isoText, "--out", gen.input},
@@ -474,8 +477,8 @@ TEST(StatsCommand, BadArgumentsAreRefusedNamingWhatIsWrong) {
     const test::EnsilRun outside = run(cases[2].args);
     EXPECT_TRUE(outside.err.contains("m s-1): every member is on one side of it"))
         << outside.err.toStdString();
-    const test::EnsilRun tooHigh = run(cases[6].args);
-    EXPECT_TRUE(tooHigh.err.contains("holds 4 members of 'wind_speed' (0 to 3)"))
+    const test::EnsilRun tooHigh = run(cases[7].args);
+    EXPECT_TRUE(tooHigh.err.contains("holds 4 members of 'wind_speed' (1 to 4)"))
         << tooHigh.err.toStdString();
     EXPECT_FALSE(std::filesystem::exists(out.toStdString())) << "no file for a refused command";
     // The input is untouched by an --out naming it.
@@ -495,12 +498,12 @@ TEST(StatsCommand, HelpNamesEveryOption) {
 TEST(StatsCommand, MemberListsParseAsUsersWriteThem) {
     using app::MemberRange;
     QString problem;
-    EXPECT_EQ(app::parseMemberList("0,3,5-9", problem),
-              (std::vector<MemberRange>{{0, 0}, {3, 3}, {5, 9}}));
+    EXPECT_EQ(app::parseMemberList("1,3,5-9", problem),
+              (std::vector<MemberRange>{{1, 1}, {3, 3}, {5, 9}}));
     EXPECT_EQ(app::parseMemberList(" 4 , 1-2 ", problem),
               (std::vector<MemberRange>{{4, 4}, {1, 2}}));
-    for (const char* bad : {"", "a", "1,", "1-", "-2", "1-2-3", "1.5", "5-9,9", "0,0", "3-1",
-                            "99999999999999999999"}) {
+    for (const char* bad : {"", "a", "1,", "1-", "-2", "1-2-3", "1.5", "5-9,9", "1,1", "3-1", "0",
+                            "0-2", "99999999999999999999"}) {
         problem.clear();
         EXPECT_FALSE(app::parseMemberList(QLatin1String(bad), problem).has_value()) << bad;
         EXPECT_TRUE(problem.startsWith("--members '")) << bad << ": " << problem.toStdString();

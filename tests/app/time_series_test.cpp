@@ -105,28 +105,27 @@ TEST(PreprocessTimes, Era5GivesOneObjectPerStepWithItsTimeAndColoursThatFollowTh
         EXPECT_EQ(step["distance_matrix"].toArray().size(), 10);
         EXPECT_EQ(step["linkage"].toArray().size(), 9);
         const QJsonArray clusters = step["clusters"].toArray(), colors = step["colors"].toArray();
-        const QJsonArray identities = step["identities"].toArray();
         ASSERT_EQ(clusters.size(), 10);
         ASSERT_EQ(colors.size(), 10);
-        ASSERT_EQ(identities.size(), 3);
         for (int m = 0; m < 10; ++m) {
-            // Each member's colour is its cluster's identity's.
-            const int identity = identities[clusters[m].toInt()].toInt();
-            EXPECT_EQ(colors[m].toString().toStdString(), app::identityColorName(identity));
+            // Each member's colour is its cluster number's (the identity + 1).
+            EXPECT_EQ(colors[m].toString().toStdString(),
+                      app::identityColorName(clusters[m].toInt() - 1));
         }
     }
-    // Reproduced by hand: each step's identities are those matched to the previous step's.
+    // Reproduced by hand: each step's clusters are numbered as matched to the previous step's
+    // (the first step's from its tree alone).
     std::vector<int> previous(10, -1);
     for (int s = 0; s < 4; ++s) {
         const QJsonObject step = steps[s].toObject();
-        std::vector<int> labels;
-        for (const auto v : step["clusters"].toArray()) labels.push_back(v.toInt());
-        std::vector<int> identities;
-        for (const auto v : step["identities"].toArray()) identities.push_back(v.toInt());
-        if (s > 0) {
-            EXPECT_EQ(prep::matchIdentities(labels, 3, previous), identities) << "step " << s;
-        }
+        const prep::MergeTree tree = test::treeOfLinkageJson(step["linkage"].toArray(), 10);
+        const std::vector<int> labels = prep::clusterLabels(tree, 3);
+        const std::vector<int> identities =
+            s == 0 ? prep::identitiesFromTree(tree, 3) : prep::matchIdentities(labels, 3, previous);
         previous = prep::memberIdentities(labels, identities);
+        std::vector<int> numbers;
+        for (const auto v : step["clusters"].toArray()) numbers.push_back(v.toInt() - 1);
+        EXPECT_EQ(numbers, previous) << "step " << s;
     }
     // The second run reads every step from the cache.
     const test::EnsilRun again = test::runEnsil(

@@ -87,10 +87,12 @@ def test_a_hand_computed_linkage_in_scipys_convention():
                                   [[0, 1, 1, 2], [2, 3, 2, 2], [4, 5, 5.5, 4]])
 
 
-def test_labels_and_colours_follow_the_tree(result):
-    labels = result.labels
-    assert list(labels) == [0, 0, 0, 1, 1, 1]
-    groups = sorted(sorted(np.flatnonzero(labels == c).tolist()) for c in range(result.k))
+def test_clusters_and_colours_follow_the_tree(result):
+    clusters = result.clusters
+    # Numbered as the legend numbers them: the larger part of a split keeps the number (ties:
+    # the part holding the lowest member), so from one tree the numbers are 1..k.
+    assert list(clusters) == [1, 1, 1, 2, 2, 2]
+    groups = sorted(sorted(np.flatnonzero(clusters == c).tolist()) for c in range(1, result.k + 1))
     assert groups == cut(result.linkage, 2)
     colors = result.colors
     assert all(len(c) == 7 and c.startswith("#") for c in colors)
@@ -254,4 +256,4 @@ def test_members_without_data_are_left_out_and_said():
         result = ens.preprocess(iso=0.5, cache=False)
     assert result.members_without_data == ["member 1"]
     assert result.members == ["member 2", "member 3", "member 4"]
-    assert result.distance_matrix.shape == (3, 3) and len(result.labels) == 3
+    assert result.distance_matrix.shape == (3, 3) and len(result.clusters) == 3

@@ -23,7 +23,7 @@ TEST(CsvExport, WritesOneQuotedLinePerMemberWithItsCluster) {
     const auto number = [&s](int m) { return s.clusterNumber(s.clusterOf(m)); };
     ASSERT_EQ(lines.size(), 5) << "header, three members, the final line break";
     EXPECT_EQ(lines[0],
-              "index,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
+              "number,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
               "selected");
     // No contour boxplot yet: its depth and flags are unknown, so empty.
     EXPECT_EQ(lines[1],

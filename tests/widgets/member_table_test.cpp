@@ -369,14 +369,16 @@ TEST_F(ShownMemberTable, LongNamesAreElidedInTheMiddleSoTheirEndsStayApart) {
     EXPECT_EQ(table->textElideMode(), Qt::ElideMiddle);
 }
 
-TEST(MemberTableModel, TheNumberColumnAgreesWithTheNamesFromTheFile) {
-    // ERA5 numbers its members 0-9 ("member 0" ...); names without a number (forecast dates)
-    // are counted from 1.
+TEST(MemberTableModel, TheNumberColumnCountsFromOneWhateverTheFileCallsItsMembers) {
+    // Issue 37: ERA5 calls its members "member 0" ... "member 9" (its `number` coordinate); the
+    // # column is ensil's number, 1..N as every output gives it, and the name the file's.
     ui::MemberSelection s;
     MemberTableModel model(&s);
     s.setMembers(namesOnly({QStringLiteral("member 0"), QStringLiteral("member 9")}));
-    EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 0);
-    EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 9);
+    EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);
+    EXPECT_EQ(model.data(model.index(1, MemberTableModel::Index), Qt::DisplayRole).toInt(), 2);
+    EXPECT_EQ(model.data(model.index(0, MemberTableModel::Name), Qt::DisplayRole).toString(),
+              QStringLiteral("member 0"));
     s.setMembers(
         namesOnly({QStringLiteral("2017-01-01T00:00"), QStringLiteral("2017-01-02T00:00")}));
     EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);

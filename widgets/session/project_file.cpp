@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QSaveFile>
 #include <QStringList>
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -278,7 +279,8 @@ QByteArray projectToJson(const SessionState& p, const QDir& projectDir) {
         {"data", dataJson(p, projectDir)},
         {"cutting_plane", QJsonObject{{"normal", vec3Json(p.render.plane.normal)},
                                       {"offset", p.render.plane.offset}}},
-        {"clusters", QJsonObject{{"hidden", intsJson(p.hiddenClusters)}}},
+        {"clusters", QJsonObject{{"hidden", intsJson(p.hiddenClusters)},
+                                 {"members", intsJson(p.memberClusters)}}},
         {"members",
          QJsonObject{{"hidden", intsJson(p.hiddenMembers)}, {"selected", intsJson(p.selection)}}},
         {"layout", QJsonObject{{"geometry", QString::fromLatin1(p.windowGeometry.toBase64())},
@@ -351,8 +353,12 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
             static_cast<float>(f.number(QStringLiteral("offset"), 0.0, -1e6, 1e6));
     }
     if (root.has(QStringLiteral("clusters"))) {
-        p.hiddenClusters =
-            root.object(QStringLiteral("clusters")).indices(QStringLiteral("hidden"));
+        const Fields f = root.object(QStringLiteral("clusters"));
+        p.hiddenClusters = f.indices(QStringLiteral("hidden"));
+        p.memberClusters = f.indices(QStringLiteral("members"));
+        if (std::ranges::find(p.memberClusters, 0) != p.memberClusters.end()) {
+            f.fail(QStringLiteral("members"), "must be cluster numbers (whole numbers from 1)");
+        }
     }
     if (root.has(QStringLiteral("members"))) {
         const Fields f = root.object(QStringLiteral("members"));

@@ -46,6 +46,11 @@ struct SessionState {
     prep::Linkage linkage = prep::Linkage::Average;
     std::vector<int> hiddenMembers;
     std::vector<int> hiddenClusters;
+    // Each member's cluster by its number when the project was saved (the stable identity + 1,
+    // METHODS.md "Numbers of members and clusters"), so that reopening numbers and colours the
+    // clusters as they were, whatever the isovalue, k and linkage changes before saving made of
+    // them. Empty: numbered from the tree. Projects keep it; the undo history does not.
+    std::vector<int> memberClusters;
     std::vector<int> selection;
     QByteArray windowGeometry;  // QMainWindow::saveGeometry / saveState, kept as they are
     QByteArray windowState;
