@@ -42,7 +42,10 @@ stage "build (asan)" cmake --build --preset asan
 # A test whose process dies only in LeakSanitizer's exit-time scan ("Tracer caught signal 11",
 # LSan's stop-the-world tracer crashing while Mesa's llvmpipe threads are torn down; the test's
 # own assertions have passed) is run once more: a test that really fails fails twice.
-stage "test (asan)" xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" ctest --preset asan --repeat until-pass:2
+# The monkey test (tests/app/monkey_test.cpp) takes 2000 random actions in the ci build (about
+# 80 s here) and 300 in this Debug sanitizer build, which runs it several times slower; longer
+# runs are by hand (README, "The monkey test").
+ENSIL_MONKEY_ACTIONS=300 stage "test (asan)" xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" ctest --preset asan --repeat until-pass:2
 
 # Each libFuzzer target (the readers, the mesh cache, projects, command-line values) on its
 # seed corpus and then 1500 inputs from a fixed seed (a fixed budget, not the clock's; the

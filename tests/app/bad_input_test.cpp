@@ -160,8 +160,9 @@ TEST(BadInput, AMemberWithoutDataIsNamedAndLeftOutOfTheClustering) {
 }
 
 TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
-    // Members 0 and 1 are valid in different halves of the grid: their distance was infinite,
-    // so the distance matrix and the last linkage height were null.
+    // The first two members are valid in different halves of the grid: their distance was
+    // infinite, so the distance matrix and the last linkage height were null. (The file names
+    // them 'member 0' and 'member 1'; their numbers are 1 and 2.)
     const QString file = kBad + "members_without_overlap.nc";
     const Outcome o = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
@@ -170,7 +171,7 @@ TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
         << o.err.toStdString();
     const QJsonObject json = jsonOf(o);
     EXPECT_FALSE(holdsNull(json)) << o.out.toStdString();
-    EXPECT_EQ(json["pairs_without_overlap"].toArray(), (QJsonArray{QJsonArray{0, 1}}));
+    EXPECT_EQ(json["pairs_without_overlap"].toArray(), (QJsonArray{QJsonArray{1, 2}}));
     // Placed as far apart as the farthest pair that was measured.
     const QJsonArray d = json["distance_matrix"].toArray();
     double farthestMeasured = 0.0;
