@@ -8,7 +8,11 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <csignal>
+#include <vector>
 
 #include "tests/support/temp_dir.h"
 #include "widgets/session/setting_table.h"
@@ -118,6 +122,47 @@ TEST(Project, DataPathsAreRelativeSoTheProjectCanMoveWithItsData) {
     ASSERT_TRUE(QDir(root).rename("a", "b"));
     const session::SessionState moved = session::loadProject(root + "/b/session.ensil");
     EXPECT_EQ(QString::fromStdString(moved.data.paths.front()), root + "/b/data/members.nc");
+}
+
+// Hidden clusters and hidden and selected members are written with the numbers the workbench
+// shows (from 1, format 3); files of formats 1 and 2 held indices from 0 and still open so.
+TEST(Project, MembersAndClustersAreSavedByTheirShownNumbersAndOlderFilesByIndex) {
+    const test::TempDir dir;
+    const QDir projectDir(QString::fromStdString(dir.path().string()));
+    session::SessionState state;
+    state.demo = true;
+    state.hiddenMembers = {0, 3};
+    state.selection = {2};
+    state.hiddenClusters = {1};
+    const QJsonObject saved =
+        QJsonDocument::fromJson(session::projectToJson(state, projectDir)).object();
+    EXPECT_EQ(saved["schema_version"].toInt(), 3);
+    EXPECT_EQ(saved["members"]["hidden"].toArray(), (QJsonArray{1, 4}));
+    EXPECT_EQ(saved["members"]["selected"].toArray(), (QJsonArray{3}));
+    EXPECT_EQ(saved["clusters"]["hidden"].toArray(), (QJsonArray{2}));
+
+    const auto read = [&](int version, const char* lists) {
+        return session::projectFromJson(
+            QByteArray(R"({"format": "ensil project", "schema_version": )") +
+                QByteArray::number(version) + R"(, "data": {"demo": {}}, )" + lists + "}",
+            projectDir);
+    };
+    const char* lists =
+        R"("members": {"hidden": [1, 4], "selected": [3]}, "clusters": {"hidden": [2]})";
+    const session::SessionState now = read(3, lists);
+    EXPECT_EQ(now.hiddenMembers, (std::vector<int>{0, 3}));
+    EXPECT_EQ(now.selection, (std::vector<int>{2}));
+    EXPECT_EQ(now.hiddenClusters, (std::vector<int>{1}));
+    const session::SessionState older = read(2, lists);
+    EXPECT_EQ(older.hiddenMembers, (std::vector<int>{1, 4}));
+    EXPECT_EQ(older.selection, (std::vector<int>{3}));
+    EXPECT_EQ(older.hiddenClusters, (std::vector<int>{2}));
+    try {
+        (void)read(3, R"("members": {"selected": [0]})");
+        ADD_FAILURE() << "member 0 was taken";
+    } catch (const session::ProjectError& e) {
+        EXPECT_STREQ(e.what(), "members.selected must be a list of numbers (whole numbers from 1)");
+    }
 }
 
 TEST(Project, AMinimalFileOpensWithDefaultsForEverythingLeftOut) {

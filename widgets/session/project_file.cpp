@@ -26,6 +26,14 @@ QJsonArray intsJson(const std::vector<int>& values) {
     return array;
 }
 
+// Indices from 0 as the numbers from 1 a user reads in the workbench.
+std::vector<int> numbersOf(const std::vector<int>& indices) {
+    std::vector<int> numbers;
+    numbers.reserve(indices.size());
+    for (const int i : indices) numbers.push_back(i + 1);
+    return numbers;
+}
+
 // Reads one JSON object, naming the field in every complaint ("rendering.thickness must be ...").
 class Fields {
 public:
@@ -85,6 +93,20 @@ public:
             v[i] = static_cast<float>(a[i].toDouble());
         }
         return v;
+    }
+    // Numbers from 1 (members and clusters as the workbench numbers them), as indices from 0.
+    [[nodiscard]] std::vector<int> indicesOfNumbers(const QString& key) const {
+        std::vector<int> out;
+        if (!has(key)) return out;
+        if (!value(key).isArray()) fail(key, "must be a list of numbers");
+        for (const auto& v : value(key).toArray()) {
+            const double d = v.toDouble(0.0);
+            if (!v.isDouble() || d < 1 || d != std::floor(d) || d > 1e6) {
+                fail(key, "must be a list of numbers (whole numbers from 1)");
+            }
+            out.push_back(static_cast<int>(d) - 1);
+        }
+        return out;
     }
     [[nodiscard]] std::vector<int> indices(const QString& key) const {
         std::vector<int> out;
@@ -279,10 +301,11 @@ QByteArray projectToJson(const SessionState& p, const QDir& projectDir) {
         {"data", dataJson(p, projectDir)},
         {"cutting_plane", QJsonObject{{"normal", vec3Json(p.render.plane.normal)},
                                       {"offset", p.render.plane.offset}}},
-        {"clusters", QJsonObject{{"hidden", intsJson(p.hiddenClusters)},
+        // Numbers from 1, as the workbench shows members and clusters (format version 3).
+        {"clusters", QJsonObject{{"hidden", intsJson(numbersOf(p.hiddenClusters))},
                                  {"members", intsJson(p.memberClusters)}}},
-        {"members",
-         QJsonObject{{"hidden", intsJson(p.hiddenMembers)}, {"selected", intsJson(p.selection)}}},
+        {"members", QJsonObject{{"hidden", intsJson(numbersOf(p.hiddenMembers))},
+                                {"selected", intsJson(numbersOf(p.selection))}}},
         {"layout", QJsonObject{{"geometry", QString::fromLatin1(p.windowGeometry.toBase64())},
                                {"state", QString::fromLatin1(p.windowState.toBase64())}}}};
     if (p.isovalue) root[QStringLiteral("isovalue")] = *p.isovalue;
@@ -354,7 +377,8 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
     }
     if (root.has(QStringLiteral("clusters"))) {
         const Fields f = root.object(QStringLiteral("clusters"));
-        p.hiddenClusters = f.indices(QStringLiteral("hidden"));
+        p.hiddenClusters = version >= 3 ? f.indicesOfNumbers(QStringLiteral("hidden"))
+                                        : f.indices(QStringLiteral("hidden"));
         p.memberClusters = f.indices(QStringLiteral("members"));
         if (std::ranges::find(p.memberClusters, 0) != p.memberClusters.end()) {
             f.fail(QStringLiteral("members"), "must be cluster numbers (whole numbers from 1)");
@@ -362,8 +386,13 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
     }
     if (root.has(QStringLiteral("members"))) {
         const Fields f = root.object(QStringLiteral("members"));
-        p.hiddenMembers = f.indices(QStringLiteral("hidden"));
-        p.selection = f.indices(QStringLiteral("selected"));
+        if (version >= 3) {
+            p.hiddenMembers = f.indicesOfNumbers(QStringLiteral("hidden"));
+            p.selection = f.indicesOfNumbers(QStringLiteral("selected"));
+        } else {
+            p.hiddenMembers = f.indices(QStringLiteral("hidden"));
+            p.selection = f.indices(QStringLiteral("selected"));
+        }
     }
     if (root.has(QStringLiteral("layout"))) {
         const Fields f = root.object(QStringLiteral("layout"));

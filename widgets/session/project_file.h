@@ -19,9 +19,11 @@
 namespace ensil::session {
 
 // Version 1: the first format. Version 2: the camera's angles and projection are saved even
-// when the camera was not placed (a picture drawn from the command line). A reader of version
-// N opens files of versions 1..N.
-inline constexpr int kProjectSchemaVersion = 2;
+// when the camera was not placed (a picture drawn from the command line). Version 3: hidden
+// clusters and hidden and selected members are saved by the numbers the workbench shows them
+// with (from 1), no longer by indices from 0. A reader of version N opens files of versions
+// 1..N.
+inline constexpr int kProjectSchemaVersion = 3;
 inline constexpr const char* kProjectSuffix = "ensil";
 
 // Why a project file cannot be used: `line` is 1-based (0 when the problem is a field, which
