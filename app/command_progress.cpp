@@ -19,6 +19,12 @@ CommandProgress::CommandProgress(QTextStream& err, QString command, bool shown, 
 
 CommandProgress::~CommandProgress() { endLine(); }
 
+QCommandLineOption CommandProgress::quietOption() {
+    return {QStringLiteral("quiet"),
+            QStringLiteral("Print no progress. Progress is printed on stderr only when it is a "
+                           "terminal and the run lasts over a second.")};
+}
+
 bool CommandProgress::shownOnThisTerminal(bool quiet) {
     return !quiet && ::isatty(STDERR_FILENO) == 1;
 }

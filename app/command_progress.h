@@ -5,6 +5,7 @@
 // workers report through callback().
 #pragma once
 
+#include <QCommandLineOption>
 #include <QString>
 #include <QTextStream>
 #include <chrono>
@@ -28,6 +29,8 @@ public:
 
     // Whether progress is shown for a run: stderr is a terminal and `quiet` is false.
     [[nodiscard]] static bool shownOnThisTerminal(bool quiet);
+    // --quiet, the option every command that shows progress takes.
+    [[nodiscard]] static QCommandLineOption quietOption();
 
     // `stage` names what runs ("reading", "preprocessing"); each stage runs from 0 to 1.
     void report(const QString& stage, double fraction);

@@ -64,10 +64,7 @@ struct Options {
                        "instead, with the same results but no contour boxplot; --iso is then "
                        "needed. E.g. 1GiB, 512M."),
         QStringLiteral("SIZE")};
-    QCommandLineOption quiet{QStringLiteral("quiet"),
-                             QStringLiteral("Print no progress. Progress is printed on stderr "
-                                            "only when it is a terminal and the run lasts over "
-                                            "a second.")};
+    QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
 // Clusters and linkage, with their ranges from the one setting table.

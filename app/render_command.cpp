@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <optional>
 
+#include "app/command_progress.h"
 #include "app/data_selection_options.h"
 #include "app/headless/session_renderer.h"
 #include "app/headless/time_series.h"
@@ -63,6 +64,7 @@ struct Options {
         "the groups. --out must then hold one printf-style number, e.g. frame_%03d.png, which "
         "becomes the time index.",
         "all|A:B"};
+    QCommandLineOption quiet = CommandProgress::quietOption();
     QCommandLineOption saveProject{
         "save-project",
         "Also write the session drawn as a project: `ensil render P.ensil` then draws the same "
@@ -198,7 +200,8 @@ bool isFramePattern(const QString& pattern) {
 // next one's, only the time index changes; each step's clusters are matched to the previous,
 // and the floor's colours span one scale over all the steps.
 int renderTimes(const session::SessionState& first, RenderRequest request, const StepRange& range,
-                const QString& pattern, QTextStream& out, QTextStream& err) {
+                const QString& pattern, CommandProgress& progress, QTextStream& out,
+                QTextStream& err) {
     session::SessionState state = first;
     // One colour scale for the floor over every frame, so that a colour means the same value
     // in each; the colour bar says so.
@@ -210,7 +213,13 @@ int renderTimes(const session::SessionState& first, RenderRequest request, const
     }
     for (std::size_t t = range.first; t <= range.last; ++t) {
         state.data.timeIndex = t;
+        const std::string step = "time step " + std::to_string(t - range.first + 1) + " of " +
+                                 std::to_string(range.count()) + ", ";
+        request.progress = [&progress, step](const std::string& stage, double fraction) {
+            progress.report(QString::fromStdString(step + stage), fraction);
+        };
         const RenderOutcome result = renderSession(state, request);
+        progress.endLine();
         const QString path = range.count() == 1 && !isFramePattern(pattern)
                                  ? pattern
                                  : QString::asprintf(pattern.toUtf8().constData(),
@@ -242,7 +251,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     selectionOptions.addTo(parser);
     const Options o;
     parser.addOptions({o.iso, o.output, o.size, o.plane, o.removal, o.noLabels, o.view, o.frames,
-                       o.noCache, o.demo, o.json, o.saveProject, o.times});
+                       o.noCache, o.demo, o.json, o.saveProject, o.times, o.quiet});
     sceneOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("render"), out, err)) return *done;
 
@@ -317,6 +326,8 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         err << "ensil render: " << problem << "\n";
         return 2;
     }
+    CommandProgress progress(err, QStringLiteral("ensil render"),
+                             CommandProgress::shownOnThisTerminal(parser.isSet(o.quiet)));
     try {
         if (fromProject)
             state = session::loadProject(QString::fromStdString(selection->paths.front()));
@@ -324,8 +335,14 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         request.height = size->second;
         request.frames = static_cast<int>(*frames);
         request.useCache = !parser.isSet(o.noCache);
-        if (range) return renderTimes(*state, request, *range, parser.value(o.output), out, err);
+        if (range) {
+            return renderTimes(*state, request, *range, parser.value(o.output), progress, out, err);
+        }
+        request.progress = [&progress](const std::string& stage, double fraction) {
+            progress.report(QString::fromStdString(stage), fraction);
+        };
         const RenderOutcome result = renderSession(*state, request);
+        progress.endLine();
         if (!result.image.save(parser.value(o.output))) {
             err << "ensil render: cannot write '" << parser.value(o.output) << "'\n";
             return 1;
@@ -363,6 +380,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         }
         return 0;
     } catch (const std::exception& e) {
+        progress.endLine();
         err << "ensil render: " << e.what() << "\n";
         return 1;
     }

@@ -18,6 +18,7 @@
 #include <span>
 #include <string>
 
+#include "app/command_progress.h"
 #include "app/data_selection_options.h"
 #include "app/subcommand.h"
 #include "app/version.h"
@@ -45,6 +46,7 @@ struct Options {
                                              "file is replaced)."),
                               QStringLiteral("STATS.nc")};
     QCommandLineOption json{QStringLiteral("json"), QStringLiteral("Print one JSON object.")};
+    QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
 double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
@@ -289,7 +291,7 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     const DataSelectionOptions selectionOptions;
     selectionOptions.addTo(parser);
     const Options o;
-    parser.addOptions({o.iso, o.members, o.output, o.json});
+    parser.addOptions({o.iso, o.members, o.output, o.json, o.quiet});
     if (auto done = parseSubcommand(parser, args, QStringLiteral("stats"), out, err)) return *done;
 
     QString problem;
@@ -343,14 +345,19 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     r.path = outPath;
     r.isovalue = *iso;
     data::Ensemble ensemble;
+    CommandProgress progress(err, QStringLiteral("ensil stats"),
+                             CommandProgress::shownOnThisTerminal(parser.isSet(o.quiet)));
     try {
         stage.start();
-        ensemble = data::openEnsemble(*selection);
+        ensemble = data::openEnsemble(*selection, {}, progress.callback(QStringLiteral("reading")));
+        progress.endLine();
         r.seconds["load"] = seconds(stage);
     } catch (const data::Error& e) {
+        progress.endLine();
         err << "ensil stats: " << e.what() << "\n";
         return 1;
     } catch (const std::bad_alloc&) {
+        progress.endLine();
         err << "ensil stats: not enough memory to read " << fileNames << "\n";
         return 1;
     }
@@ -380,8 +387,9 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
 
     try {
         stage.restart();
-        const prep::EnsembleStatistics stats =
-            prep::computeEnsembleStatistics(ensemble, c, *chosen);
+        const prep::EnsembleStatistics stats = prep::computeEnsembleStatistics(
+            ensemble, c, *chosen, {}, progress.callback(QStringLiteral("statistics")));
+        progress.endLine();
         r.seconds["statistics"] = seconds(stage);
 
         data::StatisticsFile file;
@@ -416,9 +424,11 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
         data::writeStatisticsNetcdf(file, outPath.toStdString());
         r.seconds["write"] = seconds(stage);
     } catch (const data::Error& e) {
+        progress.endLine();
         err << "ensil stats: " << e.what() << "\n";
         return 1;
     } catch (const std::bad_alloc&) {
+        progress.endLine();
         err << "ensil stats: not enough memory for the statistics of " << chosen->size()
             << " members of '" << r.variable << "' on " << r.grid[0] << " x " << r.grid[1] << " x "
             << r.grid[2] << " points\n";

@@ -33,10 +33,17 @@ std::string demoSourceKey(const data::DemoEnsembleParams& params) {
            " seed=" + std::to_string(params.seed);
 }
 
+namespace {
+data::Progress stageProgress(const RenderRequest& request, const std::string& stage) {
+    if (!request.progress) return {};
+    return [&request, stage](double fraction) { request.progress(stage, fraction); };
+}
+}  // namespace
+
 RenderOutcome renderSession(const session::SessionState& state, const RenderRequest& request) {
     auto ensemble = std::make_shared<const data::Ensemble>(
         state.demo ? data::makeDemoEnsemble(state.demoParams).ensemble
-                   : data::openEnsemble(state.data));
+                   : data::openEnsemble(state.data, {}, stageProgress(request, "reading")));
     return renderEnsemble(
         std::move(ensemble),
         state.demo ? demoSourceKey(state.demoParams) : data::sourceIdentity(state.data), state,
@@ -70,7 +77,7 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     job.linkage = state.linkage;
     if (request.useCache && !sourceKey.empty()) job.cacheDirectory = defaultMeshCacheDirectory();
     job.sourceKey = sourceKey + data::membersWithoutDataKey(withoutData);
-    IsovalueOutcome outcome = runIsovalueJob(job);
+    IsovalueOutcome outcome = runIsovalueJob(job, {}, stageProgress(request, "preprocessing"));
 
     const gl::OffscreenContext context;
     QOpenGLFramebufferObject target(request.width, request.height,

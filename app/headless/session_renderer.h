@@ -8,6 +8,7 @@
 
 #include <QImage>
 #include <cstddef>
+#include <functional>
 #include <glm/vec4.hpp>
 #include <memory>
 #include <optional>
@@ -36,6 +37,9 @@ struct RenderRequest {
     // to its colour bar's caption. None: the floor spans its own values.
     std::optional<std::pair<float, float>> floorRange;
     std::string floorRangeNote;
+    // How far the picture is, for a long run: `stage` is "reading" or "preprocessing", each
+    // from 0 to 1. Called on the calling thread or on the job's workers. None: not reported.
+    std::function<void(const std::string& stage, double fraction)> progress;
 };
 
 struct RenderOutcome {

@@ -10,7 +10,13 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <map>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "app/headless/session_renderer.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 
@@ -121,4 +127,37 @@ TEST(HeadlessRender, TheWorkbenchSaysItNeedsADisplayServer) {
         EXPECT_TRUE(errors.contains(reason)) << errors.toStdString();
         EXPECT_TRUE(errors.contains(QLatin1String("xvfb-run -a ensil"))) << errors.toStdString();
     }
+}
+
+// `ensil render` shows how far it is from what renderSession reports: reading the files, then
+// preprocessing the isovalue, each run through to the end.
+TEST(HeadlessRender, ReportsReadingThenPreprocessingEachToTheEnd) {
+    session::SessionState state;
+    state.data.paths = {std::string(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc")};
+    state.data.variable = "t";
+    state.isovalue = 260.0F;
+    state.clusters = 3;
+    app::RenderRequest request;
+    request.width = 160;
+    request.height = 120;
+    request.useCache = false;
+    std::mutex mutex;
+    std::vector<std::pair<std::string, double>> reports;
+    request.progress = [&](const std::string& stage, double fraction) {
+        const std::lock_guard lock(mutex);
+        reports.emplace_back(stage, fraction);
+    };
+    const app::RenderOutcome outcome = app::renderSession(state, request);
+    ASSERT_FALSE(outcome.image.isNull());
+
+    std::vector<std::string> stages;
+    std::map<std::string, double> last;
+    for (const auto& [stage, fraction] : reports) {
+        if (stages.empty() || stages.back() != stage) stages.push_back(stage);
+        EXPECT_GE(fraction, last[stage]) << stage << " went back";
+        last[stage] = fraction;
+    }
+    EXPECT_EQ(stages, (std::vector<std::string>{"reading", "preprocessing"}));
+    EXPECT_DOUBLE_EQ(last["reading"], 1.0);
+    EXPECT_DOUBLE_EQ(last["preprocessing"], 1.0);
 }
