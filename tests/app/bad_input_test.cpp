@@ -22,7 +22,6 @@ namespace {
 const QString kBad = QStringLiteral(ENSIL_SHARED_DATA_DIR "/../bad/");
 
 using Outcome = test::EnsilRun;
-const auto run = test::runEnsil;
 
 struct Case {
     const char* file;
@@ -70,7 +69,7 @@ TEST(BadInput, EveryCorruptFileIsRefusedClearlyByInfoAndPreprocess) {
         const QString path = kBad + QLatin1String(c.file);
         for (const QStringList& command :
              {QStringList{"info", path}, QStringList{"preprocess", path, "--iso", "1"}}) {
-            const Outcome o = run(command);
+            const Outcome o = test::runEnsil(command);
             EXPECT_EQ(o.code, 1) << c.file << " " << command.front().toStdString();
             EXPECT_TRUE(o.err.contains(QLatin1String(c.file))) << o.err.toStdString();
             EXPECT_TRUE(o.err.contains(QLatin1String(c.phrase))) << o.err.toStdString();
@@ -80,12 +79,13 @@ TEST(BadInput, EveryCorruptFileIsRefusedClearlyByInfoAndPreprocess) {
 
 TEST(BadInput, MemberFilesHoldingDifferentVariablesAreNotMixed) {
     // Values of `t` were once reported as `u`, with exit 0.
-    const Outcome o = run({"info", kBad + "member_u.nc", kBad + "member_t.nc"});
+    const Outcome o = test::runEnsil({"info", kBad + "member_u.nc", kBad + "member_t.nc"});
     EXPECT_EQ(o.code, 1);
     EXPECT_TRUE(o.err.contains("holds 't' where")) << o.err.toStdString();
     EXPECT_TRUE(o.err.contains("--var")) << o.err.toStdString();
     // Naming the variable is the way out: then the file without it is named.
-    const Outcome named = run({"info", kBad + "member_u.nc", kBad + "member_t.nc", "--var", "u"});
+    const Outcome named =
+        test::runEnsil({"info", kBad + "member_u.nc", kBad + "member_t.nc", "--var", "u"});
     EXPECT_NE(named.code, 0);
     EXPECT_TRUE(named.err.contains("member_t.nc")) << named.err.toStdString();
 }
@@ -95,7 +95,7 @@ TEST(BadInput, ANamedPipeIsRefusedInsteadOfWaitedOn) {
     const std::string pipe = dir.file("members.nc");
     ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
     // Before, opening it to read its first bytes blocked forever.
-    const Outcome o = run({"info", QString::fromStdString(pipe)});
+    const Outcome o = test::runEnsil({"info", QString::fromStdString(pipe)});
     EXPECT_EQ(o.code, 1);
     EXPECT_TRUE(o.err.contains("is not a regular file")) << o.err.toStdString();
 }
@@ -104,15 +104,15 @@ TEST(BadInput, AnEmptyOrUnusableCacheFolderIsSaid) {
     const QString era5 = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
     // '' once wrote the cache into the current folder.
     const Outcome empty =
-        run({"preprocess", era5, "--var", "t", "--iso", "260", "--cache-dir", ""});
+        test::runEnsil({"preprocess", era5, "--var", "t", "--iso", "260", "--cache-dir", ""});
     EXPECT_EQ(empty.code, 2);
     EXPECT_TRUE(empty.err.contains("--cache-dir '' is refused")) << empty.err.toStdString();
     // A file where the folder should be: the run goes on, and says it stored nothing.
     const test::TempDir dir;
     const std::string file = dir.file("not-a-folder");
     { std::ofstream(file) << "x"; }
-    const Outcome unusable = run({"preprocess", era5, "--var", "t", "--iso", "260", "--cache-dir",
-                                  QString::fromStdString(file)});
+    const Outcome unusable = test::runEnsil({"preprocess", era5, "--var", "t", "--iso", "260",
+                                             "--cache-dir", QString::fromStdString(file)});
     EXPECT_EQ(unusable.code, 0) << unusable.err.toStdString();
     EXPECT_TRUE(unusable.err.contains("warning: cannot write the preprocessing cache"))
         << unusable.err.toStdString();
@@ -121,12 +121,15 @@ TEST(BadInput, AnEmptyOrUnusableCacheFolderIsSaid) {
 TEST(BadInput, TheDefaultClusterCountFitsASmallEnsembleAndAnAskedOneIsExplained) {
     const test::TempDir dir;
     const QString file = QString::fromStdString(dir.file("four.nc"));
-    ASSERT_EQ(run({"generate", "--members", "4", "--grid", "24x12x4", "--out", file}).code, 0);
+    ASSERT_EQ(
+        test::runEnsil({"generate", "--members", "4", "--grid", "24x12x4", "--out", file}).code, 0);
     // The default of 5 clusters on 4 members once failed, blaming the user.
-    const Outcome fits = run({"preprocess", file, "--iso", "20", "--no-cache", "--json"});
+    const Outcome fits =
+        test::runEnsil({"preprocess", file, "--iso", "20", "--no-cache", "--json"});
     ASSERT_EQ(fits.code, 0) << fits.err.toStdString();
     EXPECT_TRUE(fits.out.contains("\"k\":4")) << fits.out.left(400).toStdString();
-    const Outcome asked = run({"preprocess", file, "--iso", "20", "--no-cache", "--clusters", "6"});
+    const Outcome asked =
+        test::runEnsil({"preprocess", file, "--iso", "20", "--no-cache", "--clusters", "6"});
     EXPECT_EQ(asked.code, 2);
     EXPECT_TRUE(asked.err.contains("--clusters 6 is more than the 4 members"))
         << asked.err.toStdString();
@@ -135,7 +138,7 @@ TEST(BadInput, TheDefaultClusterCountFitsASmallEnsembleAndAnAskedOneIsExplained)
 TEST(BadInput, AMemberWithoutDataIsNamedAndLeftOutOfTheClustering) {
     // Member 2 is all _FillValue: its distances and the linkage heights were once null.
     const QString file = kBad + "member_without_data.nc";
-    const Outcome o = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    const Outcome o = test::runEnsil({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     EXPECT_TRUE(o.err.contains("warning: 'member 2' of 't' has no valid value"))
         << o.err.toStdString();
@@ -152,7 +155,7 @@ TEST(BadInput, AMemberWithoutDataIsNamedAndLeftOutOfTheClustering) {
     EXPECT_EQ(json["clusters"].toArray().size(), 3);
     EXPECT_EQ(json["colors"].toArray().size(), 3);
     // `ensil info` says so too.
-    const Outcome info = run({"info", file, "--json"});
+    const Outcome info = test::runEnsil({"info", file, "--json"});
     ASSERT_EQ(info.code, 0) << info.err.toStdString();
     EXPECT_EQ(jsonOf(info)["members_without_data"].toArray(), QJsonArray{"member 2"});
     EXPECT_TRUE(info.err.contains("warning: 'member 2' of 't' has no valid value"))
@@ -164,7 +167,7 @@ TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
     // infinite, so the distance matrix and the last linkage height were null. (The file names
     // them 'member 0' and 'member 1'; their numbers are 1 and 2.)
     const QString file = kBad + "members_without_overlap.nc";
-    const Outcome o = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    const Outcome o = test::runEnsil({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     EXPECT_TRUE(o.err.contains("warning: one pair of members shares no grid point where both have "
                                "a valid value ('member 0' and 'member 1')"))
@@ -190,7 +193,7 @@ TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
 TEST(BadInput, InfinitiesInTheDataAreMissingValuesAndSaid) {
     // One +inf and one -inf: the range was once [0, null] and the histogram cast infinity.
     const QString file = kBad + "infinite_values.nc";
-    const Outcome info = run({"info", file, "--json"});
+    const Outcome info = test::runEnsil({"info", file, "--json"});
     ASSERT_EQ(info.code, 0) << info.err.toStdString();
     const QJsonObject json = jsonOf(info);
     EXPECT_FALSE(holdsNull(json["range"])) << info.out.toStdString();
@@ -202,11 +205,11 @@ TEST(BadInput, InfinitiesInTheDataAreMissingValuesAndSaid) {
     EXPECT_EQ(json["infinite"].toInt(), 2);
     EXPECT_EQ(json["missing"].toInt(), 2) << "counted with the missing values";
     EXPECT_TRUE(info.err.contains("2 values of 't' are infinite")) << info.err.toStdString();
-    const Outcome text = run({"info", file});
+    const Outcome text = test::runEnsil({"info", file});
     ASSERT_EQ(text.code, 0);
     EXPECT_TRUE(text.out.contains("Values:     0 .. 10 K")) << text.out.toStdString();
 
-    const Outcome prep = run({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
+    const Outcome prep = test::runEnsil({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
     ASSERT_EQ(prep.code, 0) << prep.err.toStdString();
     EXPECT_FALSE(holdsNull(jsonOf(prep))) << prep.out.toStdString();
     EXPECT_TRUE(prep.err.contains("2 values of 't' are infinite")) << prep.err.toStdString();

@@ -20,7 +20,7 @@ struct Opened {
     app::PointContext context() const { return {&ensemble, &moments.mean, &projection, &frame}; }
 };
 
-Opened open(const char* file, const char* variable, const char* memberDim = "") {
+Opened openWithContext(const char* file, const char* variable, const char* memberDim = "") {
     data::Ensemble e = data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + file},
                                            .variable = variable,
                                            .memberDimension = memberDim});
@@ -32,7 +32,7 @@ Opened open(const char* file, const char* variable, const char* memberDim = "") 
 }  // namespace
 
 TEST(PointDescription, ASurfacePointSaysPlaceLevelAndTheMembersAndMeansValues) {
-    const Opened era5 = open("era5_eda_members.nc", "t");
+    const Opened era5 = openWithContext("era5_eda_members.nc", "t");
     const data::Grid& g = era5.ensemble.grid;
     // Grid point (lon index 10, lat index 20, level index 0): 30 E, 30 N.
     const std::size_t i = 10, j = 20, k = 0;
@@ -53,7 +53,7 @@ TEST(PointDescription, ASurfacePointSaysPlaceLevelAndTheMembersAndMeansValues) {
 }
 
 TEST(PointDescription, OnAFilledCutFaceItSaysTheSectionsFieldAndValueThere) {
-    const Opened era5 = open("era5_eda_members.nc", "t");
+    const Opened era5 = openWithContext("era5_eda_members.nc", "t");
     const data::Grid& g = era5.ensemble.grid;
     app::SectionSources sources;
     sources.ensemble = &era5.ensemble;
@@ -81,7 +81,7 @@ TEST(PointDescription, OnAFilledCutFaceItSaysTheSectionsFieldAndValueThere) {
 TEST(PointDescription, LongitudesReadEastAndWestAndRotatedGridsGiveTrueDegrees) {
     EXPECT_EQ(app::formatLonLat(357.0, -30.0), QStringLiteral("30.00\u00b0 S, 3.00\u00b0 W"));
     EXPECT_EQ(app::formatLonLat(30.0, 30.0), QStringLiteral("30.00\u00b0 N, 30.00\u00b0 E"));
-    const Opened uk = open("uk_hires.nc", "air_potential_temperature", "time");
+    const Opened uk = openWithContext("uk_hires.nc", "air_potential_temperature", "time");
     gl::PickResult floor;
     floor.floor = uk.frame.indexToDisplay({0.0F, 0.0F, 0.0F});
     const QString text = app::describePoint(uk.context(), floor);

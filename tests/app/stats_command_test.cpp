@@ -26,7 +26,6 @@
 using namespace ensil;
 
 namespace {
-const auto run = test::runEnsil;
 const QString kEra5 = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
 
 QJsonObject jsonOf(const test::EnsilRun& o) {
@@ -225,7 +224,7 @@ struct Generated {
     Generated() {
         input = QString::fromStdString(dir.file("four.nc"));
         const test::EnsilRun g =
-            run({"generate", "--members", "4", "--grid", "24x12x4", "--out", input});
+            test::runEnsil({"generate", "--members", "4", "--grid", "24x12x4", "--out", input});
         EXPECT_EQ(g.code, 0) << g.err.toStdString();
         ensemble = data::openEnsemble({.paths = {input.toStdString()}});
         isovalue = ensemble.members[1].values[ensemble.grid.index(12, 6, 2)];
@@ -242,7 +241,7 @@ TEST(StatsCommand, EveryFieldOfTheFileIsTheStatisticsOfTheMembers) {
     ASSERT_EQ(gen.ensemble.memberCount(), 4U);
     const QString out = gen.out("stats.nc");
     const test::EnsilRun o =
-        run({"stats", gen.input, "--iso", gen.isoText, "--out", out, "--json"});
+        test::runEnsil({"stats", gen.input, "--iso", gen.isoText, "--out", out, "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     EXPECT_TRUE(o.err.isEmpty()) << o.err.toStdString();
 
@@ -314,8 +313,8 @@ TEST(StatsCommand, EveryFieldOfTheFileIsTheStatisticsOfTheMembers) {
 TEST(StatsCommand, MembersListedAreTheOnlyOnesSummarised) {
     const Generated gen;
     const QString out = gen.out("two.nc");
-    const test::EnsilRun o =
-        run({"stats", gen.input, "--iso", gen.isoText, "--members", "1,3", "--out", out, "--json"});
+    const test::EnsilRun o = test::runEnsil(
+        {"stats", gen.input, "--iso", gen.isoText, "--members", "1,3", "--out", out, "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     const data::Grid& g = gen.ensemble.grid;
     const StatsFile file(out.toStdString());
@@ -333,8 +332,8 @@ TEST(StatsCommand, MembersListedAreTheOnlyOnesSummarised) {
 
     // A range, and spaces as a user may type them.
     const QString threeOut = gen.out("three.nc");
-    const test::EnsilRun range =
-        run({"stats", gen.input, "--iso", gen.isoText, "--members", "2 - 4", "--out", threeOut});
+    const test::EnsilRun range = test::runEnsil(
+        {"stats", gen.input, "--iso", gen.isoText, "--members", "2 - 4", "--out", threeOut});
     ASSERT_EQ(range.code, 0) << range.err.toStdString();
     const StatsFile three(threeOut.toStdString());
     expectFieldsMatch(readFields(three, g), gen.ensemble, {1, 2, 3}, gen.isovalue);
@@ -356,8 +355,8 @@ TEST(StatsCommand, MissingValuesAndAMemberWithoutDataAreLeftOut) {
     const data::Ensemble read = data::openEnsemble({.paths = {input}});
     const float c = read.members[1].values[e.grid.index(3, 2, 1)];
     const QString out = QString::fromStdString(dir.file("stats.nc"));
-    const test::EnsilRun o =
-        run({"stats", QString::fromStdString(input), "--iso", shortest(c), "--out", out, "--json"});
+    const test::EnsilRun o = test::runEnsil(
+        {"stats", QString::fromStdString(input), "--iso", shortest(c), "--out", out, "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     EXPECT_TRUE(o.err.contains("warning: 'member 3' of 'wind_speed' has no valid value"))
         << o.err.toStdString();
@@ -373,8 +372,8 @@ TEST(StatsCommand, MissingValuesAndAMemberWithoutDataAreLeftOut) {
     EXPECT_EQ(file.text("", "members"), "member 1, member 2, member 4");
 
     // Listing the member without data is refused.
-    const test::EnsilRun listed = run({"stats", QString::fromStdString(input), "--iso", shortest(c),
-                                       "--members", "2-3", "--out", out});
+    const test::EnsilRun listed = test::runEnsil({"stats", QString::fromStdString(input), "--iso",
+                                                  shortest(c), "--members", "2-3", "--out", out});
     EXPECT_EQ(listed.code, 2);
     EXPECT_TRUE(listed.err.contains("member 3 ('member 3') has no valid value"))
         << listed.err.toStdString();
@@ -384,7 +383,7 @@ TEST(StatsCommand, Era5TemperatureAt260KReadsBackThroughEnsil) {
     test::TempDir dir;
     const QString out = QString::fromStdString(dir.file("era5_t_stats.nc"));
     const test::EnsilRun o =
-        run({"stats", kEra5, "--var", "t", "--iso", "260", "--out", out, "--json"});
+        test::runEnsil({"stats", kEra5, "--var", "t", "--iso", "260", "--out", out, "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
     EXPECT_EQ(jsonOf(o)["member_count"].toInt(), 10);
     const data::Ensemble t = data::openEnsemble({.paths = {kEra5.toStdString()}, .variable = "t"});
@@ -466,7 +465,7 @@ TEST(StatsCommand, BadArgumentsAreRefusedNamingWhatIsWrong) {
          "Unknown option 'bogus'"},
     };
     for (const Case& c : cases) {
-        const test::EnsilRun o = run(c.args);
+        const test::EnsilRun o = test::runEnsil(c.args);
         const std::string command = c.args.join(' ').toStdString();
         EXPECT_EQ(o.code, c.code) << command << "\n" << o.err.toStdString();
         EXPECT_TRUE(o.err.contains(QLatin1String(c.phrase))) << command << "\n"
@@ -474,10 +473,10 @@ TEST(StatsCommand, BadArgumentsAreRefusedNamingWhatIsWrong) {
         EXPECT_TRUE(o.err.startsWith("ensil stats: ")) << command << "\n" << o.err.toStdString();
     }
     // The range of the values is named, and 99's message says what the file holds.
-    const test::EnsilRun outside = run(cases[2].args);
+    const test::EnsilRun outside = test::runEnsil(cases[2].args);
     EXPECT_TRUE(outside.err.contains("m s-1): every member is on one side of it"))
         << outside.err.toStdString();
-    const test::EnsilRun tooHigh = run(cases[7].args);
+    const test::EnsilRun tooHigh = test::runEnsil(cases[7].args);
     EXPECT_TRUE(tooHigh.err.contains("holds 4 members of 'wind_speed' (1 to 4)"))
         << tooHigh.err.toStdString();
     EXPECT_FALSE(std::filesystem::exists(out.toStdString())) << "no file for a refused command";
@@ -486,13 +485,13 @@ TEST(StatsCommand, BadArgumentsAreRefusedNamingWhatIsWrong) {
 }
 
 TEST(StatsCommand, HelpNamesEveryOption) {
-    const test::EnsilRun help = run({"stats", "--help"});
+    const test::EnsilRun help = test::runEnsil({"stats", "--help"});
     EXPECT_EQ(help.code, 0);
     for (const char* option : {"--iso", "--members", "--out", "--json", "--var", "--member-dim",
                                "--time-index", "stats [options] PATH..."}) {
         EXPECT_TRUE(help.out.contains(QLatin1String(option))) << option;
     }
-    EXPECT_TRUE(run({"--help"}).out.contains("stats"));
+    EXPECT_TRUE(test::runEnsil({"--help"}).out.contains("stats"));
 }
 
 TEST(StatsCommand, MemberListsParseAsUsersWriteThem) {

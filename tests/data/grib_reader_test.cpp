@@ -14,6 +14,7 @@
 #include "data/error.h"
 #include "tests/data/grib_test_file.h"
 #include "tests/data/reader_test_helpers.h"
+#include "tests/support/shared_data.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -22,7 +23,7 @@ using test::GribKey;
 
 namespace {
 
-std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+using test::sharedDataFile;
 
 data::DataSelection select(const std::string& path, const std::string& variable = {},
                            std::size_t timeIndex = 0) {
@@ -115,8 +116,8 @@ void expectValues(const data::Ensemble& e,
 }  // namespace
 
 TEST(GribReader, Era5OpensAsTheSameEnsembleAsItsNetcdfConversion) {
-    const std::string grib = shared("era5-levels-members.grib");
-    const std::string nc = shared("era5_eda_members.nc");
+    const std::string grib = sharedDataFile("era5-levels-members.grib");
+    const std::string nc = sharedDataFile("era5_eda_members.nc");
     for (const char* variable : {"z", "t"}) {
         const double tolerance = packingError(grib, variable);
         ASSERT_GT(tolerance, 0.0);

@@ -7,13 +7,14 @@
 #include <cmath>
 
 #include "data/ensemble_reader.h"
-#include "tests/data/reader_test_helpers.h"
 #include "data/error.h"
+#include "tests/data/reader_test_helpers.h"
+#include "tests/support/shared_data.h"
 
 using namespace ensil;
 
 namespace {
-std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+using test::sharedDataFile;
 
 float rawValue(const std::string& path, const char* var, std::vector<std::size_t> index) {
     int nc = -1, id = -1;
@@ -28,7 +29,7 @@ float rawValue(const std::string& path, const char* var, std::vector<std::size_t
 }  // namespace
 
 TEST(RealFiles, Era5EdaIsATenMemberEnsembleAlongNumber) {
-    const std::string path = shared("era5_eda_members.nc");
+    const std::string path = sharedDataFile("era5_eda_members.nc");
     const auto d = data::describeEnsemble({.paths = {path}, .variable = "t", .timeIndex = 1});
     EXPECT_EQ(d.memberDimension, "number");
     EXPECT_EQ(d.memberDimensionReason,
@@ -50,22 +51,22 @@ TEST(RealFiles, Era5InNetcdfAndGribHasTheSameFourDatedSteps) {
         .dimension = "time",
         .labels = {"2017-01-01T00:00", "2017-01-01T12:00", "2017-01-02T00:00", "2017-01-02T12:00"}};
     for (const char* name : {"era5_eda_members.nc", "era5-levels-members.grib"}) {
-        const auto d = data::describeEnsemble({.paths = {shared(name)}, .timeIndex = 2});
+        const auto d = data::describeEnsemble({.paths = {sharedDataFile(name)}, .timeIndex = 2});
         EXPECT_EQ(d.timeSteps, expected) << name;
-        EXPECT_EQ(data::openEnsemble({.paths = {shared(name)}, .variable = "t"}).timeSteps,
+        EXPECT_EQ(data::openEnsemble({.paths = {sharedDataFile(name)}, .variable = "t"}).timeSteps,
                   expected)
             << name << ": the ensemble read keeps them";
     }
     // Times made the members: the members' index is what is left to step through.
     const auto byTime = data::describeEnsemble(
-        {.paths = {shared("era5-levels-members.grib")}, .memberDimension = "time"});
+        {.paths = {sharedDataFile("era5-levels-members.grib")}, .memberDimension = "time"});
     EXPECT_EQ(byTime.timeSteps.dimension, "number");
     EXPECT_EQ(byTime.timeSteps.count(), 10u);
     EXPECT_EQ(byTime.timeSteps.labels.front(), "0");
 }
 
 TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
-    const std::string path = shared("eraint_uvz.nc");
+    const std::string path = sharedDataFile("eraint_uvz.nc");
     EXPECT_EQ(test::errorOpening({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
     const data::DataSelection u{.paths = {path}, .variable = "u", .memberDimension = "month"};
     const data::Ensemble eu = data::openEnsemble(u);
@@ -91,7 +92,8 @@ TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
 }
 
 TEST(RealFiles, GloSea4HasNoVerticalAxisAndSaysSo) {
-    const data::Error e = test::errorOpening({.paths = {shared("glosea4_surface_temperature_ensemble.nc")}});
+    const data::Error e =
+        test::errorOpening({.paths = {sharedDataFile("glosea4_surface_temperature_ensemble.nc")}});
     EXPECT_EQ(e.kind(), data::ErrorKind::NotThreeDimensional);
     const std::string m = e.what();
     EXPECT_NE(m.find("surface_temperature"), std::string::npos) << m;
@@ -100,7 +102,7 @@ TEST(RealFiles, GloSea4HasNoVerticalAxisAndSaysSo) {
 
 TEST(RealFiles, UkHiresTimeStandsInForMembersOnHybridHeights) {
     const data::Ensemble e =
-        data::openEnsemble({.paths = {shared("uk_hires.nc")}, .memberDimension = "time"});
+        data::openEnsemble({.paths = {sharedDataFile("uk_hires.nc")}, .memberDimension = "time"});
     ASSERT_EQ(e.memberCount(), 3u);
     EXPECT_EQ(e.members[0].name, "2009-11-19T10:00");
     EXPECT_EQ(e.grid.nx(), 187u);
@@ -112,7 +114,7 @@ TEST(RealFiles, UkHiresTimeStandsInForMembersOnHybridHeights) {
 }
 
 TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
-    const std::string path = shared("contour.cdf");
+    const std::string path = sharedDataFile("contour.cdf");
     const data::Error e = test::errorOpening({.paths = {path}});
     EXPECT_EQ(e.kind(), data::ErrorKind::MemberDimensionNotFound);
     EXPECT_NE(std::string(e.what()).find("--member-dim frtime"), std::string::npos) << e.what();
@@ -137,12 +139,14 @@ TEST(RealFiles, ContourForecastTimesWithFillValuesAndValidRange) {
 TEST(RealFiles, GribAndVtkAreNotMistakenForNetcdf) {
     // The GRIB file goes to the GRIB reader (tests/data/grib_reader_test.cpp compares it with
     // its NetCDF conversion).
-    EXPECT_EQ(data::describeEnsemble({.paths = {shared("era5-levels-members.grib")}}).format,
-              "GRIB 1");
+    EXPECT_EQ(
+        data::describeEnsemble({.paths = {sharedDataFile("era5-levels-members.grib")}}).format,
+        "GRIB 1");
 
     // The VTK volume goes to the VTK reader; two copies make a two-member ensemble.
-    const data::Ensemble iron = data::openEnsemble({.paths = {shared("ironProt.vtk")}});
+    const data::Ensemble iron = data::openEnsemble({.paths = {sharedDataFile("ironProt.vtk")}});
     EXPECT_EQ(iron.memberCount(), 1u);
     EXPECT_EQ(iron.grid.pointCount(), 68u * 68u * 68u);
-    EXPECT_EQ(data::describeEnsemble({.paths = {shared("ironProt.vtk")}}).format, "VTK legacy");
+    EXPECT_EQ(data::describeEnsemble({.paths = {sharedDataFile("ironProt.vtk")}}).format,
+              "VTK legacy");
 }

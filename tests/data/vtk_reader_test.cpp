@@ -34,7 +34,7 @@ using namespace ensil::data;
 
 namespace {
 
-constexpr int kNx = 6, kNy = 5, kNz = 4;
+constexpr int kGridX = 6, kGridY = 5, kGridZ = 4;
 
 // Every value tells where it belongs, so a transposed or shifted read cannot pass.
 double field(int m, int x, int y, int z) { return 1000.0 * m + x + 10.0 * y + 100.0 * z; }
@@ -62,7 +62,7 @@ void addVectors(vtkDataSet& data, const char* name) {
     data.GetPointData()->AddArray(array);
 }
 
-vtkSmartPointer<vtkImageData> image(std::array<int, 3> dims = {kNx, kNy, kNz},
+vtkSmartPointer<vtkImageData> image(std::array<int, 3> dims = {kGridX, kGridY, kGridZ},
                                     std::array<double, 3> origin = {0, 0, 0},
                                     std::array<double, 3> spacing = {1, 1, 1}) {
     auto img = vtkSmartPointer<vtkImageData>::New();
@@ -88,7 +88,7 @@ void writeLegacy(vtkImageData* img, const std::string& path, bool binary) {
 }
 
 void expectMemberValues(const Ensemble& e, std::size_t member, int fieldIndex,
-                        std::array<int, 3> dims = {kNx, kNy, kNz}) {
+                        std::array<int, 3> dims = {kGridX, kGridY, kGridZ}) {
     ASSERT_EQ(e.grid.nx(), static_cast<std::size_t>(dims[0]));
     ASSERT_EQ(e.grid.ny(), static_cast<std::size_t>(dims[1]));
     ASSERT_EQ(e.grid.nz(), static_cast<std::size_t>(dims[2]));
@@ -116,8 +116,8 @@ using ensil::test::selection;
 TEST(VtkReader, LegacyStructuredPointsReadsEveryValueInPlace) {
     ensil::test::TempDir dir;
     const std::string path = dir.file("volume.vtk");
-    auto img = image({kNx, kNy, kNz}, {1.0, -2.0, 3.0}, {0.5, 1.0, 2.0});
-    addScalars<vtkFloatArray>(*img, "f", 0, {kNx, kNy, kNz});
+    auto img = image({kGridX, kGridY, kGridZ}, {1.0, -2.0, 3.0}, {0.5, 1.0, 2.0});
+    addScalars<vtkFloatArray>(*img, "f", 0, {kGridX, kGridY, kGridZ});
     writeLegacy(img, path, true);
 
     const Ensemble e = VtkReader().read(selection({path}), {}, {});
@@ -145,7 +145,7 @@ TEST(VtkReader, LegacyRectilinearGridKeepsItsCoordinates) {
     const std::string path = dir.file("levels.vtk");
     const std::vector<double> xs{0, 1, 3, 7, 15, 31}, ys{-5, 0, 5, 10, 20}, zs{1000, 850, 500, 250};
     vtkNew<vtkRectilinearGrid> grid;
-    grid->SetDimensions(kNx, kNy, kNz);
+    grid->SetDimensions(kGridX, kGridY, kGridZ);
     const std::array<std::vector<double>, 3> axes{xs, ys, zs};
     std::array<vtkNew<vtkDoubleArray>, 3> coords;
     for (std::size_t a = 0; a < 3; ++a) {
@@ -154,7 +154,7 @@ TEST(VtkReader, LegacyRectilinearGridKeepsItsCoordinates) {
     grid->SetXCoordinates(coords[0]);
     grid->SetYCoordinates(coords[1]);
     grid->SetZCoordinates(coords[2]);
-    addScalars<vtkDoubleArray>(*grid, "temperature", 2, {kNx, kNy, kNz});
+    addScalars<vtkDoubleArray>(*grid, "temperature", 2, {kGridX, kGridY, kGridZ});
     vtkNew<vtkRectilinearGridWriter> writer;
     writer->SetInputData(grid);
     writer->SetFileName(path.c_str());
@@ -172,7 +172,7 @@ TEST(VtkReader, XmlImagesOfInt16MakeOneMemberPerFile) {
     std::vector<std::string> paths;
     for (int m = 0; m < 3; ++m) {
         auto img = image();
-        addScalars<vtkShortArray>(*img, "height", m, {kNx, kNy, kNz});
+        addScalars<vtkShortArray>(*img, "height", m, {kGridX, kGridY, kGridZ});
         paths.push_back(dir.file("member_" + std::to_string(m + 1) + ".vti"));
         writeXml(img, paths.back());
     }
@@ -195,9 +195,9 @@ TEST(VtkReader, XmlExtentNotStartingAtZeroShiftsTheAxes) {
     ensil::test::TempDir dir;
     const std::string path = dir.file("piece.vti");
     auto img = image();
-    img->SetExtent(2, 2 + kNx - 1, 0, kNy - 1, 0, kNz - 1);
+    img->SetExtent(2, 2 + kGridX - 1, 0, kGridY - 1, 0, kGridZ - 1);
     img->SetOrigin(10.0, 0.0, 0.0);
-    addScalars<vtkFloatArray>(*img, "f", 0, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "f", 0, {kGridX, kGridY, kGridZ});
     writeXml(img, path);
     const Ensemble e = VtkReader().read(selection({path}), {}, {});
     expectMemberValues(e, 0, 0);
@@ -210,8 +210,8 @@ TEST(VtkReader, DefaultIsTheFirstScalarArrayAndOthersCanBeNamed) {
     const std::string path = dir.file("arrays.vti");
     auto img = image();
     addVectors(*img, "velocity");
-    addScalars<vtkFloatArray>(*img, "pressure", 1, {kNx, kNy, kNz});
-    addScalars<vtkDoubleArray>(*img, "density", 2, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "pressure", 1, {kGridX, kGridY, kGridZ});
+    addScalars<vtkDoubleArray>(*img, "density", 2, {kGridX, kGridY, kGridZ});
     writeXml(img, path);
     const Ensemble first = VtkReader().read(selection({path}), {}, {});
     EXPECT_EQ(first.variable, "pressure");
@@ -226,7 +226,7 @@ TEST(VtkReader, MultiComponentArrayIsRefusedSuggestingAScalarOne) {
     const std::string path = dir.file("arrays.vti");
     auto img = image();
     addVectors(*img, "velocity");
-    addScalars<vtkFloatArray>(*img, "pressure", 1, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "pressure", 1, {kGridX, kGridY, kGridZ});
     writeXml(img, path);
     const Error e = errorFrom<VtkReader>(selection({path}, "velocity"));
     EXPECT_EQ(e.kind(), ErrorKind::InvalidArgument);
@@ -239,7 +239,7 @@ TEST(VtkReader, WrongArrayNameListsTheAvailableArrays) {
     const std::string path = dir.file("arrays.vti");
     auto img = image();
     addVectors(*img, "velocity");
-    addScalars<vtkFloatArray>(*img, "pressure", 1, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "pressure", 1, {kGridX, kGridY, kGridZ});
     writeXml(img, path);
     const Error e = errorFrom<VtkReader>(selection({path}, "temperature"));
     EXPECT_EQ(e.kind(), ErrorKind::VariableNotFound);
@@ -260,10 +260,10 @@ TEST_P(VtkLegacyArrays, DescribeListsPointArraysInFileOrderAndReadsFieldArrays) 
     cells->SetNumberOfTuples(img->GetNumberOfCells());
     cells->Fill(7.0);
     img->GetCellData()->AddArray(cells);
-    addScalars<vtkShortArray>(*img, "s", 0, {kNx, kNy, kNz});
+    addScalars<vtkShortArray>(*img, "s", 0, {kGridX, kGridY, kGridZ});
     img->GetPointData()->SetActiveScalars("s");
     addVectors(*img, "vel");
-    addScalars<vtkFloatArray>(*img, "f", 1, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "f", 1, {kGridX, kGridY, kGridZ});
     writeLegacy(img, path, GetParam());
 
     const EnsembleDescription d = VtkReader().describe(selection({path}));
@@ -274,7 +274,7 @@ TEST_P(VtkLegacyArrays, DescribeListsPointArraysInFileOrderAndReadsFieldArrays) 
     EXPECT_TRUE(d.variables[0].usable);
     EXPECT_FALSE(d.variables[1].usable);
     EXPECT_NE(d.variables[1].whyNotUsable.find("3 components"), std::string::npos);
-    EXPECT_EQ(d.variables[2].shape, (std::vector<std::size_t>{kNz, kNy, kNx}));
+    EXPECT_EQ(d.variables[2].shape, (std::vector<std::size_t>{kGridZ, kGridY, kGridX}));
     EXPECT_EQ(d.variable, "s");
 
     expectMemberValues(VtkReader().read(selection({path}), {}, {}), 0, 0);
@@ -364,14 +364,14 @@ TEST_P(VtkLegacyArrays, TheVtkWritersMetadataBlocksAreSkipped) {
     time->SetName("TIME");
     time->InsertNextValue(0.5);
     img->GetFieldData()->AddArray(time);
-    addScalars<vtkFloatArray>(*img, "s", 0, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*img, "s", 0, {kGridX, kGridY, kGridZ});
     img->GetPointData()->SetActiveScalars("s");
     addVectors(*img, "vel");
     img->GetPointData()->SetActiveVectors("vel");
-    addScalars<vtkDoubleArray>(*img, "f", 1, {kNx, kNy, kNz});
+    addScalars<vtkDoubleArray>(*img, "f", 1, {kGridX, kGridY, kGridZ});
     addVectors(*img, "wind");
     img->GetPointData()->GetArray("wind")->SetComponentName(0, "east");
-    addScalars<vtkShortArray>(*img, "h", 2, {kNx, kNy, kNz});
+    addScalars<vtkShortArray>(*img, "h", 2, {kGridX, kGridY, kGridZ});
     img->GetPointData()->GetArray("h")->SetComponentName(0, "height");
     // Asking for a range caches it in the array's information, which the writer then writes.
     time->GetRange();
@@ -399,13 +399,13 @@ TEST(VtkReader, FilesOnDifferentGridsAreRefusedNamingBoth) {
     ensil::test::TempDir dir;
     const std::string a = dir.file("a.vti"), b = dir.file("b.vti"), c = dir.file("c.vti");
     auto small = image();
-    addScalars<vtkFloatArray>(*small, "f", 0, {kNx, kNy, kNz});
+    addScalars<vtkFloatArray>(*small, "f", 0, {kGridX, kGridY, kGridZ});
     writeXml(small, a);
-    auto wider = image({kNx + 1, kNy, kNz});
-    addScalars<vtkFloatArray>(*wider, "f", 0, {kNx + 1, kNy, kNz});
+    auto wider = image({kGridX + 1, kGridY, kGridZ});
+    addScalars<vtkFloatArray>(*wider, "f", 0, {kGridX + 1, kGridY, kGridZ});
     writeXml(wider, b);
-    auto stretched = image({kNx, kNy, kNz}, {0, 0, 0}, {2, 1, 1});
-    addScalars<vtkFloatArray>(*stretched, "f", 0, {kNx, kNy, kNz});
+    auto stretched = image({kGridX, kGridY, kGridZ}, {0, 0, 0}, {2, 1, 1});
+    addScalars<vtkFloatArray>(*stretched, "f", 0, {kGridX, kGridY, kGridZ});
     writeXml(stretched, c);
 
     const Error sizes = errorFrom<VtkReader>(selection({a, b}));
@@ -419,8 +419,8 @@ TEST(VtkReader, FilesOnDifferentGridsAreRefusedNamingBoth) {
 
 TEST(VtkReader, TwoDimensionalImageIsRefused) {
     ensil::test::TempDir dir;
-    auto flat = image({kNx, kNy, 1});
-    addScalars<vtkFloatArray>(*flat, "f", 0, {kNx, kNy, 1});
+    auto flat = image({kGridX, kGridY, 1});
+    addScalars<vtkFloatArray>(*flat, "f", 0, {kGridX, kGridY, 1});
     writeXml(flat, dir.file("flat.vti"));
     writeLegacy(flat, dir.file("flat.vtk"), true);
     for (const std::string name : {"flat.vti", "flat.vtk"}) {
@@ -478,7 +478,7 @@ TEST(VtkReader, ProgressRisesToOneAndAStopBetweenMembersCancels) {
     std::vector<std::string> paths;
     for (int m = 0; m < 4; ++m) {
         auto img = image();
-        addScalars<vtkFloatArray>(*img, "f", m, {kNx, kNy, kNz});
+        addScalars<vtkFloatArray>(*img, "f", m, {kGridX, kGridY, kGridZ});
         paths.push_back(dir.file("m" + std::to_string(m) + ".vti"));
         writeXml(img, paths.back());
     }

@@ -9,16 +9,17 @@
 
 #include "data/ensemble_reader.h"
 #include "tests/geo/rotated_pole.h"
+#include "tests/support/shared_data.h"
 
 using namespace ensil;
 
 namespace {
-std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+using test::sharedDataFile;
 }  // namespace
 
 TEST(DomainBounds, UkHiresRotatedGridLiesOverIrelandAndNorthernEnglandAsItsPointsSay) {
-    const data::EnsembleDescription d =
-        data::describeEnsemble({.paths = {shared("uk_hires.nc")}, .memberDimension = "time"});
+    const data::EnsembleDescription d = data::describeEnsemble(
+        {.paths = {sharedDataFile("uk_hires.nc")}, .memberDimension = "time"});
     ASSERT_EQ(d.gridMapping.name, "rotated_latitude_longitude");
     ASSERT_EQ(d.gridMapping.parameter("grid_north_pole_latitude"), 37.5);
     ASSERT_EQ(d.gridMapping.parameter("grid_north_pole_longitude"), 177.5);
@@ -54,7 +55,7 @@ TEST(DomainBounds, UkHiresRotatedGridLiesOverIrelandAndNorthernEnglandAsItsPoint
 
 TEST(DomainBounds, ALongitudeLatitudeGridIsItsOwnAxes) {
     const data::EnsembleDescription d =
-        data::describeEnsemble({.paths = {shared("era5_eda_members.nc")}, .variable = "t"});
+        data::describeEnsemble({.paths = {sharedDataFile("era5_eda_members.nc")}, .variable = "t"});
     EXPECT_TRUE(d.gridMapping.empty());
     const geo::MapProjection projection = geo::MapProjection::forGrid(d.grid, d.gridMapping);
     const auto bounds = geo::lonLatBounds(d.grid, projection);

@@ -11,12 +11,13 @@
 #include <string>
 
 #include "data/ensemble_reader.h"
+#include "tests/support/shared_data.h"
 
 using namespace ensil;
 using geo::MapLineKind;
 
 namespace {
-std::string shared(const char* name) { return std::string(ENSIL_SHARED_DATA_DIR "/") + name; }
+using test::sharedDataFile;
 
 std::vector<std::vector<glm::dvec2>> clip(const std::vector<glm::dvec2>& line,
                                           double longestStep = 100.0) {
@@ -37,7 +38,9 @@ struct Opened {
 };
 
 Opened linesOf(const char* file, const char* memberDim = "") {
-    Opened o{data::describeEnsemble({.paths = {shared(file)}, .memberDimension = memberDim}), {}};
+    Opened o{
+        data::describeEnsemble({.paths = {sharedDataFile(file)}, .memberDimension = memberDim}),
+        {}};
     o.lines = geo::mapLinesFor(o.d.grid, geo::MapProjection::forGrid(o.d.grid, o.d.gridMapping));
     return o;
 }

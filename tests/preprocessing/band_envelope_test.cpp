@@ -9,11 +9,12 @@
 
 #include "data/error.h"
 #include "fixtures.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 }
 
 TEST(BandEnvelope, LowestAndHighestOfTheListedMembersOnly) {

@@ -13,13 +13,14 @@
 
 #include "data/error.h"
 #include "fixtures.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
-const float kInf = std::numeric_limits<float>::infinity();
+using test::kInf;
+using test::kNaN;
 
 // Members given as tables of values in grid order (x fastest).
 data::Ensemble tableEnsemble(std::size_t nx, std::size_t ny, std::size_t nz,

@@ -13,13 +13,14 @@
 #include "data/error.h"
 #include "fixtures.h"
 #include "preprocessing/band_envelope.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
-const float kInf = std::numeric_limits<float>::infinity();
+using test::kInf;
+using test::kNaN;
 
 // Members on a 2 x 2 x 2 grid (points 0..7) whose inside sets at c = 0.5 are the given points:
 // 1 there, 0 elsewhere.

@@ -15,11 +15,12 @@
 #include "data/job.h"
 #include "fixtures.h"
 #include "preprocessing/exceedance.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 // Members of seeded random values on a grid of more points than a block of work holds, so
 // the blocks' and the gathers' borders are crossed.

@@ -11,13 +11,14 @@
 #include "data/error.h"
 #include "fixtures.h"
 #include "preprocessing/ensemble_statistics.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
 
-constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr float kInf = std::numeric_limits<float>::infinity();
+using test::kInf;
+using test::kNaN;
 
 }  // namespace
 

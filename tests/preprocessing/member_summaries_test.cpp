@@ -12,11 +12,12 @@
 #include "fixtures.h"
 #include "preprocessing/mesh_packing.h"
 #include "preprocessing/similarity.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 }
 
 TEST(DistancesToField, ConstantMembersGiveSquaredDifferencesOfRootDistances) {

@@ -13,10 +13,10 @@ using namespace ensil;
 namespace {
 // A sphere of radius 12 + m (member m, at isovalue 12) whose centre lies near the box's bottom and its
 // x = 99 face, so the box cuts it on both.
-const glm::vec3 kCentre{92.0F, 50.2F, 3.0F};
+const glm::vec3 kSphereCentre{92.0F, 50.2F, 3.0F};
 data::Ensemble cutSpheres(std::size_t members) {
     return test::analyticEnsemble(members, 100, 100, 20, [](auto m, auto i, auto j, auto k) {
-        return glm::length(glm::vec3(i, j, k) - kCentre) - static_cast<float>(m);
+        return glm::length(glm::vec3(i, j, k) - kSphereCentre) - static_cast<float>(m);
     });
 }
 }  // namespace
@@ -55,7 +55,7 @@ TEST(PreviewMeshes, LieOnTheSurfaceMeetTheBoxFacesAndHaveFewerTriangles) {
             const glm::vec3 p = prep::unpackPosition(mesh, v);
             // In the full grid's cells: within the preview's decimation bound (1 cell) and the
             // packing's rounding.
-            ASSERT_NEAR(glm::length(p - kCentre), radius, 1.05F) << "member " << m;
+            ASSERT_NEAR(glm::length(p - kSphereCentre), radius, 1.05F) << "member " << m;
             if (std::abs(p.x - 99.0F) < 1e-2F) ++onFarFace;
         }
         EXPECT_GT(onFarFace, 4) << "member " << m << " meets the x = 99 face, as in full";

@@ -15,11 +15,11 @@
 using namespace ensil;
 
 namespace {
-const glm::vec3 kCentre(19.6F, 20.2F, 19.8F);
+const glm::vec3 kBallCentre(19.6F, 20.2F, 19.8F);
 
 data::TriangleMesh sphere(float radius, std::size_t n = 40) {
     const auto e = test::analyticEnsemble(1, n, n, n, [](auto, auto i, auto j, auto k) {
-        return glm::length(glm::vec3(i, j, k) - kCentre);
+        return glm::length(glm::vec3(i, j, k) - kBallCentre);
     });
     return prep::extractIsosurface(e.grid, e.members[0].values, radius);
 }
@@ -106,7 +106,7 @@ TEST(QuadricSimplification, NoTriangleTurnsOverAndTheErrorStaysWithinTheBound) {
     // a triangle over, which the turn limit refuses.
     const glm::vec3 axes(2.5F, 12.0F, 12.0F);
     const auto e = test::analyticEnsemble(1, 40, 40, 40, [&](auto, auto i, auto j, auto k) {
-        return glm::length((glm::vec3(i, j, k) - kCentre) / axes);
+        return glm::length((glm::vec3(i, j, k) - kBallCentre) / axes);
     });
     const data::TriangleMesh full = prep::extractIsosurface(e.grid, e.members[0].values, 1.0F);
     for (const float bound : {0.05F, 0.25F, 0.5F}) {
@@ -120,7 +120,7 @@ TEST(QuadricSimplification, NoTriangleTurnsOverAndTheErrorStaysWithinTheBound) {
             // Marching cubes winds towards the lower values: against the field's gradient.
             const glm::vec3 normal = glm::normalize(glm::cross(b - a, c - a));
             const glm::vec3 gradient =
-                glm::normalize(((a + b + c) / 3.0F - kCentre) / (axes * axes));
+                glm::normalize(((a + b + c) / 3.0F - kBallCentre) / (axes * axes));
             ASSERT_LT(glm::dot(normal, gradient), 0.0F)
                 << "bound " << bound << ", triangle " << t / 3;
         }

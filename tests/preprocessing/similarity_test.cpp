@@ -12,12 +12,13 @@
 
 #include "data/error.h"
 #include "fixtures.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 // The definition, summed point by point in double: the reference the matrix products must meet.
 double referenceDistance(const data::Ensemble& e, float isovalue, std::size_t i, std::size_t j) {

@@ -13,12 +13,13 @@
 #include "data/error.h"
 #include "preprocessing/similarity.h"
 #include "tests/preprocessing/fixtures.h"
+#include "tests/support/special_values.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 // The points [first, last) of every member, as DistanceSums::add takes them.
 std::vector<std::span<const float>> pointsOf(const data::Ensemble& e, std::size_t first,

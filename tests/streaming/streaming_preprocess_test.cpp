@@ -18,13 +18,14 @@
 #include "preprocessing/default_isovalue.h"
 #include "preprocessing/field_statistics.h"
 #include "preprocessing/member_summaries.h"
+#include "tests/support/special_values.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 // What the in-memory path gives for the file (as app/headless/preprocess_run does it).
 struct InMemory {

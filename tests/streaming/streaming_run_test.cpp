@@ -18,13 +18,14 @@
 #include "data/netcdf_writer.h"
 #include "preprocessing/mesh_cache.h"
 #include "tests/streaming/same_results.h"
+#include "tests/support/special_values.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
 
 namespace {
 
-const float kNaN = std::numeric_limits<float>::quiet_NaN();
+using test::kNaN;
 
 // The demo (8 members, 36 x 20 x 9) with member 5 wholly missing.
 std::string writeDemoWithAnEmptyMember(const test::TempDir& dir) {

@@ -1,16 +1,17 @@
 #!/bin/sh
-# with-window-manager.sh COMMAND...: runs COMMAND on a virtual display of its own (Xvfb) with a
-# window manager (openbox), for tests of what only a window manager does: maximising a window,
-# placing it, deciding its size. The shared display the other GUI tests use has none, and giving
-# it one would change every other test's windows. Exits with COMMAND's status.
+# with-window-manager.sh COMMAND...: runs COMMAND on a virtual display of its own
+# (with-private-display.sh) with a window manager (openbox), for tests of what only a window
+# manager does: maximising a window, placing it, deciding its size. The other GUI tests' displays
+# have none, and giving them one would change every other test's windows. Exits with COMMAND's
+# status.
 set -eu
-for tool in xvfb-run openbox wmctrl; do
+for tool in openbox wmctrl; do
     command -v "$tool" >/dev/null || {
         echo "with-window-manager.sh: $tool is missing (packaging/install-deps.sh installs it)" >&2
         exit 1
     }
 done
-exec xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" sh -c '
+exec "$(dirname "$0")/with-private-display.sh" sh -c '
     openbox --sm-disable >/dev/null 2>&1 &
     manager=$!
     # Wait until openbox manages the display (it says so on the root window), at most 30 s.
