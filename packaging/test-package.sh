@@ -37,6 +37,7 @@ for path in ./usr/bin/ensil \
             ./usr/share/icons/hicolor/48x48/apps/$app_id.png \
             ./usr/share/icons/hicolor/256x256/apps/$app_id.png \
             ./usr/share/doc/ensil/copyright \
+            ./usr/share/doc/ensil/LICENSE \
             ./usr/lib/python3/dist-packages/ensil/__init__.py \
             ./usr/lib/python3/dist-packages/ensil/__init__.pyi; do
     grep -qxF "$path" <<<"$contents" || fail "the package does not hold $path"
@@ -89,6 +90,11 @@ for library in $libraries; do
 done
 
 # --- The installed files ------------------------------------------------------------------
+# The licence, in Debian's machine-readable form and as the repository's text.
+grep -qx 'License: BSD-3-Clause' /usr/share/doc/ensil/copyright ||
+    fail "/usr/share/doc/ensil/copyright does not license the files under BSD-3-Clause"
+grep -qx 'BSD 3-Clause License' /usr/share/doc/ensil/LICENSE ||
+    fail "/usr/share/doc/ensil/LICENSE is not the BSD 3-Clause licence"
 installed_version=$(/usr/bin/ensil --version)
 step "/usr/bin/ensil --version: $installed_version"
 grep -qF "${version%%-*}" <<<"$installed_version" || fail "ensil --version does not say $version"
