@@ -1,11 +1,10 @@
 #include "app/data_probe.h"
 
-#include "app/headless/workbench_reading.h"
-
 #include <QObject>
 #include <algorithm>
 
 #include "app/ensemble_facts.h"
+#include "app/headless/workbench_reading.h"
 #include "data/error.h"
 
 namespace ensil::app {

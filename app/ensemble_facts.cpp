@@ -36,11 +36,12 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
     const data::Grid& grid = overview.streamed ? overview.streamed->description.grid : e.grid;
     facts.gridSize = QStringLiteral("%1 x %2 x %3").arg(grid.nx()).arg(grid.ny()).arg(grid.nz());
     if (overview.streamed) {
-        facts.gridSize += QObject::tr(" (in memory: %1 x %2 x %3, a copy at %4)")
-                              .arg(e.grid.nx())
-                              .arg(e.grid.ny())
-                              .arg(e.grid.nz())
-                              .arg(QString::fromStdString(everyNthPoint(overview.streamed->stride)));
+        facts.gridSize +=
+            QObject::tr(" (in memory: %1 x %2 x %3, a copy at %4)")
+                .arg(e.grid.nx())
+                .arg(e.grid.ny())
+                .arg(e.grid.nz())
+                .arg(QString::fromStdString(everyNthPoint(overview.streamed->stride)));
     }
     for (int a = 0; a < 3; ++a) facts.axes << describeAxis(grid.axis(a));
     facts.valueRange = QStringLiteral("%1 .. %2 %3, mean %4")
@@ -49,9 +50,9 @@ ui::EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
                            .arg(facts.units)
                            .arg(overview.statistics.mean, 0, 'g', 5);
     facts.missing = overview.statistics.missingCount;
-    facts.megabytes =
-        static_cast<double>(overview.streamed ? overview.streamed->description.bytes() : e.bytes()) /
-        (1024.0 * 1024.0);
+    facts.megabytes = static_cast<double>(overview.streamed ? overview.streamed->description.bytes()
+                                                            : e.bytes()) /
+                      (1024.0 * 1024.0);
     QStringList warnings;
     if (overview.streamed) {
         warnings << QString::fromStdString(streamedDataNote(*overview.streamed, e));

@@ -15,18 +15,19 @@ public:
     ProbeJobs(ui::OpenDataDialog* dialog, std::size_t memoryLimit)
         : QObject(dialog), m_dialog(dialog), m_memoryLimit(memoryLimit) {}
     void answer(const data::DataSelection& selection, int request) {
-        m_job.start([selection, limit = m_memoryLimit](
-                        const std::stop_token&,
-                        const data::Progress&) { return probeData(selection, limit); },
-                    [this, request](ui::DataProbe probe) { m_dialog->showProbe(probe, request); },
-                    [this, request](const std::exception_ptr&, bool cancelled) {
-                        // probeData reports problems in its result; anything else is a bug
-                        // worth saying, but a superseded probe is no news.
-                        if (cancelled) return;
-                        ui::DataProbe failed;
-                        failed.error = QObject::tr("The files could not be read.");
-                        m_dialog->showProbe(failed, request);
-                    });
+        m_job.start(
+            [selection, limit = m_memoryLimit](const std::stop_token&, const data::Progress&) {
+                return probeData(selection, limit);
+            },
+            [this, request](ui::DataProbe probe) { m_dialog->showProbe(probe, request); },
+            [this, request](const std::exception_ptr&, bool cancelled) {
+                // probeData reports problems in its result; anything else is a bug
+                // worth saying, but a superseded probe is no news.
+                if (cancelled) return;
+                ui::DataProbe failed;
+                failed.error = QObject::tr("The files could not be read.");
+                m_dialog->showProbe(failed, request);
+            });
     }
 
 private:

@@ -74,14 +74,33 @@ struct Options {
 
 // The settings the command line sets, each with its range from the one setting table.
 const session::SettingOptions& sceneOptions() {
-    static const session::SettingOptions options{
-        "mode",        "clusters",        "linkage",         "show_mean",
-        "thickness",   "surface_opacity", "group_size",      "vertical_exaggeration",
-        "azimuth",     "elevation",       "projection",      "background",
-        "axis_labels", "legend",          "plane_thickness", "coastlines",
-        "borders",     "graticule",       "mean_opacity",    "title",
-        "floor",       "floor_level",     "rims",            "context",
-        "band",        "section",         "context_spread"};
+    static const session::SettingOptions options{"mode",
+                                                 "clusters",
+                                                 "linkage",
+                                                 "show_mean",
+                                                 "thickness",
+                                                 "surface_opacity",
+                                                 "group_size",
+                                                 "vertical_exaggeration",
+                                                 "azimuth",
+                                                 "elevation",
+                                                 "projection",
+                                                 "background",
+                                                 "axis_labels",
+                                                 "legend",
+                                                 "plane_thickness",
+                                                 "coastlines",
+                                                 "borders",
+                                                 "graticule",
+                                                 "mean_opacity",
+                                                 "title",
+                                                 "floor",
+                                                 "floor_level",
+                                                 "rims",
+                                                 "context",
+                                                 "band",
+                                                 "section",
+                                                 "context_spread"};
     return options;
 }
 
@@ -176,8 +195,8 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
     const QString fill = QString::fromStdString(
         session::setting("section").format(static_cast<double>(state.render.plane.fill)));
     if (state.render.plane.fill != gl::SectionField::None && !state.render.plane.enabled) {
-        problem = QStringLiteral("--section %1 needs --plane: it fills the plane's cut face")
-                      .arg(fill);
+        problem =
+            QStringLiteral("--section %1 needs --plane: it fills the plane's cut face").arg(fill);
         return std::nullopt;
     }
     if (state.render.plane.fill == gl::SectionField::Member) {
@@ -220,16 +239,16 @@ int renderTimes(const session::SessionState& first, RenderRequest request, const
         };
         const RenderOutcome result = renderSession(state, request);
         progress.endLine();
-        const QString path = range.count() == 1 && !isFramePattern(pattern)
-                                 ? pattern
-                                 : QString::asprintf(pattern.toUtf8().constData(),
-                                                     static_cast<int>(t));
+        const QString path =
+            range.count() == 1 && !isFramePattern(pattern)
+                ? pattern
+                : QString::asprintf(pattern.toUtf8().constData(), static_cast<int>(t));
         if (!result.image.save(path)) {
             err << "ensil render: cannot write '" << path << "'\n";
             return 1;
         }
-        out << "wrote " << path << ": time index " << t << ", " << result.members
-            << " members at " << result.drawn.isovalue.value_or(0.0F) << "\n";
+        out << "wrote " << path << ": time index " << t << ", " << result.members << " members at "
+            << result.drawn.isovalue.value_or(0.0F) << "\n";
         state = result.drawn;
         request.previousMembers = result.memberNames;
         request.previousIdentities = result.memberIdentities;
@@ -288,11 +307,13 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
                (parser.isSet(o.demo) || parser.isSet(QStringLiteral("time-index")) ||
                 parser.isSet(o.saveProject) || parser.isSet(o.json))) {
         problem = parser.isSet(o.demo)
-                      ? QStringLiteral("--times is refused with --demo: the built-in demo has no "
-                                       "time steps; write one that has with ensil generate "
-                                       "--times T --out FILE.nc")
-                      : QStringLiteral("--times is refused with --time-index, --save-project "
-                                       "and --json: it draws several steps");
+                      ? QStringLiteral(
+                            "--times is refused with --demo: the built-in demo has no "
+                            "time steps; write one that has with ensil generate "
+                            "--times T --out FILE.nc")
+                      : QStringLiteral(
+                            "--times is refused with --time-index, --save-project "
+                            "and --json: it draws several steps");
     } else {
         state = sessionFromOptions(parser, o, *selection, request, problem);
     }

@@ -52,8 +52,8 @@ struct MeshSet {
 
     // Bytes on the GPU: every mesh's.
     [[nodiscard]] std::size_t gpuBytes() const {
-        std::size_t bytes = mean.gpuBytes() + probability.gpuBytes() + bandInner.gpuBytes() +
-                            bandOuter.gpuBytes();
+        std::size_t bytes =
+            mean.gpuBytes() + probability.gpuBytes() + bandInner.gpuBytes() + bandOuter.gpuBytes();
         for (const PackedMesh& m : members) bytes += m.gpuBytes();
         return bytes;
     }

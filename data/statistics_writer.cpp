@@ -29,7 +29,6 @@ std::string joined(const std::vector<std::string>& parts, const std::string& sep
     return text;
 }
 
-
 // The variable the data variables' grid_mapping attribute names: "crs", unless an axis took
 // that name.
 std::string mappingVariableName(const Grid& grid) {

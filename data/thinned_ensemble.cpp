@@ -59,7 +59,8 @@ Ensemble openThinnedEnsemble(const DataSelection& selection, const EnsembleDescr
     std::size_t nextLayer = 0;
     for (const EnsemblePart& slab : slabs) {
         checkEnsemblePart(d, slab, sourceOf(selection.paths));
-        if (slab.firstLayer != nextLayer || slab.firstMember != 0 || slab.memberCount != d.members) {
+        if (slab.firstLayer != nextLayer || slab.firstMember != 0 ||
+            slab.memberCount != d.members) {
             throw Error(ErrorKind::InvalidArgument,
                         "the slabs to read a thinned copy of " + what +
                             " do not cover its layers in order with every member");
@@ -67,10 +68,10 @@ Ensemble openThinnedEnsemble(const DataSelection& selection, const EnsembleDescr
         nextLayer += slab.layerCount;
     }
     if (nextLayer != d.grid.nz()) {
-        throw Error(ErrorKind::InvalidArgument,
-                    "the slabs to read a thinned copy of " + what + " cover " +
-                        std::to_string(nextLayer) + " of its " + std::to_string(d.grid.nz()) +
-                        " layers");
+        throw Error(ErrorKind::InvalidArgument, "the slabs to read a thinned copy of " + what +
+                                                    " cover " + std::to_string(nextLayer) +
+                                                    " of its " + std::to_string(d.grid.nz()) +
+                                                    " layers");
     }
     Ensemble thinned = ensembleDescribedBy(d, selection.paths);
     thinned.grid = thinnedGrid(d.grid, stride);

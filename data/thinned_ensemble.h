@@ -32,8 +32,7 @@ std::size_t thinningStrideFor(const EnsembleDescription& description, std::size_
 // `stride`-th point: no more than one slab and the copy are in memory at once. Infinite values
 // become NaN, as openEnsemble() does. Throws Error (UnsupportedFormat for a format that cannot
 // read slabs, InvalidArgument for slabs that do not cover the grid), Cancelled.
-Ensemble openThinnedEnsemble(const DataSelection& selection,
-                             const EnsembleDescription& description,
+Ensemble openThinnedEnsemble(const DataSelection& selection, const EnsembleDescription& description,
                              const std::vector<EnsemblePart>& slabs, std::size_t stride,
                              const std::stop_token& stop = {}, const Progress& progress = {});
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <optional>
-#include <glm/gtc/matrix_transform.hpp>
 
 namespace ensil::gl {
 namespace {
@@ -80,8 +80,7 @@ void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float as
     }
 }
 
-void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect,
-                      float fill) {
+void Camera::frameBox(const glm::vec3& boxMin, const glm::vec3& boxMax, float aspect, float fill) {
     frameBox(boxMin, boxMax, aspect, fill, NdcRegion{});
 }
 

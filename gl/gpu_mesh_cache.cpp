@@ -86,8 +86,7 @@ GpuMesh GpuMeshCache::uploadOne(GlFunctions& f, const data::PackedMesh& mesh,
     return g;
 }
 
-void GpuMeshCache::upload(GlFunctions& f, const data::MeshSet& meshes,
-                          const glm::vec3& gridLast) {
+void GpuMeshCache::upload(GlFunctions& f, const data::MeshSet& meshes, const glm::vec3& gridLast) {
     release(f);
     m_members.reserve(meshes.members.size());
     for (const data::PackedMesh& m : meshes.members) {

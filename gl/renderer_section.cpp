@@ -65,8 +65,7 @@ bool Renderer::uploadFieldVolume(unsigned texture, const SectionVolume& volume) 
     std::vector<float> normalised(volume.values.size());
     for (std::size_t i = 0; i < normalised.size(); ++i) {
         const float v = volume.values[i];
-        normalised[i] =
-            std::isnan(v) ? -1.0F : (span > 0.0F ? (v - volume.minimum) / span : 0.5F);
+        normalised[i] = std::isnan(v) ? -1.0F : (span > 0.0F ? (v - volume.minimum) / span : 0.5F);
     }
     f.glBindTexture(GL_TEXTURE_3D, texture);
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -99,10 +99,10 @@ QRectF legendPlace(QSizeF size, double top, const QRectF& dataBox, QSizeF pictur
     return best;
 }
 
-constexpr double kMargin = 10.0;  // from the picture's edge to a panel
+constexpr double kMargin = 10.0;         // from the picture's edge to a panel
 constexpr double kTextPoints = 9.0;      // labels, legend, colour bar
 constexpr double kHeadingPoints = 10.5;  // the title line
-constexpr double kPad = 6.0;      // inside a panel
+constexpr double kPad = 6.0;             // inside a panel
 constexpr double kBarHeight = 10.0;
 
 QColor panelColour(const ViewOverlay& overlay) {

@@ -79,7 +79,7 @@ struct OverlayInput {
     glm::vec3 planeColor{1.0F};
     bool showAxes = true;
     bool showLegend = true;
-    QString title;  // empty: none
+    QString title;                          // empty: none
     std::vector<ColourScale> colourScales;  // the floor's, then the section's
     // Labels at points on the floor (display space): the graticule's true degrees where each
     // line enters the grid. Placed after the axes' labels, where room is left.

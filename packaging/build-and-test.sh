@@ -22,6 +22,7 @@ stage() {
 
 stage "install dependencies" packaging/install-deps.sh
 
+stage "check formatting" packaging/check-format.sh
 stage "configure (ci)" cmake --preset ci
 stage "build (ci)" cmake --build --preset ci
 # On a virtual display (Mesa llvmpipe); each OpenGL, widget and workbench test process gets a

@@ -24,10 +24,12 @@ packages=(
     pybind11-dev python3-dev python3-pytest python3-numpy
     # `mpirun -np K ensil preprocess` (the mpi/ front end, ENSIL_WITH_MPI; the ci preset needs it)
     libopenmpi-dev openmpi-bin
-    # tests and benchmarks
-    libgtest-dev libgmock-dev libbenchmark-dev
+    # the tests (the benchmarks are plain programs that print figures; they need nothing more)
+    libgtest-dev libgmock-dev
     # the libFuzzer targets (tests/fuzz/, the fuzz preset): clang 14 and its libFuzzer runtime
     clang-14 libfuzzer-14-dev
+    # packaging/check-format.sh: the C++ layout of .clang-format, checked before any build
+    clang-format-14
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
     # that an X display answers before Qt is started on it
     xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev libxcb1-dev

@@ -76,7 +76,8 @@ SlabSums emptySlabSums(const data::EnsembleDescription& description, float isova
 
 // Pass 1 over every slab of `slabs` in order: the sums of the whole grid. `progress` runs from 0
 // to 1 over the slabs. Throws data::Error, Cancelled.
-SlabSums sumSlabs(const data::DataSelection& selection, const data::EnsembleDescription& description,
+SlabSums sumSlabs(const data::DataSelection& selection,
+                  const data::EnsembleDescription& description,
                   const std::vector<data::EnsemblePart>& slabs, float isovalue,
                   const std::stop_token& stop = {}, const data::Progress& progress = {});
 

@@ -1,7 +1,7 @@
 // The clusters of the current cut as a list for QTableView/QTreeView: the cluster's colour
 // swatch and name, its size, what it holds of the contour boxplot (the median, outliers), and
-// a visibility checkbox (checked when all its members are visible, partly when some are). A view onto MemberSelection, which it follows and edits
-// (the checkbox). GUI thread only.
+// a visibility checkbox (checked when all its members are visible, partly when some are). A view
+// onto MemberSelection, which it follows and edits (the checkbox). GUI thread only.
 #pragma once
 
 #include <QAbstractTableModel>

@@ -31,15 +31,17 @@ QColor colourOf(int identity) {
 ClusterTimeline::ClusterTimeline(MemberSelection* selection, QWidget* parent)
     : QWidget(parent), m_selection(selection), m_filling(new QToolButton(this)) {
     m_filling->setAutoRaise(true);
-    m_filling->setToolTip(tr("The clusters of the steps not visited are computed in the "
-                             "background (no surfaces); click to stop"));
+    m_filling->setToolTip(
+        tr("The clusters of the steps not visited are computed in the "
+           "background (no surfaces); click to stop"));
     m_filling->hide();
     connect(m_filling, &QToolButton::clicked, this, &ClusterTimeline::stopFillingRequested);
     setObjectName(QStringLiteral("clusterTimeline"));
     setMouseTracking(true);
     setMinimumHeight(110);
-    setToolTip(tr("Clusters over time: each column a time step, each bar a cluster (click to "
-                  "select its members), each line a member"));
+    setToolTip(
+        tr("Clusters over time: each column a time step, each bar a cluster (click to "
+           "select its members), each line a member"));
     for (auto signal : {&MemberSelection::selectionChanged, &MemberSelection::membersReset}) {
         connect(selection, signal, this, qOverload<>(&QWidget::update));
     }
@@ -173,7 +175,8 @@ void ClusterTimeline::paintEvent(QPaintEvent* /*event*/) {
                 const std::vector<int>& ids = m_identities[static_cast<std::size_t>(s)];
                 if (ids.size() <= m) continue;
                 if (from >= 0) {
-                    const QPointF a(columnX(from), slotY(m_slots[static_cast<std::size_t>(from)][m]));
+                    const QPointF a(columnX(from),
+                                    slotY(m_slots[static_cast<std::size_t>(from)][m]));
                     const QPointF b(columnX(s), slotY(m_slots[static_cast<std::size_t>(s)][m]));
                     QPainterPath path(a);
                     const double mid = 0.5 * (a.x() + b.x());
@@ -222,7 +225,8 @@ void ClusterTimeline::paintEvent(QPaintEvent* /*event*/) {
         QFont f = font();
         f.setBold(s == m_current);
         painter.setFont(f);
-        painter.setPen(palette().color(s == m_current ? QPalette::Text : QPalette::PlaceholderText));
+        painter.setPen(
+            palette().color(s == m_current ? QPalette::Text : QPalette::PlaceholderText));
         const QString label = shortLabel(m_labels[s]);
         const double w = QFontMetricsF(f).horizontalAdvance(label);
         const double x = std::clamp(columnX(s) - w / 2, 0.0, width() - w);

@@ -96,8 +96,8 @@ RenderPanel::RenderPanel(QWidget* parent)
     m_meanOpacity->setPrefix(tr("opacity "));
     form->addRow(m_mean, m_meanOpacity);  // one row: the panel shares its dock's height
     // In gl::ContextSurface's order.
-    m_context->addItems({tr("Mean member"), tr("Median member (deepest)"),
-                         tr("Half the members exceed")});
+    m_context->addItems(
+        {tr("Mean member"), tr("Median member (deepest)"), tr("Half the members exceed")});
     m_context->setToolTip(settingHelp("context"));
     form->addRow(tr("Context"), m_context);
     m_contextSpread->setToolTip(settingHelp("context_spread"));
@@ -208,8 +208,7 @@ void RenderPanel::setSettings(const gl::RenderSettings& settings) {
     const QSignalBlocker b1(m_mode), b2(m_thickness), b3(m_opacity), b4(m_mean), b5(m_removal),
         b6(m_removalMin), b7(m_removalMax), b8(m_groupSize), b9(m_axes), b10(m_legend),
         b11(m_coastlines), b12(m_borders), b13(m_graticule), b14(m_meanOpacity), b15(m_floor),
-        b16(m_floorLevel), b17(m_rims), b18(m_context), b19(m_band),
-        b20(m_contextSpread);
+        b16(m_floorLevel), b17(m_rims), b18(m_context), b19(m_band), b20(m_contextSpread);
     m_floor->setCurrentIndex(static_cast<int>(settings.floor));
     m_floorLevel->setValue(settings.floorLevel);
     m_meanOpacity->setValue(settings.meanOpacity);

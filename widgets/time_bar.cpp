@@ -24,8 +24,9 @@ TimeBar::TimeBar(QWidget* parent)
     m_back->setToolTip(tr("Show the previous time step (Page Up)"));
     m_play = addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play Time"));
     m_play->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_Space));
-    m_play->setToolTip(tr("Step through the times; each step is shown once its surfaces are "
-                          "built (Shift+Space)"));
+    m_play->setToolTip(
+        tr("Step through the times; each step is shown once its surfaces are "
+           "built (Shift+Space)"));
     m_forward = addAction(style()->standardIcon(QStyle::SP_MediaSkipForward), tr("Next Time"));
     m_forward->setShortcut(QKeySequence(Qt::Key_PageDown));
     m_forward->setToolTip(tr("Show the next time step (Page Down)"));

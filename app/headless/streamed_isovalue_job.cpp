@@ -49,8 +49,8 @@ IsovalueOutcome runStreamedIsovalueJob(const IsovalueJobInput& in, const Streame
         const std::vector<std::size_t> keep =
             prep::concludeSlabs(sums, source.selection, d, {}, concluded);
         out.distancesToMean = prep::distancesToMeanOf(
-            source.selection, d, keep, sums.moments, in.options.isovalue, plan.membersAtOnce,
-            stop, [&](double f) { data::report(progress, 0.5 + 0.35 * f); });
+            source.selection, d, keep, sums.moments, in.options.isovalue, plan.membersAtOnce, stop,
+            [&](double f) { data::report(progress, 0.5 + 0.35 * f); });
         out.meshes = std::move(*cached);
         out.fromCache = true;
         out.distances = std::move(concluded.distances);
@@ -58,9 +58,9 @@ IsovalueOutcome runStreamedIsovalueJob(const IsovalueJobInput& in, const Streame
         out.seconds["slabs"] = since(start);
     } else {
         // No range check: the isovalue comes from the copy's range, within the whole data's.
-        prep::StreamedEnsemble streamed = prep::streamPreprocess(
-            source.selection, d, plan, in.options, in.verticalExaggeration, {}, stop,
-            [&](double f) { data::report(progress, 0.85 * f); });
+        prep::StreamedEnsemble streamed =
+            prep::streamPreprocess(source.selection, d, plan, in.options, in.verticalExaggeration,
+                                   {}, stop, [&](double f) { data::report(progress, 0.85 * f); });
         recordStreamedSeconds(out.seconds, streamed);
         out.meshes = std::move(streamed.meshes);
         out.distances = std::move(streamed.distances);

@@ -99,8 +99,8 @@ StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::st
     if (streamed) {
         // The distances need only the slab pass (preprocessing/streaming_preprocess.h).
         const prep::SlabSums sums =
-            prep::sumSlabs(request.selection, description, streamed->plan.slabs,
-                           request.isovalue, stop, [&](double f) { data::report(progress, f); });
+            prep::sumSlabs(request.selection, description, streamed->plan.slabs, request.isovalue,
+                           stop, [&](double f) { data::report(progress, f); });
         prep::StreamedEnsemble concluded;
         (void)prep::concludeSlabs(sums, request.selection, description, {}, concluded);
         distances = std::move(concluded.distances);
@@ -109,9 +109,9 @@ StepClusters clusterTimeStep(const StepClusteringRequest& request, const std::st
         data::Ensemble ensemble = data::openEnsemble(
             request.selection, stop, [&](double f) { data::report(progress, 0.5 * f); });
         data::leaveOutMembersWithoutData(ensemble);
-        distances = prep::computeDistanceMatrix(
-            ensemble, request.isovalue, stop,
-            [&](double f) { data::report(progress, 0.5 + 0.5 * f); });
+        distances = prep::computeDistanceMatrix(ensemble, request.isovalue, stop, [&](double f) {
+            data::report(progress, 0.5 + 0.5 * f);
+        });
         for (const data::Member& member : ensemble.members) names.push_back(member.name);
     }
     const prep::MergeTree tree = prep::clusterMembers(distances, request.linkage, stop);

@@ -40,7 +40,8 @@ std::optional<StreamedSource> streamedSourceFor(const data::DataSelection& selec
     if (source.stride == 0) {
         throw data::Error(data::ErrorKind::OutOfMemory,
                           "'" + d.variable + "' (" +
-                              data::sizeText(static_cast<double>(d.bytes())) + ") cannot be opened within the workbench's memory budget of " +
+                              data::sizeText(static_cast<double>(d.bytes())) +
+                              ") cannot be opened within the workbench's memory budget of " +
                               data::sizeText(static_cast<double>(memoryLimit)) +
                               ": not even a copy of its corner points fits a quarter of it");
     }
@@ -55,12 +56,12 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     std::optional<StreamedSource> source = streamedSourceFor(selection, d, memoryLimit);
     if (!source) return {data::openEnsemble(selection, stop, progress), std::nullopt};
-    data::Ensemble copy = data::openThinnedEnsemble(selection, d, source->plan.slabs,
-                                                    source->stride, stop, progress);
+    data::Ensemble copy =
+        data::openThinnedEnsemble(selection, d, source->plan.slabs, source->stride, stop, progress);
     if (data::membersWithoutData(copy).size() == copy.members.size()) {
         throw data::Error(data::ErrorKind::AllValuesMissing,
-                          "every value of '" + copy.variable + "' in " + copy.source +
-                              " read at " + everyNthPoint(source->stride) +
+                          "every value of '" + copy.variable + "' in " + copy.source + " read at " +
+                              everyNthPoint(source->stride) +
                               " is missing (fill value or outside valid_range): there is "
                               "nothing to draw");
     }

@@ -169,8 +169,9 @@ TEST(BadInput, MembersWithoutACommonValidPointArePlacedByTheStatedRuleAndSaid) {
     const QString file = kBad + "members_without_overlap.nc";
     const Outcome o = test::runEnsil({"preprocess", file, "--iso", "4", "--no-cache", "--json"});
     ASSERT_EQ(o.code, 0) << o.err.toStdString();
-    EXPECT_TRUE(o.err.contains("warning: one pair of members shares no grid point where both have "
-                               "a valid value ('member 0' and 'member 1')"))
+    EXPECT_TRUE(
+        o.err.contains("warning: one pair of members shares no grid point where both have "
+                       "a valid value ('member 0' and 'member 1')"))
         << o.err.toStdString();
     const QJsonObject json = jsonOf(o);
     EXPECT_FALSE(holdsNull(json)) << o.out.toStdString();

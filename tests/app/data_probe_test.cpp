@@ -151,7 +151,8 @@ TEST(DataProbe, SaysHowTheDataOpenWithinTheWorkbenchsMemoryBudget) {
     EXPECT_TRUE(app::probeData(era5).size.isEmpty()) << "not asked";
     EXPECT_EQ(app::probeData(era5, std::size_t{1} << 30).size, "0.6 MiB of values");
     const QString tooSmall = app::probeData(era5, std::size_t{1} << 19).size;
-    EXPECT_TRUE(tooSmall.startsWith("0.6 MiB of values: a memory limit of")) << tooSmall.toStdString();
+    EXPECT_TRUE(tooSmall.startsWith("0.6 MiB of values: a memory limit of"))
+        << tooSmall.toStdString();
 
     // The demo (24 members, 97 x 96 x 25) within a budget its in-memory peak just misses.
     test::TempDir dir;

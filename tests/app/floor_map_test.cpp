@@ -22,8 +22,8 @@ data::Ensemble temperaturesOnACube() {
 }  // namespace
 
 TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
-    // Three members on x = 0, 1 and two levels (the two rows alike). Column x = 0: level 0 holds 1, 2, 3
-    // (sample sd 1), level 1 holds 0, 0, 6 (mean 2, sd sqrt((4 + 4 + 16) / 2) = sqrt(12));
+    // Three members on x = 0, 1 and two levels (the two rows alike). Column x = 0: level 0 holds 1,
+    // 2, 3 (sample sd 1), level 1 holds 0, 0, 6 (mean 2, sd sqrt((4 + 4 + 16) / 2) = sqrt(12));
     // column x = 1: level 0 holds 5, 5, 5 (sd 0), level 1 holds 1, NaN, 3 (sd sqrt(2)).
     data::Ensemble e = temperaturesOnACube();
     const float nan = std::nanf("");
@@ -39,7 +39,8 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
         return values;
     };
     for (std::size_t m = 0; m < 3; ++m) {
-        e.members.push_back({"m", field([&](std::size_t i, std::size_t k) { return value[m][i][k]; })});
+        e.members.push_back(
+            {"m", field([&](std::size_t i, std::size_t k) { return value[m][i][k]; })});
     }
     const float meanValue[2][2] = {{2, 2}, {5, 2}};
     const data::Member mean{"mean",
@@ -56,7 +57,8 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
     settings.floor = gl::FloorContent::SpreadMaximum;
     const gl::FloorMap floor = app::floorMapFor(e, mean, maxima, settings);
     EXPECT_EQ(floor.values, maxima.spread);
-    EXPECT_TRUE(floor.caption.contains("standard deviation of t [K]")) << floor.caption.toStdString();
+    EXPECT_TRUE(floor.caption.contains("standard deviation of t [K]"))
+        << floor.caption.toStdString();
 }
 
 TEST(FloorMap, TheProbabilityFloorKeepsTheScaleOfAProbabilityAndSaysItsIsovalue) {

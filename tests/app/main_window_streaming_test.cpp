@@ -19,8 +19,8 @@
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
 #include "tests/app/workbench_helpers.h"
-#include "tests/support/scoped_cache_home.h"
 #include "tests/streaming/same_results.h"
+#include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
@@ -42,7 +42,6 @@ std::string writeSteps(const test::TempDir& dir) {
     return path;
 }
 
-
 }  // namespace
 
 TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurfaces) {
@@ -56,10 +55,9 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
     window.openFiles(selection);
-    ASSERT_TRUE(built.wait(280000)) << "failed: "
-                                    << (failed.isEmpty() ? QString()
-                                                         : failed.front().front().toString())
-                                           .toStdString();
+    ASSERT_TRUE(built.wait(280000))
+        << "failed: "
+        << (failed.isEmpty() ? QString() : failed.front().front().toString()).toStdString();
 
     // Said in the info panel.
     ASSERT_NE(window.overview(), nullptr);
@@ -93,7 +91,8 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     const app::IsovalueResult& got = *window.isovalueSession()->result();
     ASSERT_EQ(got.meshes->members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < want.meshes.members.size(); ++m) {
-        EXPECT_TRUE(test::sameMesh(got.meshes->members[m], want.meshes.members[m])) << "member " << m;
+        EXPECT_TRUE(test::sameMesh(got.meshes->members[m], want.meshes.members[m]))
+            << "member " << m;
     }
     test::expectSameDistances(got.distances, want.distances);
     test::expectSameTree(got.tree, want.tree);

@@ -110,8 +110,8 @@ private:
             case 1: {
                 const std::vector<std::string> files = filesToOpen();
                 data::DataSelection chosen;
-                chosen.paths = {files[static_cast<std::size_t>(
-                    pick(0, static_cast<int>(files.size()) - 1))]};
+                chosen.paths = {
+                    files[static_cast<std::size_t>(pick(0, static_cast<int>(files.size()) - 1))]};
                 w.openFiles(chosen);
                 break;
             }
@@ -202,7 +202,8 @@ private:
 TEST(Monkey, RandomUserActionsNeitherCrashNorHangTheWorkbench) {
     test::ScopedCacheHome cache;
     test::TempDir dir;
-    const auto actions = static_cast<int>(environmentNumber("ENSIL_MONKEY_ACTIONS", kDefaultActions));
+    const auto actions =
+        static_cast<int>(environmentNumber("ENSIL_MONKEY_ACTIONS", kDefaultActions));
     const auto seed = static_cast<unsigned>(environmentNumber("ENSIL_MONKEY_SEED", kDefaultSeed));
     std::printf("monkey: %d actions from seed %u\n", actions, seed);
     Monkey monkey(seed, dir);

@@ -5,9 +5,9 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QPointer>
 #include <QPushButton>
-#include <QLabel>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
@@ -51,8 +51,9 @@ TEST(OpenDataFlow, ChoosesVariableAndTimeIndexThenLoadsThem) {
     EXPECT_TRUE(dialog->memberDimensionBox()->currentText().startsWith("number"));
     EXPECT_EQ(dialog->timeIndexBox()->maximum(), 3);
     // Measured against the workbench's memory budget (its default: ERA5 fits whole).
-    EXPECT_TRUE(dialog->findChild<QLabel*>("openDataDetails")->text().contains(
-        QStringLiteral("Size: 0.6 MiB of values")))
+    EXPECT_TRUE(dialog->findChild<QLabel*>("openDataDetails")
+                    ->text()
+                    .contains(QStringLiteral("Size: 0.6 MiB of values")))
         << dialog->findChild<QLabel*>("openDataDetails")->text().toStdString();
     // The layout follows the new details before the picture is taken.
     QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);

@@ -158,8 +158,8 @@ TEST(PreprocessCommand, JsonGivesTheContourBoxplotOfTheMembers) {
     // ERA5's temperature at 260 K: the depths, median and outliers are the engine's
     // (preprocessing/inclusion_depth.h) for the same members, and a median is the deepest.
     const std::string file = ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc";
-    const CommandRun r = preprocess({QString::fromStdString(file), "--var", "t", "--iso", "260",
-                                     "--no-cache", "--json"});
+    const CommandRun r = preprocess(
+        {QString::fromStdString(file), "--var", "t", "--iso", "260", "--no-cache", "--json"});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     const QJsonObject json = QJsonDocument::fromJson(r.out.toUtf8()).object();
     const data::Ensemble e = data::openEnsemble({{file}, "t", {}, 0});

@@ -25,8 +25,8 @@ std::vector<float> asVector(const data::FieldValues& v) { return {v.begin(), v.e
 
 TEST(SectionVolume, EachFieldIsItsOwnValuesOnItsOwnScaleUnderItsOwnName) {
     const data::Ensemble e = fourPoints();
-    const data::Member mean{"mean", data::FieldValues{252.5F, 262.5F, 272.5F, 282.5F, 252.5F,
-                                                      262.5F, 272.5F, 282.5F}};
+    const data::Member mean{
+        "mean", data::FieldValues{252.5F, 262.5F, 272.5F, 282.5F, 252.5F, 262.5F, 272.5F, 282.5F}};
     const data::FieldValues stddev{0.0F, 3.5F, std::nanf(""), 7.0F, 0.0F, 3.5F, 3.5F, 3.5F};
     const data::FieldValues exceedance{0.0F, 0.5F, 1.0F, 1.0F, 0.0F, 0.5F, 1.0F, 1.0F};
     app::SectionSources s;
@@ -50,8 +50,7 @@ TEST(SectionVolume, EachFieldIsItsOwnValuesOnItsOwnScaleUnderItsOwnName) {
     EXPECT_EQ(meanVolume.minimum, 250.0F);
     EXPECT_EQ(meanVolume.caption(), QStringLiteral("section: mean t [K]"));
 
-    const gl::SectionVolume spread =
-        app::sectionVolumeFor(s, gl::SectionField::StandardDeviation);
+    const gl::SectionVolume spread = app::sectionVolumeFor(s, gl::SectionField::StandardDeviation);
     EXPECT_EQ(spread.values.size(), 8u);
     EXPECT_TRUE(std::isnan(spread.values[2]));
     EXPECT_EQ(spread.minimum, 0.0F) << "from no spread";

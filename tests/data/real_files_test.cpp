@@ -67,7 +67,8 @@ TEST(RealFiles, Era5InNetcdfAndGribHasTheSameFourDatedSteps) {
 
 TEST(RealFiles, EraInterimPackedShortsAndDerivedWindSpeed) {
     const std::string path = sharedDataFile("eraint_uvz.nc");
-    EXPECT_EQ(test::errorOpening({.paths = {path}}).kind(), data::ErrorKind::MemberDimensionNotFound);
+    EXPECT_EQ(test::errorOpening({.paths = {path}}).kind(),
+              data::ErrorKind::MemberDimensionNotFound);
     const data::DataSelection u{.paths = {path}, .variable = "u", .memberDimension = "month"};
     const data::Ensemble eu = data::openEnsemble(u);
     ASSERT_EQ(eu.memberCount(), 2u);

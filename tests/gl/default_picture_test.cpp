@@ -38,12 +38,12 @@ protected:
 TEST_F(DefaultPictureTest, OnEveryRealFileMostMembersAreSeenFromTheDefaultAndTheMapView) {
     for (const RealFile& f : kFiles) {
         SCOPED_TRACE(f.file);
-        data::Ensemble e = data::openEnsemble(
-            {.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + f.file},
-             .memberDimension = f.memberDim});
+        data::Ensemble e =
+            data::openEnsemble({.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + f.file},
+                                .memberDimension = f.memberDim});
         (void)data::leaveOutMembersWithoutData(e);
-        const float iso = prep::defaultIsovalue(
-            e, prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins));
+        const float iso =
+            prep::defaultIsovalue(e, prep::computeFieldStatistics(e, prep::kIsovalueHistogramBins));
         m_renderer.setViewSize(kWidth, kHeight);
         m_renderer.setGrid(e.grid);
         m_renderer.setMeshes(test::meshesOf(e, iso));

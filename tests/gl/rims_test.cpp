@@ -61,9 +61,8 @@ TEST(MeshRims, OnlyEdgesOfOneTriangleWithBothEndsOnOneFaceAreRims) {
     data::PackedMesh mesh;
     mesh.boundsMin = {0.0F, 0.0F, 0.4F};
     mesh.boundsMax = {2.0F, 1.0F, 0.6F};
-    mesh.vertices = {vertex(0, 0, 30000),     vertex(65535, 0, 30000),
-                     vertex(65535, 65535, 30000), vertex(0, 65535, 30000),
-                     vertex(30000, 0, 0)};
+    mesh.vertices = {vertex(0, 0, 30000), vertex(65535, 0, 30000), vertex(65535, 65535, 30000),
+                     vertex(0, 65535, 30000), vertex(30000, 0, 0)};
     const std::uint32_t a = 0, b = 1, c = 2, d = 3, e = 4;
     mesh.indices = {a, b, c, a, c, d, b, a, e};
     const auto rims = pairsOf(gl::rimSegments(mesh, {2.0F, 1.0F, 1.0F}));

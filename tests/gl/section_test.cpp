@@ -66,8 +66,9 @@ TEST_F(SectionTest, EachPixelOfTheFaceShowsTheColourOfTheFieldThere) {
     EXPECT_LE(channelDistance(missing, glm::vec3(0.5F)), 6);
     // The sphere behind the face is hidden by it: its centre shows the field, not orange.
     const QPoint centre = project(display({15.5F, 10, 15.5F}));
-    EXPECT_LE(channelDistance(image.pixelColor(centre), gl::viridis(fieldAt(15.5F, 15.5F) / kLargest)),
-              6);
+    EXPECT_LE(
+        channelDistance(image.pixelColor(centre), gl::viridis(fieldAt(15.5F, 15.5F) / kLargest)),
+        6);
 
     // Without a fill the same plane leaves the sphere in view.
     m_renderer.settings().plane.fill = gl::SectionField::None;
@@ -104,9 +105,9 @@ TEST_F(SectionTest, TheCurvesOfMembersCrossingThePlaneAreDrawnOverTheFace) {
                 for (int dy = -2; dy <= 2; ++dy) {
                     const QColor c = with.pixelColor(pixel + QPoint(dx, dy));
                     const QColor d = without.pixelColor(pixel + QPoint(dx, dy));
-                    largest = std::max({largest, std::abs(c.red() - d.red()),
-                                        std::abs(c.green() - d.green()),
-                                        std::abs(c.blue() - d.blue())});
+                    largest =
+                        std::max({largest, std::abs(c.red() - d.red()),
+                                  std::abs(c.green() - d.green()), std::abs(c.blue() - d.blue())});
                 }
             }
             found += largest > 30;
@@ -156,7 +157,8 @@ TEST_F(SectionTest, TheSectionsColourBarIsListedAfterTheFloors) {
                                                   QStringLiteral("floor: column maximum")));
     m_renderer.setSectionVolume(handMadeVolume(e.grid));
     m_renderer.settings().plane = gl::CuttingPlane::through({0, 1, 0}, display({0, 10, 0}));
-    EXPECT_EQ(m_renderer.overlay(kWidth, kHeight).colourScales.size(), 1u) << "no fill: the floor's";
+    EXPECT_EQ(m_renderer.overlay(kWidth, kHeight).colourScales.size(), 1u)
+        << "no fill: the floor's";
     m_renderer.settings().plane.fill = gl::SectionField::StandardDeviation;
     const gl::ViewOverlay overlay = m_renderer.overlay(kWidth, kHeight);
     ASSERT_EQ(overlay.colourScales.size(), 2u);

@@ -11,8 +11,8 @@
 using namespace ensil;
 
 namespace {
-// A sphere of radius 12 + m (member m, at isovalue 12) whose centre lies near the box's bottom and its
-// x = 99 face, so the box cuts it on both.
+// A sphere of radius 12 + m (member m, at isovalue 12) whose centre lies near the box's bottom and
+// its x = 99 face, so the box cuts it on both.
 const glm::vec3 kSphereCentre{92.0F, 50.2F, 3.0F};
 data::Ensemble cutSpheres(std::size_t members) {
     return test::analyticEnsemble(members, 100, 100, 20, [](auto m, auto i, auto j, auto k) {

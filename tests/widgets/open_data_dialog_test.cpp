@@ -89,8 +89,8 @@ TEST(OpenDataDialog, ListsTheVariablesAndOffersTheDetectedChoices) {
     DataProbe sized = era5Probe();
     sized.size = "0.6 MiB of values";
     dialog.showProbe(sized, requested.front().at(1).toInt());
-    EXPECT_TRUE(dialog.findChild<QLabel*>("openDataDetails")->text().contains(
-        "Size: 0.6 MiB of values"));
+    EXPECT_TRUE(
+        dialog.findChild<QLabel*>("openDataDetails")->text().contains("Size: 0.6 MiB of values"));
     EXPECT_TRUE(okButton(dialog)->isEnabled());
     const data::DataSelection chosen = dialog.selection();
     EXPECT_EQ(chosen.variable, "t");

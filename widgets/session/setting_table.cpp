@@ -13,8 +13,8 @@ namespace {
 constexpr std::array<std::string_view, 4> kModes{"shaded", "spaghetti", "surfaces", "opaque"};
 constexpr std::array<std::string_view, 2> kProjections{"perspective", "orthographic"};
 // In gl::FloorContent's order.
-constexpr std::array<std::string_view, 5> kFloorContents{
-    "none", "column-maximum", "mean-at-level", "spread-maximum", "probability-maximum"};
+constexpr std::array<std::string_view, 5> kFloorContents{"none", "column-maximum", "mean-at-level",
+                                                         "spread-maximum", "probability-maximum"};
 // In gl::ContextSurface's order.
 constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "probability"};
 // In gl::SectionField's order.
