@@ -15,6 +15,7 @@
 #include "app/workbench_surface_format.h"
 #include "data/working_memory.h"
 #include "gl/offscreen_context.h"
+#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 
 namespace {
@@ -27,6 +28,7 @@ void setApplicationIdentity() {
 
 int main(int argc, char* argv[]) {
     ensil::data::keepWorkingMemoryForReuse();
+    ensil::gl::ensureRuntimeDirectory();
     QStringList args;
     for (int i = 0; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
     QTextStream out(stdout);

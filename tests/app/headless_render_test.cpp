@@ -161,3 +161,20 @@ TEST(HeadlessRender, ReportsReadingThenPreprocessingEachToTheEnd) {
     EXPECT_DOUBLE_EQ(last["reading"], 1.0);
     EXPECT_DOUBLE_EQ(last["preprocessing"], 1.0);
 }
+
+// Where XDG_RUNTIME_DIR is unset (containers, CI, cron), a command's stderr holds only what
+// ensil says: no "QStandardPaths: XDG_RUNTIME_DIR not set" line from Qt at every start.
+TEST(HeadlessRender, SaysNothingOfAMissingRuntimeFolder) {
+    const test::TempDir dir;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("XDG_RUNTIME_DIR"));
+    QProcess process;
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(ENSIL_EXECUTABLE),
+                  {"render", "--demo", "--out", QString::fromStdString(dir.file("demo.png")),
+                   "--size", "160x100", "--no-cache"});
+    ASSERT_TRUE(process.waitForFinished(120000));
+    const QString errors = QString::fromLocal8Bit(process.readAllStandardError());
+    EXPECT_EQ(process.exitCode(), 0) << errors.toStdString();
+    EXPECT_FALSE(errors.contains(QLatin1String("XDG_RUNTIME_DIR"))) << errors.toStdString();
+}

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <string>
 
+#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 
 namespace {
@@ -22,15 +23,6 @@ bool listingOnly(int argc, char** argv) {
     return false;
 }
 
-// Qt warns on every start when XDG_RUNTIME_DIR is unset (as under CI); give it a private one.
-void ensureRuntimeDir() {
-    if (std::getenv("XDG_RUNTIME_DIR") != nullptr) return;
-    const auto dir =
-        std::filesystem::temp_directory_path() / ("ensil-runtime-" + std::to_string(::getuid()));
-    std::filesystem::create_directories(dir);
-    std::filesystem::permissions(dir, std::filesystem::perms::owner_all);
-    ::setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
-}
 // Tests point XDG_CACHE_HOME at temporary folders (the mesh cache); Mesa would put its shader
 // cache there too, remember the folder for the whole process and complain once it is gone.
 void ensureShaderCacheDir() {
@@ -78,7 +70,7 @@ int main(int argc, char** argv) {
                      "virtual one: xvfb-run -a ctest --preset ci\n");
         return 1;
     }
-    ensureRuntimeDir();
+    ensil::gl::ensureRuntimeDirectory();  // as ensil does: Qt would warn at every start
     ensureShaderCacheDir();
     const PrivateUserFolders userFolders;
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
