@@ -3,9 +3,10 @@
 // step. glibc gives each block of 128 KiB or more a mapping of its own and returns it to the
 // system when freed, so the next member touches fresh pages, a fault each: about 10 us a page
 // on a virtual machine (bulk_allocator.h). On the paper-sized demo that was half the
-// decimation's time and half the marching cubes' (ensil_preprocess_benchmark; README
-// "Benchmarks"). keepWorkingMemoryForReuse() keeps blocks up to kMappedAbove in the heap and
-// keeps up to kKeptFree of freed memory at each heap's top, so they are used again instead.
+// decimation's time and half the marching cubes' (ensil_preprocess_benchmark,
+// docs/benchmarks.md). keepWorkingMemoryForReuse() keeps blocks up to kMappedAbove in the heap
+// and keeps up to kKeptFree of freed memory at each heap's top, so they are used again
+// instead.
 // Larger blocks (a 256^3 member's values, through bulk_allocator.h anyway) still get mappings
 // of their own and go back to the system when freed.
 //

@@ -40,14 +40,14 @@ stage "build (asan)" cmake --build --preset asan
 # address ends in 0x010 for a pre-2.25 glibc header, reads two heap words before it as a range
 # and scans it. The asan test preset turns that interception off (intercept_tls_get_addr=0).
 # The monkey test (tests/app/monkey_test.cpp) takes ENSIL_MONKEY_ACTIONS random actions; longer
-# runs are by hand (README, "The monkey test").
+# runs are by hand (CONTRIBUTING.md, "The monkey test").
 ENSIL_MONKEY_ACTIONS=2000 stage "test (asan)" tests/support/with-private-display.sh \
     ctest --preset asan
 
 # Each libFuzzer target (the readers, the mesh cache, projects, command-line values) on its
 # seed corpus and then 1500 inputs from a fixed seed (a fixed budget, not the clock's; the
 # inputs still vary a little from run to run, run-fuzzers.sh says why; the longer runs are by
-# hand, README "Fuzzing"); a crash, leak or hang fails the run. ENSIL_SKIP_FUZZ=1 skips it.
+# hand, CONTRIBUTING.md "Fuzzing"); a crash, leak or hang fails the run. ENSIL_SKIP_FUZZ=1 skips it.
 if [ "${ENSIL_SKIP_FUZZ:-0}" != 1 ]; then
     ENSIL_FUZZ_RUNS=1500 stage "fuzz" tests/fuzz/run-fuzzers.sh 120
 fi

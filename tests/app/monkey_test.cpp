@@ -5,8 +5,9 @@
 // the window for a new one. Each action waits until the work it started has ended (the window
 // idle), and dismisses any message it raised, as a user clicks OK. It passes when nothing
 // crashes, hangs or trips AddressSanitizer (CI runs it in the asan build too) and the window
-// still answers. ENSIL_MONKEY_ACTIONS and ENSIL_MONKEY_SEED set a longer run by hand (README,
-// "The monkey test"); each action is logged, so a failure names the seed and the step.
+// still answers. ENSIL_MONKEY_ACTIONS and ENSIL_MONKEY_SEED set a longer run by hand
+// (CONTRIBUTING.md, "The monkey test"); each action is logged, so a failure names the seed
+// and the step.
 #include <gtest/gtest.h>
 
 #include <QComboBox>

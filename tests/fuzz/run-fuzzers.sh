@@ -56,7 +56,7 @@ for name in "${fuzzers[@]}"; do
     # each run explores anew. The inputs are not quite the same from run to run: the readers'
     # threads and the random names of the temporary files change the coverage libFuzzer sees
     # (two runs here differed already after the seeds), and so its mutations. CI once found in
-    # its 1500 what a run here did not; longer runs by hand (README "Fuzzing") look further.
+    # its 1500 what a run here did not; longer runs by hand (CONTRIBUTING.md "Fuzzing") look further.
     budget=()
     if [ -n "${ENSIL_FUZZ_RUNS:-}" ]; then budget=(-seed=1 -runs="$ENSIL_FUZZ_RUNS"); fi
     TMPDIR=$work/$name/tmp "$binary" "${budget[@]}" -max_total_time="$seconds" \
