@@ -1,6 +1,7 @@
 #include "app/command_line.h"
 
 #include <QCommandLineParser>
+#include <QSysInfo>
 #include <array>
 #include <exception>
 #include <new>
@@ -13,6 +14,7 @@
 #include "app/render_command.h"
 #include "app/stats_command.h"
 #include "app/version.h"
+#include "data/library_versions.h"
 
 namespace ensil::app {
 namespace {
@@ -41,7 +43,7 @@ const Subcommand* findSubcommand(const QString& name) {
 QString topLevelHelp() {
     QString text = QStringLiteral(
         "Usage: ensil [options] [PATH...]\n"
-        "       ensil <command> [options]\n"
+        "  or:  ensil <command> [options]\n"
         "\n"
         "ensil (ensemble silhouettes) shows ensembles of 3D isosurfaces as screen-space\n"
         "silhouettes. With no PATH it opens the workbench on the built-in demo ensemble;\n"
@@ -66,7 +68,7 @@ QString topLevelHelp() {
         "                    few points, their surfaces built from the whole data read in\n"
         "                    slabs. E.g. 1GiB, 512M.\n"
         "  -h, --help        Show this help.\n"
-        "  -v, --version     Show the version.\n"
+        "  -V, --version     Show the version, the libraries' and the compiler's.\n"
         "\n"
         "Run 'ensil <command> --help' for the options of a command.\n");
     return text;
@@ -74,11 +76,30 @@ QString topLevelHelp() {
 
 }  // namespace
 
+QString versionText() {
+    QStringList libraries{QStringLiteral("Qt ") + QString::fromLatin1(qVersion())};
+    for (const data::LibraryVersion& library : data::readerLibraryVersions()) {
+        libraries << QString::fromStdString(library.name + " " + library.version);
+    }
+#if defined(__clang__)
+    const QString compiler = QStringLiteral("clang " __clang_version__);
+#elif defined(__GNUC__)
+    const QString compiler = QStringLiteral("GCC " __VERSION__);
+#elif defined(_MSC_VER)
+    const QString compiler = QStringLiteral("MSVC ") + QString::number(_MSC_VER);
+#else
+    const QString compiler = QStringLiteral("an unknown compiler");
+#endif
+    return QStringLiteral("ensil " ENSIL_VERSION "\nlibraries: ") +
+           libraries.join(QStringLiteral(", ")) + QStringLiteral("\nbuilt with ") + compiler +
+           QStringLiteral(" for ") + QSysInfo::buildAbi() + QStringLiteral("\n");
+}
+
 bool isHeadlessInvocation(const QStringList& args) {
     if (args.size() < 2) return false;
     const QString& first = args.at(1);
     return findSubcommand(first) != nullptr || first == QLatin1String("-h") ||
-           first == QLatin1String("--help") || first == QLatin1String("-v") ||
+           first == QLatin1String("--help") || first == QLatin1String("-V") ||
            first == QLatin1String("--version");
 }
 
@@ -103,7 +124,8 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
     QCommandLineParser parser;
     const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
                                   QStringLiteral("Show this help."));
-    const QCommandLineOption version({QStringLiteral("v"), QStringLiteral("version")},
+    // -V as in gcc, cmake and python: -v means "verbose" to most tools.
+    const QCommandLineOption version({QStringLiteral("V"), QStringLiteral("version")},
                                      QStringLiteral("Show the version."));
     const QCommandLineOption memoryLimit(QStringLiteral("memory-limit"),
                                          QStringLiteral("Memory the workbench may hold."),
@@ -120,7 +142,7 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
         return {0, std::nullopt};
     }
     if (parser.isSet(version)) {
-        out << "ensil " << ENSIL_VERSION << "\n";
+        out << versionText();
         return {0, std::nullopt};
     }
     QString problem;

@@ -26,6 +26,10 @@ struct CommandLineOutcome {
 // run needs no display and no QApplication.
 bool isHeadlessInvocation(const QStringList& args);
 
+// What `ensil --version` prints: "ensil X.Y.Z", then the libraries it runs with (Qt and the
+// readers', as loaded, not as compiled against) and the compiler that built it.
+QString versionText();
+
 CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTextStream& err);
 
 }  // namespace ensil::app

@@ -34,7 +34,11 @@ int main(int argc, char* argv[]) {
     QTextStream out(stdout);
     QTextStream err(stderr);
 
-    if (args.size() >= 2 && args.at(1) == QLatin1String("render")) {
+    // `ensil render --help` needs no display server or EGL (man pages are made from it at build
+    // time, on machines that may have neither).
+    const bool helpOnly =
+        args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"));
+    if (args.size() >= 2 && args.at(1) == QLatin1String("render") && !helpOnly) {
         // With no display server, Mesa's surfaceless EGL renders (a batch node).
         if (const auto problem = ensil::gl::prepareOffscreenPlatform()) {
             err << "ensil render: no display server: " << problem->c_str()

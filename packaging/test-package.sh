@@ -38,6 +38,10 @@ for path in ./usr/bin/ensil \
             ./usr/share/icons/hicolor/256x256/apps/$app_id.png \
             ./usr/share/doc/ensil/copyright \
             ./usr/share/doc/ensil/LICENSE \
+            ./usr/share/man/man1/ensil.1.gz \
+            ./usr/share/man/man1/ensil-render.1.gz \
+            ./usr/share/bash-completion/completions/ensil \
+            ./usr/share/zsh/vendor-completions/_ensil \
             ./usr/lib/python3/dist-packages/ensil/__init__.py \
             ./usr/lib/python3/dist-packages/ensil/__init__.pyi; do
     grep -qxF "$path" <<<"$contents" || fail "the package does not hold $path"

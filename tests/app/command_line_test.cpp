@@ -6,6 +6,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
+#include <QRegularExpression>
 #include <QString>
 #include <QTextStream>
 
@@ -44,6 +46,38 @@ CliRun run(QStringList args) {
     return r;
 }
 }  // namespace
+
+// -V and --version name ensil's version, then every library it reads and draws with, as it
+// runs them, and the compiler: what a bug report needs. netCDF's and PROJ's own tools agree.
+TEST(CommandLine, VersionNamesTheLibrariesAsTheyRunAndTheCompiler) {
+    const CliRun version = run({"-V"});
+    EXPECT_EQ(version.code, 0);
+    EXPECT_EQ(run({"--version"}).out, version.out);
+    const std::string text = version.out.toStdString();
+    for (const char* library : {"Qt", "netCDF", "HDF5", "ecCodes", "PROJ", "VTK", "xxHash"}) {
+        const QRegularExpression named(
+            QStringLiteral("[ ,]%1 [0-9]+\\.[0-9]+\\.[0-9]+").arg(QLatin1String(library)));
+        EXPECT_TRUE(version.out.contains(named)) << library << " in:\n" << text;
+    }
+    const auto toolSays = [](const QString& tool, const QStringList& args) {
+        QProcess process;
+        process.start(tool, args);
+        EXPECT_TRUE(process.waitForFinished(30000)) << tool.toStdString();
+        return QString::fromLocal8Bit(process.readAllStandardOutput()).trimmed();
+    };
+    const QString netcdf = toolSays(QStringLiteral("nc-config"), {QStringLiteral("--version")});
+    EXPECT_TRUE(netcdf.startsWith(QLatin1String("netCDF ")) && version.out.contains(netcdf))
+        << netcdf.toStdString() << " in:\n"
+        << text;
+    const QString proj = toolSays(QStringLiteral("pkg-config"),
+                                  {QStringLiteral("--modversion"), QStringLiteral("proj")});
+    EXPECT_TRUE(!proj.isEmpty() && version.out.contains(QStringLiteral("PROJ ") + proj))
+        << proj.toStdString() << " in:\n"
+        << text;
+    EXPECT_TRUE(version.out.contains(QLatin1String("\nbuilt with "))) << text;
+    // -v is not the version: most tools read it as "verbose".
+    EXPECT_EQ(run({"-v"}).code, 2);
+}
 
 TEST(CommandLine, VersionAndHelpNeedNoDisplay) {
     EXPECT_TRUE(isHeadlessInvocation({"ensil", "--version"}));
