@@ -25,5 +25,5 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 tar -xzf "$tgz" -C "$work"
-version=$("$work/$top/bin/ensil" --version) || fail "the unpacked ensil does not run"
+version=$("$work/$top/bin/ensil" --version | head -n 1) || fail "the unpacked ensil does not run"
 echo "test-tarball: $(wc -l <<<"$tar_files") files, as in the .deb; $top/bin/ensil: $version"
