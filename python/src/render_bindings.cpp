@@ -14,6 +14,7 @@
 
 #include "app/headless/session_renderer.h"
 #include "gl/offscreen_context.h"
+#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"
@@ -34,6 +35,7 @@ namespace {
 // QGuiApplication the host made (a Qt console) is used as it is.
 void ensureGuiApplication() {
     if (QCoreApplication::instance() == nullptr) {
+        gl::ensureRuntimeDirectory();  // as ensil does: no stray Qt line on the notebook's stderr
         if (const auto problem = gl::prepareOffscreenPlatform()) {
             throw std::runtime_error("no display server: " + *problem);
         }
