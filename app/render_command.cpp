@@ -74,33 +74,17 @@ struct Options {
 
 // The settings the command line sets, each with its range from the one setting table.
 const session::SettingOptions& sceneOptions() {
-    static const session::SettingOptions options{"mode",
-                                                 "clusters",
-                                                 "linkage",
-                                                 "show_mean",
-                                                 "thickness",
-                                                 "surface_opacity",
-                                                 "group_size",
-                                                 "vertical_exaggeration",
-                                                 "azimuth",
-                                                 "elevation",
-                                                 "projection",
-                                                 "background",
-                                                 "axis_labels",
-                                                 "legend",
-                                                 "plane_thickness",
-                                                 "coastlines",
-                                                 "borders",
-                                                 "graticule",
-                                                 "mean_opacity",
-                                                 "title",
-                                                 "floor",
-                                                 "floor_level",
-                                                 "rims",
-                                                 "context",
-                                                 "band",
-                                                 "section",
-                                                 "context_spread"};
+    // A table, four names a row.
+    // clang-format off
+    static const session::SettingOptions options{
+        "mode",        "clusters",        "linkage",         "show_mean",
+        "thickness",   "surface_opacity", "group_size",      "vertical_exaggeration",
+        "azimuth",     "elevation",       "projection",      "background",
+        "axis_labels", "legend",          "plane_thickness", "coastlines",
+        "borders",     "graticule",       "mean_opacity",    "title",
+        "floor",       "floor_level",     "rims",            "context",
+        "band",        "section",         "context_spread"};
+    // clang-format on
     return options;
 }
 

@@ -94,30 +94,20 @@ public:
         }
         return v;
     }
-    // Numbers from 1 (members and clusters as the workbench numbers them), as indices from 0.
-    [[nodiscard]] std::vector<int> indicesOfNumbers(const QString& key) const {
+    // A list of whole numbers counted from `first` (0: indices; 1: numbers, as the workbench
+    // shows members and clusters), as indices from 0.
+    [[nodiscard]] std::vector<int> indices(const QString& key, int first = 0) const {
+        const std::string what = first == 0 ? "indices" : "numbers";
         std::vector<int> out;
         if (!has(key)) return out;
-        if (!value(key).isArray()) fail(key, "must be a list of numbers");
-        for (const auto& v : value(key).toArray()) {
-            const double d = v.toDouble(0.0);
-            if (!v.isDouble() || d < 1 || d != std::floor(d) || d > 1e6) {
-                fail(key, "must be a list of numbers (whole numbers from 1)");
-            }
-            out.push_back(static_cast<int>(d) - 1);
-        }
-        return out;
-    }
-    [[nodiscard]] std::vector<int> indices(const QString& key) const {
-        std::vector<int> out;
-        if (!has(key)) return out;
-        if (!value(key).isArray()) fail(key, "must be a list of indices");
+        if (!value(key).isArray()) fail(key, "must be a list of " + what);
         for (const auto& v : value(key).toArray()) {
             const double d = v.toDouble(-1.0);
-            if (!v.isDouble() || d < 0 || d != std::floor(d) || d > 1e6) {
-                fail(key, "must be a list of indices (whole numbers from 0)");
+            if (!v.isDouble() || d < first || d != std::floor(d) || d > 1e6) {
+                fail(key, "must be a list of " + what + " (whole numbers from " +
+                              std::to_string(first) + ")");
             }
-            out.push_back(static_cast<int>(d));
+            out.push_back(static_cast<int>(d) - first);
         }
         return out;
     }
@@ -345,6 +335,9 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
             std::to_string(kProjectSchemaVersion) + ". Update ensil to open it.");
     }
 
+    // Format 3 numbers hidden clusters and hidden and selected members from 1, as the workbench
+    // shows them; formats 1 and 2 wrote indices from 0.
+    const int firstNumber = version >= 3 ? 1 : 0;
     SessionState p;
     readData(root, projectDir, p);
     if (root.has(QStringLiteral("isovalue"))) {
@@ -377,8 +370,7 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
     }
     if (root.has(QStringLiteral("clusters"))) {
         const Fields f = root.object(QStringLiteral("clusters"));
-        p.hiddenClusters = version >= 3 ? f.indicesOfNumbers(QStringLiteral("hidden"))
-                                        : f.indices(QStringLiteral("hidden"));
+        p.hiddenClusters = f.indices(QStringLiteral("hidden"), firstNumber);
         p.memberClusters = f.indices(QStringLiteral("members"));
         if (std::ranges::find(p.memberClusters, 0) != p.memberClusters.end()) {
             f.fail(QStringLiteral("members"), "must be cluster numbers (whole numbers from 1)");
@@ -386,13 +378,8 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
     }
     if (root.has(QStringLiteral("members"))) {
         const Fields f = root.object(QStringLiteral("members"));
-        if (version >= 3) {
-            p.hiddenMembers = f.indicesOfNumbers(QStringLiteral("hidden"));
-            p.selection = f.indicesOfNumbers(QStringLiteral("selected"));
-        } else {
-            p.hiddenMembers = f.indices(QStringLiteral("hidden"));
-            p.selection = f.indices(QStringLiteral("selected"));
-        }
+        p.hiddenMembers = f.indices(QStringLiteral("hidden"), firstNumber);
+        p.selection = f.indices(QStringLiteral("selected"), firstNumber);
     }
     if (root.has(QStringLiteral("layout"))) {
         const Fields f = root.object(QStringLiteral("layout"));
