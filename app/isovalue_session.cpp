@@ -5,8 +5,8 @@
 #include <numeric>
 #include <utility>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/streamed_isovalue_job.h"
+#include "engine/isovalue_job.h"
+#include "engine/streamed_isovalue_job.h"
 #include "preprocessing/preview_meshes.h"
 #include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
@@ -34,7 +34,7 @@ QStringList IsovalueSession::memberNames() const {
 void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey,
-                                  std::shared_ptr<const StreamedSource> streamed) {
+                                  std::shared_ptr<const engine::StreamedSource> streamed) {
     setTimeStep(std::move(ensemble), std::move(moments), std::move(sourceKey), std::move(streamed));
     m_prepareJob.cancel();  // a step of other data
     m_kept.clear();         // other data
@@ -52,7 +52,7 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
 void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
                                   std::shared_ptr<const prep::EnsembleMoments> moments,
                                   std::string sourceKey,
-                                  std::shared_ptr<const StreamedSource> streamed) {
+                                  std::shared_ptr<const engine::StreamedSource> streamed) {
     // A step prepared ahead goes on: it may be this one (setIsovalue then waits for it). So
     // do the motion meshes of the step left, for its return (attachMotionMeshes keeps them):
     // the step opened first gets its own only after its first frame, and without them its
@@ -69,12 +69,14 @@ void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble
 namespace {
 
 // One isovalue's surfaces, figures and clusters for one step's data: the work of a job.
-IsovalueResult buildResult(const IsovalueJobInput& input, const StreamedSource* streamed,
-                           const std::stop_token& stop, const data::Progress& progress) {
+IsovalueResult buildResult(const engine::IsovalueJobInput& input,
+                           const engine::StreamedSource* streamed, const std::stop_token& stop,
+                           const data::Progress& progress) {
     QElapsedTimer timer;
     timer.start();
-    IsovalueOutcome outcome = streamed ? runStreamedIsovalueJob(input, *streamed, stop, progress)
-                                       : runIsovalueJob(input, stop, progress);
+    engine::IsovalueOutcome outcome =
+        streamed ? engine::runStreamedIsovalueJob(input, *streamed, stop, progress)
+                 : engine::runIsovalueJob(input, stop, progress);
     IsovalueResult r;
     r.fromCache = outcome.fromCache;
     r.triangles = outcome.meshes.triangles;
@@ -123,7 +125,7 @@ void IsovalueSession::setIsovalue(float isovalue, float exaggeration) {
     }
     m_prepareJob.cancel();  // a guess the user did not follow: its cores are wanted here
     if (m_motionSourceKey == m_sourceKey) m_motionJob.cancel();  // not a step left's
-    IsovalueJobInput input = jobInput(m_sourceKey, isovalue, exaggeration);
+    engine::IsovalueJobInput input = jobInput(m_sourceKey, isovalue, exaggeration);
     m_buildInFlight = true;
     m_job.start(
         [=](const std::stop_token& stop, const data::Progress& progress) mutable {
@@ -157,7 +159,7 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
     const std::string key = keyOf(sourceKey, isovalue, exaggeration);
     if (kept(key) || (m_prepareJob.isRunning() && m_preparingKey == key)) return;
     if (m_awaitingPrepared) return;  // the step shown is still waiting for the last one
-    IsovalueJobInput input = jobInput(std::move(sourceKey), isovalue, exaggeration);
+    engine::IsovalueJobInput input = jobInput(std::move(sourceKey), isovalue, exaggeration);
     m_preparingKey = key;
     m_prepareJob.start(
         [=](const std::stop_token& stop, const data::Progress& progress) mutable {
@@ -195,7 +197,7 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
         });
 }
 
-BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
+workbench::BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
     std::shared_ptr<const data::Ensemble> ensemble,
     std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
     int median, std::vector<int> outliers) {
@@ -328,9 +330,9 @@ void IsovalueSession::reportFailure(const std::exception_ptr& error, bool cancel
     }
 }
 
-IsovalueJobInput IsovalueSession::jobInput(std::string sourceKey, float isovalue,
-                                           float exaggeration) const {
-    IsovalueJobInput input;
+engine::IsovalueJobInput IsovalueSession::jobInput(std::string sourceKey, float isovalue,
+                                                   float exaggeration) const {
+    engine::IsovalueJobInput input;
     input.options.isovalue = isovalue;
     input.verticalExaggeration = exaggeration;
     input.cacheDirectory = m_cacheDirectory.toStdString();
@@ -432,13 +434,13 @@ void IsovalueSession::addContextSurfacesIfWanted() {
     }
     const auto shown = m_result->meshes;
     m_contextFor = shown;
-    IsovalueJobInput input = jobInput(m_sourceKey, shown->isovalue, m_shownExaggeration);
+    engine::IsovalueJobInput input = jobInput(m_sourceKey, shown->isovalue, m_shownExaggeration);
     input.context = prep::ContextParts::FiguresAndSurfaces;
     m_contextJob.start(
         [input, ensemble = m_ensemble, shown](const std::stop_token& stop,
                                               const data::Progress& progress) mutable {
             input.ensemble = ensemble.get();
-            const prep::ContextSurfaces context = buildContextOf(input, stop, progress);
+            const prep::ContextSurfaces context = engine::buildContextOf(input, stop, progress);
             auto withContext = std::make_shared<data::MeshSet>(*shown);
             prep::addContextSurfaces(*withContext, context);
             return std::shared_ptr<const data::MeshSet>(std::move(withContext));

@@ -22,14 +22,14 @@
 #include <utility>
 #include <vector>
 
-#include "app/background_job.h"
-#include "app/headless/isovalue_job.h"
-#include "app/headless/workbench_reading.h"
 #include "data/ensemble.h"
 #include "data/packed_mesh.h"
+#include "engine/isovalue_job.h"
+#include "engine/workbench_reading.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/similarity.h"
+#include "workbench/background_job.h"
 
 namespace ensil::ui {
 class SilhouetteView;
@@ -73,16 +73,16 @@ public:
 
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
     // With `streamed`, `ensemble` and `moments` are a thinned copy's and each isovalue's
-    // surfaces come from the whole data read in slabs (app/headless/streamed_isovalue_job.h).
+    // surfaces come from the whole data read in slabs (engine/streamed_isovalue_job.h).
     void setEnsemble(std::shared_ptr<const data::Ensemble> ensemble,
                      std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey,
-                     std::shared_ptr<const StreamedSource> streamed = nullptr);
+                     std::shared_ptr<const engine::StreamedSource> streamed = nullptr);
     // Another time step of the same members: the last step's surfaces, figures and clusters
     // stay on screen until setIsovalue's are built, and its clusters are what the new ones are
     // matched to (MemberSelection), so colours follow groups across steps.
     void setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
                      std::shared_ptr<const prep::EnsembleMoments> moments, std::string sourceKey,
-                     std::shared_ptr<const StreamedSource> streamed = nullptr);
+                     std::shared_ptr<const engine::StreamedSource> streamed = nullptr);
     // Builds (or reads from the cache) this isovalue's surfaces, their attributes taken in the
     // display space of this vertical exaggeration.
     void setIsovalue(float isovalue, float verticalExaggeration);
@@ -169,8 +169,8 @@ private:
     [[nodiscard]] std::shared_ptr<const data::MeshSet> keptPreview(const std::string& key) const;
     void keepPreview(const std::string& key, std::shared_ptr<const data::MeshSet> meshes);
     // A job's input for this data, isovalue and exaggeration (its ensemble and moments not set).
-    [[nodiscard]] IsovalueJobInput jobInput(std::string sourceKey, float isovalue,
-                                            float verticalExaggeration) const;
+    [[nodiscard]] engine::IsovalueJobInput jobInput(std::string sourceKey, float isovalue,
+                                                    float verticalExaggeration) const;
     void startPreview(float isovalue, float verticalExaggeration);
     void startWaitingPreview();
     void showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue, double seconds);
@@ -200,19 +200,19 @@ private:
     std::shared_ptr<const data::Ensemble> m_ensemble;
     std::shared_ptr<const prep::EnsembleMoments> m_moments;
     std::string m_sourceKey;
-    std::shared_ptr<const StreamedSource> m_streamed;
+    std::shared_ptr<const engine::StreamedSource> m_streamed;
     std::unique_ptr<IsovalueResult> m_result;
     // The result shown: its key and display exaggeration, for the context surfaces made later.
     std::string m_shownKey;
     float m_shownExaggeration = 1.0F;
     bool m_contextWanted = true;
-    BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
+    workbench::BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
     std::string m_motionSourceKey;  // the data of the result m_motionJob builds for
     std::shared_ptr<const data::MeshSet> m_contextFor;  // the meshes m_contextJob completes
     prep::Linkage m_linkage = prep::Linkage::Average;
-    BackgroundJob<IsovalueResult> m_job{this};
+    workbench::BackgroundJob<IsovalueResult> m_job{this};
     // The step prepared ahead: its key, and whether the surfaces asked for are that build's.
-    BackgroundJob<IsovalueResult> m_prepareJob{this};
+    workbench::BackgroundJob<IsovalueResult> m_prepareJob{this};
     std::string m_preparingKey;
     bool m_awaitingPrepared = false;
     float m_awaitedIsovalue = 0.0F;
@@ -227,7 +227,7 @@ private:
         double seconds = 0.0;
     };
     // A preview's work: its meshes marked with this median and these outliers.
-    static BackgroundJob<BuiltPreview>::Work previewWork(
+    static workbench::BackgroundJob<BuiltPreview>::Work previewWork(
         std::shared_ptr<const data::Ensemble> ensemble,
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
@@ -235,10 +235,10 @@ private:
     // while a full build and a time step's motion meshes, or the reading ahead, held every
     // thread, and a step never seen could then reach full detail with no preview first.
     QThreadPool m_previewThread;
-    BackgroundJob<BuiltPreview> m_previewJob{this, BackgroundJob<BuiltPreview>::WhenDestroyed::Wait,
-                                             &m_previewThread};
+    workbench::BackgroundJob<BuiltPreview> m_previewJob{
+        this, workbench::BackgroundJob<BuiltPreview>::WhenDestroyed::Wait, &m_previewThread};
     // A result's motion meshes: the one shown, or that of a time step just left.
-    BackgroundJob<BuiltPreview> m_motionJob{this};
+    workbench::BackgroundJob<BuiltPreview> m_motionJob{this};
     std::optional<PreviewRequest> m_pendingPreview;
     bool m_previewing = false;
     // A preview job started and not yet handed back (done or dropped): until then new values

@@ -9,14 +9,14 @@
 #include <memory>
 #include <string>
 
-#include "app/command_line.h"
 #include "app/main_window.h"
-#include "app/version.h"
-#include "app/workbench_surface_format.h"
+#include "cli/command_line.h"
 #include "data/working_memory.h"
 #include "gl/offscreen_context.h"
 #include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
+#include "session/version.h"
+#include "workbench/workbench_surface_format.h"
 
 namespace {
 void setApplicationIdentity() {
@@ -48,14 +48,14 @@ int main(int argc, char* argv[]) {
         QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
         QGuiApplication app(argc, argv);
         setApplicationIdentity();
-        return ensil::app::runCommandLine(args, out, err).exitCode;
+        return ensil::cli::runCommandLine(args, out, err).exitCode;
     }
-    if (ensil::app::isHeadlessInvocation(args)) {
+    if (ensil::cli::isHeadlessInvocation(args)) {
         QCoreApplication app(argc, argv);
         setApplicationIdentity();
-        return ensil::app::runCommandLine(args, out, err).exitCode;
+        return ensil::cli::runCommandLine(args, out, err).exitCode;
     }
-    const auto outcome = ensil::app::runCommandLine(args, out, err);
+    const auto outcome = ensil::cli::runCommandLine(args, out, err);
     if (!outcome.workbench) return outcome.exitCode;
     if (std::string why; !ensil::gl::displayServerAvailable(&why)) {
         // Qt would only say that no platform plugin could be initialised.
@@ -66,7 +66,7 @@ int main(int argc, char* argv[]) {
     }
 
     // The default format must be set before the QApplication exists.
-    QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(ensil::workbench::workbenchSurfaceFormat());
     QApplication app(argc, argv);
     setApplicationIdentity();
     // Wayland compositors match the window to the installed desktop entry by this id (X11 ones

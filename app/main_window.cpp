@@ -23,28 +23,28 @@
 #include <limits>
 #include <map>
 
-#include "app/ensemble_facts.h"
-#include "app/headless/floor_map.h"
-#include "app/headless/picture_title.h"
-#include "app/headless/session_renderer.h"
-#include "app/headless/streaming_run.h"
 #include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
-#include "app/point_description.h"
-#include "app/recent_selections.h"
-#include "app/version.h"
 #include "data/error.h"
+#include "engine/ensemble_facts.h"
+#include "engine/floor_map.h"
+#include "engine/picture_title.h"
+#include "engine/session_renderer.h"
+#include "engine/streaming_run.h"
 #include "geo/map_projection.h"
+#include "session/session_model.h"
+#include "session/version.h"
+#include "session/view_presets.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/frame_paced_repaints.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/session_model.h"
-#include "widgets/session/view_presets.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/point_description.h"
+#include "workbench/recent_selections.h"
 
 namespace ensil::app {
 namespace {
@@ -226,8 +226,8 @@ void MainWindow::createToolbar() {
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
     // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
-    m_session = new IsovalueSession(m_view, m_selection,
-                                    QString::fromStdString(defaultMeshCacheDirectory()), this);
+    m_session = new IsovalueSession(
+        m_view, m_selection, QString::fromStdString(engine::defaultMeshCacheDirectory()), this);
     m_session->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
     connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
     connect(m_session, &IsovalueSession::progressed, this,
@@ -287,9 +287,10 @@ void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
             .arg(params.nx)
             .arg(params.ny)
             .arg(params.nz),
-        [params] { return demoSourceKey(params); },
+        [params] { return engine::demoSourceKey(params); },
         [params](const std::stop_token& stop, const data::Progress& progress) {
-            return WorkbenchEnsemble{data::makeDemoEnsemble(params, stop, progress).ensemble, {}};
+            return engine::WorkbenchEnsemble{
+                data::makeDemoEnsemble(params, stop, progress).ensemble, {}};
         });
 }
 
@@ -304,29 +305,31 @@ void MainWindow::openFiles(const data::DataSelection& selection) {
         tr("Reading %1...").arg(name), [selection] { return data::sourceIdentity(selection); },
         [selection, limit = memoryLimit()](const std::stop_token& stop,
                                            const data::Progress& progress) {
-            return readForWorkbench(selection, limit, stop, progress);
+            return engine::readForWorkbench(selection, limit, stop, progress);
         });
 }
 
 std::size_t MainWindow::memoryLimit() const {
-    return m_memoryLimit != 0 ? m_memoryLimit : defaultMemoryLimit();
+    return m_memoryLimit != 0 ? m_memoryLimit : engine::defaultMemoryLimit();
 }
 
-EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
-                                          const std::function<std::string()>& identify,
-                                          const std::stop_token& stop,
-                                          const data::Progress& progress,
-                                          const SameDataParts* sameData) {
-    WorkbenchEnsemble loaded = source(stop, [&](double f) { data::report(progress, 0.6 * f); });
+engine::EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
+                                                  const std::function<std::string()>& identify,
+                                                  const std::stop_token& stop,
+                                                  const data::Progress& progress,
+                                                  const engine::SameDataParts* sameData) {
+    engine::WorkbenchEnsemble loaded =
+        source(stop, [&](double f) { data::report(progress, 0.6 * f); });
     // As the command line does: no NaN distance of theirs may reach the clustering.
     std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
-    EnsembleOverview overview = buildEnsembleOverview(
+    engine::EnsembleOverview overview = engine::buildEnsembleOverview(
         std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
         [&](double f) { data::report(progress, 0.6 + 0.4 * f); }, sameData);
     overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
     overview.membersWithoutData = std::move(withoutData);
     if (loaded.streamed) {
-        overview.streamed = std::make_shared<const StreamedSource>(std::move(*loaded.streamed));
+        overview.streamed =
+            std::make_shared<const engine::StreamedSource>(std::move(*loaded.streamed));
     }
     return overview;
 }
@@ -344,8 +347,8 @@ void MainWindow::startLoading(const QString& what, std::function<std::string()> 
             const std::stop_token& stop, const data::Progress& progress) {
             return loadOverview(source, identify, stop, progress);
         },
-        [this](EnsembleOverview overview) {
-            showOverview(std::make_unique<EnsembleOverview>(std::move(overview)));
+        [this](engine::EnsembleOverview overview) {
+            showOverview(std::make_unique<engine::EnsembleOverview>(std::move(overview)));
         },
         [this](const std::exception_ptr& error, bool cancelled) { onLoadFailed(error, cancelled); },
         [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
@@ -372,14 +375,14 @@ ui::OpenDataDialog* MainWindow::chooseData(const QStringList& files) {
 
 void MainWindow::rememberRecent(const data::DataSelection& selection) {
     QSettings settings;
-    rememberSelection(settings, selection);
+    workbench::rememberSelection(settings, selection);
     rebuildRecentMenu();
 }
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const std::vector<RecentSelection> recent = recentSelections(QSettings());
-    for (const RecentSelection& entry : recent) {
+    const std::vector<workbench::RecentSelection> recent = workbench::recentSelections(QSettings());
+    for (const workbench::RecentSelection& entry : recent) {
         m_recentMenu->addAction(entry.label, this,
                                 [this, selection = entry.selection] { openFiles(selection); });
     }
@@ -450,7 +453,7 @@ void MainWindow::askForMemberDimension(const data::Error& error) {
     dialog->open();
 }
 
-void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
+void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview) {
     m_overview = std::move(overview);
     m_historyStartsAfresh = true;
     if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
@@ -466,7 +469,7 @@ void MainWindow::showOverview(std::unique_ptr<EnsembleOverview> overview) {
     renderer.setMapLines(m_overview->mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
-    m_info->showFacts(ensembleFacts(*m_overview));
+    m_info->showFacts(engine::ensembleFacts(*m_overview));
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
                            m_overview->streamed);
     QStringList times;
@@ -529,7 +532,7 @@ QString MainWindow::defaultScreenshotPath(const QString& lastPath) const {
     QString name = QStringLiteral("ensil.png");
     if (m_overview && m_model->state().isovalue) {
         name = QString::fromStdString(
-                   pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
+                   engine::pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
                QStringLiteral(".png");
     }
     return folder.isEmpty() ? name : QDir(folder).filePath(name);
@@ -604,14 +607,14 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
 
 void MainWindow::showFloor(const gl::RenderSettings& settings) {
     if (!m_overview) return;
-    ColumnMaxima maxima = m_overview->columnMaxima;
+    engine::ColumnMaxima maxima = m_overview->columnMaxima;
     // The probability's floor belongs to the isovalue shown.
     if (const IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
         maxima.exceedance = shown->exceedanceColumnMaximum;
         maxima.isovalue = shown->meshes->isovalue;
     }
     m_view->renderer().setFloorMap(
-        floorMapFor(*m_overview->ensemble, m_overview->moments->mean, maxima, settings));
+        engine::floorMapFor(*m_overview->ensemble, m_overview->moments->mean, maxima, settings));
 }
 
 }  // namespace ensil::app

@@ -14,14 +14,14 @@
 #include <optional>
 #include <stop_token>
 
-#include "app/background_job.h"
-#include "app/ensemble_overview.h"
-#include "app/headless/time_series.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
-#include "widgets/session/session_model.h"
-#include "widgets/session/session_state.h"
+#include "engine/ensemble_overview.h"
+#include "engine/time_series.h"
+#include "session/session_model.h"
+#include "session/session_state.h"
+#include "workbench/background_job.h"
 
 class QProgressBar;
 class QToolButton;
@@ -75,8 +75,8 @@ public:
     ui::OpenDataDialog* chooseData(const QStringList& files);
     void cancelLoading();
     // The memory the workbench may take for an ensemble (`ensil --memory-limit`; by default
-    // app::defaultMemoryLimit()): data whose in-memory peak is larger are opened as a thinned
-    // copy with their surfaces built from the whole data in slabs (app/headless/
+    // engine::defaultMemoryLimit()): data whose in-memory peak is larger are opened as a thinned
+    // copy with their surfaces built from the whole data in slabs (engine/
     // workbench_reading.h), saying so. Applies to what is opened next.
     void setMemoryLimit(std::size_t bytes) { m_memoryLimit = bytes; }
     [[nodiscard]] std::size_t memoryLimit() const;
@@ -89,7 +89,7 @@ public:
     [[nodiscard]] ui::AnimationBar* animationBar() const { return m_animation; }
     [[nodiscard]] ui::TimeBar* timeBar() const { return m_timeBar; }
     [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
-    [[nodiscard]] const EnsembleOverview* overview() const { return m_overview.get(); }
+    [[nodiscard]] const engine::EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
     // Loading or building isosurfaces.
     [[nodiscard]] bool isBusy() const;
@@ -160,26 +160,27 @@ private:
     // Looks from a named view (the View menu), as a session change that undo can take back.
     void lookFrom(const session::ViewPreset& preset);
     using EnsembleSource =
-        std::function<WorkbenchEnsemble(const std::stop_token&, const data::Progress&)>;
+        std::function<engine::WorkbenchEnsemble(const std::stop_token&, const data::Progress&)>;
     // Reads an ensemble and builds its overview (on a worker). `identify` gives the data's
     // identity for the mesh cache; it runs on the worker, since it reads the files (a content
     // hash).
     // `sameData`: another time step's parts that this one shares (buildEnsembleOverview).
-    static EnsembleOverview loadOverview(const EnsembleSource& source,
-                                         const std::function<std::string()>& identify,
-                                         const std::stop_token& stop,
-                                         const data::Progress& progress,
-                                         const SameDataParts* sameData = nullptr);
+    static engine::EnsembleOverview loadOverview(const EnsembleSource& source,
+                                                 const std::function<std::string()>& identify,
+                                                 const std::stop_token& stop,
+                                                 const data::Progress& progress,
+                                                 const engine::SameDataParts* sameData = nullptr);
     // Time as an axis of the session (main_window_time.cpp): the time bar, a step asked for
     // (read in the background, the last step kept on screen until this one is built), the
     // step shown, and the steps read ahead or visited, kept within a memory budget.
     void createTimeBar();
     // A step's ensemble read and its overview built, on a worker; what it shares with the step
     // shown (the opening isovalue, the map lines) is taken from that one.
-    BackgroundJob<EnsembleOverview>::Work readingStep(const data::DataSelection& selection) const;
+    workbench::BackgroundJob<engine::EnsembleOverview>::Work readingStep(
+        const data::DataSelection& selection) const;
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     void goToTimeStep(std::size_t step);
-    void showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step);
+    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
     // The step's surfaces: kept from a visit before, shown at once; else built.
     void showStepSurfaces(float isovalue, float exaggeration);
     // The next step in the direction of the last move (forward while playing, round the end),
@@ -187,7 +188,7 @@ private:
     // stepping on shows it at once; a guess, dropped when the user goes elsewhere.
     void readAhead();
     // That step's surfaces, figures and clusters built ahead and kept by the session.
-    void buildAhead(const EnsembleOverview& step);
+    void buildAhead(const engine::EnsembleOverview& step);
     void forgetTimeSteps();
     [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
     void startLoading(const QString& what, std::function<std::string()> identify,
@@ -221,7 +222,7 @@ private:
     void exportMemberTable();
     void onLoadFailed(const std::exception_ptr& error, bool cancelled);
     void askForMemberDimension(const data::Error& error);
-    void showOverview(std::unique_ptr<EnsembleOverview> overview);
+    void showOverview(std::unique_ptr<engine::EnsembleOverview> overview);
     void setBusy(const QString& what);
     void setIdle(const QString& message);
     void createProjectActions(QMenu* file);
@@ -284,11 +285,11 @@ private:
     // matched to its neighbour's identities; paused while a step the user asked for is read
     // or built; stopped from the strip's button until other data is opened.
     void fillStepClusters();
-    BackgroundJob<StepClusters> m_stepFill{this};
+    workbench::BackgroundJob<engine::StepClusters> m_stepFill{this};
     bool m_fillStopped = false;
     // Time steps read (ahead, or visited before) and not on screen, by time index.
-    std::map<std::size_t, std::unique_ptr<EnsembleOverview>> m_timeSteps;
-    BackgroundJob<EnsembleOverview> m_readAhead{this};
+    std::map<std::size_t, std::unique_ptr<engine::EnsembleOverview>> m_timeSteps;
+    workbench::BackgroundJob<engine::EnsembleOverview> m_readAhead{this};
     // The step m_readAhead reads, from its start (queued behind other work, a job does not
     // count as running yet) to its end; kNoStep when none.
     static constexpr std::size_t kNoStep = static_cast<std::size_t>(-1);
@@ -311,9 +312,9 @@ private:
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;
     bool m_hasSavedLayout = false;
-    BackgroundJob<EnsembleOverview> m_loader{this};
-    std::unique_ptr<EnsembleOverview> m_overview;
-    std::size_t m_memoryLimit = 0;  // 0: app::defaultMemoryLimit() when data are opened
+    workbench::BackgroundJob<engine::EnsembleOverview> m_loader{this};
+    std::unique_ptr<engine::EnsembleOverview> m_overview;
+    std::size_t m_memoryLimit = 0;  // 0: engine::defaultMemoryLimit() when data are opened
     // The open grid's map projection, for the places under the cursor (none before data).
     std::unique_ptr<geo::MapProjection> m_mapProjection;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices

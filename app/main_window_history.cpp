@@ -6,13 +6,13 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "session/session_camera.h"
+#include "session/session_history.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/session_camera.h"
-#include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 

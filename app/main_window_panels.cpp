@@ -14,7 +14,6 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/point_description.h"
 #include "geo/map_projection.h"
 #include "gl/renderer.h"
 #include "widgets/cluster_panel.h"
@@ -26,6 +25,7 @@
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/point_description.h"
 
 namespace ensil::app {
 namespace {
@@ -103,10 +103,10 @@ void MainWindow::linkPanels() {
     m_view->setHoverDescriber([this](const gl::PickResult& hit) {
         if (!m_overview) return QString();
         const gl::Renderer& renderer = m_view->renderer();
-        const PointContext context{m_overview->ensemble.get(), &m_overview->moments->mean,
-                                   m_mapProjection.get(), &renderer.frame(),
-                                   renderer.sectionShown() ? &renderer.sectionVolume() : nullptr};
-        return describePoint(context, hit);
+        const workbench::PointContext context{
+            m_overview->ensemble.get(), &m_overview->moments->mean, m_mapProjection.get(),
+            &renderer.frame(), renderer.sectionShown() ? &renderer.sectionVolume() : nullptr};
+        return workbench::describePoint(context, hit);
     });
     connect(m_view, &ui::SilhouetteView::hoverDescribed, m_pointText, &QLabel::setText);
 }

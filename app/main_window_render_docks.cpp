@@ -15,12 +15,12 @@
 #include "app/main_window.h"
 #include "data/units_text.h"
 #include "preprocessing/mesh_packing.h"
+#include "session/remembered_settings.h"
+#include "session/session_history.h"
+#include "session/session_model.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/remembered_settings.h"
-#include "widgets/session/session_history.h"
-#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {

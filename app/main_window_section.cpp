@@ -1,22 +1,22 @@
 // The cutting plane's filled cut face in the workbench (gl::SectionField, METHODS.md section
 // 18): which field, for which member and isovalue. The volume is copied and uploaded only when
 // one of those changes, not at every hover.
-#include "app/headless/section_volume.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "engine/section_volume.h"
+#include "session/session_model.h"
 #include "widgets/member_selection.h"
-#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
 
 void MainWindow::showSpread() {
     if (!m_overview) return;
-    SectionSources sources;
+    engine::SectionSources sources;
     sources.ensemble = m_overview->ensemble.get();
     sources.stddev = m_overview->columnMaxima.stddev.get();
     m_view->renderer().setSpreadVolume(
-        sectionVolumeFor(sources, gl::SectionField::StandardDeviation));
+        engine::sectionVolumeFor(sources, gl::SectionField::StandardDeviation));
 }
 
 void MainWindow::showSection() {
@@ -39,7 +39,7 @@ void MainWindow::showSection() {
                               m_overview.get()};
     if (wanted == m_shownSection) return;
     m_shownSection = wanted;
-    SectionSources sources;
+    engine::SectionSources sources;
     sources.ensemble = m_overview->ensemble.get();
     sources.mean = &m_overview->moments->mean;
     sources.stddev = m_overview->columnMaxima.stddev.get();
@@ -48,7 +48,7 @@ void MainWindow::showSection() {
     sources.valueMinimum = m_overview->statistics.minimum;
     sources.valueMaximum = m_overview->statistics.maximum;
     sources.member = member;
-    renderer.setSectionVolume(sectionVolumeFor(sources, field));
+    renderer.setSectionVolume(engine::sectionVolumeFor(sources, field));
     m_view->update();
 }
 

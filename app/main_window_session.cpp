@@ -7,18 +7,18 @@
 #include <QScopedValueRollback>
 #include <QSignalBlocker>
 
-#include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/units_text.h"
+#include "engine/picture_title.h"
+#include "session/member_appearance.h"
+#include "session/session_model.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/frame_paced_repaints.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/member_appearance.h"
-#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 
 namespace ensil::app {
@@ -79,7 +79,7 @@ void MainWindow::bindSession() {
 }
 
 void MainWindow::titleTheView(const data::Ensemble& ensemble) {
-    m_view->renderer().setTitleOf([words = pictureTitleOf(ensemble)](float isovalue) {
+    m_view->renderer().setTitleOf([words = engine::pictureTitleOf(ensemble)](float isovalue) {
         return QString::fromStdString(words(isovalue));
     });
 }

@@ -10,17 +10,17 @@
 #include <algorithm>
 #include <utility>
 
-#include "app/ensemble_facts.h"
-#include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "engine/ensemble_facts.h"
+#include "engine/picture_title.h"
+#include "session/session_model.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
 #include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/session_model.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 
@@ -36,13 +36,13 @@ std::size_t timeStepBudget() {
 
 }  // namespace
 
-BackgroundJob<EnsembleOverview>::Work MainWindow::readingStep(
+workbench::BackgroundJob<engine::EnsembleOverview>::Work MainWindow::readingStep(
     const data::DataSelection& selection) const {
-    return [selection, memoryLimit = memoryLimit(), sameData = sameDataParts(*m_overview)](
+    return [selection, memoryLimit = memoryLimit(), sameData = engine::sameDataParts(*m_overview)](
                const std::stop_token& stop, const data::Progress& progress) {
         return loadOverview(
             [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
-                return readForWorkbench(selection, memoryLimit, s, p);
+                return engine::readForWorkbench(selection, memoryLimit, s, p);
             },
             [selection] { return data::sourceIdentity(selection); }, stop, progress, &sameData);
     };
@@ -168,7 +168,7 @@ void MainWindow::fillStepClusters() {
         }
     }
     if (step < 0) return;
-    StepClusteringRequest request;
+    engine::StepClusteringRequest request;
     request.selection = timeStepSelection(static_cast<std::size_t>(step));
     request.isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
     request.k = m_selection->clusterCount();
@@ -181,17 +181,17 @@ void MainWindow::fillStepClusters() {
     const QString key = m_stripKey;
     m_stepFill.start(
         [request](const std::stop_token& stop, const data::Progress& progress) {
-            return clusterTimeStep(request, stop, progress);
+            return engine::clusterTimeStep(request, stop, progress);
         },
-        [this, step, key](const StepClusters& clusters) {
+        [this, step, key](const engine::StepClusters& clusters) {
             if (key == m_stripKey) {
                 // Onto the members shown, by name (a member without data there has none).
                 std::vector<std::string> shown;
                 for (int m = 0; m < m_selection->memberCount(); ++m) {
                     shown.push_back(m_selection->name(m).toStdString());
                 }
-                std::vector<int> identities =
-                    previousIdentitiesByName(clusters.members, clusters.memberIdentities, shown);
+                std::vector<int> identities = engine::previousIdentitiesByName(
+                    clusters.members, clusters.memberIdentities, shown);
                 m_memberTable->model()->setStepClusters(step, identities);
                 m_timeline->setStepClusters(step, std::move(identities));
             }
@@ -220,7 +220,7 @@ void MainWindow::goToTimeStep(std::size_t step) {
     m_stepDirection = step > m_requested->timeIndex ? 1 : -1;
     m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
     if (const auto kept = m_timeSteps.find(step); kept != m_timeSteps.end()) {
-        std::unique_ptr<EnsembleOverview> overview = std::move(kept->second);
+        std::unique_ptr<engine::EnsembleOverview> overview = std::move(kept->second);
         m_timeSteps.erase(kept);
         showTimeStep(std::move(overview), step);
         return;
@@ -230,9 +230,9 @@ void MainWindow::goToTimeStep(std::size_t step) {
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
         readingStep(selection),
-        [this, step](EnsembleOverview overview) {
+        [this, step](engine::EnsembleOverview overview) {
             if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
-            showTimeStep(std::make_unique<EnsembleOverview>(std::move(overview)), step);
+            showTimeStep(std::make_unique<engine::EnsembleOverview>(std::move(overview)), step);
         },
         [this](const std::exception_ptr& error, bool cancelled) {
             // The step shown stays; the session's step goes back to it.
@@ -253,7 +253,8 @@ void MainWindow::goToTimeStep(std::size_t step) {
         [this](double f) { showProgress(f); });
 }
 
-void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::size_t step) {
+void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview,
+                              std::size_t step) {
     // The step left is kept (it may be visited again), within the budget.
     const std::size_t left = m_requested->timeIndex;
     m_timeSteps[left] = std::move(m_overview);
@@ -282,7 +283,7 @@ void MainWindow::showTimeStep(std::unique_ptr<EnsembleOverview> overview, std::s
     m_shownSection = {};  // the field is this step's
     showSection();
     showSpread();
-    m_info->showFacts(ensembleFacts(*m_overview));
+    m_info->showFacts(engine::ensembleFacts(*m_overview));
     // The last step's surfaces, figures and clusters stay until this step's are built.
     m_session->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
                            m_overview->streamed);
@@ -333,9 +334,9 @@ void MainWindow::readAhead() {
     const data::DataSelection selection = timeStepSelection(next);
     m_readAhead.start(
         readingStep(selection),
-        [this, next](EnsembleOverview overview) {
+        [this, next](engine::EnsembleOverview overview) {
             m_readingAhead = kNoStep;
-            auto read = std::make_unique<EnsembleOverview>(std::move(overview));
+            auto read = std::make_unique<engine::EnsembleOverview>(std::move(overview));
             // Asked for while it was being read: shown now.
             if (m_model->state().data.timeIndex == next && m_requested &&
                 m_requested->timeIndex != next) {
@@ -352,7 +353,7 @@ void MainWindow::readAhead() {
         });
 }
 
-void MainWindow::buildAhead(const EnsembleOverview& step) {
+void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
     // Data larger than memory would be read whole again in slabs for a guess: not built ahead.
     if (step.streamed) return;
     const session::SessionState& s = m_model->state();

@@ -1,8 +1,8 @@
 #include "app/open_data_flow.h"
 
-#include "app/background_job.h"
-#include "app/data_probe.h"
+#include "engine/data_probe.h"
 #include "widgets/open_data_dialog.h"
+#include "workbench/background_job.h"
 
 namespace ensil::app {
 
@@ -17,14 +17,14 @@ public:
     void answer(const data::DataSelection& selection, int request) {
         m_job.start(
             [selection, limit = m_memoryLimit](const std::stop_token&, const data::Progress&) {
-                return probeData(selection, limit);
+                return engine::probeData(selection, limit);
             },
-            [this, request](ui::DataProbe probe) { m_dialog->showProbe(probe, request); },
+            [this, request](engine::DataProbe probe) { m_dialog->showProbe(probe, request); },
             [this, request](const std::exception_ptr&, bool cancelled) {
                 // probeData reports problems in its result; anything else is a bug
                 // worth saying, but a superseded probe is no news.
                 if (cancelled) return;
-                ui::DataProbe failed;
+                engine::DataProbe failed;
                 failed.error = QObject::tr("The files could not be read.");
                 m_dialog->showProbe(failed, request);
             });
@@ -33,7 +33,8 @@ public:
 private:
     ui::OpenDataDialog* m_dialog;
     std::size_t m_memoryLimit;
-    BackgroundJob<ui::DataProbe> m_job{this, BackgroundJob<ui::DataProbe>::WhenDestroyed::Abandon};
+    workbench::BackgroundJob<engine::DataProbe> m_job{
+        this, workbench::BackgroundJob<engine::DataProbe>::WhenDestroyed::Abandon};
 };
 }  // namespace
 

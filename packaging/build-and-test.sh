@@ -23,6 +23,9 @@ stage() {
 stage "install dependencies" packaging/install-deps.sh
 
 stage "check formatting" packaging/check-format.sh
+# Every #include between rooms points down the layer graph (ARCHITECTURE.md); the links are
+# checked when CMake configures (cmake/forbid_link.cmake).
+stage "check layers" packaging/check-layers.py
 stage "configure (ci)" cmake --preset ci
 stage "build (ci)" cmake --build --preset ci
 # On a virtual display (Mesa llvmpipe); each OpenGL, widget and workbench test process gets a

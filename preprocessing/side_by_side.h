@@ -4,7 +4,7 @@
 // results. Here each part's exception is kept, every part returns by itself (a stop asked for
 // is seen at each part's own checks), and then the first exception, in part order, is rethrown.
 // Where Qt is included too, include <tbb/parallel_invoke.h> before Qt (its `emit` macro clashes
-// with oneTBB), as app/headless/isovalue_job.cpp does.
+// with oneTBB), as engine/isovalue_job.cpp does.
 #pragma once
 
 #include <tbb/parallel_invoke.h>

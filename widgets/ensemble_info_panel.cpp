@@ -24,7 +24,7 @@ void EnsembleInfoPanel::showMessage(const QString& message) {
     m_message->setVisible(true);
 }
 
-void EnsembleInfoPanel::showFacts(const EnsembleFacts& facts) {
+void EnsembleInfoPanel::showFacts(const engine::EnsembleFacts& facts) {
     showMessage(QString());
     m_message->setVisible(false);
     const auto row = [this](const QString& label, const QString& value) {

@@ -5,33 +5,19 @@
 
 #include <QWidget>
 
+#include "engine/ensemble_facts.h"
+
 class QFormLayout;
 class QLabel;
 
 namespace ensil::ui {
-
-struct EnsembleFacts {
-    QString source;
-    QString variable;  // "wind_speed (Wind speed)"
-    QString units;
-    QString memberDimension;
-    int members = 0;
-    QString gridSize;  // "256 x 128 x 16"
-    QStringList axes;  // one line per axis: "lon: -80 .. 40 degrees_east, uniform"
-    QString valueRange;
-    qulonglong missing = 0;
-    double megabytes = 0.0;
-    // What the data cannot show well (few levels, members left out), a line each; empty when
-    // nothing.
-    QString warning;
-};
 
 class EnsembleInfoPanel : public QWidget {
     Q_OBJECT
 public:
     explicit EnsembleInfoPanel(QWidget* parent = nullptr);
 
-    void showFacts(const EnsembleFacts& facts);
+    void showFacts(const engine::EnsembleFacts& facts);
     void showMessage(const QString& message);  // e.g. while loading, or an error
     // The panel's text as shown, line by line (for tests and copying).
     [[nodiscard]] QString text() const;

@@ -10,7 +10,7 @@
 
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
-#include "widgets/session/member_appearance.h"
+#include "session/member_appearance.h"
 
 namespace ensil::ui {
 namespace {

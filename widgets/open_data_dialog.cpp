@@ -97,7 +97,7 @@ void OpenDataDialog::requestProbe() {
     emit probeRequested(selection(), ++m_request);
 }
 
-void OpenDataDialog::showProbe(const DataProbe& probe, int request) {
+void OpenDataDialog::showProbe(const engine::DataProbe& probe, int request) {
     if (request != m_request) return;  // the user changed a choice meanwhile
     m_variable = probe.variable;
     fillVariables(probe);
@@ -109,11 +109,11 @@ void OpenDataDialog::showProbe(const DataProbe& probe, int request) {
     emit probeShown();
 }
 
-void OpenDataDialog::fillVariables(const DataProbe& probe) {
+void OpenDataDialog::fillVariables(const engine::DataProbe& probe) {
     const QSignalBlocker block(m_variables);
     m_variables->clear();
     m_usableVariable = false;
-    for (const ProbedVariable& v : probe.variables) {
+    for (const engine::ProbedVariable& v : probe.variables) {
         QString description = v.longName;
         if (!v.usable) {
             description += (description.isEmpty() ? QString() : QStringLiteral(" - ")) +
@@ -131,7 +131,7 @@ void OpenDataDialog::fillVariables(const DataProbe& probe) {
     }
 }
 
-void OpenDataDialog::fillMemberDimensions(const DataProbe& probe) {
+void OpenDataDialog::fillMemberDimensions(const engine::DataProbe& probe) {
     const QSignalBlocker block(m_memberDimension);
     const QString requested = m_memberDimension->currentData().toString();
     m_memberDimension->clear();
@@ -154,7 +154,7 @@ void OpenDataDialog::fillMemberDimensions(const DataProbe& probe) {
     m_memberDimension->setCurrentIndex(std::max(0, m_memberDimension->findData(requested)));
 }
 
-void OpenDataDialog::fillDetails(const DataProbe& probe) {
+void OpenDataDialog::fillDetails(const engine::DataProbe& probe) {
     {
         const QSignalBlocker block(m_timeIndex);
         m_timeIndex->setRange(0, std::max(0, probe.timeSteps - 1));

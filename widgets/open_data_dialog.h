@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "data/ensemble_reader.h"
+#include "engine/data_probe.h"
 
 class QComboBox;
 class QDialogButtonBox;
@@ -21,31 +22,6 @@ class QTreeWidget;
 
 namespace ensil::ui {
 
-struct ProbedVariable {
-    QString name;
-    QString dimensions;  // "number=10, time=4, plev=2, lat=61, lon=120"
-    QString units;
-    QString longName;
-    bool usable = false;
-    QString whyNotUsable;  // set when !usable
-};
-
-// What the files hold under the current choices, as the headers say.
-struct DataProbe {
-    QString format;  // "NetCDF-4", "VTK legacy", ...
-    std::vector<ProbedVariable> variables;
-    QString variable;                    // the variable the choices resolve to
-    QStringList memberDimensionChoices;  // dimensions that could hold the members
-    QString memberDimension;             // the one in use; empty: one member per file
-    QString memberDimensionReason;       // "standard_name = realization", "chosen by you"
-    int members = 0;
-    int timeSteps = 0;            // indices along the fixed dimensions; 0 when none
-    QStringList fixedDimensions;  // "time = 0 of 4 (2017-01-01T00:00)"
-    QString grid;                 // "120 x 61 x 2"
-    QString size;                 // "21 MiB of values", and how they open; empty: not said
-    QString error;                // plain words; non-empty: the files cannot be read so
-};
-
 class OpenDataDialog : public QDialog {
     Q_OBJECT
 public:
@@ -54,7 +30,7 @@ public:
     // Asks for a probe of the current choices (the first one when the dialog opens).
     void requestProbe();
     // Shows the answer to the latest request; answers to older requests are ignored.
-    void showProbe(const DataProbe& probe, int request);
+    void showProbe(const engine::DataProbe& probe, int request);
 
     // The choices, ready for MainWindow::openFiles.
     [[nodiscard]] data::DataSelection selection() const;
@@ -71,9 +47,9 @@ signals:
     void probeShown();
 
 private:
-    void fillVariables(const DataProbe& probe);
-    void fillMemberDimensions(const DataProbe& probe);
-    void fillDetails(const DataProbe& probe);
+    void fillVariables(const engine::DataProbe& probe);
+    void fillMemberDimensions(const engine::DataProbe& probe);
+    void fillDetails(const engine::DataProbe& probe);
     void setProbing(bool probing);
 
     QStringList m_paths;

@@ -1,6 +1,6 @@
 #include "widgets/setting_controls.h"
 
-#include "widgets/session/setting_table.h"
+#include "session/setting_table.h"
 
 namespace ensil::ui {
 

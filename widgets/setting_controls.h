@@ -1,5 +1,5 @@
 // Panel controls shaped by the setting table: a spin box takes its setting's range, decimals,
-// step, unit and tool tip from widgets/session/setting_table.h, so a panel holds exactly the
+// step, unit and tool tip from session/setting_table.h, so a panel holds exactly the
 // values a project or the command line may hold. GUI thread.
 #pragma once
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "app/headless/ensemble_info.h"
-#include "app/headless/session_renderer.h"
+#include "engine/ensemble_info.h"
+#include "engine/session_renderer.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"
 #include "python/src/interruptible.h"
@@ -17,7 +17,7 @@ namespace ensil::python {
 
 std::string PyEnsemble::sourceKey() const {
     if (selection) return data::sourceIdentity(*selection);
-    if (demo) return app::demoSourceKey(*demo);
+    if (demo) return engine::demoSourceKey(*demo);
     return {};
 }
 
@@ -235,7 +235,7 @@ py::object infoOf(const PyEnsemble& self) {
         withoutData << QString::fromStdString(memberName(e, m));
     }
     const QByteArray json =
-        QJsonDocument(app::ensembleInfoJson(*self.description, stats, e, withoutData))
+        QJsonDocument(engine::ensembleInfoJson(*self.description, stats, e, withoutData))
             .toJson(QJsonDocument::Compact);
     return py::module_::import("json").attr("loads")(py::str(json.constData(), json.size()));
 }

@@ -4,10 +4,10 @@
 #include <new>
 #include <string_view>
 
-#include "app/headless/preprocess_run.h"
 #include "data/error.h"
 #include "data/job.h"
-#include "widgets/session/project_file.h"
+#include "engine/preprocess_run.h"
+#include "session/project_file.h"
 
 namespace py = pybind11;
 
@@ -38,7 +38,7 @@ void translate(std::exception_ptr failure) {
         std::rethrow_exception(failure);
     } catch (const ArgumentError& e) {
         raise(g_argumentError, e.what(), "invalid_argument");
-    } catch (const app::PreprocessRefused& e) {
+    } catch (const engine::PreprocessRefused& e) {
         raise(e.exitCode() == 2 ? g_argumentError : g_error, e.what(), "invalid_argument");
     } catch (const data::Error& e) {
         const auto kind = static_cast<std::size_t>(e.kind());

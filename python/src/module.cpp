@@ -5,9 +5,9 @@
 
 #include <QCoreApplication>
 
-#include "app/version.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"
+#include "session/version.h"
 
 PYBIND11_MODULE(_ensil, m) {
     // The names the command line and the workbench run under, so the mesh cache is theirs

@@ -1,11 +1,11 @@
 // Ensemble.preprocess and its result: what `ensil preprocess --json` gives, as NumPy arrays,
-// through the same code (app::preprocessEnsemble), plus the meshes and the ensemble statistics.
+// through the same code (engine::preprocessEnsemble), plus the meshes and the ensemble statistics.
 #include <pybind11/stl.h>
 
 #include <QString>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/preprocess_run.h"
+#include "engine/isovalue_job.h"
+#include "engine/preprocess_run.h"
 #include "preprocessing/ensemble_statistics.h"
 #include "preprocessing/mesh_packing.h"
 #include "python/src/bindings.h"
@@ -21,13 +21,13 @@ namespace ensil::python {
 namespace {
 
 struct PyPreprocessResult {
-    std::shared_ptr<const app::PreprocessResult> result;
+    std::shared_ptr<const engine::PreprocessResult> result;
     prep::Linkage linkage;
 };
 
 // One isosurface, decoded from the 20-byte GPU vertices (what the vertex shader computes).
 struct PyMesh {
-    std::shared_ptr<const app::PreprocessResult> owner;
+    std::shared_ptr<const engine::PreprocessResult> owner;
     const data::PackedMesh* mesh;
 };
 
@@ -35,7 +35,7 @@ PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double
                               const py::object& clusters, const py::object& linkage, double error,
                               bool decimate, bool cache, const std::optional<std::string>& cacheDir,
                               const py::object& progress) {
-    app::PreprocessRequest request;
+    engine::PreprocessRequest request;
     if (iso) request.isovalue = boundedNumber("--iso", *iso, -1e30, 1e30);
     request.clustersGiven = !clusters.is_none();
     request.clusters =
@@ -50,16 +50,16 @@ PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double
         if (cacheDir && cacheDir->empty()) {
             throw ArgumentError("cache_dir '' is refused: name a folder, or use cache=False");
         }
-        request.cacheDirectory = cacheDir ? *cacheDir : app::defaultMeshCacheDirectory();
+        request.cacheDirectory = cacheDir ? *cacheDir : engine::defaultMeshCacheDirectory();
     }
     request.sourceKey = self.sourceKey();
     if (request.sourceKey.empty()) request.cacheDirectory.reset();  // arrays are not cached
     std::vector<std::string> notices;
     std::mutex noticesMutex;
-    auto result = std::make_shared<app::PreprocessResult>();
+    auto result = std::make_shared<engine::PreprocessResult>();
     runInterruptible(
         [&](const std::stop_token& stop, const data::Progress& report) {
-            *result = app::preprocessEnsemble(
+            *result = engine::preprocessEnsemble(
                 self.data, request,
                 [&](const std::string& kind, const std::string& text) {
                     const std::lock_guard lock(noticesMutex);

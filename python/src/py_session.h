@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "widgets/session/session_state.h"
+#include "session/session_state.h"
 
 namespace ensil::python {
 

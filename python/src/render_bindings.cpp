@@ -1,5 +1,5 @@
 // ensil.render: a picture of an ensemble, a session or a project as an RGBA NumPy array, drawn
-// by the headless renderer `ensil render` uses (app::renderSession), with no display server
+// by the headless renderer `ensil render` uses (engine::renderSession), with no display server
 // needed (Mesa's EGL surfaceless platform), and _png() for notebooks.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -12,7 +12,7 @@
 #include <QThread>
 #include <cstring>
 
-#include "app/headless/session_renderer.h"
+#include "engine/session_renderer.h"
 #include "gl/offscreen_context.h"
 #include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
@@ -21,9 +21,9 @@
 #include "python/src/py_ensemble.h"
 #include "python/src/py_session.h"
 #include "python/src/settings.h"
-#include "widgets/session/project_file.h"
-#include "widgets/session/setting_options.h"
-#include "widgets/session/view_presets.h"
+#include "session/project_file.h"
+#include "session/setting_options.h"
+#include "session/view_presets.h"
 
 namespace py = pybind11;
 
@@ -118,18 +118,18 @@ py::tuple render(const py::object& target, const std::optional<double>& iso,
         session::parseImageSize(QStringLiteral("--size"),
                                 QStringLiteral("%1x%2").arg(size.first).arg(size.second), problem);
     if (!checked) throw ArgumentError(problem.toStdString());
-    app::RenderRequest request;
+    engine::RenderRequest request;
     request.width = checked->first;
     request.height = checked->second;
     request.frames = 1;
     request.useCache = cache;
     ensureGuiApplication();
-    app::RenderOutcome outcome;
+    engine::RenderOutcome outcome;
     {
         const py::gil_scoped_release released;
-        outcome = ensemble != nullptr
-                      ? app::renderEnsemble(ensemble->data, ensemble->sourceKey(), state, request)
-                      : app::renderSession(state, request);
+        outcome = ensemble != nullptr ? engine::renderEnsemble(
+                                            ensemble->data, ensemble->sourceKey(), state, request)
+                                      : engine::renderSession(state, request);
     }
     // Called through ensil.render (python/ensil/__init__.py): the user's line is one further up.
     if (!outcome.note.empty()) warn("note: " + outcome.note, 2);

@@ -8,8 +8,8 @@
 #include "python/src/errors.h"
 #include "python/src/py_session.h"
 #include "python/src/settings.h"
-#include "widgets/session/project_file.h"
-#include "widgets/session/view_presets.h"
+#include "session/project_file.h"
+#include "session/view_presets.h"
 
 namespace py = pybind11;
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "python/src/errors.h"
-#include "widgets/session/setting_options.h"
+#include "session/setting_options.h"
 
 namespace py = pybind11;
 

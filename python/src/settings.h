@@ -1,4 +1,4 @@
-// Settings between Python and the one setting table (widgets/session/setting_table.h): a value
+// Settings between Python and the one setting table (session/setting_table.h): a value
 // given from Python is written as the command line's text and checked by the command line's own
 // parser, so the ranges and the refusals are the same ("--thickness '5' is refused: it must be
 // a number from 0.0001 to 0.5"); a setting without a command-line option is named by its id.
@@ -10,7 +10,7 @@
 
 #include <string_view>
 
-#include "widgets/session/setting_table.h"
+#include "session/setting_table.h"
 
 namespace ensil::python {
 

@@ -1,6 +1,6 @@
 // The one job path: a job abandoned with its owner (a closed dialog's probe) does not hold the
 // GUI thread until it returns; one that waits does.
-#include "app/background_job.h"
+#include "workbench/background_job.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <memory>
 #include <semaphore>
 
-using namespace ensil::app;
+using namespace ensil::workbench;
 
 namespace {
 // A job that runs until released (or 30 s), then says it returned.

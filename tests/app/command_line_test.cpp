@@ -1,4 +1,4 @@
-#include "app/command_line.h"
+#include "cli/command_line.h"
 
 #include <gtest/gtest.h>
 #include <netcdf.h>
@@ -11,10 +11,10 @@
 #include <QString>
 #include <QTextStream>
 
-#include "app/generate_command.h"
+#include "cli/generate_command.h"
 #include "tests/support/temp_dir.h"
 
-using namespace ensil::app;
+using namespace ensil::cli;
 
 namespace {
 struct CliRun {

@@ -1,6 +1,6 @@
 // Progress of long command-line runs on stderr: only after a second, at most once a second,
 // one line rewritten in place and ended before anything else is printed.
-#include "app/command_progress.h"
+#include "cli/command_progress.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ using namespace std::chrono_literals;
 namespace {
 struct FakeClock {
     std::chrono::steady_clock::time_point now{};
-    app::CommandProgress::Clock clock() {
+    cli::CommandProgress::Clock clock() {
         return [this] { return now; };
     }
 };
@@ -24,7 +24,7 @@ TEST(CommandProgress, WritesOnceASecondAfterTheFirstSecondAndEndsItsLine) {
     QTextStream err(&text);
     FakeClock time;
     {
-        app::CommandProgress progress(err, QStringLiteral("ensil preprocess"), true, time.clock());
+        cli::CommandProgress progress(err, QStringLiteral("ensil preprocess"), true, time.clock());
         const data::Progress reading = progress.callback(QStringLiteral("reading"));
         reading(0.10);
         EXPECT_TRUE(text.isEmpty()) << "a run under a second prints nothing";
@@ -59,7 +59,7 @@ TEST(CommandProgress, WritesNothingWhenNotShown) {
     QTextStream err(&text);
     FakeClock time;
     {
-        app::CommandProgress progress(err, QStringLiteral("ensil preprocess"), false, time.clock());
+        cli::CommandProgress progress(err, QStringLiteral("ensil preprocess"), false, time.clock());
         EXPECT_FALSE(progress.callback(QStringLiteral("reading"))) << "no callback to call";
         time.now += 5s;
         progress.report(QStringLiteral("reading"), 0.5);
@@ -67,5 +67,5 @@ TEST(CommandProgress, WritesNothingWhenNotShown) {
     }
     EXPECT_TRUE(text.isEmpty());
     // --quiet, and a stderr that is not a terminal (a test's is a pipe or a file), show none.
-    EXPECT_FALSE(app::CommandProgress::shownOnThisTerminal(true));
+    EXPECT_FALSE(cli::CommandProgress::shownOnThisTerminal(true));
 }

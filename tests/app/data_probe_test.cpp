@@ -1,4 +1,4 @@
-#include "app/data_probe.h"
+#include "engine/data_probe.h"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <fstream>
 #include <random>
 
-#include "app/headless/streaming_run.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "engine/streaming_run.h"
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
@@ -20,7 +20,7 @@ data::DataSelection fileSelection(const std::string& name) {
     return s;
 }
 
-const ui::ProbedVariable* findVariable(const ui::DataProbe& probe, const QString& name) {
+const engine::ProbedVariable* findVariable(const engine::DataProbe& probe, const QString& name) {
     for (const auto& v : probe.variables) {
         if (v.name == name) return &v;
     }
@@ -31,11 +31,11 @@ const ui::ProbedVariable* findVariable(const ui::DataProbe& probe, const QString
 TEST(DataProbe, DescribesARealEnsembleFileFromItsHeaders) {
     data::DataSelection selection = fileSelection("era5_eda_members.nc");
     selection.variable = "t";
-    const ui::DataProbe probe = app::probeData(selection);
+    const engine::DataProbe probe = engine::probeData(selection);
     ASSERT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
     EXPECT_TRUE(probe.format.startsWith("NetCDF")) << probe.format.toStdString();
     EXPECT_EQ(probe.variable, "t");
-    const ui::ProbedVariable* t = findVariable(probe, "t");
+    const engine::ProbedVariable* t = findVariable(probe, "t");
     ASSERT_NE(t, nullptr);
     EXPECT_TRUE(t->usable);
     EXPECT_EQ(t->dimensions, "number=10, time=4, plev=2, lat=61, lon=120");
@@ -56,7 +56,7 @@ TEST(DataProbe, TheTimeIndexAndAnOverriddenMemberDimensionAreApplied) {
     selection.variable = "z";
     selection.memberDimension = "time";
     selection.timeIndex = 7;
-    const ui::DataProbe probe = app::probeData(selection);
+    const engine::DataProbe probe = engine::probeData(selection);
     ASSERT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
     EXPECT_EQ(probe.memberDimension, "time");
     EXPECT_EQ(probe.members, 4);
@@ -65,13 +65,13 @@ TEST(DataProbe, TheTimeIndexAndAnOverriddenMemberDimensionAreApplied) {
 }
 
 TEST(DataProbe, AFileWithoutAMemberDimensionListsItsVariablesAndTheCandidates) {
-    const ui::DataProbe probe = app::probeData(fileSelection("contour.cdf"));
+    const engine::DataProbe probe = engine::probeData(fileSelection("contour.cdf"));
     EXPECT_FALSE(probe.error.isEmpty());
     EXPECT_TRUE(probe.error.contains("Choose the dimension")) << probe.error.toStdString();
     EXPECT_EQ(probe.memberDimensionChoices, QStringList{"frtime"});
     EXPECT_TRUE(probe.memberDimension.isEmpty());
     EXPECT_EQ(probe.members, 0);
-    const ui::ProbedVariable* psl = findVariable(probe, "Psl");
+    const engine::ProbedVariable* psl = findVariable(probe, "Psl");
     ASSERT_NE(psl, nullptr) << "the variables are listed even before the choice";
     EXPECT_FALSE(psl->usable);
     EXPECT_FALSE(psl->whyNotUsable.isEmpty());
@@ -80,15 +80,15 @@ TEST(DataProbe, AFileWithoutAMemberDimensionListsItsVariablesAndTheCandidates) {
     data::DataSelection chosen = fileSelection("contour.cdf");
     chosen.memberDimension = "frtime";
     chosen.variable = "T";
-    const ui::DataProbe answered = app::probeData(chosen);
+    const engine::DataProbe answered = engine::probeData(chosen);
     ASSERT_TRUE(answered.error.isEmpty()) << answered.error.toStdString();
     EXPECT_EQ(answered.members, 7);
     EXPECT_EQ(answered.memberDimension, "frtime");
 }
 
 TEST(DataProbe, AnEnsembleWithoutVerticalAxisIsExplained) {
-    const ui::DataProbe probe =
-        app::probeData(fileSelection("glosea4_surface_temperature_ensemble.nc"));
+    const engine::DataProbe probe =
+        engine::probeData(fileSelection("glosea4_surface_temperature_ensemble.nc"));
     EXPECT_TRUE(probe.error.contains("no vertical")) << probe.error.toStdString();
 }
 
@@ -102,7 +102,7 @@ TEST(DataProbe, GarbageBytesInANcFileGiveAReadableMessage) {
     }
     data::DataSelection selection;
     selection.paths = {path};
-    const ui::DataProbe probe = app::probeData(selection);
+    const engine::DataProbe probe = engine::probeData(selection);
     EXPECT_TRUE(probe.variables.empty());
     EXPECT_TRUE(probe.error.contains("garbage.nc"))
         << "names the file: " << probe.error.toStdString();
@@ -115,7 +115,7 @@ TEST(DataProbe, GarbageBytesInANcFileGiveAReadableMessage) {
         std::mt19937 bytes(11);
         for (int i = 0; i < 4096; ++i) out.put(static_cast<char>(bytes() & 0xFF));
     }
-    const ui::DataProbe broken = app::probeData(selection);
+    const engine::DataProbe broken = engine::probeData(selection);
     EXPECT_FALSE(broken.error.isEmpty());
     EXPECT_TRUE(broken.error.contains("garbage.nc")) << broken.error.toStdString();
 }
@@ -123,7 +123,7 @@ TEST(DataProbe, GarbageBytesInANcFileGiveAReadableMessage) {
 TEST(DataProbe, AMissingFileIsNamed) {
     data::DataSelection selection;
     selection.paths = {"/nonexistent/run_01.nc"};
-    const ui::DataProbe probe = app::probeData(selection);
+    const engine::DataProbe probe = engine::probeData(selection);
     EXPECT_TRUE(probe.error.contains("/nonexistent/run_01.nc")) << probe.error.toStdString();
 }
 
@@ -134,7 +134,7 @@ TEST(DataProbe, VtkFilesAreOneMemberEachWithNothingToChooseAlong) {
     const std::string copy = dir.file("ironProt_copy.vtk");
     std::filesystem::copy_file(selection.paths.front(), copy);
     selection.paths.push_back(copy);
-    const ui::DataProbe probe = app::probeData(selection);
+    const engine::DataProbe probe = engine::probeData(selection);
     ASSERT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
     EXPECT_EQ(probe.format, "VTK legacy");
     EXPECT_EQ(probe.variable, "scalars");
@@ -148,9 +148,9 @@ TEST(DataProbe, VtkFilesAreOneMemberEachWithNothingToChooseAlong) {
 TEST(DataProbe, SaysHowTheDataOpenWithinTheWorkbenchsMemoryBudget) {
     data::DataSelection era5 = fileSelection("era5_eda_members.nc");
     era5.variable = "t";
-    EXPECT_TRUE(app::probeData(era5).size.isEmpty()) << "not asked";
-    EXPECT_EQ(app::probeData(era5, std::size_t{1} << 30).size, "0.6 MiB of values");
-    const QString tooSmall = app::probeData(era5, std::size_t{1} << 19).size;
+    EXPECT_TRUE(engine::probeData(era5).size.isEmpty()) << "not asked";
+    EXPECT_EQ(engine::probeData(era5, std::size_t{1} << 30).size, "0.6 MiB of values");
+    const QString tooSmall = engine::probeData(era5, std::size_t{1} << 19).size;
     EXPECT_TRUE(tooSmall.startsWith("0.6 MiB of values: a memory limit of"))
         << tooSmall.toStdString();
 
@@ -160,8 +160,8 @@ TEST(DataProbe, SaysHowTheDataOpenWithinTheWorkbenchsMemoryBudget) {
     data::writeNetcdf(
         data::makeDemoEnsemble({.members = 24, .nx = 97, .ny = 96, .nz = 25}).ensemble,
         demo.paths.front());
-    const std::size_t budget = app::inMemoryPeakBytes(data::describeEnsemble(demo)) - 1;
-    EXPECT_EQ(app::probeData(demo, budget).size,
+    const std::size_t budget = engine::inMemoryPeakBytes(data::describeEnsemble(demo)) - 1;
+    EXPECT_EQ(engine::probeData(demo, budget).size,
               "21 MiB of values, more than the memory budget of 32 MiB: read in slabs, a copy at "
               "every 2nd point in memory");
 }

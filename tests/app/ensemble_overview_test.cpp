@@ -1,6 +1,6 @@
 // Another time step's overview takes what it shares with the step shown (the isovalue the data
 // opened at, the map lines) instead of computing it again, and only on the same grid and mapping.
-#include "app/ensemble_overview.h"
+#include "engine/ensemble_overview.h"
 
 #include <gtest/gtest.h>
 
@@ -22,15 +22,16 @@ std::shared_ptr<const data::Ensemble> demoStep(std::size_t nx, float scale) {
 }  // namespace
 
 TEST(EnsembleOverview, AnotherTimeStepTakesTheOpeningIsovalueAndTheMapLinesOfTheStepShown) {
-    const app::EnsembleOverview first = app::buildEnsembleOverview(demoStep(32, 1.0F), {}, {});
+    const engine::EnsembleOverview first =
+        engine::buildEnsembleOverview(demoStep(32, 1.0F), {}, {});
     ASSERT_NE(first.mapLines, nullptr);
     ASSERT_FALSE(first.mapLines->empty()) << "coastlines over the North Atlantic";
     const auto next = demoStep(32, 1.5F);
-    const app::EnsembleOverview alone = app::buildEnsembleOverview(next, {}, {});
+    const engine::EnsembleOverview alone = engine::buildEnsembleOverview(next, {}, {});
     ASSERT_NE(alone.defaultIsovalue, first.defaultIsovalue) << "else this test shows nothing";
 
-    const app::SameDataParts shown = app::sameDataParts(first);
-    const app::EnsembleOverview step = app::buildEnsembleOverview(next, {}, {}, &shown);
+    const engine::SameDataParts shown = engine::sameDataParts(first);
+    const engine::EnsembleOverview step = engine::buildEnsembleOverview(next, {}, {}, &shown);
     EXPECT_EQ(step.mapLines, first.mapLines) << "the same lines, not computed again";
     EXPECT_EQ(step.defaultIsovalue, first.defaultIsovalue) << "the isovalue the data opened at";
     // What is the step's own is its own.
@@ -40,11 +41,12 @@ TEST(EnsembleOverview, AnotherTimeStepTakesTheOpeningIsovalueAndTheMapLinesOfThe
 }
 
 TEST(EnsembleOverview, OnAnotherGridNothingIsTaken) {
-    const app::EnsembleOverview first = app::buildEnsembleOverview(demoStep(32, 1.0F), {}, {});
+    const engine::EnsembleOverview first =
+        engine::buildEnsembleOverview(demoStep(32, 1.0F), {}, {});
     const auto other = demoStep(40, 1.5F);
-    const app::SameDataParts shown = app::sameDataParts(first);
-    const app::EnsembleOverview step = app::buildEnsembleOverview(other, {}, {}, &shown);
-    const app::EnsembleOverview alone = app::buildEnsembleOverview(other, {}, {});
+    const engine::SameDataParts shown = engine::sameDataParts(first);
+    const engine::EnsembleOverview step = engine::buildEnsembleOverview(other, {}, {}, &shown);
+    const engine::EnsembleOverview alone = engine::buildEnsembleOverview(other, {}, {});
     EXPECT_NE(step.mapLines, first.mapLines);
     EXPECT_EQ(step.mapLines->size(), alone.mapLines->size());
     EXPECT_EQ(step.defaultIsovalue, alone.defaultIsovalue);

@@ -7,7 +7,7 @@
 #include <QStringList>
 #include <QTextStream>
 
-#include "app/command_line.h"
+#include "cli/command_line.h"
 #include "preprocessing/clustering.h"
 
 namespace ensil::test {
@@ -21,7 +21,7 @@ struct EnsilRun {
 inline EnsilRun runEnsil(const QStringList& args) {
     EnsilRun r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = app::runCommandLine(QStringList{"ensil"} + args, out, err).exitCode;
+    r.code = cli::runCommandLine(QStringList{"ensil"} + args, out, err).exitCode;
     out.flush();
     err.flush();
     return r;

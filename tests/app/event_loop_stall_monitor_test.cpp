@@ -1,4 +1,4 @@
-#include "app/event_loop_stall_monitor.h"
+#include "workbench/event_loop_stall_monitor.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <QTimer>
 #include <cstddef>
 
-using namespace ensil::app;
+using namespace ensil::workbench;
 
 namespace {
 void blockFor(int ms) {

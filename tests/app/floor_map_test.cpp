@@ -1,6 +1,6 @@
-// The floor's column maxima (app/headless/floor_map.h): the mean's, and the members' spread,
+// The floor's column maxima (engine/floor_map.h): the mean's, and the members' spread,
 // worked out by hand on a 2 x 2 x 2 grid.
-#include "app/headless/floor_map.h"
+#include "engine/floor_map.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +45,7 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
     const float meanValue[2][2] = {{2, 2}, {5, 2}};
     const data::Member mean{"mean",
                             field([&](std::size_t i, std::size_t k) { return meanValue[i][k]; })};
-    const app::ColumnMaxima maxima = app::computeColumnMaxima(e, mean);
+    const engine::ColumnMaxima maxima = engine::computeColumnMaxima(e, mean);
     ASSERT_EQ(maxima.spread.size(), 4u);  // nx * ny
     for (const std::size_t row : {0U, 2U}) {
         EXPECT_NEAR(maxima.spread[row], std::sqrt(12.0), 1e-5);
@@ -55,7 +55,7 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
 
     gl::RenderSettings settings;
     settings.floor = gl::FloorContent::SpreadMaximum;
-    const gl::FloorMap floor = app::floorMapFor(e, mean, maxima, settings);
+    const gl::FloorMap floor = engine::floorMapFor(e, mean, maxima, settings);
     EXPECT_EQ(floor.values, maxima.spread);
     EXPECT_TRUE(floor.caption.contains("standard deviation of t [K]"))
         << floor.caption.toStdString();
@@ -63,15 +63,15 @@ TEST(FloorMap, TheSpreadFloorIsTheColumnMaximumOfTheSampleStandardDeviation) {
 
 TEST(FloorMap, TheProbabilityFloorKeepsTheScaleOfAProbabilityAndSaysItsIsovalue) {
     data::Ensemble e = temperaturesOnACube();
-    app::ColumnMaxima maxima;
+    engine::ColumnMaxima maxima;
     gl::RenderSettings settings;
     settings.floor = gl::FloorContent::ProbabilityMaximum;
     const data::Member mean{"mean", data::FieldValues(8, 1.0F)};
-    EXPECT_TRUE(app::floorMapFor(e, mean, maxima, settings).values.empty())
+    EXPECT_TRUE(engine::floorMapFor(e, mean, maxima, settings).values.empty())
         << "no isovalue yet: no floor";
     maxima.exceedance = {0.2F, 0.4F, 0.4F, 0.6F};
     maxima.isovalue = 273.15F;
-    const gl::FloorMap floor = app::floorMapFor(e, mean, maxima, settings);
+    const gl::FloorMap floor = engine::floorMapFor(e, mean, maxima, settings);
     EXPECT_EQ(floor.values, maxima.exceedance);
     // 0 to 1, not the values' own 0.2 to 0.6: a probability of 0.6 must not look certain.
     EXPECT_EQ(floor.minimum, 0.0F);

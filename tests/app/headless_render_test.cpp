@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/headless/session_renderer.h"
+#include "engine/session_renderer.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/temp_dir.h"
 
@@ -137,7 +137,7 @@ TEST(HeadlessRender, ReportsReadingThenPreprocessingEachToTheEnd) {
     state.data.variable = "t";
     state.isovalue = 260.0F;
     state.clusters = 3;
-    app::RenderRequest request;
+    engine::RenderRequest request;
     request.width = 160;
     request.height = 120;
     request.useCache = false;
@@ -147,7 +147,7 @@ TEST(HeadlessRender, ReportsReadingThenPreprocessingEachToTheEnd) {
         const std::lock_guard lock(mutex);
         reports.emplace_back(stage, fraction);
     };
-    const app::RenderOutcome outcome = app::renderSession(state, request);
+    const engine::RenderOutcome outcome = engine::renderSession(state, request);
     ASSERT_FALSE(outcome.image.isNull());
 
     std::vector<std::string> stages;

@@ -1,4 +1,4 @@
-// Holds every thread of the jobs' pool (app::jobThreadPool()), as a full build beside a time
+// Holds every thread of the jobs' pool (workbench::jobThreadPool()), as a full build beside a time
 // step's motion meshes or the reading ahead can hold them (one a core), until release() or the
 // end of the scope: a test then sees what runs without them (a preview, on its own thread) and
 // decides when the jobs queued meanwhile may run.
@@ -8,7 +8,7 @@
 #include <QThreadPool>
 #include <memory>
 
-#include "app/background_job.h"
+#include "workbench/background_job.h"
 
 namespace ensil::test {
 
@@ -17,11 +17,11 @@ public:
     // Waits until every thread runs a holder, up to timeoutMs (a job already running keeps its
     // thread until it ends); held() says whether they all came.
     explicit HeldJobThreads(int timeoutMs = 30000)
-        : m_threads(app::jobThreadPool()->maxThreadCount()) {
+        : m_threads(workbench::jobThreadPool()->maxThreadCount()) {
         for (int t = 0; t < m_threads; ++t) {
             // The semaphores are shared with the holders, which may still be leaving acquire()
             // when this object is gone.
-            app::jobThreadPool()->start([holding = m_holding, released = m_released] {
+            workbench::jobThreadPool()->start([holding = m_holding, released = m_released] {
                 holding->release();
                 released->acquire();
             });

@@ -7,10 +7,10 @@
 #include <QTest>
 #include <memory>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/picture_title.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "engine/isovalue_job.h"
+#include "engine/picture_title.h"
 #include "tests/app/held_job_threads.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
@@ -63,7 +63,7 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
     // The result comes back through the event loop, so it cannot have replaced the old one yet.
     // The title names what is drawn, not the value being built (for large data, seconds).
     const auto titleOf = [&](float isovalue) {
-        return QString::fromStdString(app::pictureTitle(*window.overview()->ensemble, isovalue));
+        return QString::fromStdString(engine::pictureTitle(*window.overview()->ensemble, isovalue));
     };
     EXPECT_EQ(window.view()->renderer().meshes(), first) << "the last result stays until then";
     EXPECT_EQ(window.view()->renderer().title(), titleOf(first->isovalue));
@@ -129,12 +129,12 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
     // The picture is the one of the surfaces built directly for that isovalue, without a scrub.
     const QSize size(480, 300);
     const QImage scrubbed = window.view()->renderImage(size);
-    app::IsovalueJobInput input;
+    engine::IsovalueJobInput input;
     input.ensemble = window.overview()->ensemble.get();
     input.moments = window.overview()->moments.get();
     input.options.isovalue = last;
     input.verticalExaggeration = window.view()->renderer().frame().verticalExaggeration();
-    const app::IsovalueOutcome direct = app::runIsovalueJob(input);
+    const engine::IsovalueOutcome direct = engine::runIsovalueJob(input);
     window.view()->renderer().setMeshes(std::make_shared<data::MeshSet>(direct.meshes));
     const QImage directly = window.view()->renderImage(size);
     ASSERT_FALSE(scrubbed.isNull());

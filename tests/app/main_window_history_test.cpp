@@ -10,12 +10,12 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/session_history.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;

@@ -11,10 +11,11 @@
 #include <QTest>
 #include <QTextStream>
 
-#include "app/command_line.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
+#include "cli/command_line.h"
 #include "preprocessing/cluster_identity.h"
+#include "session/project_file.h"
 #include "tests/app/ensil_run.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
@@ -25,7 +26,6 @@
 #include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/project_file.h"
 #include "widgets/silhouette_view.h"
 
 using namespace ensil;
@@ -103,7 +103,7 @@ TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
     const int code =
-        app::runCommandLine({"ensil", "render", path, "--out", rendered, "--size", "480x320"}, out,
+        cli::runCommandLine({"ensil", "render", path, "--out", rendered, "--size", "480x320"}, out,
                             err)
             .exitCode;
     err.flush();
@@ -123,7 +123,7 @@ TEST_F(ProjectWindow, TheHeadlessRendererDrawsTheProjectAsTheWorkbenchShowsIt) {
     // Scene options cannot override the project.
     outText.clear();
     errText.clear();
-    EXPECT_EQ(app::runCommandLine({"ensil", "render", path, "--out", rendered, "--mode", "opaque"},
+    EXPECT_EQ(cli::runCommandLine({"ensil", "render", path, "--out", rendered, "--mode", "opaque"},
                                   out, err)
                   .exitCode,
               2);
@@ -341,7 +341,7 @@ TEST_F(ProjectWindow, AReopenedProjectNumbersAndColoursItsClustersAsTheyWereSave
     const QString rendered = QString::fromStdString(m_dir.file("numbered-render.png"));
     QString outText, errText;
     QTextStream out(&outText), err(&errText);
-    const int code = app::runCommandLine({"ensil", "render", path, "--out", rendered, "--size",
+    const int code = cli::runCommandLine({"ensil", "render", path, "--out", rendered, "--size",
                                           "480x320", "--no-cache"},
                                          out, err)
                          .exitCode;

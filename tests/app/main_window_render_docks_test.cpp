@@ -188,11 +188,11 @@ TEST(MainWindowRenderDocks, TheContextSurfacesAreMadeOnlyWhileTheViewDrawsThem) 
     EXPECT_FALSE(withBand->bandInner.vertices.empty());
     EXPECT_FALSE(withBand->probability.vertices.empty());
     // The same surfaces as a job that makes everything at once.
-    app::IsovalueJobInput input;
+    engine::IsovalueJobInput input;
     input.ensemble = window.overview()->ensemble.get();
     input.moments = window.overview()->moments.get();
     input.options.isovalue = withBand->isovalue;
-    const app::IsovalueOutcome all = app::runIsovalueJob(input);
+    const engine::IsovalueOutcome all = engine::runIsovalueJob(input);
     EXPECT_EQ(withBand->bandOuter.indices, all.meshes.bandOuter.indices);
     EXPECT_EQ(withBand->probability.indices, all.meshes.probability.indices);
     EXPECT_EQ(withBand->members.size(), all.meshes.members.size());

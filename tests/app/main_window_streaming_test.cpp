@@ -11,13 +11,13 @@
 #include <QTest>
 #include <QToolButton>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/streaming_run.h"
-#include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "engine/isovalue_job.h"
+#include "engine/streaming_run.h"
+#include "engine/time_series.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/streaming/same_results.h"
 #include "tests/support/scoped_cache_home.h"
@@ -51,7 +51,7 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
-    window.setMemoryLimit(app::inMemoryPeakBytes(d) - 1);
+    window.setMemoryLimit(engine::inMemoryPeakBytes(d) - 1);
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
     window.openFiles(selection);
@@ -82,12 +82,12 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     const session::SessionState state = window.captureSession();
     const auto whole = std::make_shared<const data::Ensemble>(data::openEnsemble(selection));
     const prep::EnsembleMoments moments = prep::computeEnsembleMoments(*whole);
-    app::IsovalueJobInput input;
+    engine::IsovalueJobInput input;
     input.ensemble = whole.get();
     input.moments = &moments;
     input.options.isovalue = *state.isovalue;
     input.verticalExaggeration = state.verticalExaggeration;
-    const app::IsovalueOutcome want = app::runIsovalueJob(input);
+    const engine::IsovalueOutcome want = engine::runIsovalueJob(input);
     const app::IsovalueResult& got = *window.isovalueSession()->result();
     ASSERT_EQ(got.meshes->members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < want.meshes.members.size(); ++m) {
@@ -110,7 +110,7 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
         280000));
     // Each step matched to the one before it, as the strip matches them (in memory here).
     for (std::size_t s = 1; s < kSteps; ++s) {
-        app::StepClusteringRequest request;
+        engine::StepClusteringRequest request;
         request.selection = selection;
         request.selection.timeIndex = s;
         request.isovalue = *state.isovalue;
@@ -119,7 +119,7 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
             request.previousMembers.push_back(window.memberSelection()->name(m).toStdString());
         }
         request.previousIdentities = strip.stepClusters(static_cast<int>(s) - 1);
-        const app::StepClusters inMemory = app::clusterTimeStep(request, {});
+        const engine::StepClusters inMemory = engine::clusterTimeStep(request, {});
         EXPECT_EQ(strip.stepClusters(static_cast<int>(s)), inMemory.memberIdentities)
             << "step " << s;
     }

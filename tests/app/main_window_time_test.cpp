@@ -10,12 +10,12 @@
 #include <QTest>
 #include <QToolButton>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/time_series.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
+#include "engine/isovalue_job.h"
+#include "engine/time_series.h"
 #include "tests/app/held_job_threads.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
@@ -187,12 +187,12 @@ TEST(MainWindowTime, TheNextStepIsReadAndBuiltAheadAndShownAtOnceAsBuiltDirectly
     EXPECT_EQ(window.view()->renderer().motionMeshes(), shown.motionMeshes);
 
     // The same surfaces, distances and clusters as built directly for step 1.
-    const app::EnsembleOverview& step = *window.overview();
-    app::IsovalueJobInput input;
+    const engine::EnsembleOverview& step = *window.overview();
+    engine::IsovalueJobInput input;
     input.ensemble = step.ensemble.get();
     input.moments = step.moments.get();
     input.options.isovalue = shown.meshes->isovalue;
-    const app::IsovalueOutcome direct = app::runIsovalueJob(input, {}, {});
+    const engine::IsovalueOutcome direct = engine::runIsovalueJob(input, {}, {});
     EXPECT_EQ(shown.triangles, direct.meshes.triangles);
     ASSERT_EQ(shown.meshes->members.size(), direct.meshes.members.size());
     for (std::size_t m = 0; m < direct.meshes.members.size(); ++m) {
@@ -216,7 +216,7 @@ TEST(MainWindowTime, AStepAskedForWhileBuiltAheadWaitsForThatBuild) {
     app::MainWindow window;
     ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
     app::IsovalueSession& session = *window.isovalueSession();
-    const app::EnsembleOverview& shown = *window.overview();
+    const engine::EnsembleOverview& shown = *window.overview();
     const float iso = session.result()->meshes->isovalue;
     // Another step's data (the same values under another key), prepared and then asked for
     // before the preparation can have ended (its result needs this thread's events).
@@ -356,13 +356,13 @@ TEST(MainWindowTime, TheStripFillsEveryStepInTheBackgroundAsTheCommandLineCluste
     ASSERT_TRUE(stripFilled(window)) << "the steps not visited are clustered";
     EXPECT_EQ(window.timeBar()->shownStep(), 0) << "without leaving the step shown";
 
-    app::TimeSeriesRequest request;
+    engine::TimeSeriesRequest request;
     request.selection = {.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, .variable = "t"};
     request.steps = {0, 3};
     request.preprocess.isovalue = *window.captureSession().isovalue;
     request.preprocess.clusters = window.memberSelection()->clusterCount();
     const auto steps =
-        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+        engine::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
     ui::MemberTableModel& table = *window.memberTable()->model();
     window.memberTable()->stepsButton()->click();
     ASSERT_TRUE(table.stepColumnsShown());

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "app/main_window.h"
+#include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -29,7 +30,6 @@
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/member_selection.h"
 #include "widgets/render_toolbar.h"
-#include "widgets/session/session_history.h"
 #include "widgets/time_bar.h"
 
 using namespace ensil;

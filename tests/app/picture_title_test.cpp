@@ -1,6 +1,6 @@
 // The title line and file name a picture gets: from the real files' own variable, units,
 // fixed time and member dimension.
-#include "app/headless/picture_title.h"
+#include "engine/picture_title.h"
 
 #include <gtest/gtest.h>
 
@@ -20,26 +20,26 @@ data::Ensemble open(const char* file, const char* variable, const char* memberDi
 
 TEST(PictureTitle, SaysVariableUnitsIsovalueTimeAndMembers) {
     const data::Ensemble era5 = open("era5_eda_members.nc", "t");
-    EXPECT_EQ(app::pictureTitle(era5, 260.0F),
+    EXPECT_EQ(engine::pictureTitle(era5, 260.0F),
               "t (Temperature) [K] \u00b7 isovalue 260 K \u00b7 time 2017-01-01T00:00 \u00b7 "
               "10 members along number");
-    EXPECT_EQ(app::pictureFileStem(era5, 260.0F), "t_260K_time-2017-01-01T00-00");
+    EXPECT_EQ(engine::pictureFileStem(era5, 260.0F), "t_260K_time-2017-01-01T00-00");
 
     const data::Ensemble uk = open("uk_hires.nc", "air_potential_temperature", "time");
-    EXPECT_EQ(app::pictureTitle(uk, 290.5F),
+    EXPECT_EQ(engine::pictureTitle(uk, 290.5F),
               "air_potential_temperature [K] \u00b7 isovalue 290.5 K \u00b7 3 members along time");
-    EXPECT_EQ(app::pictureFileStem(uk, 290.5F), "air_potential_temperature_290.5K");
+    EXPECT_EQ(engine::pictureFileStem(uk, 290.5F), "air_potential_temperature_290.5K");
 }
 
 TEST(PictureTitle, TypesetsTheUnitsExponentsAndKeepsTheFileNameAscii) {
     // ERA5's geopotential is in "m**2 s**-2".
     const data::Ensemble era5 = open("era5_eda_members.nc", "z");
     ASSERT_EQ(era5.units, "m**2 s**-2") << "as the file writes it";
-    EXPECT_EQ(app::pictureTitle(era5, 57575.0F),
+    EXPECT_EQ(engine::pictureTitle(era5, 57575.0F),
               "z (Geopotential) [m\u00b2 s\u207b\u00b2] \u00b7 isovalue 5.758e+04 m\u00b2 "
               "s\u207b\u00b2 \u00b7 time 2017-01-01T00:00 \u00b7 10 members along number");
-    EXPECT_EQ(app::exceedanceText(era5, 57575.0F), "P(z > 5.758e+04 m\u00b2 s\u207b\u00b2)");
-    const std::string stem = app::pictureFileStem(era5, 57575.0F);
+    EXPECT_EQ(engine::exceedanceText(era5, 57575.0F), "P(z > 5.758e+04 m\u00b2 s\u207b\u00b2)");
+    const std::string stem = engine::pictureFileStem(era5, 57575.0F);
     EXPECT_TRUE(std::all_of(stem.begin(), stem.end(), [](char c) {
         return static_cast<unsigned char>(c) < 128;
     })) << stem;

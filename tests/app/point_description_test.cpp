@@ -1,12 +1,12 @@
 // What the status bar and tooltip say of a point under the cursor, on ERA5's real grid and
 // uk_hires's rotated one: true longitude and latitude, the level in hPa, and the values the
 // data hold there.
-#include "app/point_description.h"
+#include "workbench/point_description.h"
 
 #include <gtest/gtest.h>
 
-#include "app/headless/section_volume.h"
 #include "data/ensemble_reader.h"
+#include "engine/section_volume.h"
 #include "preprocessing/ensemble_moments.h"
 
 using namespace ensil;
@@ -17,7 +17,9 @@ struct Opened {
     prep::EnsembleMoments moments;
     geo::MapProjection projection;
     data::DisplayFrame frame;
-    app::PointContext context() const { return {&ensemble, &moments.mean, &projection, &frame}; }
+    workbench::PointContext context() const {
+        return {&ensemble, &moments.mean, &projection, &frame};
+    }
 };
 
 Opened openWithContext(const char* file, const char* variable, const char* memberDim = "") {
@@ -39,10 +41,10 @@ TEST(PointDescription, ASurfacePointSaysPlaceLevelAndTheMembersAndMeansValues) {
     gl::PickResult hit;
     hit.member = 3;
     hit.surface = era5.frame.indexToDisplay(glm::vec3(i, j, k));
-    const QString text = app::describePoint(era5.context(), hit);
+    const QString text = workbench::describePoint(era5.context(), hit);
     const float member = era5.ensemble.members[3].values[g.index(i, j, k)];
     const float mean = era5.moments.mean.values[g.index(i, j, k)];
-    EXPECT_TRUE(text.startsWith(app::formatLonLat(g.x().values[i], g.y().values[j])))
+    EXPECT_TRUE(text.startsWith(workbench::formatLonLat(g.x().values[i], g.y().values[j])))
         << text.toStdString();
     EXPECT_TRUE(text.contains(QString::number(g.z().values[k] / 100.0, 'g', 4) + " hPa"))
         << text.toStdString();
@@ -55,39 +57,39 @@ TEST(PointDescription, ASurfacePointSaysPlaceLevelAndTheMembersAndMeansValues) {
 TEST(PointDescription, OnAFilledCutFaceItSaysTheSectionsFieldAndValueThere) {
     const Opened era5 = openWithContext("era5_eda_members.nc", "t");
     const data::Grid& g = era5.ensemble.grid;
-    app::SectionSources sources;
+    engine::SectionSources sources;
     sources.ensemble = &era5.ensemble;
     sources.member = 4;
     sources.valueMinimum = 200.0F;
     sources.valueMaximum = 300.0F;
-    const gl::SectionVolume section = app::sectionVolumeFor(sources, gl::SectionField::Member);
-    app::PointContext context = era5.context();
+    const gl::SectionVolume section = engine::sectionVolumeFor(sources, gl::SectionField::Member);
+    workbench::PointContext context = era5.context();
     context.section = &section;
     const std::size_t i = 40, j = 30, k = 1;
     gl::PickResult hit;
     hit.section = era5.frame.indexToDisplay(glm::vec3(i, j, k));
     hit.floor = era5.frame.indexToDisplay(glm::vec3(i, j, 0));
-    const QString text = app::describePoint(context, hit);
+    const QString text = workbench::describePoint(context, hit);
     const float value = era5.ensemble.members[4].values[g.index(i, j, k)];
-    EXPECT_TRUE(text.startsWith(app::formatLonLat(g.x().values[i], g.y().values[j])))
+    EXPECT_TRUE(text.startsWith(workbench::formatLonLat(g.x().values[i], g.y().values[j])))
         << text.toStdString();
     EXPECT_TRUE(text.endsWith("member 4: t " + QString::number(value, 'g', 5) + " K"))
         << text.toStdString();
     // Without the face filled the same point is the floor's.
     context.section = nullptr;
-    EXPECT_TRUE(app::describePoint(context, hit).contains("column maximum"));
+    EXPECT_TRUE(workbench::describePoint(context, hit).contains("column maximum"));
 }
 
 TEST(PointDescription, LongitudesReadEastAndWestAndRotatedGridsGiveTrueDegrees) {
-    EXPECT_EQ(app::formatLonLat(357.0, -30.0), QStringLiteral("30.00\u00b0 S, 3.00\u00b0 W"));
-    EXPECT_EQ(app::formatLonLat(30.0, 30.0), QStringLiteral("30.00\u00b0 N, 30.00\u00b0 E"));
+    EXPECT_EQ(workbench::formatLonLat(357.0, -30.0), QStringLiteral("30.00\u00b0 S, 3.00\u00b0 W"));
+    EXPECT_EQ(workbench::formatLonLat(30.0, 30.0), QStringLiteral("30.00\u00b0 N, 30.00\u00b0 E"));
     const Opened uk = openWithContext("uk_hires.nc", "air_potential_temperature", "time");
     gl::PickResult floor;
     floor.floor = uk.frame.indexToDisplay({0.0F, 0.0F, 0.0F});
-    const QString text = app::describePoint(uk.context(), floor);
+    const QString text = workbench::describePoint(uk.context(), floor);
     // The grid's first corner, rotated (357.5..., 0.1...), lies near 6.9 W 52.6 N.
     EXPECT_TRUE(text.contains("\u00b0 N")) << text.toStdString();
     EXPECT_TRUE(text.contains("\u00b0 W")) << text.toStdString();
     EXPECT_TRUE(text.contains("column maximum of the mean")) << text.toStdString();
-    EXPECT_TRUE(app::describePoint(uk.context(), gl::PickResult{}).isEmpty());
+    EXPECT_TRUE(workbench::describePoint(uk.context(), gl::PickResult{}).isEmpty());
 }

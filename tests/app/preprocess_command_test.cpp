@@ -5,7 +5,7 @@
 #include <QJsonObject>
 #include <QTextStream>
 
-#include "app/command_line.h"
+#include "cli/command_line.h"
 #include "data/ensemble_reader.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/inclusion_depth.h"
@@ -25,7 +25,7 @@ CommandRun preprocess(QStringList args) {
     args.prepend("ensil");
     CommandRun r;
     QTextStream out(&r.out), err(&r.err);
-    r.code = app::runCommandLine(args, out, err).exitCode;
+    r.code = cli::runCommandLine(args, out, err).exitCode;
     out.flush();
     err.flush();
     return r;

@@ -1,4 +1,4 @@
-#include "app/recent_selections.h"
+#include "workbench/recent_selections.h"
 
 #include <gtest/gtest.h>
 
@@ -21,12 +21,12 @@ data::DataSelection selectionOf(std::vector<std::string> paths, std::string vari
 TEST(RecentSelections, KeepTheChoicesNewestFirstAndWithoutDuplicates) {
     test::TempDir dir;
     QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
-    app::rememberSelection(settings, selectionOf({"/data/a.nc"}, "t", "", 2));
-    app::rememberSelection(settings, selectionOf({"/data/runs/1.vti", "/data/runs/2.vti"}));
-    app::rememberSelection(settings, selectionOf({"/data/c.cdf"}, "T", "frtime", 0));
-    app::rememberSelection(settings, selectionOf({"/data/a.nc"}, "z", "time", 1));
+    workbench::rememberSelection(settings, selectionOf({"/data/a.nc"}, "t", "", 2));
+    workbench::rememberSelection(settings, selectionOf({"/data/runs/1.vti", "/data/runs/2.vti"}));
+    workbench::rememberSelection(settings, selectionOf({"/data/c.cdf"}, "T", "frtime", 0));
+    workbench::rememberSelection(settings, selectionOf({"/data/a.nc"}, "z", "time", 1));
 
-    const auto recent = app::recentSelections(settings);
+    const auto recent = workbench::recentSelections(settings);
     ASSERT_EQ(recent.size(), 3u);
     EXPECT_EQ(recent[0].label, "/data/a.nc");
     EXPECT_EQ(recent[0].selection.variable, "z") << "the latest choices for a.nc";
@@ -43,16 +43,16 @@ TEST(RecentSelections, DropOldEntriesAndReadEntriesWithoutChoices) {
     QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
     // As written before choices were kept: files only.
     settings.setValue("recentFiles", QStringList{"/data/old.nc"});
-    auto recent = app::recentSelections(settings);
+    auto recent = workbench::recentSelections(settings);
     ASSERT_EQ(recent.size(), 1u);
     EXPECT_EQ(recent[0].selection.paths, std::vector<std::string>{"/data/old.nc"});
     EXPECT_TRUE(recent[0].selection.variable.empty());
 
     for (int i = 0; i < 5; ++i) {
-        app::rememberSelection(settings, selectionOf({"/data/" + std::to_string(i) + ".nc"}, "v"),
-                               3);
+        workbench::rememberSelection(settings,
+                                     selectionOf({"/data/" + std::to_string(i) + ".nc"}, "v"), 3);
     }
-    recent = app::recentSelections(settings);
+    recent = workbench::recentSelections(settings);
     ASSERT_EQ(recent.size(), 3u);
     EXPECT_EQ(recent[0].label, "/data/4.nc");
     EXPECT_EQ(recent[2].label, "/data/2.nc");

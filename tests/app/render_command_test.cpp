@@ -6,7 +6,7 @@
 #include <QJsonObject>
 #include <QTextStream>
 
-#include "app/command_line.h"
+#include "cli/command_line.h"
 #include "gl/palette.h"
 #include "tests/app/default_isovalue.h"
 #include "tests/app/ensil_run.h"
@@ -61,7 +61,7 @@ QImage renderEra5(const QStringList& extra, QString* error, int* exitCode = null
                      "1",      "--no-mean", "--elevation",
                      "60",     "--no-cache"};
     args += extra;
-    const int code = app::runCommandLine(args, out, err).exitCode;
+    const int code = cli::runCommandLine(args, out, err).exitCode;
     err.flush();
     if (exitCode != nullptr) *exitCode = code;
     *error = errText;

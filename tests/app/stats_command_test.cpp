@@ -1,6 +1,6 @@
 // `ensil stats`: the statistics file it writes, checked field by field against values worked
 // out here from the input as ensil reads it, and every refusal of a bad argument.
-#include "app/stats_command.h"
+#include "cli/stats_command.h"
 
 #include <gtest/gtest.h>
 #include <netcdf.h>
@@ -495,16 +495,16 @@ TEST(StatsCommand, HelpNamesEveryOption) {
 }
 
 TEST(StatsCommand, MemberListsParseAsUsersWriteThem) {
-    using app::MemberRange;
+    using cli::MemberRange;
     QString problem;
-    EXPECT_EQ(app::parseMemberList("1,3,5-9", problem),
+    EXPECT_EQ(cli::parseMemberList("1,3,5-9", problem),
               (std::vector<MemberRange>{{1, 1}, {3, 3}, {5, 9}}));
-    EXPECT_EQ(app::parseMemberList(" 4 , 1-2 ", problem),
+    EXPECT_EQ(cli::parseMemberList(" 4 , 1-2 ", problem),
               (std::vector<MemberRange>{{4, 4}, {1, 2}}));
     for (const char* bad : {"", "a", "1,", "1-", "-2", "1-2-3", "1.5", "5-9,9", "1,1", "3-1", "0",
                             "0-2", "99999999999999999999"}) {
         problem.clear();
-        EXPECT_FALSE(app::parseMemberList(QLatin1String(bad), problem).has_value()) << bad;
+        EXPECT_FALSE(cli::parseMemberList(QLatin1String(bad), problem).has_value()) << bad;
         EXPECT_TRUE(problem.startsWith("--members '")) << bad << ": " << problem.toStdString();
     }
 }

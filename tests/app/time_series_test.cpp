@@ -1,6 +1,6 @@
 // Ensembles over time: the steps a --times range names, clusters matched from step to step, and
 // the command line's --times in preprocess, render and generate.
-#include "app/headless/time_series.h"
+#include "engine/time_series.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <filesystem>
 #include <stop_token>
 
-#include "app/headless/floor_map.h"
-#include "app/headless/picture_title.h"
 #include "data/ensemble_reader.h"
+#include "engine/floor_map.h"
+#include "engine/picture_title.h"
 #include "preprocessing/cluster_identity.h"
 #include "preprocessing/ensemble_moments.h"
 #include "tests/app/ensil_run.h"
@@ -34,18 +34,18 @@ QJsonObject jsonOf(const test::EnsilRun& run) {
 
 TEST(StepRange, AllAndInclusiveRangesAndRefusalsNamingTheSteps) {
     std::string problem;
-    EXPECT_EQ(app::parseStepRange("all", 4, "'f.nc'", problem), (app::StepRange{0, 3}));
-    EXPECT_EQ(app::parseStepRange("1:2", 4, "'f.nc'", problem), (app::StepRange{1, 2}));
-    EXPECT_EQ(app::parseStepRange("3:3", 4, "'f.nc'", problem)->count(), 1u);
-    EXPECT_FALSE(app::parseStepRange("2:4", 4, "'f.nc'", problem));
+    EXPECT_EQ(engine::parseStepRange("all", 4, "'f.nc'", problem), (engine::StepRange{0, 3}));
+    EXPECT_EQ(engine::parseStepRange("1:2", 4, "'f.nc'", problem), (engine::StepRange{1, 2}));
+    EXPECT_EQ(engine::parseStepRange("3:3", 4, "'f.nc'", problem)->count(), 1u);
+    EXPECT_FALSE(engine::parseStepRange("2:4", 4, "'f.nc'", problem));
     EXPECT_EQ(problem, "--times '2:4' is refused: 'f.nc' has 4 time steps, 0 to 3");
-    EXPECT_FALSE(app::parseStepRange("3:1", 4, "'f.nc'", problem));
+    EXPECT_FALSE(engine::parseStepRange("3:1", 4, "'f.nc'", problem));
     EXPECT_NE(problem.find("comes after"), std::string::npos) << problem;
     for (const char* bad : {"", "2", "a:b", "-1:2", "1:", ":2", "1:2:3", "0x1:2"}) {
-        EXPECT_FALSE(app::parseStepRange(bad, 4, "'f.nc'", problem)) << bad;
+        EXPECT_FALSE(engine::parseStepRange(bad, 4, "'f.nc'", problem)) << bad;
         EXPECT_NE(problem.find("'all' or A:B"), std::string::npos) << bad << ": " << problem;
     }
-    EXPECT_FALSE(app::parseStepRange("all", 0, "'f.nc'", problem));
+    EXPECT_FALSE(engine::parseStepRange("all", 0, "'f.nc'", problem));
     EXPECT_NE(problem.find("has no time steps"), std::string::npos) << problem;
 }
 
@@ -57,7 +57,7 @@ TEST(StepIdentities, AGroupKeepsItsIdentityWhereMostOfItsMembersGo) {
     // colours by label would be wrong.
     const std::vector<int> labels{2, 2, 2, 1, 1, 0, 0, 1, 1};
     const prep::MergeTree unused{};
-    const std::vector<int> identities = app::matchStepIdentities(unused, 3, labels, before);
+    const std::vector<int> identities = engine::matchStepIdentities(unused, 3, labels, before);
     // Label 2 holds three of group 0: identity 0. Label 0 holds two of group 1: identity 1.
     // Label 1 holds both of group 2 (and one each of groups 0 and 1): identity 2.
     EXPECT_EQ(identities, (std::vector<int>{1, 2, 0}));
@@ -69,21 +69,21 @@ TEST(StepIdentities, ANewGroupTakesTheLowestFreeIdentityAndTheFirstStepTheTreesO
     // Group 1 splits into two: the larger part keeps 1, the new part takes the lowest free (2).
     const std::vector<int> before{0, 0, 1, 1, 1, 1, -1};
     const std::vector<int> labels{0, 0, 1, 1, 1, 2, 2};
-    EXPECT_EQ(app::matchStepIdentities({}, 3, labels, before), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(engine::matchStepIdentities({}, 3, labels, before), (std::vector<int>{0, 1, 2}));
     // Nothing known: the identities of the tree's own walk, as ensil preprocess gives them.
     prep::MergeTree tree;
     tree.memberCount = 3;
     tree.merges = {{.a = 0, .b = 1, .height = 1.0, .size = 2},
                    {.a = 2, .b = 3, .height = 2.0, .size = 3}};
     const std::vector<int> fresh = prep::clusterLabels(tree, 2);
-    EXPECT_EQ(app::matchStepIdentities(tree, 2, fresh, {-1, -1, -1}),
+    EXPECT_EQ(engine::matchStepIdentities(tree, 2, fresh, {-1, -1, -1}),
               prep::identitiesFromTree(tree, 2));
 }
 
 TEST(StepIdentities, PreviousIdentitiesAreFoundByMemberName) {
-    EXPECT_EQ(app::previousIdentitiesByName({"a", "b", "c"}, {2, 0, 1}, {"c", "x", "a"}),
+    EXPECT_EQ(engine::previousIdentitiesByName({"a", "b", "c"}, {2, 0, 1}, {"c", "x", "a"}),
               (std::vector<int>{1, -1, 2}));
-    EXPECT_EQ(app::previousIdentitiesByName({}, {}, {"a"}), (std::vector<int>{-1}));
+    EXPECT_EQ(engine::previousIdentitiesByName({}, {}, {"a"}), (std::vector<int>{-1}));
 }
 
 TEST(PreprocessTimes, Era5GivesOneObjectPerStepWithItsTimeAndColoursThatFollowTheGroups) {
@@ -110,7 +110,7 @@ TEST(PreprocessTimes, Era5GivesOneObjectPerStepWithItsTimeAndColoursThatFollowTh
         for (int m = 0; m < 10; ++m) {
             // Each member's colour is its cluster number's (the identity + 1).
             EXPECT_EQ(colors[m].toString().toStdString(),
-                      app::identityColorName(clusters[m].toInt() - 1));
+                      engine::identityColorName(clusters[m].toInt() - 1));
         }
     }
     // Reproduced by hand: each step's clusters are numbered as matched to the previous step's
@@ -234,7 +234,7 @@ TEST(RenderTimes, OnePicturePerStepNamedByItsTimeIndexAndTitledWithItsTime) {
     // The title is the picture's: it names the step's time.
     const data::Ensemble at2 =
         data::openEnsemble({.paths = {kEra5.toStdString()}, .variable = "t", .timeIndex = 2});
-    EXPECT_NE(app::pictureTitle(at2, 260.0F).find("time 2017-01-02T00:00"), std::string::npos);
+    EXPECT_NE(engine::pictureTitle(at2, 260.0F).find("time 2017-01-02T00:00"), std::string::npos);
 }
 
 TEST(RenderTimes, SeveralStepsNeedANumberPatternAndARangeInsideTheSteps) {
@@ -256,7 +256,7 @@ TEST(RenderTimes, SeveralStepsNeedANumberPatternAndARangeInsideTheSteps) {
 }
 
 TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps) {
-    app::TimeSeriesRequest request;
+    engine::TimeSeriesRequest request;
     request.selection = {.paths = {kEra5.toStdString()}, .variable = "t"};
     request.steps = {0, 3};
     request.preprocess.isovalue = 260.0;
@@ -264,9 +264,9 @@ TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps
     const auto quiet = [](const std::string&, const std::string&) {};
     std::vector<double> fractions;
     std::vector<std::string> times;
-    const auto steps = app::preprocessTimeSeries(
+    const auto steps = engine::preprocessTimeSeries(
         request, quiet, {}, [&](double f) { fractions.push_back(f); },
-        [&](const app::TimeStepResult& step) { times.push_back(step.time); });
+        [&](const engine::TimeStepResult& step) { times.push_back(step.time); });
     ASSERT_EQ(steps.size(), 4u);
     std::vector<std::string> expected;
     for (const QString& t : kEra5Times) expected.push_back(t.toStdString());
@@ -279,10 +279,10 @@ TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps
     // Stopped once the second step is done: no third step is read.
     std::stop_source stop;
     std::size_t done = 0;
-    EXPECT_THROW((void)app::preprocessTimeSeries(request, quiet, stop.get_token(), {},
-                                                 [&](const app::TimeStepResult&) {
-                                                     if (++done == 2) stop.request_stop();
-                                                 }),
+    EXPECT_THROW((void)engine::preprocessTimeSeries(request, quiet, stop.get_token(), {},
+                                                    [&](const engine::TimeStepResult&) {
+                                                        if (++done == 2) stop.request_stop();
+                                                    }),
                  data::Cancelled);
     EXPECT_EQ(done, 2u);
 }
@@ -290,19 +290,19 @@ TEST(TimeSeries, ProgressRisesToOneOverAllStepsAndAStopEndsTheSeriesBetweenSteps
 // The workbench's strip clusters the steps not visited without their surfaces: the same
 // clusters and identities as preprocessing each step, matched to the step before.
 TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessing) {
-    app::TimeSeriesRequest request;
+    engine::TimeSeriesRequest request;
     request.selection = {.paths = {kEra5.toStdString()}, .variable = "t"};
     request.steps = {0, 3};
     // The workbench's defaults: its isovalue and 5 clusters, where the groups of step 1 on
     // take other identities than their tree alone would give them.
     request.preprocess.clusters = 5;
     const auto steps =
-        app::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
+        engine::preprocessTimeSeries(request, [](const std::string&, const std::string&) {});
     ASSERT_EQ(steps.size(), 4u);
     bool someoneMoved = false;
     bool alone = false;  // a step whose tree alone would give other identities
     for (std::size_t s = 1; s < steps.size(); ++s) {
-        app::StepClusteringRequest one;
+        engine::StepClusteringRequest one;
         one.selection = request.selection;
         one.selection.timeIndex = s;
         one.isovalue = steps[0].result.meshes.isovalue;
@@ -311,7 +311,7 @@ TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessin
             one.previousMembers.push_back(m.name);
         }
         one.previousIdentities = steps[s - 1].memberIdentities;
-        const app::StepClusters clusters = app::clusterTimeStep(one, {});
+        const engine::StepClusters clusters = engine::clusterTimeStep(one, {});
         ASSERT_EQ(clusters.members.size(), 10u);
         EXPECT_EQ(clusters.members.front(), "member 0");
         EXPECT_EQ(clusters.memberIdentities, steps[s].memberIdentities) << "step " << s;
@@ -326,10 +326,10 @@ TEST(StepClustering, AStepsClustersWithoutSurfacesAreThoseOfItsWholePreprocessin
 
     std::stop_source stop;
     stop.request_stop();
-    app::StepClusteringRequest stopped;
+    engine::StepClusteringRequest stopped;
     stopped.selection = request.selection;
     stopped.isovalue = 260.0F;
-    EXPECT_THROW((void)app::clusterTimeStep(stopped, stop.get_token()), data::Cancelled);
+    EXPECT_THROW((void)engine::clusterTimeStep(stopped, stop.get_token()), data::Cancelled);
 }
 
 // ensil render --times with a floor: one colour scale over all the frames, spanning every
@@ -339,7 +339,7 @@ TEST(RenderTimes, TheFloorHasOneColourScaleOverAllTheSteps) {
     const data::DataSelection era5{.paths = {kEra5.toStdString()}, .variable = "t"};
     gl::RenderSettings settings;
     settings.floor = gl::FloorContent::ColumnMaximum;
-    const auto scale = app::floorScaleOverSteps(era5, {0, 3}, settings);
+    const auto scale = engine::floorScaleOverSteps(era5, {0, 3}, settings);
     ASSERT_TRUE(scale.has_value());
     bool wider = false;
     std::size_t narrower = 0;  // a step whose own floor spans less than the scale
@@ -348,8 +348,8 @@ TEST(RenderTimes, TheFloorHasOneColourScaleOverAllTheSteps) {
         one.timeIndex = t;
         const data::Ensemble e = data::openEnsemble(one);
         const prep::EnsembleMoments moments = prep::computeEnsembleMoments(e);
-        const gl::FloorMap own =
-            app::floorMapFor(e, moments.mean, app::computeColumnMaxima(e, moments.mean), settings);
+        const gl::FloorMap own = engine::floorMapFor(
+            e, moments.mean, engine::computeColumnMaxima(e, moments.mean), settings);
         EXPECT_LE(scale->first, own.minimum) << "step " << t;
         EXPECT_GE(scale->second, own.maximum) << "step " << t;
         if (scale->first < own.minimum || scale->second > own.maximum) {
@@ -358,9 +358,9 @@ TEST(RenderTimes, TheFloorHasOneColourScaleOverAllTheSteps) {
         }
     }
     EXPECT_TRUE(wider) << "ERA5's steps differ: some step's own range is narrower";
-    EXPECT_FALSE(app::floorScaleOverSteps(era5, {1, 1}, settings)) << "one step: its own";
+    EXPECT_FALSE(engine::floorScaleOverSteps(era5, {1, 1}, settings)) << "one step: its own";
     settings.floor = gl::FloorContent::ProbabilityMaximum;
-    EXPECT_FALSE(app::floorScaleOverSteps(era5, {0, 3}, settings)) << "0 to 1 already";
+    EXPECT_FALSE(engine::floorScaleOverSteps(era5, {0, 3}, settings)) << "0 to 1 already";
 
     test::TempDir dir;
     const QString pattern = QString::fromStdString(dir.file("frame_%d.png"));

@@ -1,4 +1,4 @@
-#include "app/workbench_surface_format.h"
+#include "workbench/workbench_surface_format.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,7 @@ namespace {
 QImage drawDemo(const data::Ensemble& e, const std::shared_ptr<const data::MeshSet>& meshes,
                 int samples) {
     ui::SilhouetteView view;
-    QSurfaceFormat format = app::workbenchSurfaceFormat();
+    QSurfaceFormat format = workbench::workbenchSurfaceFormat();
     format.setSamples(samples);
     view.setFormat(format);
     view.resize(400, 300);
@@ -40,8 +40,8 @@ QImage drawDemo(const data::Ensemble& e, const std::shared_ptr<const data::MeshS
 // the view's framebuffer must then change no pixel. Should the renderer ever draw edges into
 // the window's framebuffer itself, this fails, and the window should be multisampled again.
 TEST(WorkbenchSurfaceFormat, MultisamplingTheViewWouldChangeNoPixel) {
-    EXPECT_EQ(app::workbenchSurfaceFormat().samples(), 0);
-    EXPECT_EQ(app::workbenchSurfaceFormat().profile(), QSurfaceFormat::CoreProfile);
+    EXPECT_EQ(workbench::workbenchSurfaceFormat().samples(), 0);
+    EXPECT_EQ(workbench::workbenchSurfaceFormat().profile(), QSurfaceFormat::CoreProfile);
     const auto demo = data::makeDemoEnsemble({.members = 4, .nx = 48, .ny = 24, .nz = 8});
     const data::Ensemble& e = demo.ensemble;
     const auto moments = prep::computeEnsembleMoments(e);

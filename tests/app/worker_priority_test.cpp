@@ -1,4 +1,4 @@
-#include "app/worker_priority.h"
+#include "workbench/worker_priority.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -10,9 +10,9 @@
 #include <QTest>
 #include <thread>
 
-#include "app/background_job.h"
+#include "workbench/background_job.h"
 
-using namespace ensil::app;
+using namespace ensil::workbench;
 
 namespace {
 int niceOfThisThread() {

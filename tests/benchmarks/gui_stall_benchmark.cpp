@@ -31,12 +31,12 @@
 #include <utility>
 #include <vector>
 
-#include "app/event_loop_stall_monitor.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/workbench_surface_format.h"
 #include "data/working_memory.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/event_loop_stall_monitor.h"
+#include "workbench/workbench_surface_format.h"
 
 namespace {
 
@@ -98,7 +98,7 @@ private:
 
 struct Phase {
     const char* name;
-    ensil::app::StallSummary stalls;
+    ensil::workbench::StallSummary stalls;
     double seconds;
     std::vector<SlowEvent> slowEvents;
 };
@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
     double reportMs = 20.0;
     bool warmCache = false;
     // As the workbench asks for, unless --samples says otherwise (to see what it costs).
-    int samples = ensil::app::workbenchSurfaceFormat().samples();
+    int samples = ensil::workbench::workbenchSurfaceFormat().samples();
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--members" && i + 1 < argc) params.members = std::strtoul(argv[++i], nullptr, 10);
@@ -188,7 +188,7 @@ int main(int argc, char** argv) {
     QTemporaryDir cache;
     // A cold mesh cache unless asked otherwise: the isovalue job then does the whole work.
     if (!warmCache) qputenv("XDG_CACHE_HOME", cache.path().toUtf8());
-    QSurfaceFormat format = ensil::app::workbenchSurfaceFormat();
+    QSurfaceFormat format = ensil::workbench::workbenchSurfaceFormat();
     format.setSamples(samples);
     QSurfaceFormat::setDefaultFormat(format);
     TimingApplication app(argc, argv, reportMs);
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
     QCoreApplication::setApplicationName(QStringLiteral("ensil-gui-stall-benchmark"));
     QSettings().clear();  // no remembered window layout
 
-    ensil::app::EventLoopStallMonitor monitor(5);
+    ensil::workbench::EventLoopStallMonitor monitor(5);
     std::vector<Phase> phases;
     QElapsedTimer clock;
     auto beginPhase = [&] {

@@ -18,10 +18,10 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/workbench_surface_format.h"
 #include "data/working_memory.h"
+#include "session/project_file.h"
 #include "timing.h"
-#include "widgets/session/project_file.h"
+#include "workbench/workbench_surface_format.h"
 
 namespace {
 struct Reopening {
@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     QTemporaryDir home;
     qputenv("XDG_CACHE_HOME", home.path().toUtf8());
     qputenv("XDG_CONFIG_HOME", home.path().toUtf8());
-    QSurfaceFormat::setDefaultFormat(ensil::app::workbenchSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(ensil::workbench::workbenchSurfaceFormat());
     QApplication app(argc, argv);
     const QString path = home.filePath(QStringLiteral("paper.ensil"));
     {

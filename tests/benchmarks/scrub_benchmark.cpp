@@ -23,7 +23,6 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/workbench_surface_format.h"
 #include "data/demo_ensemble.h"
 #include "data/working_memory.h"
 #include "preprocessing/preview_meshes.h"
@@ -31,6 +30,7 @@
 #include "widgets/isovalue_control.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
 
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     QTemporaryDir home;  // the user's settings and cache stay untouched
     qputenv("XDG_CACHE_HOME", home.path().toUtf8());
     qputenv("XDG_CONFIG_HOME", home.path().toUtf8());
-    QSurfaceFormat::setDefaultFormat(app::workbenchSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(workbench::workbenchSurfaceFormat());
     QApplication application(argc, argv);
 
     app::MainWindow window;
@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
     // The preview alone, outside the window: what one update costs the worker, by budget and
     // decimation.
     {
-        const app::EnsembleOverview& o = *window.overview();
+        const engine::EnsembleOverview& o = *window.overview();
         const data::DisplayFrame frame(o.ensemble->grid, 1.0F);
         const float iso = o.defaultIsovalue;
         std::printf("previews of the 51 surfaces at %.1f, headless (full detail: %zu triangles):\n",

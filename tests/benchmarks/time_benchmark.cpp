@@ -18,14 +18,14 @@
 #include <string>
 #include <vector>
 
-#include "app/headless/time_series.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
 #include "data/working_memory.h"
+#include "engine/time_series.h"
 #include "timing.h"
 
 using ensil::bench::median;
-namespace app = ensil::app;
+namespace engine = ensil::engine;
 namespace data = ensil::data;
 using Clock = std::chrono::steady_clock;
 
@@ -39,14 +39,14 @@ double since(Clock::time_point start) {
 using Stages = std::map<std::string, std::vector<double>>;
 
 // Each step's wall time from the end of the previous one, in ms.
-std::vector<double> stepTimes(const app::TimeSeriesRequest& request, std::vector<bool>& hits,
+std::vector<double> stepTimes(const engine::TimeSeriesRequest& request, std::vector<bool>& hits,
                               Stages& stages) {
     std::vector<double> times;
     hits.clear();
     auto last = Clock::now();
-    (void)app::preprocessTimeSeries(
+    (void)engine::preprocessTimeSeries(
         request, [](const std::string&, const std::string&) {}, {}, {},
-        [&](const app::TimeStepResult& step) {
+        [&](const engine::TimeStepResult& step) {
             times.push_back(since(last));
             hits.push_back(step.result.fromCache);
             for (const auto& [name, value] : step.result.seconds) stages[name].push_back(value);
@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
                 params.members, params.nx, params.ny, params.nz, steps, since(start) / 1000.0,
                 path.c_str());
 
-    app::TimeSeriesRequest request;
+    engine::TimeSeriesRequest request;
     request.selection.paths = {path};
     request.steps = {0, steps - 1};
     request.preprocess.clusters = 5;
@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
         previous[m] = static_cast<int>((m / 10) % 5);
     }
     const double matchMs = ensil::bench::medianMs(
-        101, [&] { (void)app::matchStepIdentities({}, 5, labels, previous); });
+        101, [&] { (void)engine::matchStepIdentities({}, 5, labels, previous); });
 
     std::printf("per step (ms):   step  read  new(uncached)  cached(mesh cache hit)\n");
     for (std::size_t t = 0; t < steps; ++t) {

@@ -19,13 +19,13 @@
 #include <cstdlib>
 #include <string>
 
-#include "app/ensemble_overview.h"
-#include "app/headless/run_memory.h"
-#include "app/headless/streaming_run.h"
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/workbench_surface_format.h"
 #include "data/working_memory.h"
+#include "engine/ensemble_overview.h"
+#include "engine/run_memory.h"
+#include "engine/streaming_run.h"
+#include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
 
@@ -35,7 +35,7 @@ double mib(std::size_t bytes) { return static_cast<double>(bytes) / 1048576.0; }
 
 int main(int argc, char** argv) {
     ensil::data::keepWorkingMemoryForReuse();  // as ensil does (data/working_memory.h)
-    QSurfaceFormat::setDefaultFormat(app::workbenchSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(workbench::workbenchSurfaceFormat());
     QApplication application(argc, argv);
     std::string file, limitText = "1GiB", screenshot;
     double iso2 = std::nan("");
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
         }
     }
     std::string problem;
-    const auto limit = app::parseMemorySize(limitText, problem);
+    const auto limit = engine::parseMemorySize(limitText, problem);
     if (file.empty() || !limit) {
         std::fprintf(stderr, "give --file FILE.nc and a valid --memory-limit %s\n",
                      problem.c_str());
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
     QSignalSpy buildFailed(window.isovalueSession(), &app::IsovalueSession::failed);
-    const app::RunMemoryMeter meter;
+    const engine::RunMemoryMeter meter;
     QElapsedTimer timer;
     timer.start();
     window.openFiles({.paths = {file}});
@@ -85,11 +85,11 @@ int main(int argc, char** argv) {
                          : buildFailed.front().front().toString().toUtf8().constData());
         return 1;
     }
-    const app::EnsembleOverview& overview = *window.overview();
+    const engine::EnsembleOverview& overview = *window.overview();
     std::printf("%s; --memory-limit %s (%.0f MiB)\n", file.c_str(), limitText.c_str(), mib(*limit));
     if (overview.streamed) {
         std::printf("streamed: a copy at %s (%.0f MiB), slab passes within %.0f MiB\n",
-                    app::everyNthPoint(overview.streamed->stride).c_str(),
+                    engine::everyNthPoint(overview.streamed->stride).c_str(),
                     mib(overview.ensemble->bytes()), mib(overview.streamed->plan.memoryLimit));
     } else {
         std::printf("opened in memory (the limit holds it)\n");

@@ -23,13 +23,13 @@
 
 #include "app/isovalue_session.h"
 #include "app/main_window.h"
-#include "app/workbench_surface_format.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
 #include "data/working_memory.h"
 #include "timing.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
 
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
     QTemporaryDir home;
     qputenv("XDG_CACHE_HOME", home.path().toUtf8());
     qputenv("XDG_CONFIG_HOME", home.path().toUtf8());
-    QSurfaceFormat::setDefaultFormat(app::workbenchSurfaceFormat());
+    QSurfaceFormat::setDefaultFormat(workbench::workbenchSurfaceFormat());
     QApplication application(argc, argv);
     const std::string path = home.filePath(QStringLiteral("demo_steps.nc")).toStdString();
     const data::DemoEnsembleParams params;

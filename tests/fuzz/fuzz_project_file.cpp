@@ -1,4 +1,4 @@
-// Fuzzes the project parser (widgets/session/project_file.h, projectFromJson) on raw bytes. A
+// Fuzzes the project parser (session/project_file.h, projectFromJson) on raw bytes. A
 // project file is user-edited, shared and double-clicked, so any text must be either accepted
 // whole or refused with ProjectError naming the line or field; any other exception type or a
 // crash is a finding. A project it accepts must also survive saving: projectToJson of what was
@@ -13,8 +13,8 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "session/project_file.h"
 #include "tests/fuzz/fuzz_support.h"
-#include "widgets/session/project_file.h"
 
 // NOLINTNEXTLINE(readability-identifier-naming): the name libFuzzer calls
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

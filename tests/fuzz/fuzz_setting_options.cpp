@@ -1,4 +1,4 @@
-// Fuzzes the checked command-line value parsers (widgets/session/setting_options.h): the value
+// Fuzzes the checked command-line value parsers (session/setting_options.h): the value
 // of any setting of the table (numbers, whole numbers, choices, flags, colours), a bounded
 // number and an image size. These take whatever a user or a script types after an option, so
 // each must either refuse it (nullopt and a problem naming the option) or return a value that
@@ -10,9 +10,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "session/setting_options.h"
+#include "session/setting_table.h"
 #include "tests/fuzz/fuzz_support.h"
-#include "widgets/session/setting_options.h"
-#include "widgets/session/setting_table.h"
 
 namespace {
 void require(bool promise, const char* what) {

@@ -314,7 +314,7 @@ def mesh_cache_seeds():
         (out / f"payload_{members}_members").write_bytes(b"\x01" + payload)
 
 
-# --- projects and command-line values (widgets/session/) -------------------------------------
+# --- projects and command-line values (session/) -------------------------------------
 
 PROJECT = """{
     "format": "ensil project",
@@ -351,7 +351,7 @@ def project_seeds():
         '{"format": "ensil project", "schema_version": 2, "data": {"demo": {}}}\n')
 
 
-# The setting table's order (widgets/session/setting_table.cpp), with a typical value each.
+# The setting table's order (session/setting_table.cpp), with a typical value each.
 SETTINGS = ["shaded", "0.02", "0.3", "true", "false", "true", "false", "0.1", "0.9", "3", "2.5",
             "#1c1f24", "orthographic", "-75", "30", "5", "ward", "true", "0.05"]
 

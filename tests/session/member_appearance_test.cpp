@@ -1,6 +1,6 @@
 // How members are drawn from a session: hidden members and clusters, the selection, and cluster
 // colours; what the workbench and headless rendering share.
-#include "widgets/session/member_appearance.h"
+#include "session/member_appearance.h"
 
 #include <gtest/gtest.h>
 

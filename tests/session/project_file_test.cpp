@@ -1,7 +1,7 @@
 // Project files (the session's serialisation): what is saved comes back, paths travel with the
 // project, bad files are refused with the line or field and the reason, newer formats are refused,
 // and a failed write leaves the previous file as it was.
-#include "widgets/session/project_file.h"
+#include "session/project_file.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -14,8 +14,8 @@
 #include <csignal>
 #include <vector>
 
+#include "session/setting_table.h"
 #include "tests/support/temp_dir.h"
-#include "widgets/session/setting_table.h"
 
 using namespace ensil;
 

@@ -1,11 +1,11 @@
 // Remembered settings round-trip through the table, and a hand-edited file cannot put a value
 // out of range into the session. Uses an INI file in a temporary folder, never the user's.
-#include "widgets/session/remembered_settings.h"
+#include "session/remembered_settings.h"
 
 #include <gtest/gtest.h>
 
+#include "session/setting_table.h"
 #include "tests/support/temp_dir.h"
-#include "widgets/session/setting_table.h"
 
 using namespace ensil;
 

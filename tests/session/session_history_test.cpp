@@ -1,6 +1,6 @@
 // Undo steps of a session: named from what changed, a drag is one step, and undoing leaves the
 // camera's own motion and the selection alone.
-#include "widgets/session/session_history.h"
+#include "session/session_history.h"
 
 #include <gtest/gtest.h>
 

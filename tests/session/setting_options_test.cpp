@@ -1,6 +1,6 @@
 // Command-line values of settings: typed and checked, refused naming the option, the value and
 // what is allowed; sizes and counts never wrap.
-#include "widgets/session/setting_options.h"
+#include "session/setting_options.h"
 
 #include <gtest/gtest.h>
 

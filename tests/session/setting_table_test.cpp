@@ -1,6 +1,6 @@
 // The one setting table: every default lies in its own range, and no two settings share a
 // name anywhere they are looked up (code, project file, command line, remembered settings).
-#include "widgets/session/setting_table.h"
+#include "session/setting_table.h"
 
 #include <gtest/gtest.h>
 

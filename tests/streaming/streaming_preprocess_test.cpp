@@ -27,7 +27,7 @@ namespace {
 
 using test::kNaN;
 
-// What the in-memory path gives for the file (as app/headless/preprocess_run does it).
+// What the in-memory path gives for the file (as engine/preprocess_run does it).
 struct InMemory {
     data::Ensemble ensemble;
     std::vector<std::string> withoutData;

@@ -1,6 +1,6 @@
-// `ensil preprocess` in slabs (app/headless/streaming_run.h) against the in-memory run: the same
+// `ensil preprocess` in slabs (engine/streaming_run.h) against the in-memory run: the same
 // results and cache entry; and peak memory within --memory-limit, measured on the real program.
-#include "app/headless/streaming_run.h"
+#include "engine/streaming_run.h"
 
 #include <gtest/gtest.h>
 
@@ -36,7 +36,7 @@ std::string writeDemoWithAnEmptyMember(const test::TempDir& dir) {
     return path;
 }
 
-const app::PreprocessNotice kQuiet = [](const std::string&, const std::string&) {};
+const engine::PreprocessNotice kQuiet = [](const std::string&, const std::string&) {};
 
 // `ensil ARGS...` run to its end: its exit code and the JSON object it printed (empty when
 // it printed none).
@@ -56,20 +56,20 @@ TEST(StreamingRun, GivesTheInMemoryRunsResultsAndCacheEntry) {
     const std::string path = writeDemoWithAnEmptyMember(dir);
     const data::DataSelection selection{.paths = {path}};
     const data::EnsembleDescription d = data::describeEnsemble(selection);
-    app::PreprocessRequest request;
+    engine::PreprocessRequest request;
     request.isovalue = 30.0;
     request.clusters = 3;
     request.clustersGiven = true;
     request.sourceKey = data::sourceIdentity(selection);
     request.cacheDirectory = dir.file("memory-cache");
-    const app::PreprocessResult want = app::preprocessEnsemble(
+    const engine::PreprocessResult want = engine::preprocessEnsemble(
         std::make_shared<const data::Ensemble>(data::openEnsemble(selection)), request, kQuiet);
     request.cacheDirectory = dir.file("stream-cache");
     // Room for a few layers only: several slabs.
     const prep::StreamingPlan least = prep::planStreaming(d, std::size_t{1} << 30, 1);
     const std::size_t limit = least.resultBytes + least.memberBytes;
-    const app::PreprocessResult got =
-        app::preprocessStreaming(selection, d, request, limit, kQuiet);
+    const engine::PreprocessResult got =
+        engine::preprocessStreaming(selection, d, request, limit, kQuiet);
     ASSERT_TRUE(got.streaming.has_value());
     EXPECT_GT(got.streaming->slabs.size(), 1u);
     EXPECT_EQ(got.membersWithoutData, want.membersWithoutData);
@@ -106,19 +106,19 @@ TEST(StreamingRun, RefusesWithoutAnIsovalueOrOutsideTheValues) {
     const std::string path = writeDemoWithAnEmptyMember(dir);
     const data::DataSelection selection{.paths = {path}};
     const data::EnsembleDescription d = data::describeEnsemble(selection);
-    app::PreprocessRequest request;
+    engine::PreprocessRequest request;
     try {
-        (void)app::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
+        (void)engine::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
         FAIL() << "streamed without an isovalue";
-    } catch (const app::PreprocessRefused& e) {
+    } catch (const engine::PreprocessRefused& e) {
         EXPECT_EQ(e.exitCode(), 2);
         EXPECT_NE(std::string(e.what()).find("--iso"), std::string::npos) << e.what();
     }
     request.isovalue = 1e6;
     try {
-        (void)app::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
+        (void)engine::preprocessStreaming(selection, d, request, std::size_t{1} << 30, kQuiet);
         FAIL() << "streamed an isovalue outside the values";
-    } catch (const app::PreprocessRefused& e) {
+    } catch (const engine::PreprocessRefused& e) {
         EXPECT_EQ(e.exitCode(), 1);
         EXPECT_NE(std::string(e.what()).find("outside the values of 'wind_speed'"),
                   std::string::npos)
@@ -128,14 +128,14 @@ TEST(StreamingRun, RefusesWithoutAnIsovalueOrOutsideTheValues) {
 
 TEST(StreamingRun, MemorySizesAreParsedOrRefusedSayingWhy) {
     std::string problem;
-    EXPECT_EQ(app::parseMemorySize("1GiB", problem), std::size_t{1} << 30);
-    EXPECT_EQ(app::parseMemorySize("512M", problem), std::size_t{512} << 20);
-    EXPECT_EQ(app::parseMemorySize("1.5 gb", problem), std::size_t{3} << 29);
-    EXPECT_EQ(app::parseMemorySize("64k", problem), std::size_t{64} << 10);
-    EXPECT_EQ(app::parseMemorySize("4096", problem), std::size_t{4096});
+    EXPECT_EQ(engine::parseMemorySize("1GiB", problem), std::size_t{1} << 30);
+    EXPECT_EQ(engine::parseMemorySize("512M", problem), std::size_t{512} << 20);
+    EXPECT_EQ(engine::parseMemorySize("1.5 gb", problem), std::size_t{3} << 29);
+    EXPECT_EQ(engine::parseMemorySize("64k", problem), std::size_t{64} << 10);
+    EXPECT_EQ(engine::parseMemorySize("4096", problem), std::size_t{4096});
     for (const char* bad : {"", "GiB", "-1G", "0", "12 parsecs", "nan", "1e30"}) {
         problem.clear();
-        EXPECT_FALSE(app::parseMemorySize(bad, problem).has_value()) << bad;
+        EXPECT_FALSE(engine::parseMemorySize(bad, problem).has_value()) << bad;
         EXPECT_NE(problem.find("--memory-limit"), std::string::npos) << bad;
     }
 }

@@ -1,23 +1,23 @@
 // The workbench's way with an ensemble larger than its memory budget (issue 20): a thinned copy
 // read slab by slab (data/thinned_ensemble.h), the choice between it and a whole read
-// (app/headless/workbench_reading.h), and each isovalue's surfaces and distances from the whole
-// data in slabs, equal to the in-memory job's (app/headless/streamed_isovalue_job.h).
+// (engine/workbench_reading.h), and each isovalue's surfaces and distances from the whole
+// data in slabs, equal to the in-memory job's (engine/streamed_isovalue_job.h).
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <set>
 #include <string>
 
-#include "app/headless/isovalue_job.h"
-#include "app/headless/streamed_isovalue_job.h"
-#include "app/headless/streaming_run.h"
-#include "app/headless/time_series.h"
-#include "app/headless/workbench_reading.h"
 #include "data/demo_ensemble.h"
 #include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "data/netcdf_writer.h"
 #include "data/thinned_ensemble.h"
+#include "engine/isovalue_job.h"
+#include "engine/streamed_isovalue_job.h"
+#include "engine/streaming_run.h"
+#include "engine/time_series.h"
+#include "engine/workbench_reading.h"
 #include "preprocessing/mesh_cache.h"
 #include "preprocessing/streaming_preprocess.h"
 #include "tests/streaming/same_results.h"
@@ -40,7 +40,7 @@ std::string writeDemo(const test::TempDir& dir) {
 
 // A budget the demo's in-memory peak just misses.
 std::size_t budgetBetween(const data::EnsembleDescription& d) {
-    return app::inMemoryPeakBytes(d) - 1;
+    return engine::inMemoryPeakBytes(d) - 1;
 }
 
 }  // namespace
@@ -94,32 +94,33 @@ TEST(WorkbenchReading, ReadsWholeWithinTheBudgetAndAThinnedCopyBeyondIt) {
     const data::DataSelection selection{.paths = {writeDemo(dir)}};
     const data::EnsembleDescription d = data::describeEnsemble(selection);
 
-    const app::WorkbenchEnsemble whole =
-        app::readForWorkbench(selection, app::inMemoryPeakBytes(d));
+    const engine::WorkbenchEnsemble whole =
+        engine::readForWorkbench(selection, engine::inMemoryPeakBytes(d));
     EXPECT_FALSE(whole.streamed.has_value()) << "the in-memory peak fits the budget exactly";
     EXPECT_EQ(whole.ensemble.grid.pointCount(), d.grid.pointCount());
 
     const std::size_t budget = budgetBetween(d);
-    const app::WorkbenchEnsemble streamed = app::readForWorkbench(selection, budget);
+    const engine::WorkbenchEnsemble streamed = engine::readForWorkbench(selection, budget);
     ASSERT_TRUE(streamed.streamed.has_value());
-    const app::StreamedSource& source = *streamed.streamed;
+    const engine::StreamedSource& source = *streamed.streamed;
     EXPECT_GE(source.stride, 2u);
     EXPECT_EQ(source.memoryLimit, budget);
-    EXPECT_LE(app::inMemoryPeakBytes(d) / source.stride / source.stride / source.stride, budget / 4)
+    EXPECT_LE(engine::inMemoryPeakBytes(d) / source.stride / source.stride / source.stride,
+              budget / 4)
         << "the copy and what is built from it keep to a quarter of the budget";
     EXPECT_LT(source.plan.memoryLimit, budget);
     EXPECT_TRUE(
         streamed.ensemble.grid.sameShapeAndCoordinates(data::thinnedGrid(d.grid, source.stride)));
-    const std::string note = app::streamedDataNote(source, streamed.ensemble);
+    const std::string note = engine::streamedDataNote(source, streamed.ensemble);
     EXPECT_NE(note.find("larger than the workbench's memory budget"), std::string::npos) << note;
-    EXPECT_NE(note.find(app::everyNthPoint(source.stride)), std::string::npos) << note;
-    EXPECT_EQ(app::everyNthPoint(2), "every 2nd point");
-    EXPECT_EQ(app::everyNthPoint(3), "every 3rd point");
-    EXPECT_EQ(app::everyNthPoint(11), "every 11th point");
+    EXPECT_NE(note.find(engine::everyNthPoint(source.stride)), std::string::npos) << note;
+    EXPECT_EQ(engine::everyNthPoint(2), "every 2nd point");
+    EXPECT_EQ(engine::everyNthPoint(3), "every 3rd point");
+    EXPECT_EQ(engine::everyNthPoint(11), "every 11th point");
 
     // Too little for even the slab passes: refused, saying what would do.
     try {
-        (void)app::readForWorkbench(selection, 4096);
+        (void)engine::readForWorkbench(selection, 4096);
         FAIL() << "opened within 4 KiB";
     } catch (const data::Error& e) {
         EXPECT_EQ(e.kind(), data::ErrorKind::OutOfMemory) << e.what();
@@ -132,21 +133,21 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     const auto whole = std::make_shared<const data::Ensemble>(data::openEnsemble(selection));
     const prep::EnsembleMoments wholeMoments = prep::computeEnsembleMoments(*whole);
-    app::IsovalueJobInput input;
+    engine::IsovalueJobInput input;
     input.options.isovalue = 30.0F;
     input.verticalExaggeration = 2.0F;
     input.ensemble = whole.get();
     input.moments = &wholeMoments;
-    const app::IsovalueOutcome want = app::runIsovalueJob(input);
+    const engine::IsovalueOutcome want = engine::runIsovalueJob(input);
 
-    app::WorkbenchEnsemble read = app::readForWorkbench(selection, budgetBetween(d));
+    engine::WorkbenchEnsemble read = engine::readForWorkbench(selection, budgetBetween(d));
     ASSERT_TRUE(read.streamed.has_value());
     const prep::EnsembleMoments copyMoments = prep::computeEnsembleMoments(read.ensemble);
     input.ensemble = &read.ensemble;
     input.moments = &copyMoments;
     input.cacheDirectory = dir.file("cache");
     input.sourceKey = data::sourceIdentity(selection);
-    const app::IsovalueOutcome got = app::runStreamedIsovalueJob(input, *read.streamed);
+    const engine::IsovalueOutcome got = engine::runStreamedIsovalueJob(input, *read.streamed);
 
     ASSERT_EQ(got.meshes.members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < got.meshes.members.size(); ++m) {
@@ -164,7 +165,7 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     EXPECT_EQ(got.exceedance->size(), read.ensemble.grid.pointCount());
 
     // Opened again, the meshes come from the cache, the distances from the whole data again.
-    const app::IsovalueOutcome cachedRun = app::runStreamedIsovalueJob(input, *read.streamed);
+    const engine::IsovalueOutcome cachedRun = engine::runStreamedIsovalueJob(input, *read.streamed);
     EXPECT_TRUE(cachedRun.fromCache);
     EXPECT_EQ(cachedRun.distances.values, got.distances.values);
     EXPECT_EQ(cachedRun.distancesToMean, got.distancesToMean);
@@ -173,7 +174,7 @@ TEST(StreamedIsovalueJob, GivesTheInMemoryJobsSurfacesDistancesAndCacheEntry) {
     // Stored under the in-memory job's key: the in-memory job finds them there.
     input.ensemble = whole.get();
     input.moments = &wholeMoments;
-    const app::IsovalueOutcome again = app::runIsovalueJob(input);
+    const engine::IsovalueOutcome again = engine::runIsovalueJob(input);
     EXPECT_TRUE(again.fromCache);
     for (std::size_t m = 0; m < again.meshes.members.size(); ++m) {
         EXPECT_TRUE(test::sameMesh(again.meshes.members[m], want.meshes.members[m]))
@@ -185,13 +186,13 @@ TEST(StreamedStepClusters, AreTheStepsClustersInMemory) {
     test::TempDir dir;
     const data::DataSelection selection{.paths = {writeDemo(dir)}};
     const data::EnsembleDescription d = data::describeEnsemble(selection);
-    app::StepClusteringRequest request;
+    engine::StepClusteringRequest request;
     request.selection = selection;
     request.isovalue = 30.0F;
     request.k = 4;
-    const app::StepClusters inMemory = app::clusterTimeStep(request, {});
+    const engine::StepClusters inMemory = engine::clusterTimeStep(request, {});
     request.memoryLimit = budgetBetween(d);  // the distances from the slab pass
-    const app::StepClusters streamed = app::clusterTimeStep(request, {});
+    const engine::StepClusters streamed = engine::clusterTimeStep(request, {});
     EXPECT_EQ(streamed.members, inMemory.members);
     EXPECT_EQ(streamed.memberIdentities, inMemory.memberIdentities);
     EXPECT_EQ(

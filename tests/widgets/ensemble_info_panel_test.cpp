@@ -6,7 +6,7 @@ using namespace ensil::ui;
 
 TEST(EnsembleInfoPanel, ShowsEveryFactAndAMessageReplacesThem) {
     EnsembleInfoPanel panel;
-    EnsembleFacts facts;
+    engine::EnsembleFacts facts;
     facts.source = "demo";
     facts.variable = "wind_speed";
     facts.units = "m s-1";

@@ -15,8 +15,8 @@ using namespace ensil::ui;
 
 namespace {
 // What a probe of an ERA5-like file says: t and z usable, a 2D variable not.
-DataProbe era5Probe() {
-    DataProbe p;
+engine::DataProbe era5Probe() {
+    engine::DataProbe p;
     p.format = "NetCDF-4";
     p.variables = {
         {"z", "number=10, time=4, plev=2, lat=61, lon=120", "m**2 s**-2", "Geopotential", true, ""},
@@ -40,7 +40,7 @@ QPushButton* okButton(const OpenDataDialog& dialog) {
 }
 
 // Opens the dialog, answers its first request with `probe`, and returns the request count.
-int answerFirstProbe(OpenDataDialog& dialog, const DataProbe& probe) {
+int answerFirstProbe(OpenDataDialog& dialog, const engine::DataProbe& probe) {
     QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
     dialog.requestProbe();
     EXPECT_EQ(requested.count(), 1);
@@ -86,7 +86,7 @@ TEST(OpenDataDialog, ListsTheVariablesAndOffersTheDetectedChoices) {
     EXPECT_TRUE(details.contains("Fixed: time = 0 of 4 (2017-01-01T00:00)"))
         << details.toStdString();
     EXPECT_FALSE(details.contains("Size:")) << "no size line when the probe says none";
-    DataProbe sized = era5Probe();
+    engine::DataProbe sized = era5Probe();
     sized.size = "0.6 MiB of values";
     dialog.showProbe(sized, requested.front().at(1).toInt());
     EXPECT_TRUE(
@@ -124,7 +124,7 @@ TEST(OpenDataDialog, AnAnswerToAnOlderRequestIsIgnored) {
     QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
     dialog.requestProbe();
     dialog.requestProbe();
-    DataProbe stale = era5Probe();
+    engine::DataProbe stale = era5Probe();
     stale.error = "stale";
     dialog.showProbe(stale, requested.front().at(1).toInt());
     EXPECT_TRUE(dialog.isProbing());
@@ -136,7 +136,7 @@ TEST(OpenDataDialog, AnAnswerToAnOlderRequestIsIgnored) {
 
 TEST(OpenDataDialog, AReaderErrorIsShownAndOkStaysDisabled) {
     OpenDataDialog dialog({"/tmp/garbage.nc"});
-    DataProbe failed;
+    engine::DataProbe failed;
     failed.error = "'/tmp/garbage.nc' is not in a format ensil reads (NetCDF, HDF5, VTK)";
     answerFirstProbe(dialog, failed);
     auto* error = dialog.findChild<QLabel*>("openDataError");
@@ -149,7 +149,7 @@ TEST(OpenDataDialog, AReaderErrorIsShownAndOkStaysDisabled) {
 
 TEST(OpenDataDialog, WithoutAMemberDimensionTheUserMustChooseOne) {
     OpenDataDialog dialog({"/data/contour.cdf"});
-    DataProbe probe = era5Probe();
+    engine::DataProbe probe = era5Probe();
     probe.memberDimension.clear();
     probe.memberDimensionChoices = {"frtime"};
     probe.members = 0;
@@ -163,7 +163,7 @@ TEST(OpenDataDialog, WithoutAMemberDimensionTheUserMustChooseOne) {
     members->setCurrentIndex(1);
     ASSERT_EQ(requested.count(), 1);
     EXPECT_EQ(requested.back().front().value<data::DataSelection>().memberDimension, "frtime");
-    DataProbe chosen = era5Probe();
+    engine::DataProbe chosen = era5Probe();
     chosen.memberDimension = "frtime";
     chosen.memberDimensionReason = "chosen by the user";
     chosen.memberDimensionChoices = {"frtime"};
@@ -175,7 +175,7 @@ TEST(OpenDataDialog, WithoutAMemberDimensionTheUserMustChooseOne) {
 
 TEST(OpenDataDialog, SeveralFilesOfferOneMemberPerFile) {
     OpenDataDialog dialog({"/data/run_01.vti", "/data/run_02.vti"});
-    DataProbe probe;
+    engine::DataProbe probe;
     probe.format = "VTK XML image";
     probe.variables = {{"density", "", "", "", true, ""}};
     probe.variable = "density";

@@ -1,0 +1,47 @@
+#include "cli/data_selection_options.h"
+
+namespace ensil::cli {
+
+DataSelectionOptions::DataSelectionOptions()
+    : m_variable(QStringList{QStringLiteral("var")},
+                 QStringLiteral("Variable (or dataset, or VTK array) to use; default: the one "
+                                "with three spatial dimensions and the most vertical levels "
+                                "(the first among equals)."),
+                 QStringLiteral("V")),
+      m_memberDim(QStringList{QStringLiteral("member-dim")},
+                  QStringLiteral("Dimension that holds the members (e.g. time, month), when "
+                                 "ensil cannot find one."),
+                  QStringLiteral("D")),
+      m_timeIndex(QStringList{QStringLiteral("time-index")},
+                  QStringLiteral("Index taken along every other non-spatial dimension, such as "
+                                 "time (default 0)."),
+                  QStringLiteral("I"), QStringLiteral("0")) {}
+
+void DataSelectionOptions::addTo(QCommandLineParser& parser) const {
+    parser.addOptions({m_variable, m_memberDim, m_timeIndex});
+    parser.addPositionalArgument(
+        QStringLiteral("PATH"),
+        QStringLiteral(
+            "NetCDF, HDF5, VTK or GRIB file(s): one file with a member dimension, or one "
+            "file per member."),
+        QStringLiteral("PATH..."));
+}
+
+std::optional<data::DataSelection> DataSelectionOptions::selection(const QCommandLineParser& parser,
+                                                                   QString& error) const {
+    data::DataSelection s;
+    for (const QString& path : parser.positionalArguments()) s.paths.push_back(path.toStdString());
+    s.variable = parser.value(m_variable).toStdString();
+    s.memberDimension = parser.value(m_memberDim).toStdString();
+    bool ok = false;
+    const qulonglong index = parser.value(m_timeIndex).toULongLong(&ok);
+    if (!ok) {
+        error = QStringLiteral("--time-index must be a whole number from 0, not '%1'")
+                    .arg(parser.value(m_timeIndex));
+        return std::nullopt;
+    }
+    s.timeIndex = index;
+    return s;
+}
+
+}  // namespace ensil::cli

@@ -1,0 +1,16 @@
+// What every subcommand does with its arguments first: parse them, answer --help, and report
+// parse errors. Main thread.
+#pragma once
+
+#include <QCommandLineParser>
+#include <QTextStream>
+#include <optional>
+
+namespace ensil::cli {
+
+// Returns an exit code when the command is done (help shown: 0; bad arguments: 2), or nullopt
+// when it should go on with the parsed options.
+std::optional<int> parseSubcommand(QCommandLineParser& parser, const QStringList& args,
+                                   const QString& name, QTextStream& out, QTextStream& err);
+
+}  // namespace ensil::cli

@@ -1,0 +1,26 @@
+# ensil_forbid_link(TARGET FORBIDDEN): stops configuring when TARGET links FORBIDDEN, directly
+# or through any library it links. The rooms below the window (session, engine, workbench, cli)
+# must never come to link Qt Widgets: a command runs without a display, and Python and MPI
+# link the engine. packaging/check-layers.py checks the #include arrows; this checks the links.
+function(ensil_forbid_link target forbidden)
+    set(pending ${target})
+    set(seen)
+    while(pending)
+        list(POP_FRONT pending current)
+        if(current IN_LIST seen OR NOT TARGET ${current})
+            continue()
+        endif()
+        list(APPEND seen ${current})
+        get_target_property(links ${current} LINK_LIBRARIES)
+        get_target_property(interface ${current} INTERFACE_LINK_LIBRARIES)
+        foreach(link IN LISTS links interface)
+            if(link STREQUAL forbidden)
+                message(FATAL_ERROR "${target} links ${forbidden} (through ${current}); "
+                                    "ARCHITECTURE.md says which room may")
+            endif()
+            if(link AND NOT link MATCHES "^\\$<")
+                list(APPEND pending ${link})
+            endif()
+        endforeach()
+    endwhile()
+endfunction()

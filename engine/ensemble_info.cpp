@@ -1,0 +1,79 @@
+#include "engine/ensemble_info.h"
+
+#include <QJsonArray>
+
+namespace ensil::engine {
+namespace {
+QString qs(const std::string& s) { return QString::fromStdString(s); }
+}  // namespace
+
+Geography geographyOf(const data::EnsembleDescription& d) {
+    const geo::MapProjection projection = geo::MapProjection::forGrid(d.grid, d.gridMapping);
+    return {geo::lonLatBounds(d.grid, projection), projection.reason()};
+}
+
+QJsonObject ensembleInfoJson(const data::EnsembleDescription& d, const prep::FieldStatistics& s,
+                             const data::Ensemble& e, const QStringList& withoutData) {
+    QJsonObject o;
+    o[QStringLiteral("format")] = qs(d.format);
+    o[QStringLiteral("variable")] = qs(d.variable);
+    o[QStringLiteral("long_name")] = qs(d.longName);
+    o[QStringLiteral("units")] = qs(d.units);
+    o[QStringLiteral("member_dim")] = qs(d.memberDimension);
+    o[QStringLiteral("member_dim_reason")] = qs(d.memberDimensionReason);
+    o[QStringLiteral("members")] = static_cast<qint64>(d.members);
+    QJsonArray names;
+    for (const auto& n : d.memberNames) names.append(qs(n));
+    o[QStringLiteral("member_names")] = names;
+    o[QStringLiteral("grid")] =
+        QJsonArray{static_cast<qint64>(d.grid.nx()), static_cast<qint64>(d.grid.ny()),
+                   static_cast<qint64>(d.grid.nz())};
+    QJsonArray axes;
+    for (int a = 0; a < 3; ++a) {
+        const data::Axis& axis = d.grid.axis(a);
+        axes.append(QJsonObject{{QStringLiteral("name"), qs(axis.name)},
+                                {QStringLiteral("units"), qs(axis.units)},
+                                {QStringLiteral("first"), axis.front()},
+                                {QStringLiteral("last"), axis.back()},
+                                {QStringLiteral("size"), static_cast<qint64>(axis.size())},
+                                {QStringLiteral("uniform"), axis.isUniform()}});
+    }
+    o[QStringLiteral("axes")] = axes;
+    QJsonArray fixed;
+    for (const auto& f : d.fixedDimensions) fixed.append(qs(f));
+    o[QStringLiteral("fixed_dimensions")] = fixed;
+    QJsonArray timeLabels;
+    for (const auto& label : d.timeSteps.labels) timeLabels.append(qs(label));
+    // The steps --time-index and --times pick from; an empty list when there are none.
+    o[QStringLiteral("time_steps")] =
+        QJsonObject{{QStringLiteral("dimension"), qs(d.timeSteps.dimension)},
+                    {QStringLiteral("labels"), timeLabels}};
+    o[QStringLiteral("grid_mapping")] =
+        d.gridMapping.empty() ? QJsonValue() : QJsonValue(qs(d.gridMapping.name));
+    const Geography geography = geographyOf(d);
+    o[QStringLiteral("lon_lat_bounds")] =
+        geography.bounds
+            ? QJsonValue(QJsonArray{geography.bounds->lonMin, geography.bounds->lonMax,
+                                    geography.bounds->latMin, geography.bounds->latMax})
+            : QJsonValue();
+    o[QStringLiteral("range")] = QJsonArray{s.minimum, s.maximum};
+    o[QStringLiteral("mean")] = s.mean;
+    o[QStringLiteral("missing")] = static_cast<qint64>(s.missingCount);
+    o[QStringLiteral("infinite")] = static_cast<qint64>(e.infiniteValues);  // among the missing
+    o[QStringLiteral("members_without_data")] = QJsonArray::fromStringList(withoutData);
+    o[QStringLiteral("bytes")] = static_cast<qint64>(d.bytes());
+    QJsonArray variables;
+    for (const data::VariableInfo& v : d.variables) {
+        QJsonArray dims;
+        for (const auto& dim : v.dimensions) dims.append(qs(dim));
+        variables.append(QJsonObject{{QStringLiteral("name"), qs(v.name)},
+                                     {QStringLiteral("usable"), v.usable},
+                                     {QStringLiteral("derived"), v.derived},
+                                     {QStringLiteral("why_not_usable"), qs(v.whyNotUsable)},
+                                     {QStringLiteral("dimensions"), dims}});
+    }
+    o[QStringLiteral("variables")] = variables;
+    return o;
+}
+
+}  // namespace ensil::engine

@@ -1,0 +1,42 @@
+#include "engine/ensemble_overview.h"
+
+#include "data/error.h"
+#include "preprocessing/default_isovalue.h"
+
+namespace ensil::engine {
+
+SameDataParts sameDataParts(const EnsembleOverview& overview) {
+    return {overview.defaultIsovalue, overview.mapLines, overview.ensemble->grid,
+            overview.ensemble->gridMapping};
+}
+
+EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ensemble,
+                                       const std::stop_token& stop, const data::Progress& progress,
+                                       const SameDataParts* sameData) {
+    const bool same = sameData != nullptr && sameData->mapLines != nullptr &&
+                      sameData->grid.sameShapeAndCoordinates(ensemble->grid) &&
+                      sameData->gridMapping == ensemble->gridMapping;
+    EnsembleOverview overview;
+    overview.statistics =
+        prep::computeFieldStatistics(*ensemble, prep::kIsovalueHistogramBins, stop,
+                                     [&](double f) { data::report(progress, 0.5 * f); });
+    if (overview.statistics.validCount == 0) {
+        throw data::Error(data::ErrorKind::AllValuesMissing,
+                          "every value of '" + ensemble->variable + "' in " + ensemble->source +
+                              " is missing: there is nothing to draw");
+    }
+    auto moments = std::make_shared<prep::EnsembleMoments>(prep::computeEnsembleMoments(
+        *ensemble, stop, [&](double f) { data::report(progress, 0.5 + 0.45 * f); }));
+    overview.defaultIsovalue =
+        same ? sameData->defaultIsovalue : prep::defaultIsovalue(*ensemble, overview.statistics);
+    overview.columnMaxima = computeColumnMaxima(*ensemble, moments->mean, stop);
+    overview.mapLines = same ? sameData->mapLines
+                             : std::make_shared<const std::vector<geo::MapLine>>(
+                                   geo::mapLinesFor(ensemble->grid, ensemble->gridMapping));
+    overview.moments = std::move(moments);
+    data::report(progress, 1.0);
+    overview.ensemble = std::move(ensemble);
+    return overview;
+}
+
+}  // namespace ensil::engine
