@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 
 #include "cli/data_selection_options.h"
@@ -14,6 +15,7 @@
 #include "engine/preprocess_run.h"
 #include "engine/run_memory.h"
 #include "engine/streaming_run.h"
+#include "engine/surface_export.h"
 #ifdef ENSIL_WITH_MPI
 #include "cli/preprocess_mpi.h"
 #endif
@@ -64,6 +66,19 @@ struct Options {
                        "instead, with the same results but no contour boxplot; --iso is then "
                        "needed. E.g. 1GiB, 512M."),
         QStringLiteral("SIZE")};
+    QCommandLineOption exportDir{
+        QStringLiteral("export"),
+        QStringLiteral("Write the surfaces into DIR for other tools: every member's, the mean's "
+                       "and the summary surfaces, with vertices in the data's coordinates and "
+                       "each vertex's member, cluster, depth, outlyingness and curvatures "
+                       "(docs/command-line.md, \"Surfaces for other tools\")."),
+        QStringLiteral("DIR")};
+    QCommandLineOption format{
+        QStringLiteral("format"),
+        QStringLiteral("The format of --export: vtp (ParaView: a .vtm gathering a .vtp per "
+                       "surface; the default), ply (MeshLab, CloudCompare, Blender; binary, "
+                       "with the per-vertex values), obj or stl (positions only)."),
+        QStringLiteral("vtp|ply|obj|stl"), QStringLiteral("vtp")};
     QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
@@ -78,8 +93,28 @@ double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElaps
 // The shared result, with what only the command reports.
 struct Result : engine::PreprocessResult {
     QString cache;
-    std::optional<engine::RunMemory> memory;  // none where the kernel gives no figure
+    std::optional<engine::RunMemory> memory;           // none where the kernel gives no figure
+    std::optional<engine::ExportedSurfaces> exported;  // with --export
 };
+
+// The surfaces of a result as --export writes them: every member's and the summaries, each
+// member with its cluster number and depth.
+engine::ExportedSurfaces exportResult(const Result& r, engine::SurfaceFormat format,
+                                      const std::filesystem::path& directory) {
+    const data::Ensemble& e = *r.ensemble;
+    engine::SurfaceSet set;
+    set.meshes = &r.meshes;
+    set.grid = &e.grid;
+    set.variable = e.variable;
+    set.units = e.units;
+    for (std::size_t i = 0; i < e.members.size(); ++i) {
+        set.memberNames.push_back(e.members[i].name.empty() ? std::to_string(i + 1)
+                                                            : e.members[i].name);
+    }
+    set.clusterNumbers = r.clusterNumbers;
+    set.depth = r.boxplot.depth;
+    return engine::exportSurfaces(set, format, directory);
+}
 
 QString memberName(const data::Member& member, std::size_t index) {
     return member.name.empty() ? QStringLiteral("member %1").arg(index + 1)
@@ -162,6 +197,16 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     o[QStringLiteral("depth")] = depth;
     o[QStringLiteral("median_member")] = memberNumber(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
+    if (r.exported) {
+        QJsonArray files;
+        for (const auto& file : r.exported->files)
+            files.append(QString::fromStdString(file.string()));
+        o[QStringLiteral("export")] =
+            QJsonObject{{"files", files},
+                        {"surfaces", static_cast<qint64>(r.exported->surfaces)},
+                        {"triangles", static_cast<qint64>(r.exported->triangles)},
+                        {"triangles_left_out", static_cast<qint64>(r.exported->trianglesLeftOut)}};
+    }
     if (r.memory) {
         o[QStringLiteral("memory")] =
             QJsonObject{{"resident_at_start_bytes", static_cast<qint64>(r.memory->residentAtStart)},
@@ -214,6 +259,19 @@ void printText(QTextStream& out, const Result& r) {
         };
         out << "Memory:     peak " << mibText(r.memory->peakResident) << " MiB resident, "
             << mibText(r.memory->residentAtStart) << " MiB of it before the run\n";
+    }
+    if (r.exported) {
+        out << "Exported:   " << r.exported->surfaces << " surfaces, " << r.exported->triangles
+            << " triangles, to " << QString::fromStdString(r.exported->files.front().string())
+            << (r.exported->files.size() > 1
+                    ? QStringLiteral(" and %1 more files").arg(r.exported->files.size() - 1)
+                    : QString())
+            << "\n";
+        if (r.exported->trianglesLeftOut > 0) {
+            out << "            " << r.exported->trianglesLeftOut
+                << " triangles left out: OpenMesh keeps surfaces manifold, and these would have "
+                   "joined sheets of a surface at one edge (vtp keeps them)\n";
+        }
     }
     std::map<int, int> sizes;  // by cluster number
     for (const int number : r.clusterNumbers) ++sizes[number];
@@ -346,7 +404,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     selectionOptions.addTo(parser);
     const Options o;
     parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json,
-                       o.times, o.memoryLimit, o.quiet});
+                       o.times, o.memoryLimit, o.exportDir, o.format, o.quiet});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -368,6 +426,21 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         problem = QStringLiteral(
             "--memory-limit is refused with --times and --demo: it applies to one ensemble read "
             "from files");
+    }
+    const auto exportFormat = engine::surfaceFormatNamed(parser.value(o.format).toStdString());
+    if (selection && problem.isEmpty()) {
+        if (!exportFormat) {
+            problem = QStringLiteral("--format %1 is refused: it is one of %2")
+                          .arg(parser.value(o.format),
+                               QString::fromStdString(engine::surfaceFormatNames()));
+        } else if (parser.isSet(o.format) && !parser.isSet(o.exportDir)) {
+            problem = QStringLiteral("--format is the format of --export DIR, which is missing");
+        } else if (parser.isSet(o.exportDir) && parser.value(o.exportDir).trimmed().isEmpty()) {
+            problem = QStringLiteral("--export '' is refused: name a folder to write into");
+        } else if (parser.isSet(o.exportDir) && parser.isSet(o.times)) {
+            problem = QStringLiteral(
+                "--export is refused with --times: export one step at a time with --time-index");
+        }
     }
     std::optional<std::size_t> memoryLimit;
     if (selection && problem.isEmpty() && parser.isSet(o.memoryLimit)) {
@@ -418,6 +491,11 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          : engine::defaultMeshCacheDirectory();
         }
         const auto printResult = [&](Result& r) {
+            if (parser.isSet(o.exportDir)) {
+                r.exported =
+                    exportResult(r, *exportFormat,
+                                 std::filesystem::path(parser.value(o.exportDir).toStdString()));
+            }
             progress.endLine();
             r.seconds["total"] = seconds(total);
             r.memory = memory.read();

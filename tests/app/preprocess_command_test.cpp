@@ -1,4 +1,8 @@
 #include <gtest/gtest.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkXMLMultiBlockDataReader.h>
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -176,4 +180,53 @@ TEST(PreprocessCommand, JsonGivesTheContourBoxplotOfTheMembers) {
     QJsonArray outliers;
     for (const std::size_t m : expected.outliers) outliers.append(static_cast<qint64>(m) + 1);
     EXPECT_EQ(json["outliers"].toArray(), outliers);
+}
+
+// --export writes what ParaView opens: VTK's own reader finds a block per member and summary
+// surface, in the data's coordinates (degrees east and north, hPa), with the triangles --json
+// reports.
+TEST(PreprocessCommand, ExportedSurfacesOpenInVtksReaderWithTheTrianglesReported) {
+    test::TempDir dir;
+    const QString folder = QString::fromStdString((dir.path() / "surfaces").string());
+    const CommandRun run = preprocess({ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
+                                       "--iso", "260", "--no-cache", "--json", "--export", folder});
+    ASSERT_EQ(run.code, 0) << run.err.toStdString();
+    const QJsonObject o = QJsonDocument::fromJson(run.out.toUtf8()).object();
+    const QJsonObject exported = o["export"].toObject();
+    const QJsonArray files = exported["files"].toArray();
+    ASSERT_FALSE(files.isEmpty()) << run.out.toStdString();
+    EXPECT_TRUE(files[0].toString().endsWith("t_iso260.vtm")) << files[0].toString().toStdString();
+
+    vtkNew<vtkXMLMultiBlockDataReader> reader;
+    reader->SetFileName(files[0].toString().toStdString().c_str());
+    reader->Update();
+    auto* blocks = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+    ASSERT_NE(blocks, nullptr);
+    const int members = o["member_count"].toInt();
+    ASSERT_GE(blocks->GetNumberOfBlocks(), static_cast<unsigned>(members + 1));
+    const data::EnsembleDescription d = data::describeEnsemble(
+        {.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"}, .variable = "t"});
+    qint64 membersAndMean = 0, all = 0;
+    for (unsigned b = 0; b < blocks->GetNumberOfBlocks(); ++b) {
+        auto* poly = vtkPolyData::SafeDownCast(blocks->GetBlock(b));
+        ASSERT_NE(poly, nullptr);
+        all += poly->GetNumberOfPolys();
+        if (b <= static_cast<unsigned>(members)) membersAndMean += poly->GetNumberOfPolys();
+        double bounds[6];
+        poly->GetBounds(bounds);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_GE(bounds[2 * a], d.grid.axis(a).minValue() - 1e-6) << "block " << b;
+            EXPECT_LE(bounds[2 * a + 1], d.grid.axis(a).maxValue() + 1e-6) << "block " << b;
+        }
+    }
+    EXPECT_EQ(membersAndMean, o["triangles"].toInteger()) << "the members' and the mean's";
+    EXPECT_EQ(all, exported["triangles"].toInteger());
+
+    const CommandRun badFormat =
+        preprocess({"--demo", "--iso", "30", "--export", folder, "--format", "vtk"});
+    EXPECT_EQ(badFormat.code, 2);
+    EXPECT_TRUE(badFormat.err.contains("vtp, ply, obj, stl")) << badFormat.err.toStdString();
+    const CommandRun noFolder = preprocess({"--demo", "--iso", "30", "--format", "ply"});
+    EXPECT_EQ(noFolder.code, 2);
+    EXPECT_TRUE(noFolder.err.contains("--export")) << noFolder.err.toStdString();
 }
