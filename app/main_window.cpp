@@ -391,6 +391,7 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::cancelLoading() {
     m_loader.cancel();
+    m_surfaceExport.cancel();
     if (m_session != nullptr) m_session->cancel();
 }
 

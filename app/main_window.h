@@ -18,6 +18,7 @@
 #include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "engine/ensemble_overview.h"
+#include "engine/surface_export.h"
 #include "engine/time_series.h"
 #include "session/session_model.h"
 #include "session/session_state.h"
@@ -74,6 +75,11 @@ public:
     // the user's choices when the dialog is accepted. The dialog deletes itself when closed.
     ui::OpenDataDialog* chooseData(const QStringList& files);
     void cancelLoading();
+    // Writes the surfaces on screen for other tools (File > Export Surfaces): the selected
+    // members', else the visible ones', with the mean's and the summary surfaces, in the
+    // format of the path's suffix (.vtm, .ply, .obj, .stl) and named from its base name, in
+    // the background; surfacesExported() follows, or a message.
+    void exportSurfaces(const QString& path);
     // The memory the workbench may take for an ensemble (`ensil --memory-limit`; by default
     // engine::defaultMemoryLimit()): data whose in-memory peak is larger are opened as a thinned
     // copy with their surfaces built from the whole data in slabs (engine/
@@ -143,6 +149,7 @@ signals:
     void ensembleLoaded();
     void projectOpened();
     void loadingFailed(const QString& message);
+    void surfacesExported(const QStringList& files);  // the index (.vtm) first, when there is one
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -218,6 +225,7 @@ private:
     void createEditMenu();
     void linkPanels();
     void showSelectionInView();
+    void chooseSurfaceExport();  // main_window_export.cpp, with the two below
     void exportDendrogram();
     void exportMemberTable();
     void onLoadFailed(const std::exception_ptr& error, bool cancelled);
@@ -313,6 +321,7 @@ private:
     ui::DendrogramView* m_dendrogram = nullptr;
     bool m_hasSavedLayout = false;
     workbench::BackgroundJob<engine::EnsembleOverview> m_loader{this};
+    workbench::BackgroundJob<engine::ExportedSurfaces> m_surfaceExport{this};
     std::unique_ptr<engine::EnsembleOverview> m_overview;
     std::size_t m_memoryLimit = 0;  // 0: engine::defaultMemoryLimit() when data are opened
     // The open grid's map projection, for the places under the cursor (none before data).

@@ -1,14 +1,12 @@
 // The main window's linked panels: the shared MemberSelection, the cluster list, member table
-// and dendrogram docks, their menu entries (File > Export, Edit > Clear Selection), and the
+// and dendrogram docks, their menu entries (Edit > Clear Selection), and the
 // link from the selection to the 3D view. Part of MainWindow; kept apart so main_window.cpp
 // stays about loading files.
 #include <QAction>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QStatusBar>
 #include <algorithm>
 
@@ -18,8 +16,6 @@
 #include "gl/renderer.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cluster_timeline.h"
-#include "widgets/csv_export.h"
-#include "widgets/dendrogram_export.h"
 #include "widgets/dendrogram_view.h"
 #include "widgets/member_selection.h"
 #include "widgets/member_table_panel.h"
@@ -119,11 +115,6 @@ void MainWindow::showSelectionInView() {
     m_view->update();
 }
 
-void MainWindow::addExportActions(QMenu* file) {
-    file->addAction(tr("Export &Dendrogram as SVG..."), this, &MainWindow::exportDendrogram);
-    file->addAction(tr("Export &Member Table as CSV..."), this, &MainWindow::exportMemberTable);
-}
-
 void MainWindow::createEditMenu() {
     auto* edit = new QMenu(tr("&Edit"), this);
     // Between File and View, where people look for it.
@@ -144,7 +135,8 @@ void MainWindow::createEditMenu() {
 }
 
 bool MainWindow::isBusy() const {
-    return m_loader.isRunning() || (m_session != nullptr && m_session->isRunning());
+    return m_loader.isRunning() || m_surfaceExport.isRunning() ||
+           (m_session != nullptr && m_session->isRunning());
 }
 
 void MainWindow::escape() {
@@ -163,36 +155,6 @@ void MainWindow::onMemberHovered(int member) { m_selection->setHovered(member); 
 
 void MainWindow::onMembersBrushed(const QList<int>& members, Qt::KeyboardModifiers modifiers) {
     m_selection->click(members, modifiers);
-}
-
-void MainWindow::exportDendrogram() {
-    QString error;
-    if (!m_selection->isClustered()) {
-        QMessageBox::information(this, tr("No dendrogram yet"),
-                                 tr("The dendrogram appears once the members of an isovalue "
-                                    "have been compared."));
-        return;
-    }
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Dendrogram"), QStringLiteral("dendrogram.svg"), tr("SVG images (*.svg)"));
-    if (path.isEmpty()) return;
-    if (!ui::writeDendrogramSvg(*m_selection, path, &error)) {
-        QMessageBox::warning(this, tr("Dendrogram not exported"), error);
-        return;
-    }
-    statusBar()->showMessage(tr("Dendrogram written to %1").arg(path), 5000);
-}
-
-void MainWindow::exportMemberTable() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Member Table"), QStringLiteral("members.csv"), tr("CSV files (*.csv)"));
-    if (path.isEmpty()) return;
-    QString error;
-    if (!ui::writeMemberTableCsv(*m_selection, path, &error)) {
-        QMessageBox::warning(this, tr("Member table not exported"), error);
-        return;
-    }
-    statusBar()->showMessage(tr("Member table written to %1").arg(path), 5000);
 }
 
 }  // namespace ensil::app

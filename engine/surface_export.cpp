@@ -193,7 +193,8 @@ void describe(vtkMultiBlockDataSet& blocks, const SurfaceSet& set) {
 }
 
 void writeVtm(const SurfaceSet& set, const std::vector<Surface>& surfaces,
-              const std::filesystem::path& file, const std::stop_token& stop) {
+              const std::filesystem::path& file, const std::stop_token& stop,
+              const data::Progress& progress) {
     vtkNew<vtkMultiBlockDataSet> blocks;
     blocks->SetNumberOfBlocks(static_cast<unsigned>(surfaces.size()));
     for (std::size_t i = 0; i < surfaces.size(); ++i) {
@@ -201,6 +202,9 @@ void writeVtm(const SurfaceSet& set, const std::vector<Surface>& surfaces,
         const auto b = static_cast<unsigned>(i);
         blocks->SetBlock(b, polyDataOf(set, surfaces[i]));
         blocks->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), surfaces[i].label.c_str());
+        // Building the blocks is about half the work, writing them the other half.
+        if (progress)
+            progress(0.5 * static_cast<double>(i + 1) / static_cast<double>(surfaces.size()));
     }
     describe(*blocks.Get(), set);
     vtkNew<vtkXMLMultiBlockDataWriter> writer;
@@ -316,9 +320,16 @@ std::string surfaceFormatName(SurfaceFormat format) {
 
 std::string surfaceFormatNames() { return "vtp, ply, obj, stl"; }
 
+std::optional<SurfaceFormat> surfaceFormatOfFile(const std::filesystem::path& file) {
+    std::string suffix = file.extension().string();
+    if (suffix.empty()) return std::nullopt;
+    suffix.erase(0, 1);
+    return surfaceFormatNamed(suffix == "vtm" || suffix == "VTM" ? std::string("vtp") : suffix);
+}
+
 ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
-                                const std::filesystem::path& directory,
-                                const std::stop_token& stop) {
+                                const std::filesystem::path& directory, const std::stop_token& stop,
+                                const data::Progress& progress) {
     if (set.meshes == nullptr || set.grid == nullptr) {
         throw data::Error(data::ErrorKind::InvalidArgument, "no surfaces to export");
     }
@@ -336,14 +347,16 @@ ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
                           "cannot write surfaces into '" + directory.string() + "'" +
                               (error ? ": " + error.message() : std::string(": not a folder")));
     }
-    const std::string stem = safeName(set.variable.empty() ? "surfaces" : set.variable) + "_iso" +
-                             isovalueText(set.meshes->isovalue);
+    const std::string stem = !set.stem.empty()
+                                 ? safeName(set.stem)
+                                 : safeName(set.variable.empty() ? "surfaces" : set.variable) +
+                                       "_iso" + isovalueText(set.meshes->isovalue);
     ExportedSurfaces result;
     for (const Surface& s : surfaces) result.triangles += s.mesh->indices.size() / 3;
     result.surfaces = surfaces.size();
     if (format == SurfaceFormat::Vtp) {
         const std::filesystem::path index = directory / (stem + ".vtm");
-        writeVtm(set, surfaces, index, stop);
+        writeVtm(set, surfaces, index, stop, progress);
         result.files.push_back(index);
         for (const auto& piece : std::filesystem::directory_iterator(directory / stem, error)) {
             result.files.push_back(piece.path());
@@ -351,8 +364,10 @@ ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
         std::sort(result.files.begin() + 1, result.files.end());
         return result;
     }
-    for (const Surface& s : surfaces) {
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const Surface& s = surfaces[i];
         data::throwIfStopped(stop);
+        if (progress) progress(static_cast<double>(i) / static_cast<double>(surfaces.size()));
         const std::filesystem::path file =
             directory / (stem + "_" + s.fileName + "." + surfaceFormatName(format));
         result.trianglesLeftOut += writeWithOpenMesh(set, s, format, file);

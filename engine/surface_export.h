@@ -14,6 +14,7 @@
 
 #include "data/display_frame.h"
 #include "data/grid.h"
+#include "data/job.h"
 #include "data/packed_mesh.h"
 
 namespace ensil::engine {
@@ -25,18 +26,23 @@ std::optional<SurfaceFormat> surfaceFormatNamed(const std::string& name);
 std::string surfaceFormatName(SurfaceFormat format);
 // "vtp, ply, obj, stl": for help texts and messages.
 std::string surfaceFormatNames();
+// The format a file name's suffix asks for: .vtm and .vtp (VTK XML), .ply, .obj, .stl.
+std::optional<SurfaceFormat> surfaceFormatOfFile(const std::filesystem::path& file);
 
 // What to write: the meshes of one isovalue and what is known of each member.
 struct SurfaceSet {
     const data::MeshSet* meshes = nullptr;
     const data::Grid* grid = nullptr;
-    std::string variable;  // for the file names and the files' metadata
+    std::string variable;  // for the files' metadata, and their names when `stem` is empty
     std::string units;
     std::vector<std::string> memberNames;  // one per member of meshes->members
     std::vector<int> clusterNumbers;       // per member, as the legend numbers them; empty: none
     std::vector<double> depth;             // per member (contour boxplot); empty: none
     std::vector<int> members;              // which members to write, by index; empty: all
     bool context = true;                   // also the mean and the summary surfaces
+    // The files' names begin with it: "jet" gives jet.vtm, jet_member03.ply; empty:
+    // VARIABLE_isoVALUE.
+    std::string stem;
     // Set: vertices (and normals) in the workbench's display frame instead of data coordinates.
     std::optional<data::DisplayFrame> displayFrame;
 };
@@ -50,17 +56,18 @@ struct ExportedSurfaces {
     std::size_t trianglesLeftOut = 0;
 };
 
-// Writes into `directory` (made when missing) files named from the variable and isovalue:
-// VTP: VARIABLE_isoVALUE.vtm and its folder of .vtp pieces, one block per surface named for
-// it ("member 3 (ens03)", "mean", "P = 0.5", "band inner", "band outer"); PLY, OBJ, STL: a
-// file per surface, VARIABLE_isoVALUE_member03_NAME.ply, ..._mean.ply. Per-vertex values
-// (VTP point data, PLY properties): member (index from 1; 0 for a summary surface), cluster
-// (as the legend numbers it; 0 where none), depth, outlyingness, kappa1, kappa2; VTP also the
-// normals in the display frame. OBJ and STL carry positions only. Refuses (data::Error,
-// naming the file) a directory it cannot write to and a writer that fails; throws
-// data::Cancelled when `stop` is asked for between surfaces.
+// Writes into `directory` (made when missing) files named from `stem` (else the variable and
+// isovalue): VTP: VARIABLE_isoVALUE.vtm and its folder of .vtp pieces, one block per surface named
+// for it ("member 3 (ens03)", "mean", "P = 0.5", "band inner", "band outer"); PLY, OBJ, STL: a file
+// per surface, VARIABLE_isoVALUE_member03_NAME.ply, ..._mean.ply. Per-vertex values (VTP point
+// data, PLY properties): member (index from 1; 0 for a summary surface), cluster (as the legend
+// numbers it; 0 where none), depth, outlyingness, kappa1, kappa2; VTP also the normals in the
+// display frame. OBJ and STL carry positions only. Refuses (data::Error, naming the file) a
+// directory it cannot write to and a writer that fails; throws data::Cancelled when `stop` is asked
+// for between surfaces. `progress` hears the share of surfaces done.
 ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
                                 const std::filesystem::path& directory,
-                                const std::stop_token& stop = {});
+                                const std::stop_token& stop = {},
+                                const data::Progress& progress = {});
 
 }  // namespace ensil::engine

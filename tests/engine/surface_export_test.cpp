@@ -181,6 +181,9 @@ TEST(SurfaceExport, FormatsAreNamedAsTheCommandLineTakesThem) {
     EXPECT_EQ(engine::surfaceFormatNamed("PLY"), engine::SurfaceFormat::Ply);
     EXPECT_EQ(engine::surfaceFormatNamed("vtp"), engine::SurfaceFormat::Vtp);
     EXPECT_FALSE(engine::surfaceFormatNamed("vtk").has_value());
+    EXPECT_EQ(engine::surfaceFormatOfFile("/data/jet.vtm"), engine::SurfaceFormat::Vtp);
+    EXPECT_EQ(engine::surfaceFormatOfFile("jet.stl"), engine::SurfaceFormat::Stl);
+    EXPECT_FALSE(engine::surfaceFormatOfFile("jet").has_value());
 }
 
 }  // namespace
