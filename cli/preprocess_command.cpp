@@ -97,25 +97,6 @@ struct Result : engine::PreprocessResult {
     std::optional<engine::ExportedSurfaces> exported;  // with --export
 };
 
-// The surfaces of a result as --export writes them: every member's and the summaries, each
-// member with its cluster number and depth.
-engine::ExportedSurfaces exportResult(const Result& r, engine::SurfaceFormat format,
-                                      const std::filesystem::path& directory) {
-    const data::Ensemble& e = *r.ensemble;
-    engine::SurfaceSet set;
-    set.meshes = &r.meshes;
-    set.grid = &e.grid;
-    set.variable = e.variable;
-    set.units = e.units;
-    for (std::size_t i = 0; i < e.members.size(); ++i) {
-        set.memberNames.push_back(e.members[i].name.empty() ? std::to_string(i + 1)
-                                                            : e.members[i].name);
-    }
-    set.clusterNumbers = r.clusterNumbers;
-    set.depth = r.boxplot.depth;
-    return engine::exportSurfaces(set, format, directory);
-}
-
 QString memberName(const data::Member& member, std::size_t index) {
     return member.name.empty() ? QStringLiteral("member %1").arg(index + 1)
                                : QString::fromStdString(member.name);
@@ -492,9 +473,9 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
         const auto printResult = [&](Result& r) {
             if (parser.isSet(o.exportDir)) {
-                r.exported =
-                    exportResult(r, *exportFormat,
-                                 std::filesystem::path(parser.value(o.exportDir).toStdString()));
+                r.exported = engine::exportSurfaces(
+                    engine::surfaceSetOf(r), *exportFormat,
+                    std::filesystem::path(parser.value(o.exportDir).toStdString()));
             }
             progress.endLine();
             r.seconds["total"] = seconds(total);

@@ -13,6 +13,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkXMLMultiBlockDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -293,6 +294,19 @@ std::size_t writeWithOpenMesh(const SurfaceSet& set, const Surface& s, SurfaceFo
 
 }  // namespace
 
+SurfaceSet surfaceSetOf(const PreprocessResult& result) {
+    const data::Ensemble& e = *result.ensemble;
+    SurfaceSet set;
+    set.meshes = &result.meshes;
+    set.grid = &e.grid;
+    set.variable = e.variable;
+    set.units = e.units;
+    for (const data::Member& m : e.members) set.memberNames.push_back(m.name);
+    set.clusterNumbers = result.clusterNumbers;
+    set.depth = result.boxplot.depth;
+    return set;
+}
+
 std::optional<SurfaceFormat> surfaceFormatNamed(const std::string& name) {
     std::string lower = name;
     std::transform(lower.begin(), lower.end(), lower.begin(),
@@ -374,6 +388,37 @@ ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
         result.files.push_back(file);
     }
     return result;
+}
+
+std::size_t writeSurface(const SurfaceSet& set, const data::PackedMesh& mesh,
+                         const std::filesystem::path& file) {
+    const auto format = surfaceFormatOfFile(file);
+    if (!format || file.extension() == ".vtm") {
+        throw data::Error(
+            data::ErrorKind::InvalidArgument,
+            "'" + file.string() + "': name a file ending in .vtp, .ply, .obj or .stl");
+    }
+    SurfaceSet all = set;
+    all.members.clear();
+    all.context = true;
+    std::vector<Surface> surfaces = surfacesOf(all);
+    const auto found = std::find_if(surfaces.begin(), surfaces.end(),
+                                    [&](const Surface& s) { return s.mesh == &mesh; });
+    if (found == surfaces.end()) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "'" + file.string() + "': the mesh is empty or not one of this result's");
+    }
+    if (*format != SurfaceFormat::Vtp) return writeWithOpenMesh(set, *found, *format, file);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetFileName(file.c_str());
+    writer->SetInputData(polyDataOf(set, *found));
+    writer->SetDataModeToAppended();
+    writer->SetCompressorTypeToZLib();
+    if (writer->Write() != 1) {
+        throw data::Error(data::ErrorKind::WriteFailed,
+                          "could not write '" + file.string() + "' (VTK's XML writer failed)");
+    }
+    return 0;
 }
 
 }  // namespace ensil::engine

@@ -16,6 +16,7 @@
 #include "data/grid.h"
 #include "data/job.h"
 #include "data/packed_mesh.h"
+#include "engine/preprocess_run.h"
 
 namespace ensil::engine {
 
@@ -47,6 +48,10 @@ struct SurfaceSet {
     std::optional<data::DisplayFrame> displayFrame;
 };
 
+// A preprocessing result's surfaces, every member with its name, cluster number and depth, the
+// summaries with them; it points into `result`, which must outlive it.
+SurfaceSet surfaceSetOf(const PreprocessResult& result);
+
 struct ExportedSurfaces {
     std::vector<std::filesystem::path> files;  // every file written, the index first if any
     std::size_t surfaces = 0;                  // meshes written (empty ones are skipped)
@@ -69,5 +74,12 @@ ExportedSurfaces exportSurfaces(const SurfaceSet& set, SurfaceFormat format,
                                 const std::filesystem::path& directory,
                                 const std::stop_token& stop = {},
                                 const data::Progress& progress = {});
+
+// One surface of `set` (a member's mesh or a summary's, found by address in set.meshes) into
+// `file`, in the format its suffix asks for (.vtp, .ply, .obj, .stl), with the per-vertex
+// values above. Returns the triangles OpenMesh refused (see trianglesLeftOut). Refuses a
+// suffix it does not know and a mesh not in the set (data::Error).
+std::size_t writeSurface(const SurfaceSet& set, const data::PackedMesh& mesh,
+                         const std::filesystem::path& file);
 
 }  // namespace ensil::engine

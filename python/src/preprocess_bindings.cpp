@@ -1,11 +1,14 @@
 // Ensemble.preprocess and its result: what `ensil preprocess --json` gives, as NumPy arrays,
 // through the same code (engine::preprocessEnsemble), plus the meshes and the ensemble statistics.
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <QString>
 
+#include "data/error.h"
 #include "engine/isovalue_job.h"
 #include "engine/preprocess_run.h"
+#include "engine/surface_export.h"
 #include "preprocessing/ensemble_statistics.h"
 #include "preprocessing/mesh_packing.h"
 #include "python/src/bindings.h"
@@ -145,7 +148,39 @@ exceedance_probability P(f > iso); and level_crossing_probability on the cells,
 void bindMesh(py::module_& m) {
     py::class_<PyMesh>(m, "Mesh", R"doc(
 One member's isosurface as preprocessing made it (decimated unless asked not to). Vertices in
-grid index space (x, y, z), as the renderer takes them; `coordinates` maps them onto the axes.)doc")
+grid index space (x, y, z), as the renderer takes them; `coordinates` maps them onto the axes,
+and `save` writes the surface for ParaView, MeshLab or Blender.)doc")
+        .def_property_readonly(
+            "coordinates",
+            [](const PyMesh& self) {
+                const data::Grid& g = self.owner->ensemble->grid;
+                const auto n = static_cast<py::ssize_t>(self.mesh->vertices.size());
+                py::array_t<double> out({n, py::ssize_t{3}});
+                auto o = out.mutable_unchecked<2>();
+                for (py::ssize_t i = 0; i < n; ++i) {
+                    const glm::vec3 p = prep::unpackPosition(
+                        *self.mesh, self.mesh->vertices[static_cast<std::size_t>(i)]);
+                    o(i, 0) = g.x().valueAt(p.x);
+                    o(i, 1) = g.y().valueAt(p.y);
+                    o(i, 2) = g.z().valueAt(p.z);
+                }
+                return out;
+            },
+            "(n, 3) float64: each vertex in the data's coordinates, the axes' values (x, y, z: "
+            "longitude, latitude and level, or a projection's metres), linear between grid "
+            "points; what `save` writes.")
+        .def(
+            "save",
+            [](const PyMesh& self, const std::filesystem::path& path) {
+                return engine::writeSurface(engine::surfaceSetOf(*self.owner), *self.mesh, path);
+            },
+            py::arg("path"),
+            R"doc(Writes this surface to `path` in the format its suffix names: .vtp (ParaView,
+through VTK's writer), .ply (MeshLab, CloudCompare, Blender; binary, with each vertex's member,
+cluster, depth, outlyingness and curvatures), .obj or .stl (through OpenMesh). Vertices in the
+data's coordinates (`coordinates`). Returns the triangles the .ply/.obj/.stl writer had to
+leave out to keep the surface manifold (0 almost always). Raises ensil.Error for another
+suffix or a file that cannot be written.)doc")
         .def_property_readonly(
             "vertices",
             [](const PyMesh& self) {
@@ -279,6 +314,34 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
                 return meshes;
             },
             "Each member's isosurface (ensil.Mesh), in member order.")
+        .def(
+            "export",
+            [](const PyPreprocessResult& r, const std::filesystem::path& directory,
+               const std::string& format, const std::optional<std::vector<int>>& members,
+               bool context, const std::optional<std::string>& stem) {
+                const auto chosen = engine::surfaceFormatNamed(format);
+                if (!chosen) {
+                    throw data::Error(
+                        data::ErrorKind::InvalidArgument,
+                        "format '" + format + "' is not one of " + engine::surfaceFormatNames());
+                }
+                engine::SurfaceSet set = engine::surfaceSetOf(*r.result);
+                if (members) set.members = *members;
+                set.context = context;
+                if (stem) set.stem = *stem;
+                std::vector<std::string> files;
+                for (const auto& f : engine::exportSurfaces(set, *chosen, directory).files) {
+                    files.push_back(f.string());
+                }
+                return files;
+            },
+            py::arg("directory"), py::arg("format") = "vtp", py::arg("members") = py::none(),
+            py::arg("context") = true, py::arg("stem") = py::none(),
+            R"doc(Writes the surfaces into `directory` for other tools, as `ensil preprocess
+--export` does: every member's (or those at the 0-based positions `members`), and with
+`context` the mean's and the summary surfaces. format: 'vtp' (ParaView: a .vtm gathering a .vtp
+per surface), 'ply', 'obj' or 'stl' (a file per surface). Files are named from `stem`, else
+VARIABLE_isoX. Returns the paths written, the .vtm first.)doc")
         .def_property_readonly(
             "mean_mesh",
             [](const PyPreprocessResult& r) {

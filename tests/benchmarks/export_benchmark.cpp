@@ -38,14 +38,7 @@ int main(int argc, char** argv) {
     const engine::PreprocessResult r = engine::preprocessEnsemble(
         std::make_shared<const data::Ensemble>(data::makeDemoEnsemble({}).ensemble), request,
         [](const std::string&, const std::string&) {});
-    engine::SurfaceSet set;
-    set.meshes = &r.meshes;
-    set.grid = &r.ensemble->grid;
-    set.variable = r.ensemble->variable;
-    set.units = r.ensemble->units;
-    for (const data::Member& m : r.ensemble->members) set.memberNames.push_back(m.name);
-    set.clusterNumbers = r.clusterNumbers;
-    set.depth = r.boxplot.depth;
+    engine::SurfaceSet set = engine::surfaceSetOf(r);
     // The mean is written with the summary surfaces; without --context the other three are
     // left out, so the 51 surfaces are the members' and the mean's.
     data::MeshSet meshes = r.meshes;

@@ -12,6 +12,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLPolyDataReader.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -28,7 +29,6 @@ namespace {
 
 struct SmallDemo {
     engine::PreprocessResult result;
-    engine::SurfaceSet set;
 };
 
 // Six members on a small grid, preprocessed at 30 m/s with three clusters: every member, the
@@ -53,26 +53,14 @@ const SmallDemo& smallDemo() {
     return demo;
 }
 
-engine::SurfaceSet setOf(const engine::PreprocessResult& r) {
-    engine::SurfaceSet set;
-    set.meshes = &r.meshes;
-    set.grid = &r.ensemble->grid;
-    set.variable = r.ensemble->variable;
-    set.units = r.ensemble->units;
-    for (const data::Member& m : r.ensemble->members) set.memberNames.push_back(m.name);
-    set.clusterNumbers = r.clusterNumbers;
-    set.depth = r.boxplot.depth;
-    return set;
-}
-
 using ReadMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
 TEST(SurfaceExport, ParaViewsReaderFindsEverySurfaceWithItsTrianglesNameAndCluster) {
     const engine::PreprocessResult& r = smallDemo().result;
     ASSERT_FALSE(r.meshes.bandInner.indices.empty());
     test::TempDir dir;
-    const engine::ExportedSurfaces written =
-        engine::exportSurfaces(setOf(r), engine::SurfaceFormat::Vtp, dir.path() / "out");
+    const engine::ExportedSurfaces written = engine::exportSurfaces(
+        engine::surfaceSetOf(r), engine::SurfaceFormat::Vtp, dir.path() / "out");
     ASSERT_FALSE(written.files.empty());
     EXPECT_EQ(written.files.front().extension(), ".vtm");
 
@@ -127,7 +115,7 @@ TEST(SurfaceExport, APlyReadBackByOpenMeshKeepsItsPerVertexProperties) {
     const engine::PreprocessResult& r = smallDemo().result;
     test::TempDir dir;
     const engine::ExportedSurfaces written =
-        engine::exportSurfaces(setOf(r), engine::SurfaceFormat::Ply, dir.path());
+        engine::exportSurfaces(engine::surfaceSetOf(r), engine::SurfaceFormat::Ply, dir.path());
     ASSERT_EQ(written.files.size(), r.meshes.members.size() + 4);
     const std::filesystem::path second = dir.path() / "wind_speed_iso30_member02.ply";
     ASSERT_TRUE(std::filesystem::exists(second)) << written.files.front();
@@ -153,7 +141,7 @@ TEST(SurfaceExport, ObjAndStlCarryEveryTriangle) {
     const engine::PreprocessResult& r = smallDemo().result;
     for (const auto format : {engine::SurfaceFormat::Obj, engine::SurfaceFormat::Stl}) {
         test::TempDir dir;
-        engine::SurfaceSet set = setOf(r);
+        engine::SurfaceSet set = engine::surfaceSetOf(r);
         set.members = {0};
         set.context = false;
         const engine::ExportedSurfaces written = engine::exportSurfaces(set, format, dir.path());
@@ -170,11 +158,36 @@ TEST(SurfaceExport, AFileWhereTheFolderShouldBeIsNamedAndNothingIsWritten) {
     const std::filesystem::path file = dir.path() / "taken";
     std::ofstream(file) << "not a folder";
     try {
-        (void)engine::exportSurfaces(setOf(smallDemo().result), engine::SurfaceFormat::Vtp, file);
+        (void)engine::exportSurfaces(engine::surfaceSetOf(smallDemo().result),
+                                     engine::SurfaceFormat::Vtp, file);
         FAIL() << "a file was taken for a folder";
     } catch (const data::Error& e) {
         EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
     }
+}
+
+TEST(SurfaceExport, OneSurfaceGoesToTheFileNamedInTheFormatItsSuffixSays) {
+    const engine::PreprocessResult& r = smallDemo().result;
+    const engine::SurfaceSet set = engine::surfaceSetOf(r);
+    test::TempDir dir;
+    const std::filesystem::path vtp = dir.path() / "third.vtp";
+    EXPECT_EQ(engine::writeSurface(set, r.meshes.members[2], vtp), 0u);
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(vtp.c_str());
+    reader->Update();
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPolys(),
+              static_cast<vtkIdType>(r.meshes.members[2].indices.size() / 3));
+    vtkDataArray* member = reader->GetOutput()->GetPointData()->GetArray("member");
+    ASSERT_NE(member, nullptr);
+    EXPECT_EQ(member->GetTuple1(0), 3);
+    const std::filesystem::path mean = dir.path() / "mean.stl";
+    EXPECT_EQ(engine::writeSurface(set, r.meshes.mean, mean), 0u);
+    ReadMesh read;
+    ASSERT_TRUE(OpenMesh::IO::read_mesh(read, mean.string()));
+    EXPECT_EQ(read.n_faces(), r.meshes.mean.indices.size() / 3);
+    const data::PackedMesh stranger;
+    EXPECT_THROW((void)engine::writeSurface(set, stranger, dir.path() / "x.ply"), data::Error);
+    EXPECT_THROW((void)engine::writeSurface(set, r.meshes.mean, dir.path() / "x.vtm"), data::Error);
 }
 
 TEST(SurfaceExport, FormatsAreNamedAsTheCommandLineTakesThem) {
