@@ -16,6 +16,7 @@
 #include "engine/run_memory.h"
 #include "engine/streaming_run.h"
 #include "engine/surface_export.h"
+#include "engine/surface_series.h"
 #ifdef ENSIL_WITH_MPI
 #include "cli/preprocess_mpi.h"
 #endif
@@ -71,7 +72,8 @@ struct Options {
         QStringLiteral("Write the surfaces into DIR for other tools: every member's, the mean's "
                        "and the summary surfaces, with vertices in the data's coordinates and "
                        "each vertex's member, cluster, depth, outlyingness and curvatures "
-                       "(docs/command-line.md, \"Surfaces for other tools\")."),
+                       "(docs/command-line.md, \"Surfaces for other tools\"). With --times, "
+                       "every step's, and for vtp a .pvd that ParaView plays over time."),
         QStringLiteral("DIR")};
     QCommandLineOption format{
         QStringLiteral("format"),
@@ -96,6 +98,35 @@ struct Result : engine::PreprocessResult {
     std::optional<engine::RunMemory> memory;           // none where the kernel gives no figure
     std::optional<engine::ExportedSurfaces> exported;  // with --export
 };
+
+// Where --export writes, and in which format; none without --export.
+struct ExportRequest {
+    engine::SurfaceFormat format = engine::SurfaceFormat::Vtp;
+    std::filesystem::path directory;
+};
+
+QJsonObject exportJson(const engine::ExportedSurfaces& exported) {
+    QJsonArray files;
+    for (const auto& file : exported.files) files.append(QString::fromStdString(file.string()));
+    return QJsonObject{{"files", files},
+                       {"surfaces", static_cast<qint64>(exported.surfaces)},
+                       {"triangles", static_cast<qint64>(exported.triangles)},
+                       {"triangles_left_out", static_cast<qint64>(exported.trianglesLeftOut)}};
+}
+
+void printExport(QTextStream& out, const engine::ExportedSurfaces& exported) {
+    out << "Exported:   " << exported.surfaces << " surfaces, " << exported.triangles
+        << " triangles, to " << QString::fromStdString(exported.files.front().string())
+        << (exported.files.size() > 1
+                ? QStringLiteral(" and %1 more files").arg(exported.files.size() - 1)
+                : QString())
+        << "\n";
+    if (exported.trianglesLeftOut > 0) {
+        out << "            " << exported.trianglesLeftOut
+            << " triangles left out: OpenMesh keeps surfaces manifold, and these would have "
+               "joined sheets of a surface at one edge (vtp keeps them)\n";
+    }
+}
 
 QString memberName(const data::Member& member, std::size_t index) {
     return member.name.empty() ? QStringLiteral("member %1").arg(index + 1)
@@ -178,16 +209,7 @@ QJsonObject toJson(const Result& r, prep::Linkage linkage) {
     o[QStringLiteral("depth")] = depth;
     o[QStringLiteral("median_member")] = memberNumber(r.boxplot.median);
     o[QStringLiteral("outliers")] = outliers;
-    if (r.exported) {
-        QJsonArray files;
-        for (const auto& file : r.exported->files)
-            files.append(QString::fromStdString(file.string()));
-        o[QStringLiteral("export")] =
-            QJsonObject{{"files", files},
-                        {"surfaces", static_cast<qint64>(r.exported->surfaces)},
-                        {"triangles", static_cast<qint64>(r.exported->triangles)},
-                        {"triangles_left_out", static_cast<qint64>(r.exported->trianglesLeftOut)}};
-    }
+    if (r.exported) o[QStringLiteral("export")] = exportJson(*r.exported);
     if (r.memory) {
         o[QStringLiteral("memory")] =
             QJsonObject{{"resident_at_start_bytes", static_cast<qint64>(r.memory->residentAtStart)},
@@ -241,19 +263,7 @@ void printText(QTextStream& out, const Result& r) {
         out << "Memory:     peak " << mibText(r.memory->peakResident) << " MiB resident, "
             << mibText(r.memory->residentAtStart) << " MiB of it before the run\n";
     }
-    if (r.exported) {
-        out << "Exported:   " << r.exported->surfaces << " surfaces, " << r.exported->triangles
-            << " triangles, to " << QString::fromStdString(r.exported->files.front().string())
-            << (r.exported->files.size() > 1
-                    ? QStringLiteral(" and %1 more files").arg(r.exported->files.size() - 1)
-                    : QString())
-            << "\n";
-        if (r.exported->trianglesLeftOut > 0) {
-            out << "            " << r.exported->trianglesLeftOut
-                << " triangles left out: OpenMesh keeps surfaces manifold, and these would have "
-                   "joined sheets of a surface at one edge (vtp keeps them)\n";
-        }
-    }
+    if (r.exported) printExport(out, *r.exported);
     std::map<int, int> sizes;  // by cluster number
     for (const int number : r.clusterNumbers) ++sizes[number];
     out << "Clusters:   " << k << ", members in each (cluster:members)";
@@ -322,7 +332,8 @@ void printStep(QTextStream& out, const engine::TimeStepResult& step,
 
 int runTimeSeries(const QString& times, const data::DataSelection& selection,
                   const engine::PreprocessRequest& preprocess, bool json, CommandProgress& progress,
-                  QTextStream& out, QTextStream& err) {
+                  const std::optional<ExportRequest>& exportTo, QTextStream& out,
+                  QTextStream& err) {
     const data::EnsembleDescription d = data::describeEnsemble(selection);
     std::string problem;
     const auto range = engine::parseStepRange(times.toStdString(), d.timeSteps.count(),
@@ -343,6 +354,10 @@ int runTimeSeries(const QString& times, const data::DataSelection& selection,
         },
         {}, progress.callback(QStringLiteral("time steps")));
     progress.endLine();
+    std::optional<engine::ExportedSurfaces> exported;
+    if (exportTo) {
+        exported = engine::exportTimeSeriesSurfaces(steps, exportTo->format, exportTo->directory);
+    }
     const auto cacheOf = [&](const engine::TimeStepResult& step) {
         return !cache.isEmpty()        ? cache
                : step.result.fromCache ? QStringLiteral("hit")
@@ -359,6 +374,7 @@ int runTimeSeries(const QString& times, const data::DataSelection& selection,
             array.append(stepJson(step, preprocess.linkage, cacheOf(step)));
         }
         o[QStringLiteral("steps")] = array;
+        if (exported) o[QStringLiteral("export")] = exportJson(*exported);
         out << QJsonDocument(o).toJson(QJsonDocument::Compact) << "\n";
         return 0;
     }
@@ -370,6 +386,7 @@ int runTimeSeries(const QString& times, const data::DataSelection& selection,
     for (std::size_t s = 0; s < steps.size(); ++s) {
         printStep(out, steps[s], s == 0 ? nullptr : &steps[s - 1]);
     }
+    if (exported) printExport(out, *exported);
     return 0;
 }
 
@@ -418,9 +435,6 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
             problem = QStringLiteral("--format is the format of --export DIR, which is missing");
         } else if (parser.isSet(o.exportDir) && parser.value(o.exportDir).trimmed().isEmpty()) {
             problem = QStringLiteral("--export '' is refused: name a folder to write into");
-        } else if (parser.isSet(o.exportDir) && parser.isSet(o.times)) {
-            problem = QStringLiteral(
-                "--export is refused with --times: export one step at a time with --time-index");
         }
     }
     std::optional<std::size_t> memoryLimit;
@@ -506,8 +520,12 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
 #endif
         if (parser.isSet(o.times)) {
+            std::optional<ExportRequest> exportTo;
+            if (parser.isSet(o.exportDir)) {
+                exportTo = ExportRequest{*exportFormat, parser.value(o.exportDir).toStdString()};
+            }
             return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
-                                 progress, out, err);
+                                 progress, exportTo, out, err);
         }
         const auto notice = [&](const std::string& kind, const std::string& text) {
             progress.endLine();

@@ -1,6 +1,8 @@
 """Surfaces leaving ensil from Python: PreprocessResult.export and Mesh.save, read back by VTK's
 own Python readers (what ParaView uses), and Mesh.coordinates in the data's axes."""
 
+import os
+
 import numpy as np
 import pytest
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -68,3 +70,35 @@ def test_a_mesh_saves_to_the_format_its_suffix_names(result, tmp_path):
         mesh.save(tmp_path / "second.xyz")
     with pytest.raises(ensil.Error, match="vtp, ply, obj, stl"):
         result.export(tmp_path / "bad", format="vtk")
+
+
+def test_a_time_series_exports_a_pvd_whose_steps_paraview_reads(tmp_path):
+    """`ensil preprocess --times all --export`: the .pvd lists every step's .vtm (parsed here
+    with ElementTree), each read by VTK's reader with that step's clusters from --json."""
+    import json
+    import subprocess
+    import xml.etree.ElementTree as ElementTree
+
+    executable = os.environ.get("ENSIL_EXECUTABLE")
+    assert executable, "run under CTest, which names the ensil built beside the module"
+    data = tmp_path / "steps.nc"
+    subprocess.run([executable, "generate", "--members", "4", "--grid", "48x32x8", "--times",
+                    "3", "--out", str(data)], check=True, capture_output=True)
+    said = subprocess.run([executable, "preprocess", str(data), "--times", "all", "--iso", "30",
+                           "--no-cache", "--json", "--quiet", "--export", str(tmp_path / "out")],
+                          check=True, capture_output=True, text=True).stdout
+    result = json.loads(said)
+    pvd = result["export"]["files"][0]
+    assert pvd.endswith("wind_speed_iso30.pvd")
+    entries = ElementTree.parse(pvd).getroot().find("Collection").findall("DataSet")
+    assert [int(e.get("timestep")) for e in entries] == [0, 1, 2]
+    for entry, step in zip(entries, result["steps"]):
+        assert entry.get("name") == step["time"]
+        reader = vtkXMLMultiBlockDataReader()
+        reader.SetFileName(os.path.join(os.path.dirname(pvd), entry.get("file")))
+        reader.Update()
+        blocks = reader.GetOutput()
+        for member in range(4):
+            poly = blocks.GetBlock(member)
+            cluster = vtk_to_numpy(poly.GetPointData().GetArray("cluster"))
+            assert set(cluster) == {step["clusters"][member]}
