@@ -7,16 +7,20 @@
 #include <functional>
 #include <vector>
 
+#include "data/number_text.h"
 #include "data/units_text.h"
 #include "gl/axis_ticks.h"
 
 namespace ensil::engine {
 namespace {
 
-// An isovalue with as many digits as it needs and no more: 260, 0.0035, 5.5e+04.
-std::string formatValue(float value) {
+// An isovalue with as many digits as it needs and no more: 260, 0.0035, 23,690.
+std::string formatValue(float value) { return data::readableNumber(static_cast<double>(value)); }
+
+// The same in a file name: no thousands separators ("z_57575..."), exponents as printf writes.
+std::string fileValue(float value) {
     std::array<char, 32> text{};
-    std::snprintf(text.data(), text.size(), "%.4g", static_cast<double>(value));
+    std::snprintf(text.data(), text.size(), "%.6g", static_cast<double>(value));
     return text.data();
 }
 
@@ -55,7 +59,12 @@ std::string unitsAfterValue(const data::Ensemble& e) {
 
 std::function<std::string(float)> pictureTitleOf(const data::Ensemble& e) {
     std::string head = e.variable;
-    if (!e.longName.empty() && e.longName != e.variable) head += " (" + e.longName + ")";
+    // "t (Temperature)"; a long name with parentheses of its own follows a colon instead, so
+    // that they never nest: "wind_speed: Wind speed (ensil demo jet streams)".
+    if (!e.longName.empty() && e.longName != e.variable) {
+        head += e.longName.find_first_of("()") == std::string::npos ? " (" + e.longName + ")"
+                                                                    : ": " + e.longName;
+    }
     head += unitsInBrackets(e);
     const std::string separator = " \u00b7 ";
     head += separator + "isovalue ";
@@ -83,9 +92,8 @@ std::string floorCaption(const data::Ensemble& e, int level) {
     const data::Axis& z = e.grid.z();
     const auto k = static_cast<std::size_t>(std::clamp(level, 0, static_cast<int>(z.size()) - 1));
     const gl::AxisLabelling labelling = gl::labellingFor(z);
-    std::array<char, 32> value{};
-    std::snprintf(value.data(), value.size(), "%.4g", z.values[k] * labelling.shownPerUnit);
-    return "floor: mean " + e.variable + " at " + value.data() + " " +
+    const std::string value = data::readableNumber(z.values[k] * labelling.shownPerUnit);
+    return "floor: mean " + e.variable + " at " + value + " " +
            (labelling.units.empty() ? z.name : labelling.units) + unitsInBrackets(e);
 }
 
@@ -114,7 +122,7 @@ std::string sectionQuantity(const data::Ensemble& e, gl::SectionField field, int
 }
 
 std::string pictureFileStem(const data::Ensemble& e, float isovalue) {
-    std::string stem = e.variable + "_" + formatValue(isovalue) + e.units;
+    std::string stem = e.variable + "_" + fileValue(isovalue) + e.units;
     for (const std::string& fixed : e.fixedDimensions) stem += "_" + shortFixedDimension(fixed);
     std::string clean;
     for (const char c : stem) {

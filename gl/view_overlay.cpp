@@ -12,6 +12,7 @@
 #include <limits>
 #include <map>
 
+#include "data/number_text.h"
 #include "gl/axis_ticks.h"
 #include "gl/palette.h"
 
@@ -150,9 +151,9 @@ void drawColourScales(QPainter& painter, const ViewOverlay& overlay, const QFont
         painter.setPen(overlay.text);
         const QRectF ends(bar.left(), bar.bottom() + kPad / 2, bar.width(), metrics.height());
         painter.drawText(ends, Qt::AlignLeft | Qt::AlignTop,
-                         QString::number(scale.minimum, 'g', 4));
+                         QString::fromStdString(data::readableNumber(scale.minimum)));
         painter.drawText(ends, Qt::AlignRight | Qt::AlignTop,
-                         QString::number(scale.maximum, 'g', 4));
+                         QString::fromStdString(data::readableNumber(scale.maximum)));
         top += colourScaleHeight(metrics);
     }
 }
