@@ -43,6 +43,7 @@
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/dialog_paths.h"
 #include "workbench/point_description.h"
 #include "workbench/recent_selections.h"
 
@@ -359,9 +360,7 @@ void MainWindow::chooseFiles() {
     const QStringList files = QFileDialog::getOpenFileNames(
         this, tr("Open Ensemble (one file with members, or one file per member)"),
         settings.value(QStringLiteral("open/lastFolder")).toString(),
-        tr("Ensemble files (*.nc *.nc4 *.cdf *.netcdf *.h5 *.hdf5 *.he5 *.vtk *.vti *.grib "
-           "*.grb *.grib1 *.grib2 *.grb2);;"
-           "All files (*)"));
+        workbench::ensembleFileFilters());
     if (files.isEmpty()) return;
     settings.setValue(QStringLiteral("open/lastFolder"), QFileInfo(files.front()).absolutePath());
     chooseData(files);
@@ -506,7 +505,8 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
             s.demoParams = m_requestedDemo.value_or(data::DemoEnsembleParams{});
             s.data = m_requested.value_or(data::DataSelection{});
             if (!m_pendingProject || !s.isovalue) s.isovalue = shownIsovalue;
-            s.clusters = std::clamp(m_pendingProject ? s.clusters : 5, 1, members);
+            s.clusters = m_pendingProject ? std::clamp(s.clusters, 1, members)
+                                          : session::defaultClusters(members);
         });
         if (m_pendingProject) applyPendingProjectCamera();
     }

@@ -22,6 +22,7 @@
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/dialog_paths.h"
 
 namespace ensil::app {
 namespace {
@@ -55,11 +56,13 @@ void MainWindow::createProjectActions(QMenu* file) {
 }
 
 void MainWindow::chooseProjectPathAndSave() {
+    const data::DataSelection& shown = m_model->state().data;
+    const QString dataFile =
+        shown.paths.empty() ? QString() : QString::fromStdString(shown.paths.front());
     QString path = QFileDialog::getSaveFileName(
         this, tr("Save Project"),
-        m_projectPath.isEmpty()
-            ? QSettings().value("project/lastFolder").toString() + QStringLiteral("/session.ensil")
-            : m_projectPath,
+        workbench::suggestedProjectPath(
+            m_projectPath, QSettings().value("project/lastFolder").toString(), dataFile),
         kFilter);
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".ensil");

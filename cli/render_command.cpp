@@ -138,6 +138,7 @@ std::optional<session::SessionState> sessionFromOptions(const QCommandLineParser
         session::lookFrom(*preset, state.camera);
     }
     if (!sceneOptions().applyTo(parser, state, problem)) return std::nullopt;
+    request.clustersGiven = sceneOptions().given(parser).contains(QStringLiteral("--clusters"));
     if (parser.isSet(o.noLabels)) state.render.showAxes = state.render.showLegend = false;
     if (parser.isSet(o.removal)) {
         const auto range = parseNumbers(QStringLiteral("--removal"), parser.value(o.removal),

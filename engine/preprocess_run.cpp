@@ -11,6 +11,7 @@
 #include "preprocessing/default_isovalue.h"
 #include "preprocessing/ensemble_moments.h"
 #include "preprocessing/field_statistics.h"
+#include "session/session_state.h"
 
 namespace ensil::engine {
 namespace {
@@ -29,9 +30,9 @@ std::shared_ptr<const data::Ensemble> withoutMembersWithoutData(
 }
 
 int clustersFor(const PreprocessRequest& request, int members, bool someWithoutData) {
+    // Not asked for: the workbench's default for this many members.
+    if (!request.clustersGiven) return session::defaultClusters(members);
     if (request.clusters <= members) return request.clusters;
-    // The default asks for more clusters than a small ensemble has.
-    if (!request.clustersGiven) return members;
     throw PreprocessRefused(
         "--clusters " + std::to_string(request.clusters) + " is more than the " +
             std::to_string(members) + " members of this ensemble" +

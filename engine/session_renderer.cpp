@@ -67,7 +67,8 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
                                     std::to_string(stats.maximum) + " " + ensemble.units + ")");
     }
     const int members = static_cast<int>(ensemble.memberCount());
-    const int k = std::clamp(state.clusters, 1, members);
+    const int k = request.clustersGiven ? std::clamp(state.clusters, 1, members)
+                                        : session::defaultClusters(members);
     const prep::EnsembleMoments moments = prep::computeEnsembleMoments(ensemble);
     IsovalueJobInput job;
     job.ensemble = &ensemble;

@@ -24,6 +24,9 @@ struct RenderRequest {
     int height = 1000;
     int frames = 1;  // frames drawn and timed; the median is reported
     bool useCache = true;
+    // False: the session's clusters are only the default, and the picture takes
+    // session::defaultClusters of the members drawn (data drawn without --clusters).
+    bool clustersGiven = true;
     // A plane given across the box (gl::CuttingPlane::acrossBox: normal, position from -1 to
     // 1) rather than in display units; it replaces the session's plane normal and offset.
     std::optional<glm::vec4> planeAcrossBox;

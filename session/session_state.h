@@ -7,6 +7,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <algorithm>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <vector>
@@ -31,6 +32,11 @@ struct CameraState {
     };
     std::optional<Placement> placement;
 };
+
+// The clusters data open with when none are asked for: 5, and no more than about half the
+// members, since a cluster of one member says nothing of where members agree (4 members: 2,
+// 6: 3, 10 or more: 5). The workbench, `ensil preprocess`, `ensil render` and Python share it.
+inline int defaultClusters(int members) { return std::clamp((members + 1) / 2, 1, 5); }
 
 struct SessionState {
     // Either the built-in demo (with its parameters) or files; paths are absolute in memory.

@@ -398,7 +398,8 @@ const std::array<Setting, 31> kSettings{{
      "",
      "Clusters",
      "",
-     "Number of clusters the members are coloured by (at most the number of members)",
+     "Number of clusters the members are coloured by (at most the number of members; "
+     "default: 5, and no more than about half the members)",
      1,
      10000,
      0,

@@ -119,6 +119,12 @@ py::tuple render(const py::object& target, const std::optional<double>& iso,
                                 QStringLiteral("%1x%2").arg(size.first).arg(size.second), problem);
     if (!checked) throw ArgumentError(problem.toStdString());
     engine::RenderRequest request;
+    // An ensemble drawn without clusters= gets the workbench's default for its members; a
+    // session or project keeps its own.
+    if (ensemble != nullptr) {
+        request.clustersGiven =
+            settings.contains("clusters") && !py::object(settings["clusters"]).is_none();
+    }
     request.width = checked->first;
     request.height = checked->second;
     request.frames = 1;

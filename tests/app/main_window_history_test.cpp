@@ -83,7 +83,8 @@ TEST_F(History, VisibilityAndClustersAreStepsOfTheirOwn) {
     window.memberSelection()->setClusterCount(2);
     ASSERT_TRUE(recorded(2));
     action("undoAction")->trigger();
-    EXPECT_EQ(window.memberSelection()->requestedClusterCount(), 5);
+    // The six members opened with three clusters, about half of them.
+    EXPECT_EQ(window.memberSelection()->requestedClusterCount(), 3);
     EXPECT_FALSE(window.memberSelection()->isMemberVisible(2));
     action("undoAction")->trigger();
     EXPECT_TRUE(window.memberSelection()->isMemberVisible(2));

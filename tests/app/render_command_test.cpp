@@ -338,3 +338,30 @@ TEST(RenderCommand, TheSectionFillsThePlanesCutFaceAndIsRefusedWhereNothingWould
     EXPECT_TRUE(unknown.err.contains("stddev"))
         << "names what is allowed: " << unknown.err.toStdString();
 }
+
+// Four members drawn without --clusters get two clusters, as the workbench and `ensil
+// preprocess` open them (session::defaultClusters), not one cluster per member; --clusters
+// still decides when given.
+TEST(RenderCommand, AFewMembersDrawnWithoutClustersGetAboutHalfAsMany) {
+    test::TempDir dir;
+    const QString data = QString::fromStdString(dir.file("four.nc"));
+    ASSERT_EQ(
+        test::runEnsil({"generate", "--members", "4", "--grid", "24x12x4", "--out", data}).code, 0);
+    const auto clustersDrawn = [&](const QStringList& extra) {
+        const QString project = QString::fromStdString(dir.file("drawn.ensil"));
+        const test::EnsilRun r = test::runEnsil(
+            QStringList{"render", data, "--iso", "20", "--size", "320x200", "--no-cache", "--quiet",
+                        "--out", QString::fromStdString(dir.file("four.png")), "--save-project",
+                        project} +
+            extra);
+        EXPECT_EQ(r.code, 0) << r.err.toStdString();
+        QFile file(project);
+        if (!file.open(QIODevice::ReadOnly)) return -1;
+        return QJsonDocument::fromJson(file.readAll())
+            .object()["clusters"]
+            .toObject()["count"]
+            .toInt();
+    };
+    EXPECT_EQ(clustersDrawn({}), 2);
+    EXPECT_EQ(clustersDrawn({"--clusters", "4"}), 4);
+}

@@ -170,9 +170,11 @@ def test_refusals_say_what_the_command_line_says(spheres):
         spheres.preprocess(iso=0.0, error=20)
 
 
-def test_the_default_number_of_clusters_is_lowered_to_the_members():
-    few = sphere_ensemble([4.0, 5.0, 6.0])
-    assert few.preprocess(iso=0.0).k == 3
+def test_the_default_number_of_clusters_is_about_half_the_members():
+    # Not one cluster per member: a cluster of one says nothing of where members agree.
+    assert sphere_ensemble([4.0, 5.0, 6.0]).preprocess(iso=0.0).k == 2
+    assert sphere_ensemble([4.0, 4.2, 4.4, 5.0, 5.2, 6.0]).preprocess(iso=0.0).k == 3
+    assert sphere_ensemble([4.0, 5.0, 6.0]).preprocess(iso=0.0, clusters=3).k == 3
 
 
 def test_ctrl_c_stops_the_work_at_its_next_check(tmp_path):
