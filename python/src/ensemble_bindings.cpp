@@ -326,6 +326,10 @@ always a view.)doc")
         .def_property_readonly(
             "source", [](const PyEnsemble& self) { return self.data->source; },
             "Where the data came from: a file's path, 'demo' or 'NumPy array'.")
+        .def_property_readonly(
+            "warnings", [](const PyEnsemble& self) { return self.data->warnings; },
+            "What the readers said of these data (also given as ensil.DataWarning when read): "
+            "few levels, members of different valid times, dropped messages; [] when nothing.")
         .def("info", &infoOf, R"doc(
 What `ensil info --json` says of these data, as a dict: format, variable, units, members and
 how their dimension was found, grid, axes, grid mapping, true longitude/latitude bounds, value

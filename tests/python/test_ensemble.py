@@ -168,6 +168,9 @@ def test_what_the_reader_read_around_is_a_data_warning(era5_grib_path, tmp_path)
     with pytest.warns(ensil.DataWarning, match=f"byte offset {last}"):
         ens = ensil.open(str(cut), var="t", time_index=0)
     assert ens.shape == (10, 2, 61, 120)
+    # And it stays with the ensemble, for a script that reads it later.
+    assert any(f"byte offset {last}" in w for w in ens.warnings), ens.warnings
+    assert ensil.demo(members=3).warnings == []
 
 
 def test_demo_is_the_workbenchs():
