@@ -81,6 +81,12 @@ struct Options {
                        "surface; the default), ply (MeshLab, CloudCompare, Blender; binary, "
                        "with the per-vertex values), obj or stl (positions only)."),
         QStringLiteral("vtp|ply|obj|stl"), QStringLiteral("vtp")};
+    QCommandLineOption coordinates{
+        QStringLiteral("coordinates"),
+        QStringLiteral("The vertices of --export: data (the axes' own values, to lie over the "
+                       "same file in ParaView; the default) or display (the workbench's box, "
+                       "its sides in proportion, for MeshLab or Blender)."),
+        QStringLiteral("data|display"), QStringLiteral("data")};
     QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
@@ -103,7 +109,15 @@ struct Result : engine::PreprocessResult {
 struct ExportRequest {
     engine::SurfaceFormat format = engine::SurfaceFormat::Vtp;
     std::filesystem::path directory;
+    bool displayFrame = false;  // --coordinates display
 };
+
+// The surfaces of one result as --export writes them.
+engine::ExportedSurfaces exportResult(const engine::PreprocessResult& r, const ExportRequest& to) {
+    engine::SurfaceSet set = engine::surfaceSetOf(r);
+    if (to.displayFrame) set.displayFrame = data::DisplayFrame(r.ensemble->grid, 1.0F);
+    return engine::exportSurfaces(set, to.format, to.directory);
+}
 
 QJsonObject exportJson(const engine::ExportedSurfaces& exported) {
     QJsonArray files;
@@ -356,7 +370,8 @@ int runTimeSeries(const QString& times, const data::DataSelection& selection,
     progress.endLine();
     std::optional<engine::ExportedSurfaces> exported;
     if (exportTo) {
-        exported = engine::exportTimeSeriesSurfaces(steps, exportTo->format, exportTo->directory);
+        exported = engine::exportTimeSeriesSurfaces(steps, exportTo->format, exportTo->directory,
+                                                    exportTo->displayFrame);
     }
     const auto cacheOf = [&](const engine::TimeStepResult& step) {
         return !cache.isEmpty()        ? cache
@@ -402,7 +417,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     selectionOptions.addTo(parser);
     const Options o;
     parser.addOptions({o.iso, o.error, o.noDecimation, o.noCache, o.cacheDir, o.demo, o.json,
-                       o.times, o.memoryLimit, o.exportDir, o.format, o.quiet});
+                       o.times, o.memoryLimit, o.exportDir, o.format, o.coordinates, o.quiet});
     clusterOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("preprocess"), out, err))
         return *done;
@@ -431,8 +446,15 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
             problem = QStringLiteral("--format %1 is refused: it is one of %2")
                           .arg(parser.value(o.format),
                                QString::fromStdString(engine::surfaceFormatNames()));
-        } else if (parser.isSet(o.format) && !parser.isSet(o.exportDir)) {
-            problem = QStringLiteral("--format is the format of --export DIR, which is missing");
+        } else if ((parser.isSet(o.format) || parser.isSet(o.coordinates)) &&
+                   !parser.isSet(o.exportDir)) {
+            problem = QStringLiteral(
+                "--format and --coordinates are for --export DIR, which is "
+                "missing");
+        } else if (parser.value(o.coordinates) != QStringLiteral("data") &&
+                   parser.value(o.coordinates) != QStringLiteral("display")) {
+            problem = QStringLiteral("--coordinates %1 is refused: it is data or display")
+                          .arg(parser.value(o.coordinates));
         } else if (parser.isSet(o.exportDir) && parser.value(o.exportDir).trimmed().isEmpty()) {
             problem = QStringLiteral("--export '' is refused: name a folder to write into");
         }
@@ -485,12 +507,13 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
                                          ? parser.value(o.cacheDir).toStdString()
                                          : engine::defaultMeshCacheDirectory();
         }
+        std::optional<ExportRequest> exportTo;
+        if (parser.isSet(o.exportDir)) {
+            exportTo = ExportRequest{*exportFormat, parser.value(o.exportDir).toStdString(),
+                                     parser.value(o.coordinates) == QStringLiteral("display")};
+        }
         const auto printResult = [&](Result& r) {
-            if (parser.isSet(o.exportDir)) {
-                r.exported = engine::exportSurfaces(
-                    engine::surfaceSetOf(r), *exportFormat,
-                    std::filesystem::path(parser.value(o.exportDir).toStdString()));
-            }
+            if (exportTo) r.exported = exportResult(r, *exportTo);
             progress.endLine();
             r.seconds["total"] = seconds(total);
             r.memory = memory.read();
@@ -520,10 +543,6 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
         }
 #endif
         if (parser.isSet(o.times)) {
-            std::optional<ExportRequest> exportTo;
-            if (parser.isSet(o.exportDir)) {
-                exportTo = ExportRequest{*exportFormat, parser.value(o.exportDir).toStdString()};
-            }
             return runTimeSeries(parser.value(o.times), *selection, request, parser.isSet(o.json),
                                  progress, exportTo, out, err);
         }

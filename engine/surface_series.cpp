@@ -64,7 +64,7 @@ bool hasSurfaces(const data::MeshSet& meshes) {
 
 ExportedSurfaces exportTimeSeriesSurfaces(const std::vector<TimeStepResult>& steps,
                                           SurfaceFormat format,
-                                          const std::filesystem::path& directory,
+                                          const std::filesystem::path& directory, bool displayFrame,
                                           const std::string& stem, const std::stop_token& stop) {
     if (steps.empty()) {
         throw data::Error(data::ErrorKind::InvalidArgument, "no time steps to export");
@@ -81,6 +81,7 @@ ExportedSurfaces exportTimeSeriesSurfaces(const std::vector<TimeStepResult>& ste
         // nothing there, as the workbench does.
         if (!hasSurfaces(step.result.meshes)) continue;
         SurfaceSet set = surfaceSetOf(step.result);
+        if (displayFrame) set.displayFrame = data::DisplayFrame(step.result.ensemble->grid, 1.0F);
         char suffix[32];
         std::snprintf(suffix, sizeof suffix, "_t%03zu", step.index);
         set.stem = base + suffix;

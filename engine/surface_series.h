@@ -13,13 +13,14 @@
 
 namespace ensil::engine {
 
-// `stem` empty: VARIABLE_isoVALUE. The .pvd (VTP only) comes first in the files returned; each
-// step's files follow in step order. Each step's members carry that step's cluster numbers (its
-// clusters matched to the previous step's). Throws as exportSurfaces.
+// `displayFrame`: vertices in the workbench's box (vertical exaggeration 1) instead of the data's
+// coordinates. `stem` empty: VARIABLE_isoVALUE. The .pvd (VTP only) comes first in the files
+// returned; each step's files follow in step order. Each step's members carry that step's cluster
+// numbers (its clusters matched to the previous step's). Throws as exportSurfaces.
 ExportedSurfaces exportTimeSeriesSurfaces(const std::vector<TimeStepResult>& steps,
                                           SurfaceFormat format,
                                           const std::filesystem::path& directory,
-                                          const std::string& stem = {},
+                                          bool displayFrame = false, const std::string& stem = {},
                                           const std::stop_token& stop = {});
 
 }  // namespace ensil::engine

@@ -29,6 +29,15 @@ struct PyPreprocessResult {
 };
 
 // One isosurface, decoded from the 20-byte GPU vertices (what the vertex shader computes).
+// coordinates='data' or 'display', as `ensil preprocess --coordinates` takes it.
+bool displayCoordinates(const std::string& coordinates) {
+    if (coordinates != "data" && coordinates != "display") {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "coordinates '" + coordinates + "' is not data or display");
+    }
+    return coordinates == "display";
+}
+
 struct PyMesh {
     std::shared_ptr<const engine::PreprocessResult> owner;
     const data::PackedMesh* mesh;
@@ -171,14 +180,20 @@ and `save` writes the surface for ParaView, MeshLab or Blender.)doc")
             "points; what `save` writes.")
         .def(
             "save",
-            [](const PyMesh& self, const std::filesystem::path& path) {
-                return engine::writeSurface(engine::surfaceSetOf(*self.owner), *self.mesh, path);
+            [](const PyMesh& self, const std::filesystem::path& path,
+               const std::string& coordinates) {
+                engine::SurfaceSet set = engine::surfaceSetOf(*self.owner);
+                if (displayCoordinates(coordinates)) {
+                    set.displayFrame = data::DisplayFrame(self.owner->ensemble->grid, 1.0F);
+                }
+                return engine::writeSurface(set, *self.mesh, path);
             },
-            py::arg("path"),
+            py::arg("path"), py::arg("coordinates") = "data",
             R"doc(Writes this surface to `path` in the format its suffix names: .vtp (ParaView,
 through VTK's writer), .ply (MeshLab, CloudCompare, Blender; binary, with each vertex's member,
 cluster, depth, outlyingness and curvatures), .obj or .stl (through OpenMesh). Vertices in the
-data's coordinates (`coordinates`). Returns the triangles the .ply/.obj/.stl writer had to
+data's coordinates (`coordinates`), or with coordinates='display' in the workbench's box, its
+sides in proportion (for MeshLab or Blender). Returns the triangles the .ply/.obj/.stl writer had to
 leave out to keep the surface manifold (0 almost always). Raises ensil.Error for another
 suffix or a file that cannot be written.)doc")
         .def_property_readonly(
@@ -318,7 +333,8 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
             "export",
             [](const PyPreprocessResult& r, const std::filesystem::path& directory,
                const std::string& format, const std::optional<std::vector<int>>& members,
-               bool context, const std::optional<std::string>& stem) {
+               bool context, const std::optional<std::string>& stem,
+               const std::string& coordinates) {
                 const auto chosen = engine::surfaceFormatNamed(format);
                 if (!chosen) {
                     throw data::Error(
@@ -329,6 +345,9 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
                 if (members) set.members = *members;
                 set.context = context;
                 if (stem) set.stem = *stem;
+                if (displayCoordinates(coordinates)) {
+                    set.displayFrame = data::DisplayFrame(r.result->ensemble->grid, 1.0F);
+                }
                 std::vector<std::string> files;
                 for (const auto& f : engine::exportSurfaces(set, *chosen, directory).files) {
                     files.push_back(f.string());
@@ -337,11 +356,12 @@ cluster of Z[i, 3] members. scipy.cluster.hierarchy.dendrogram(result.linkage) d
             },
             py::arg("directory"), py::arg("format") = "vtp", py::arg("members") = py::none(),
             py::arg("context") = true, py::arg("stem") = py::none(),
+            py::arg("coordinates") = "data",
             R"doc(Writes the surfaces into `directory` for other tools, as `ensil preprocess
 --export` does: every member's (or those at the 0-based positions `members`), and with
 `context` the mean's and the summary surfaces. format: 'vtp' (ParaView: a .vtm gathering a .vtp
 per surface), 'ply', 'obj' or 'stl' (a file per surface). Files are named from `stem`, else
-VARIABLE_isoX. Returns the paths written, the .vtm first.)doc")
+VARIABLE_isoX. coordinates: 'data' (the axes' values) or 'display' (the workbench's box). Returns the paths written, the .vtm first.)doc")
         .def_property_readonly(
             "mean_mesh",
             [](const PyPreprocessResult& r) {

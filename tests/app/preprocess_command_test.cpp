@@ -229,4 +229,8 @@ TEST(PreprocessCommand, ExportedSurfacesOpenInVtksReaderWithTheTrianglesReported
     const CommandRun noFolder = preprocess({"--demo", "--iso", "30", "--format", "ply"});
     EXPECT_EQ(noFolder.code, 2);
     EXPECT_TRUE(noFolder.err.contains("--export")) << noFolder.err.toStdString();
+    const CommandRun badFrame =
+        preprocess({"--demo", "--iso", "30", "--export", folder, "--coordinates", "screen"});
+    EXPECT_EQ(badFrame.code, 2);
+    EXPECT_TRUE(badFrame.err.contains("data or display")) << badFrame.err.toStdString();
 }

@@ -22,6 +22,7 @@
 #include "data/demo_ensemble.h"
 #include "data/error.h"
 #include "engine/preprocess_run.h"
+#include "preprocessing/mesh_packing.h"
 #include "tests/support/temp_dir.h"
 
 namespace ensil {
@@ -188,6 +189,33 @@ TEST(SurfaceExport, OneSurfaceGoesToTheFileNamedInTheFormatItsSuffixSays) {
     const data::PackedMesh stranger;
     EXPECT_THROW((void)engine::writeSurface(set, stranger, dir.path() / "x.ply"), data::Error);
     EXPECT_THROW((void)engine::writeSurface(set, r.meshes.mean, dir.path() / "x.vtm"), data::Error);
+}
+
+TEST(SurfaceExport, InTheDisplayFrameTheVerticesLieInTheWorkbenchsBox) {
+    const engine::PreprocessResult& r = smallDemo().result;
+    engine::SurfaceSet set = engine::surfaceSetOf(r);
+    set.displayFrame = data::DisplayFrame(r.ensemble->grid, 1.0F);
+    test::TempDir dir;
+    const std::filesystem::path vtp = dir.path() / "box.vtp";
+    ASSERT_EQ(engine::writeSurface(set, r.meshes.members[0], vtp), 0u);
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(vtp.c_str());
+    reader->Update();
+    double bounds[6];
+    reader->GetOutput()->GetBounds(bounds);
+    const glm::vec3 box = set.displayFrame->boxMax();
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_GE(bounds[2 * a], -1e-4) << "axis " << a;
+        EXPECT_LE(bounds[2 * a + 1], box[a] + 1e-4) << "axis " << a;
+    }
+    // Not the data's degrees: the longitudes span 120 degrees, the box about 1.
+    EXPECT_LT(bounds[1] - bounds[0], 10.0);
+    const glm::vec3 first = set.displayFrame->indexToDisplay(
+        prep::unpackPosition(r.meshes.members[0], r.meshes.members[0].vertices[0]));
+    double p[3];
+    reader->GetOutput()->GetPoint(0, p);
+    EXPECT_NEAR(p[0], first.x, 1e-5);
+    EXPECT_NEAR(p[2], first.z, 1e-5);
 }
 
 TEST(SurfaceExport, FormatsAreNamedAsTheCommandLineTakesThem) {

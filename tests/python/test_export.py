@@ -66,6 +66,14 @@ def test_a_mesh_saves_to_the_format_its_suffix_names(result, tmp_path):
     header = (tmp_path / "mean.ply").read_bytes().split(b"end_header")[0].decode()
     assert "property float outlyingness" in header
     assert f"element face {len(result.mean_mesh.triangles)}" in header
+    # In the workbench's box the sides are in proportion: about 1 across, not 120 degrees.
+    assert mesh.save(tmp_path / "box.vtp", coordinates="display") == 0
+    reader.SetFileName(str(tmp_path / "box.vtp"))
+    reader.Update()
+    lon_min, lon_max = reader.GetOutput().GetBounds()[:2]
+    assert 0 <= lon_min < lon_max < 10
+    with pytest.raises(ensil.Error, match="data or display"):
+        mesh.save(tmp_path / "x.vtp", coordinates="screen")
     with pytest.raises(ensil.Error, match=r"\.vtp, \.ply, \.obj or \.stl"):
         mesh.save(tmp_path / "second.xyz")
     with pytest.raises(ensil.Error, match="vtp, ply, obj, stl"):
