@@ -178,9 +178,32 @@ void drawLegend(QPainter& painter, const ViewOverlay& overlay, const QFont& font
     painter.drawRoundedRect(box, 4.0, 4.0);
     double y = box.top() + kPad;
     for (const LegendEntry& e : overlay.legend) {
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(QColor::fromRgbF(e.color.r, e.color.g, e.color.b));
-        painter.drawRect(QRectF(box.left() + kPad, y + 1.0, swatch, swatch));
+        const QColor colour = QColor::fromRgbF(e.color.r, e.color.g, e.color.b);
+        const QRectF square(box.left() + kPad, y + 1.0, swatch, swatch);
+        switch (e.swatch) {
+            case Swatch::Filled:
+                painter.setPen(Qt::NoPen);
+                painter.setBrush(colour);
+                painter.drawRect(square);
+                break;
+            case Swatch::Band: {
+                QColor translucent = colour;
+                translucent.setAlphaF(0.4F);
+                painter.setPen(QPen(colour, 1.0));
+                painter.setBrush(translucent);
+                painter.drawRect(square.adjusted(0.5, 0.5, -0.5, -0.5));
+                break;
+            }
+            case Swatch::Dashed: {
+                QPen dashes(colour, std::max(2.0, swatch / 5.0), Qt::CustomDashLine, Qt::FlatCap);
+                dashes.setDashPattern({1.5, 1.0});
+                painter.setPen(dashes);
+                painter.setBrush(Qt::NoBrush);
+                painter.drawLine(QPointF(square.left(), square.center().y()),
+                                 QPointF(square.right(), square.center().y()));
+                break;
+            }
+        }
         painter.setPen(overlay.text);
         painter.drawText(
             QRectF(box.left() + 2 * kPad + swatch, y, box.width() - 3 * kPad - swatch, row),
@@ -292,16 +315,18 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
         }
         if (in.showMean) overlay.legend.push_back({kMeanSurfaceColor, in.contextName});
         if (in.band) {
-            overlay.legend.push_back({in.bandColor, QStringLiteral("50 % band")});
+            overlay.legend.push_back({in.bandColor, QStringLiteral("50 % band"), Swatch::Band});
             if (in.outliers > 0) {
                 overlay.legend.push_back(
-                    {in.bandColor, in.outliers == 1
-                                       ? QStringLiteral("1 outlier (dashed)")
-                                       : QStringLiteral("%1 outliers (dashed)").arg(in.outliers)});
+                    {in.bandColor,
+                     in.outliers == 1 ? QStringLiteral("1 outlier (dashed)")
+                                      : QStringLiteral("%1 outliers (dashed)").arg(in.outliers),
+                     Swatch::Dashed});
             }
         }
         if (in.planeCurves) {
-            overlay.legend.push_back({in.planeColor, QStringLiteral("Plane curves (dashed)")});
+            overlay.legend.push_back(
+                {in.planeColor, QStringLiteral("Plane curves (dashed)"), Swatch::Dashed});
         }
     }
     return overlay;

@@ -33,9 +33,15 @@ struct OverlayLabel {
     int priority = 2;
 };
 
+// How a legend entry's swatch shows what it stands for: a filled square for surfaces drawn in a
+// colour, a translucent square with its outline for the contour boxplot's band (drawn
+// translucent), a dashed stroke for what the view draws dashed (outliers, plane curves).
+enum class Swatch { Filled, Band, Dashed };
+
 struct LegendEntry {
     glm::vec3 color{0.0F};
     QString text;
+    Swatch swatch = Swatch::Filled;
 };
 
 // A colour bar (the floor map's, the section's): what it shows and the values at its two ends.

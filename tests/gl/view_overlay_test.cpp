@@ -302,3 +302,63 @@ TEST(ViewOverlay, BeyondTwelveClustersTheRestAreOneOtherEntryAndNoColourRepeats)
     EXPECT_EQ(gl::clusterColor(12), gl::clusterColor(19)) << "one other colour";
     EXPECT_NE(gl::clusterColor(12), gl::clusterColor(0)) << "not a repeat of the first";
 }
+
+// The band's and the dashed entries' swatches once were the same filled square as the
+// members': each now shows how its thing is drawn.
+TEST(ViewOverlay, TheBandAndTheDashedEntriesHaveSwatchesOfTheirOwn) {
+    Scene scene;
+    gl::OverlayInput in = scene.input();
+    in.band = true;
+    in.outliers = 2;
+    in.planeCurves = true;
+    const gl::ViewOverlay o = gl::computeOverlay(in);
+    ASSERT_GE(o.legend.size(), 3u);
+    const auto entry = [&](const QString& text) {
+        for (const gl::LegendEntry& e : o.legend) {
+            if (e.text == text) return e.swatch;
+        }
+        ADD_FAILURE() << "no entry " << text.toStdString();
+        return gl::Swatch::Filled;
+    };
+    EXPECT_EQ(o.legend.front().swatch, gl::Swatch::Filled);
+    EXPECT_EQ(entry(QStringLiteral("50 % band")), gl::Swatch::Band);
+    EXPECT_EQ(entry(QStringLiteral("2 outliers (dashed)")), gl::Swatch::Dashed);
+    EXPECT_EQ(entry(QStringLiteral("Plane curves (dashed)")), gl::Swatch::Dashed);
+}
+
+TEST(ViewOverlay, ADashedSwatchIsPaintedAsDashesAndTheBandTranslucent) {
+    // One magenta entry painted each way; the pixels of the swatch's own colour are counted.
+    const auto magentaPixels = [](gl::Swatch swatch, int* blended) {
+        gl::ViewOverlay o;
+        o.legend.push_back({{1.0F, 0.0F, 1.0F}, QStringLiteral("entry"), swatch});
+        QImage image(400, 200, QImage::Format_ARGB32);
+        image.fill(Qt::black);
+        QPainter painter(&image);
+        gl::paintOverlay(painter, o, 1.0, QSizeF(400.0, 200.0), nullptr);
+        painter.end();
+        int exact = 0;
+        *blended = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (c.red() > 230 && c.blue() > 230 && c.green() < 40) ++exact;
+                // Magenta mixed with the panel's grey: the band's translucent inside (and a
+                // filled square's antialiased rim).
+                if (c.red() > 60 && c.red() < 235 && std::abs(c.red() - c.blue()) < 20 &&
+                    c.green() < c.red() - 60) {
+                    ++*blended;
+                }
+            }
+        }
+        return exact;
+    };
+    int filledBlend = 0, dashedBlend = 0, bandBlend = 0;
+    const int filled = magentaPixels(gl::Swatch::Filled, &filledBlend);
+    const int dashed = magentaPixels(gl::Swatch::Dashed, &dashedBlend);
+    const int band = magentaPixels(gl::Swatch::Band, &bandBlend);
+    EXPECT_GT(filled, 60) << "a filled square";
+    EXPECT_GT(dashed, 4) << "the dashes are there";
+    EXPECT_LT(dashed, filled / 2) << "and thinner than a square, with gaps";
+    EXPECT_LT(band, filled) << "only the band's outline is in full colour";
+    EXPECT_GT(bandBlend, filledBlend + filled / 3) << "its inside is translucent over the panel";
+}
