@@ -23,7 +23,6 @@
 #include <limits>
 #include <map>
 
-#include "app/isovalue_session.h"
 #include "app/open_data_flow.h"
 #include "data/error.h"
 #include "engine/ensemble_facts.h"
@@ -44,6 +43,7 @@
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 #include "workbench/dialog_paths.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/point_description.h"
 #include "workbench/recent_selections.h"
 
@@ -227,18 +227,14 @@ void MainWindow::createToolbar() {
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
     // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
-    m_session = new IsovalueSession(
+    m_session = new workbench::IsovalueSession(
         m_view, m_selection, QString::fromStdString(engine::defaultMeshCacheDirectory()), this);
     m_session->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
-    connect(m_session, &IsovalueSession::started, this, &MainWindow::setBusy);
-    connect(m_session, &IsovalueSession::progressed, this,
+    connect(m_session, &workbench::IsovalueSession::started, this, &MainWindow::setBusy);
+    connect(m_session, &workbench::IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
-    connect(m_session, &IsovalueSession::finished, this, &MainWindow::setIdle);
-    connect(m_session, &IsovalueSession::finished, this, [this] {
-        showFloor(m_model->state().render);
-        showSection();
-    });
-    connect(m_session, &IsovalueSession::failed, this, &MainWindow::setIdle);
+    connect(m_session, &workbench::IsovalueSession::finished, this, &MainWindow::showBuiltSurfaces);
+    connect(m_session, &workbench::IsovalueSession::failed, this, &MainWindow::setIdle);
 }
 
 void MainWindow::showProgress(double fraction) {
@@ -484,7 +480,7 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
     m_view->setMemberNames(memberNames());
     const prep::FieldStatistics& stats = m_overview->statistics;
     const int members = static_cast<int>(e.memberCount());
-    m_toolbar->setMemberCount(members, std::min(5, members));
+    m_toolbar->setMemberCount(members, session::defaultClusters(members));
     showIsovalueRange(m_overview->defaultIsovalue);
     m_toolbar->setIsovalueHistogram(stats.histogram);
     updatePlaneBox();
@@ -610,7 +606,7 @@ void MainWindow::showFloor(const gl::RenderSettings& settings) {
     if (!m_overview) return;
     engine::ColumnMaxima maxima = m_overview->columnMaxima;
     // The probability's floor belongs to the isovalue shown.
-    if (const IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
+    if (const workbench::IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
         maxima.exceedance = shown->exceedanceColumnMaximum;
         maxima.isovalue = shown->meshes->isovalue;
     }

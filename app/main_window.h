@@ -30,6 +30,11 @@ class QLabel;
 class QMenu;
 class QAction;
 
+namespace ensil::workbench {
+class IsovalueSession;
+class MemberSelection;
+}  // namespace ensil::workbench
+
 namespace ensil::ui {
 class SilhouetteView;
 class EnsembleInfoPanel;
@@ -41,7 +46,6 @@ class AnimationBar;
 class TimeBar;
 class ClusterTimeline;
 class OpenDataDialog;
-class MemberSelection;
 class MemberTablePanel;
 class ClusterPanel;
 class DendrogramView;
@@ -58,8 +62,6 @@ class MapProjection;
 }  // namespace ensil::geo
 
 namespace ensil::app {
-
-class IsovalueSession;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -94,14 +96,14 @@ public:
     [[nodiscard]] ui::CuttingPlanePanel* cuttingPlanePanel() const { return m_planePanel; }
     [[nodiscard]] ui::AnimationBar* animationBar() const { return m_animation; }
     [[nodiscard]] ui::TimeBar* timeBar() const { return m_timeBar; }
-    [[nodiscard]] IsovalueSession* isovalueSession() const { return m_session; }
+    [[nodiscard]] workbench::IsovalueSession* isovalueSession() const { return m_session; }
     [[nodiscard]] const engine::EnsembleOverview* overview() const { return m_overview.get(); }
     [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
     // Loading or building isosurfaces.
     [[nodiscard]] bool isBusy() const;
 
     // The shared selection model every panel and the view follow (main_window_panels.cpp).
-    [[nodiscard]] ui::MemberSelection* memberSelection() const { return m_selection; }
+    [[nodiscard]] workbench::MemberSelection* memberSelection() const { return m_selection; }
     [[nodiscard]] ui::MemberTablePanel* memberTable() const { return m_memberTable; }
     [[nodiscard]] ui::ClusterPanel* clusterPanel() const { return m_clusterPanel; }
     [[nodiscard]] ui::DendrogramView* dendrogram() const { return m_dendrogram; }
@@ -186,6 +188,10 @@ private:
     workbench::BackgroundJob<engine::EnsembleOverview>::Work readingStep(
         const data::DataSelection& selection) const;
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
+    // What follows each isovalue's surfaces, in order (main_window_results.cpp).
+    void showBuiltSurfaces(const QString& summary);
+    void showOutlyingnessRange();  // main_window_render_docks.cpp
+    void showBuiltTimeStep();      // main_window_time.cpp
     void goToTimeStep(std::size_t step);
     void showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
     // The step's surfaces: kept from a visit before, shown at once; else built.
@@ -305,7 +311,7 @@ private:
     int m_stepDirection = 1;        // of the last move between steps: +1 later, -1 earlier
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
-    IsovalueSession* m_session = nullptr;
+    workbench::IsovalueSession* m_session = nullptr;
     // The session on screen: every control writes into it, and its bindings show it.
     session::SessionModel* m_model;
     bool m_showingNewData = false;  // showOverview: one rebuild at its end, not one per part
@@ -315,7 +321,7 @@ private:
     QList<QAction*> m_viewPresetActions;  // map view, views from the sides
     // New data is on screen: its first surfaces start the undo history afresh.
     bool m_historyStartsAfresh = false;
-    ui::MemberSelection* m_selection = nullptr;
+    workbench::MemberSelection* m_selection = nullptr;
     ui::MemberTablePanel* m_memberTable = nullptr;
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;

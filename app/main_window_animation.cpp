@@ -3,13 +3,13 @@
 // one as a solid surface in the view.
 #include <QStatusBar>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
 #include "widgets/animation_bar.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 
@@ -22,17 +22,17 @@ void MainWindow::createAnimation() {
         m_view->renderer().setAnimatedMember(member);
         m_view->update();
     });
-    // A new isovalue or a new clustering changes the order: the next play computes it again.
+    // A new clustering changes the order: the next play computes it again (a new isovalue too:
+    // showBuiltSurfaces).
     const auto forget = [this] { m_animation->setSequence({}); };
-    connect(m_session, &IsovalueSession::finished, this, forget);
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this, forget);
-    connect(m_selection, &ui::MemberSelection::selectionChanged, this, forget);
-    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, forget);
-    connect(m_selection, &ui::MemberSelection::clustersChanged, this, forget);
+    connect(m_selection, &workbench::MemberSelection::selectionChanged, this, forget);
+    connect(m_selection, &workbench::MemberSelection::visibilityChanged, this, forget);
+    connect(m_selection, &workbench::MemberSelection::clustersChanged, this, forget);
 }
 
 std::vector<int> MainWindow::animationSequence() const {
-    const IsovalueResult* result = m_session->result();
+    const workbench::IsovalueResult* result = m_session->result();
     if (result == nullptr || !m_selection->isClustered()) return {};
     const std::vector<int> order =
         prep::animationOrder(result->tree, result->distances, m_selection->clusterCount());

@@ -10,11 +10,11 @@
 #include <QSettings>
 #include <QStatusBar>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "widgets/csv_export.h"
 #include "widgets/dendrogram_export.h"
-#include "widgets/member_selection.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 namespace {
@@ -73,7 +73,7 @@ void MainWindow::chooseSurfaceExport() {
 void MainWindow::exportSurfaces(const QString& path) {
     const QFileInfo file(path);
     const auto format = engine::surfaceFormatOfFile(path.toStdString());
-    const IsovalueResult* result = m_session != nullptr ? m_session->result() : nullptr;
+    const workbench::IsovalueResult* result = m_session != nullptr ? m_session->result() : nullptr;
     if (!format || result == nullptr || !m_overview) {
         QMessageBox::warning(
             this, tr("Surfaces not exported"),

@@ -4,17 +4,17 @@
 #include <QAction>
 #include <QMenu>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "session/session_camera.h"
 #include "session/session_history.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 
@@ -32,12 +32,6 @@ void MainWindow::createHistory(QMenu* edit) {
     edit->addAction(undo);
     edit->addAction(redo);
 
-    // New data: what was done to the old data cannot be undone on it.
-    connect(m_session, &IsovalueSession::finished, this, [this] {
-        if (!m_historyStartsAfresh) return;
-        m_historyStartsAfresh = false;
-        m_history->reset();
-    });
     // Recorded after the edit has reached the view (queued: every direct handler ran first).
     const auto record = [this] { m_history->record(); };
     const auto queued = Qt::QueuedConnection;
@@ -47,8 +41,8 @@ void MainWindow::createHistory(QMenu* edit) {
     connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, record, queued);
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, record, queued);
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, record, queued);
-    connect(m_selection, &ui::MemberSelection::clustersChanged, this, record, queued);
-    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, record, queued);
+    connect(m_selection, &workbench::MemberSelection::clustersChanged, this, record, queued);
+    connect(m_selection, &workbench::MemberSelection::visibilityChanged, this, record, queued);
     connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, record, queued);
     connect(m_timeBar, &ui::TimeBar::stepRequested, this, record, queued);
     connect(

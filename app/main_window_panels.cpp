@@ -10,17 +10,17 @@
 #include <QStatusBar>
 #include <algorithm>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "geo/map_projection.h"
 #include "gl/renderer.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/dendrogram_view.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 #include "workbench/point_description.h"
 
 namespace ensil::app {
@@ -40,7 +40,7 @@ QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* nam
 }  // namespace
 
 void MainWindow::createPanels() {
-    m_selection = new ui::MemberSelection(this);
+    m_selection = new workbench::MemberSelection(this);
     m_clusterPanel = new ui::ClusterPanel(m_selection);
     m_memberTable = new ui::MemberTablePanel(m_selection);
     m_dendrogram = new ui::DendrogramView(m_selection);
@@ -79,14 +79,15 @@ void MainWindow::arrangeDefaultLayout() {
 void MainWindow::linkPanels() {
     // The selection drives the view: colours, visibility, selection and the hovered member.
     for (auto signal :
-         {&ui::MemberSelection::membersReset, &ui::MemberSelection::clustersChanged,
-          &ui::MemberSelection::visibilityChanged, &ui::MemberSelection::selectionChanged}) {
+         {&workbench::MemberSelection::membersReset, &workbench::MemberSelection::clustersChanged,
+          &workbench::MemberSelection::visibilityChanged,
+          &workbench::MemberSelection::selectionChanged}) {
         connect(m_selection, signal, this, &MainWindow::showSelectionInView);
     }
-    connect(m_selection, &ui::MemberSelection::hoverChanged, this,
+    connect(m_selection, &workbench::MemberSelection::hoverChanged, this,
             &MainWindow::showSelectionInView);
     // The toolbar's cluster count and the dendrogram's cut line are one setting.
-    connect(m_selection, &ui::MemberSelection::clustersChanged, this, [this] {
+    connect(m_selection, &workbench::MemberSelection::clustersChanged, this, [this] {
         if (m_selection->isClustered()) {
             m_toolbar->setMemberCount(m_selection->memberCount(), m_selection->clusterCount());
         }

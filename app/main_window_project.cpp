@@ -9,7 +9,6 @@
 #include <QStatusBar>
 #include <algorithm>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
 #include "session/member_appearance.h"
@@ -18,11 +17,12 @@
 #include "session/session_model.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 #include "workbench/dialog_paths.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 namespace {
@@ -32,9 +32,9 @@ const QString kFilter = QStringLiteral("ensil projects (*.ensil)");
 }  // namespace
 
 void MainWindow::createProjectActions(QMenu* file) {
-    // A project's visibility and selection apply to its members once their surfaces are built.
-    connect(m_session, &IsovalueSession::finished, this, &MainWindow::applyPendingProjectMembers);
-    connect(m_session, &IsovalueSession::failed, this, [this] { m_pendingProject.reset(); });
+    // A project being opened is dropped when its surfaces cannot be built.
+    connect(m_session, &workbench::IsovalueSession::failed, this,
+            [this] { m_pendingProject.reset(); });
     file->addAction(tr("Open &Project..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), this,
                     [this] {
                         const QString path = QFileDialog::getOpenFileName(

@@ -11,7 +11,6 @@
 #include <QSignalBlocker>
 #include <QSlider>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/units_text.h"
 #include "preprocessing/mesh_packing.h"
@@ -22,6 +21,7 @@
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
 
 namespace ensil::app {
 namespace {
@@ -116,25 +116,23 @@ void MainWindow::createRenderDocks() {
     m_planeAction->setCheckable(true);
     m_planeAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P));
     connect(m_planeAction, &QAction::toggled, m_planePanel, &ui::CuttingPlanePanel::setCutting);
+}
 
-    // The removal thresholds range over the outlyingness of the meshes on screen.
-    connect(m_session, &IsovalueSession::finished, this, [this] {
-        const auto& meshes = m_view->renderer().meshes();
-        if (!meshes || !m_overview) return;
-        const QString units =
-            QString::fromStdString(data::readableUnits(m_overview->ensemble->units));
-        // "K" squared is "K²", "m s⁻¹" squared is "(m s⁻¹)²".
-        const QString squared = units.isEmpty() ? QString()
-                                : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
-                                    ? QStringLiteral("(%1)\u00b2").arg(units)
-                                    : units + QStringLiteral("\u00b2");
-        if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
-            // The first band the panel now shows is the one drawn (and saved, and undone).
-            m_model->update(
-                [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
-            if (m_history != nullptr) m_history->absorb();
-        }
-    });
+void MainWindow::showOutlyingnessRange() {
+    const auto& meshes = m_view->renderer().meshes();
+    if (!meshes || !m_overview) return;
+    const QString units = QString::fromStdString(data::readableUnits(m_overview->ensemble->units));
+    // "K" squared is "K²", "m s⁻¹" squared is "(m s⁻¹)²".
+    const QString squared = units.isEmpty() ? QString()
+                            : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
+                                ? QStringLiteral("(%1)\u00b2").arg(units)
+                                : units + QStringLiteral("\u00b2");
+    if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
+        // The first band the panel now shows is the one drawn (and saved, and undone).
+        m_model->update(
+            [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
+        if (m_history != nullptr) m_history->absorb();
+    }
 }
 
 void MainWindow::restoreRenderSettings() {

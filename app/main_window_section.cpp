@@ -1,12 +1,12 @@
 // The cutting plane's filled cut face in the workbench (gl::SectionField, METHODS.md section
 // 18): which field, for which member and isovalue. The volume is copied and uploaded only when
 // one of those changes, not at every hover.
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "engine/section_volume.h"
 #include "session/session_model.h"
-#include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 
@@ -31,7 +31,7 @@ void MainWindow::showSection() {
     // A member: the first selected (a deliberate choice), else the one last hovered.
     const QList<int> selected = m_selection->selectedMembers();
     const int member = !selected.isEmpty() ? selected.front() : m_lastHoveredMember;
-    const IsovalueResult* shown = m_session->result();
+    const workbench::IsovalueResult* shown = m_session->result();
     const data::FieldValues* exceedance =
         shown != nullptr && shown->exceedance ? shown->exceedance.get() : nullptr;
     const ShownSection wanted{field, field == gl::SectionField::Member ? member : -1,

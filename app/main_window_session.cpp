@@ -7,7 +7,6 @@
 #include <QScopedValueRollback>
 #include <QSignalBlocker>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/units_text.h"
 #include "engine/picture_title.h"
@@ -16,10 +15,11 @@
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/frame_paced_repaints.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 
@@ -29,12 +29,12 @@ void MainWindow::bindSession() {
     connect(m_model, &session::SessionModel::changed, this, &MainWindow::showSessionParts);
     // What the shared selection changes by itself (the dendrogram's cut line, visibility,
     // selection; a new ensemble's members) goes into the session too.
-    connect(m_selection, &ui::MemberSelection::clustersChanged, this, [this] {
+    connect(m_selection, &workbench::MemberSelection::clustersChanged, this, [this] {
         if (!m_selection->isClustered()) return;
         const int k = m_selection->requestedClusterCount();
         m_model->update([k](session::SessionState& s) { s.clusters = k; });
     });
-    connect(m_selection, &ui::MemberSelection::visibilityChanged, this, [this] {
+    connect(m_selection, &workbench::MemberSelection::visibilityChanged, this, [this] {
         if (m_showingMembers) return;  // the session's own visibility being shown
         std::vector<int> hidden;
         for (int m = 0; m < m_selection->memberCount(); ++m) {
@@ -45,7 +45,7 @@ void MainWindow::bindSession() {
             s.hiddenClusters.clear();  // resolved into their members
         });
     });
-    connect(m_selection, &ui::MemberSelection::selectionChanged, this, [this] {
+    connect(m_selection, &workbench::MemberSelection::selectionChanged, this, [this] {
         if (m_showingMembers) return;
         const QList<int> selected = m_selection->selectedMembers();
         m_model->update([&selected](session::SessionState& s) {
@@ -68,7 +68,7 @@ void MainWindow::bindSession() {
         m_session->endPreview();
     });
     // (The view's title names the isovalue of the surfaces drawn, the preview's too.)
-    connect(m_session, &IsovalueSession::previewShown, this, [this] {
+    connect(m_session, &workbench::IsovalueSession::previewShown, this, [this] {
         m_scrubRepaints->frameComing();  // the toolbar's held-back repaints drawn with it
     });
     connect(m_toolbar, &ui::RenderToolbar::clusterCountChanged, this,

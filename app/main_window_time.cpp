@@ -10,19 +10,19 @@
 #include <algorithm>
 #include <utility>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "engine/ensemble_facts.h"
 #include "engine/picture_title.h"
 #include "session/session_model.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::app {
 namespace {
@@ -48,6 +48,28 @@ workbench::BackgroundJob<engine::EnsembleOverview>::Work MainWindow::readingStep
     };
 }
 
+// A step is on screen once its surfaces are: then the bar may go on, and the next is read.
+void MainWindow::showBuiltTimeStep() {
+    if (!m_overview || !m_requested) return;
+    // Another step's surfaces: a motion frame first (a software-OpenGL frame of every member
+    // at full resolution takes longer than a step may), the full one once steps pause.
+    if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
+    m_clusteredStep = static_cast<int>(m_requested->timeIndex);
+    m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
+    // The next step read ahead (and built) first: the strip's filling (started when the
+    // clusters are recorded) waits for it rather than taking a worker it needs. A step
+    // shown at once (built ahead, or kept) has its first frame still to draw, whose cores
+    // the reading would take: then it starts after that frame, unless playing. A step built
+    // here has been on screen in reduced detail; its next is read at once.
+    const workbench::IsovalueResult* shown = m_session->result();
+    if (m_timeBar->isPlaying() || shown == nullptr || !shown->keptInMemory) {
+        readAhead();
+    } else {
+        m_view->afterNextFrame(this, [this] { readAhead(); });
+    }
+    recordStepClusters();
+}
+
 void MainWindow::createTimeBar() {
     m_timeBar = new ui::TimeBar(this);
     addToolBar(Qt::BottomToolBarArea, m_timeBar);
@@ -57,33 +79,13 @@ void MainWindow::createTimeBar() {
             s.data.timeIndex = static_cast<std::size_t>(step);
         });
     });
-    // A step is on screen once its surfaces are: then the bar may go on, and the next is read.
-    connect(m_session, &IsovalueSession::finished, this, [this] {
-        if (!m_overview || !m_requested) return;
-        // Another step's surfaces: a motion frame first (a software-OpenGL frame of every member
-        // at full resolution takes longer than a step may), the full one once steps pause.
-        if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
-        m_clusteredStep = static_cast<int>(m_requested->timeIndex);
-        m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
-        // The next step read ahead (and built) first: the strip's filling (started when the
-        // clusters are recorded) waits for it rather than taking a worker it needs. A step
-        // shown at once (built ahead, or kept) has its first frame still to draw, whose cores
-        // the reading would take: then it starts after that frame, unless playing. A step built
-        // here has been on screen in reduced detail; its next is read at once.
-        const IsovalueResult* shown = m_session->result();
-        if (m_timeBar->isPlaying() || shown == nullptr || !shown->keptInMemory) {
-            readAhead();
-        } else {
-            m_view->afterNextFrame(this, [this] { readAhead(); });
-        }
-        recordStepClusters();
-    });
-    connect(m_selection, &ui::MemberSelection::clustersChanged, this,
+    connect(m_selection, &workbench::MemberSelection::clustersChanged, this,
             &MainWindow::recordStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::membersClicked, m_selection,
-            &ui::MemberSelection::click);
+            &workbench::MemberSelection::click);
     // The strip's filling waits while the next step is built ahead.
-    connect(m_session, &IsovalueSession::preparationEnded, this, &MainWindow::fillStepClusters);
+    connect(m_session, &workbench::IsovalueSession::preparationEnded, this,
+            &MainWindow::fillStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, this, [this] {
         m_fillStopped = true;
         m_stepFill.cancel();

@@ -102,7 +102,7 @@ struct RenderSettings {
     bool silhouetteCulling = true;
 
     // Whether the picture shows a context surface of the ensemble's own (the band's two, or
-    // P = 0.5), which the workbench then has made (app/isovalue_session.h).
+    // P = 0.5), which the workbench then has made (workbench/isovalue_session.h).
     [[nodiscard]] bool drawsContextSurfaces() const {
         return showBand || (showMean && context == ContextSurface::Probability);
     }

@@ -24,7 +24,7 @@ LAYERS = {
     "session": ["data", "geo", "preprocessing", "gl"],
     "engine": ["data", "geo", "preprocessing", "gl", "session"],
     "workbench": ["data", "geo", "preprocessing", "gl", "session", "engine"],
-    "widgets": ["data", "geo", "preprocessing", "gl", "session", "engine"],
+    "widgets": ["data", "geo", "preprocessing", "gl", "session", "engine", "workbench"],
     "cli": ["data", "geo", "preprocessing", "mpi", "gl", "session", "engine"],
     "python": ["data", "geo", "preprocessing", "gl", "session", "engine"],
     "app": ["data", "geo", "preprocessing", "gl", "session", "engine", "workbench", "widgets",

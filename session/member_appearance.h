@@ -1,5 +1,5 @@
 // How each member is drawn, from the session alone: its cluster colour, whether it is visible
-// and whether it is selected. The workbench's shared selection (ui::MemberSelection) and
+// and whether it is selected. The workbench's shared selection (workbench::MemberSelection) and
 // headless rendering both go through these functions, so a project looks the same in both.
 // Pure functions; any thread.
 #pragma once

@@ -1,15 +1,16 @@
 #include "widgets/cluster_list_model.h"
 
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 
-ClusterListModel::ClusterListModel(MemberSelection* selection, QObject* parent)
+ClusterListModel::ClusterListModel(workbench::MemberSelection* selection, QObject* parent)
     : QAbstractTableModel(parent), m_selection(selection) {
-    connect(selection, &MemberSelection::clustersAboutToChange, this,
+    connect(selection, &workbench::MemberSelection::clustersAboutToChange, this,
             &ClusterListModel::beginResetModel);
-    connect(selection, &MemberSelection::clustersChanged, this, &ClusterListModel::endResetModel);
-    connect(selection, &MemberSelection::visibilityChanged, this, [this] {
+    connect(selection, &workbench::MemberSelection::clustersChanged, this,
+            &ClusterListModel::endResetModel);
+    connect(selection, &workbench::MemberSelection::visibilityChanged, this, [this] {
         if (rowCount() == 0) return;
         emit dataChanged(index(0, Visible), index(rowCount() - 1, Visible), {Qt::CheckStateRole});
     });

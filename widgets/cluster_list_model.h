@@ -1,21 +1,23 @@
 // The clusters of the current cut as a list for QTableView/QTreeView: the cluster's colour
 // swatch and name, its size, what it holds of the contour boxplot (the median, outliers), and
 // a visibility checkbox (checked when all its members are visible, partly when some are). A view
-// onto MemberSelection, which it follows and edits (the checkbox). GUI thread only.
+// onto workbench::MemberSelection, which it follows and edits (the checkbox). GUI thread only.
 #pragma once
 
 #include <QAbstractTableModel>
 
-namespace ensil::ui {
-
+namespace ensil::workbench {
 class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
 
 class ClusterListModel : public QAbstractTableModel {
     Q_OBJECT
 public:
     enum Column { Cluster, Size, Boxplot, Visible, ColumnCount };
 
-    explicit ClusterListModel(MemberSelection* selection, QObject* parent = nullptr);
+    explicit ClusterListModel(workbench::MemberSelection* selection, QObject* parent = nullptr);
 
     [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
@@ -26,7 +28,7 @@ public:
     bool setData(const QModelIndex& index, const QVariant& value, int role) override;
 
 private:
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
 };
 
 }  // namespace ensil::ui

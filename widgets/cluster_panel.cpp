@@ -12,7 +12,7 @@
 #include <algorithm>
 
 #include "widgets/cluster_list_model.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -29,7 +29,7 @@ constexpr LinkageChoice kLinkages[] = {
 };
 }  // namespace
 
-ClusterPanel::ClusterPanel(MemberSelection* selection, QWidget* parent)
+ClusterPanel::ClusterPanel(workbench::MemberSelection* selection, QWidget* parent)
     : QWidget(parent),
       m_selection(selection),
       m_model(new ClusterListModel(selection, this)),
@@ -69,10 +69,10 @@ ClusterPanel::ClusterPanel(MemberSelection* selection, QWidget* parent)
     connect(m_linkage, &QComboBox::currentIndexChanged, this,
             [this] { emit linkageChanged(linkage()); });
     connect(m_solo, &QPushButton::clicked, this, &ClusterPanel::soloCurrent);
-    connect(m_showAll, &QPushButton::clicked, m_selection, &MemberSelection::showAll);
+    connect(m_showAll, &QPushButton::clicked, m_selection, &workbench::MemberSelection::showAll);
     connect(m_list->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &ClusterPanel::listSelectionChanged);
-    connect(m_selection, &MemberSelection::selectionChanged, this,
+    connect(m_selection, &workbench::MemberSelection::selectionChanged, this,
             &ClusterPanel::showSharedSelection);
     connect(m_model, &QAbstractItemModel::modelReset, this, &ClusterPanel::showSharedSelection);
 }

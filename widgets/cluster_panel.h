@@ -1,7 +1,8 @@
 // The cluster list dock: one row per cluster of the current cut (colour, size, visibility
 // checkbox), Solo (show only the current cluster) and Show All buttons, and the linkage the
 // merge tree is built with. Selecting clusters selects their members in the shared
-// MemberSelection; a cluster shows as selected when all its members are. GUI thread only.
+// workbench::MemberSelection; a cluster shows as selected when all its members are. GUI thread
+// only.
 #pragma once
 
 #include <QWidget>
@@ -12,15 +13,18 @@ class QComboBox;
 class QPushButton;
 class QTableView;
 
+namespace ensil::workbench {
+class MemberSelection;
+}  // namespace ensil::workbench
+
 namespace ensil::ui {
 
-class MemberSelection;
 class ClusterListModel;
 
 class ClusterPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit ClusterPanel(MemberSelection* selection, QWidget* parent = nullptr);
+    explicit ClusterPanel(workbench::MemberSelection* selection, QWidget* parent = nullptr);
 
     [[nodiscard]] QTableView* list() const { return m_list; }
     [[nodiscard]] ClusterListModel* model() const { return m_model; }
@@ -41,7 +45,7 @@ private:
     void showSharedSelection();
     void soloCurrent();
 
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
     ClusterListModel* m_model;
     QTableView* m_list;
     QPushButton* m_solo;

@@ -11,7 +11,7 @@
 #include <numeric>
 
 #include "gl/palette.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -28,7 +28,7 @@ QColor colourOf(int identity) {
 
 }  // namespace
 
-ClusterTimeline::ClusterTimeline(MemberSelection* selection, QWidget* parent)
+ClusterTimeline::ClusterTimeline(workbench::MemberSelection* selection, QWidget* parent)
     : QWidget(parent), m_selection(selection), m_filling(new QToolButton(this)) {
     m_filling->setAutoRaise(true);
     m_filling->setToolTip(
@@ -42,10 +42,12 @@ ClusterTimeline::ClusterTimeline(MemberSelection* selection, QWidget* parent)
     setToolTip(
         tr("Clusters over time: each column a time step, each bar a cluster (click to "
            "select its members), each line a member"));
-    for (auto signal : {&MemberSelection::selectionChanged, &MemberSelection::membersReset}) {
+    for (auto signal : {&workbench::MemberSelection::selectionChanged,
+                        &workbench::MemberSelection::membersReset}) {
         connect(selection, signal, this, qOverload<>(&QWidget::update));
     }
-    connect(selection, &MemberSelection::hoverChanged, this, qOverload<>(&QWidget::update));
+    connect(selection, &workbench::MemberSelection::hoverChanged, this,
+            qOverload<>(&QWidget::update));
 }
 
 void ClusterTimeline::setSteps(QStringList labels) {

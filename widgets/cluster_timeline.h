@@ -4,8 +4,8 @@
 // Steps not yet built are empty columns (the workbench clusters them in the background). Linked
 // with the selection both ways: the selected members' tracks are drawn bold, a click on a bar
 // selects that cluster's members at that step (Shift adds, Ctrl toggles), hovering a track names
-// and highlights its member. A view onto MemberSelection for the selection and hover; the steps'
-// clusters are given to it. GUI thread.
+// and highlights its member. A view onto workbench::MemberSelection for the selection and hover;
+// the steps' clusters are given to it. GUI thread.
 #pragma once
 
 #include <QStringList>
@@ -14,14 +14,16 @@
 
 class QToolButton;
 
-namespace ensil::ui {
-
+namespace ensil::workbench {
 class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
 
 class ClusterTimeline : public QWidget {
     Q_OBJECT
 public:
-    explicit ClusterTimeline(MemberSelection* selection, QWidget* parent = nullptr);
+    explicit ClusterTimeline(workbench::MemberSelection* selection, QWidget* parent = nullptr);
 
     // The steps' labels (dates); forgets every step's clusters.
     void setSteps(QStringList labels);
@@ -63,7 +65,7 @@ private:
     [[nodiscard]] double slotY(double slot) const;
     [[nodiscard]] int memberNear(QPointF at) const;
 
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
     QStringList m_labels;
     std::vector<std::vector<int>> m_identities;  // per step, per member; empty: not built
     std::vector<std::vector<double>> m_slots;    // per step, per member

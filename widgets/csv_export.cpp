@@ -4,7 +4,7 @@
 #include <QStringList>
 #include <cmath>
 
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -27,7 +27,7 @@ QString number(double value) {
 }
 }  // namespace
 
-QString memberTableCsv(const MemberSelection& selection) {
+QString memberTableCsv(const workbench::MemberSelection& selection) {
     QStringList lines;
     lines << QStringLiteral(
         "number,name,cluster,distance_to_mean,mean_outlyingness,depth,median,outlier,visible,"
@@ -51,7 +51,8 @@ QString memberTableCsv(const MemberSelection& selection) {
     return lines.join(QStringLiteral("\r\n")) + QStringLiteral("\r\n");
 }
 
-bool writeMemberTableCsv(const MemberSelection& selection, const QString& path, QString* error) {
+bool writeMemberTableCsv(const workbench::MemberSelection& selection, const QString& path,
+                         QString* error) {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(memberTableCsv(selection).toUtf8()) < 0 ||
         !file.commit()) {

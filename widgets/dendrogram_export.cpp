@@ -9,11 +9,12 @@
 
 #include "widgets/dendrogram_layout.h"
 #include "widgets/dendrogram_painter.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 
-bool writeDendrogramSvg(const MemberSelection& selection, const QString& path, QString* error) {
+bool writeDendrogramSvg(const workbench::MemberSelection& selection, const QString& path,
+                        QString* error) {
     const auto fail = [&](const QString& message) {
         if (error != nullptr) *error = message;
         return false;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "gl/axis_ticks.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -25,7 +25,7 @@ constexpr double kMaxMarkRadius = 4.5;
 constexpr double kMarksRow = 14.0;
 constexpr double kLegendMarkGap = 3.0;  // between a legend entry's mark and its text
 
-double marksRow(const MemberSelection& selection) {
+double marksRow(const workbench::MemberSelection& selection) {
     return selection.hasBoxplot() ? kMarksRow : 0.0;
 }
 
@@ -68,7 +68,7 @@ bool namesFit(const QFont& font, double leafWidth) {
     return leafWidth >= QFontMetricsF(font).height();
 }
 
-double longestName(const MemberSelection& selection, const QFont& font) {
+double longestName(const workbench::MemberSelection& selection, const QFont& font) {
     double widest = 0.0;
     for (int m = 0; m < selection.memberCount(); ++m) {
         const QFontMetricsF metrics(dendrogramLeafFont(selection, m, font));
@@ -78,7 +78,8 @@ double longestName(const MemberSelection& selection, const QFont& font) {
 }
 
 // Every node whose members are all selected.
-std::vector<bool> fullySelected(const DendrogramLayout& layout, const MemberSelection& selection) {
+std::vector<bool> fullySelected(const DendrogramLayout& layout,
+                                const workbench::MemberSelection& selection) {
     std::vector<bool> all(static_cast<std::size_t>(layout.nodeCount()), false);
     for (int node = 0; node < layout.nodeCount(); ++node) {
         all[static_cast<std::size_t>(node)] =
@@ -89,8 +90,8 @@ std::vector<bool> fullySelected(const DendrogramLayout& layout, const MemberSele
     return all;
 }
 
-QColor nodeColor(int node, const DendrogramLayout& layout, const MemberSelection& selection,
-                 const DendrogramStyle& style) {
+QColor nodeColor(int node, const DendrogramLayout& layout,
+                 const workbench::MemberSelection& selection, const DendrogramStyle& style) {
     const int k = selection.clusterCount();
     if (k == 0 || !layout.isBelowCut(node, k)) return style.line;
     return selection.memberColor(layout.firstMember(node));
@@ -111,8 +112,9 @@ void drawAxis(QPainter& painter, const DendrogramFrame& frame, const DendrogramS
     }
 }
 
-void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSelection& selection,
-               const DendrogramFrame& frame, const DendrogramStyle& style) {
+void drawNames(QPainter& painter, const DendrogramLayout& layout,
+               const workbench::MemberSelection& selection, const DendrogramFrame& frame,
+               const DendrogramStyle& style) {
     const QFontMetricsF metrics(style.font);
     painter.setPen(style.text);
     const double top = frame.plot.bottom() + kNamesStart + marksRow(selection);
@@ -134,7 +136,7 @@ void drawNames(QPainter& painter, const DendrogramLayout& layout, const MemberSe
 
 // The contour boxplot's marks under the leaves of the median and the outliers.
 void drawBoxplotMarks(QPainter& painter, const DendrogramLayout& layout,
-                      const MemberSelection& selection, const DendrogramFrame& frame,
+                      const workbench::MemberSelection& selection, const DendrogramFrame& frame,
                       const DendrogramStyle& style) {
     const double r = boxplotMarkRadius(frame);
     for (int p = 0; p < layout.memberCount(); ++p) {
@@ -147,8 +149,9 @@ void drawBoxplotMarks(QPainter& painter, const DendrogramLayout& layout,
 
 // What the marks mean, in the corner below the height axis, beside the leaves: "<diamond>
 // median" level with the marks, "<triangle> outlier" below it.
-void drawBoxplotLegend(QPainter& painter, const MemberSelection& selection, const QRectF& area,
-                       const DendrogramFrame& frame, const DendrogramStyle& style) {
+void drawBoxplotLegend(QPainter& painter, const workbench::MemberSelection& selection,
+                       const QRectF& area, const DendrogramFrame& frame,
+                       const DendrogramStyle& style) {
     const QRectF rect = boxplotLegendRect(selection, area, frame, style.font);
     if (rect.isEmpty()) return;
     const QFontMetricsF metrics(style.font);
@@ -164,7 +167,7 @@ void drawBoxplotLegend(QPainter& painter, const MemberSelection& selection, cons
 }
 }  // namespace
 
-DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFont& font,
+DendrogramMargins dendrogramMargins(const workbench::MemberSelection& selection, const QFont& font,
                                     double leafWidth) {
     const QFontMetricsF metrics(font);
     DendrogramMargins margins;
@@ -180,7 +183,8 @@ DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFon
     return margins;
 }
 
-QFont dendrogramLeafFont(const MemberSelection& selection, int member, const QFont& font) {
+QFont dendrogramLeafFont(const workbench::MemberSelection& selection, int member,
+                         const QFont& font) {
     QFont f = font;
     if (selection.isMedian(member)) {
         f.setBold(true);
@@ -198,7 +202,7 @@ double boxplotMarkRadius(const DendrogramFrame& frame) {
     return std::clamp(frame.leafWidth * 0.35, 2.5, kMaxMarkRadius);
 }
 
-QRectF boxplotLegendRect(const MemberSelection& selection, const QRectF& area,
+QRectF boxplotLegendRect(const workbench::MemberSelection& selection, const QRectF& area,
                          const DendrogramFrame& frame, const QFont& font) {
     if (!selection.hasBoxplot()) return {};
     const QFontMetricsF metrics(font);
@@ -211,9 +215,9 @@ QRectF boxplotLegendRect(const MemberSelection& selection, const QRectF& area,
     return {area.left() + 2.0, top, width, frame.plot.bottom() + legendBottom(metrics) - top};
 }
 
-DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSelection& selection,
-                                const QRectF& area, const QFont& font, double leafWidth,
-                                double scroll) {
+DendrogramFrame dendrogramFrame(const DendrogramLayout& layout,
+                                const workbench::MemberSelection& selection, const QRectF& area,
+                                const QFont& font, double leafWidth, double scroll) {
     const DendrogramMargins margins = dendrogramMargins(selection, font, leafWidth);
     DendrogramFrame frame;
     frame.plot = area.adjusted(margins.left, margins.top, -margins.right, -margins.bottom);
@@ -225,7 +229,7 @@ DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSele
 }
 
 void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
-                     const MemberSelection& selection, const DendrogramFrame& frame,
+                     const workbench::MemberSelection& selection, const DendrogramFrame& frame,
                      const DendrogramStyle& style, int hoveredNode) {
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);

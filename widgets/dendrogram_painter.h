@@ -15,9 +15,11 @@
 
 #include "widgets/dendrogram_layout.h"
 
-namespace ensil::ui {
-
+namespace ensil::workbench {
 class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
 
 struct DendrogramStyle {
     QColor background{Qt::white};
@@ -39,12 +41,13 @@ struct DendrogramMargins {
     double top = 0.0;
     double right = 0.0;
 };
-DendrogramMargins dendrogramMargins(const MemberSelection& selection, const QFont& font,
+DendrogramMargins dendrogramMargins(const workbench::MemberSelection& selection, const QFont& font,
                                     double leafWidth);
 
 // The font of the name under a member's leaf: bold for the contour boxplot's median, italic for
 // its outliers, else the font given.
-QFont dendrogramLeafFont(const MemberSelection& selection, int member, const QFont& font);
+QFont dendrogramLeafFont(const workbench::MemberSelection& selection, int member,
+                         const QFont& font);
 
 // The contour boxplot's row of marks under the leaves (only drawn when the boxplot is known):
 // the centre of the mark under the leaf at leafX (leaf units) and the marks' radius.
@@ -52,18 +55,18 @@ QPointF boxplotMarkCenter(const DendrogramFrame& frame, double leafX);
 double boxplotMarkRadius(const DendrogramFrame& frame);
 // Where the legend of those marks is drawn: in the corner below the height axis, left of the
 // leaves, its first entry level with the marks (empty when the boxplot is not known).
-QRectF boxplotLegendRect(const MemberSelection& selection, const QRectF& area,
+QRectF boxplotLegendRect(const workbench::MemberSelection& selection, const QRectF& area,
                          const DendrogramFrame& frame, const QFont& font);
 
 // The frame that fits `members` leaves `leafWidth` pixels apart into `area` after margins.
-DendrogramFrame dendrogramFrame(const DendrogramLayout& layout, const MemberSelection& selection,
-                                const QRectF& area, const QFont& font, double leafWidth,
-                                double scroll);
+DendrogramFrame dendrogramFrame(const DendrogramLayout& layout,
+                                const workbench::MemberSelection& selection, const QRectF& area,
+                                const QFont& font, double leafWidth, double scroll);
 
 // Paints into `area` of the painter's device. A band behind `hoveredNode` (the branch under the
 // pointer; -1 for none) shows the members a click there would select.
 void paintDendrogram(QPainter& painter, const QRectF& area, const DendrogramLayout& layout,
-                     const MemberSelection& selection, const DendrogramFrame& frame,
+                     const workbench::MemberSelection& selection, const DendrogramFrame& frame,
                      const DendrogramStyle& style, int hoveredNode = -1);
 
 }  // namespace ensil::ui

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -18,7 +18,7 @@ constexpr double kZoomStep = 1.25;  // per wheel notch
 constexpr double kMarkGrab = 6.0;   // pixels above and below the boxplot marks that tell them
 }  // namespace
 
-DendrogramView::DendrogramView(MemberSelection* selection, QWidget* parent)
+DendrogramView::DendrogramView(workbench::MemberSelection* selection, QWidget* parent)
     : QAbstractScrollArea(parent), m_selection(selection) {
     setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -27,11 +27,14 @@ DendrogramView::DendrogramView(MemberSelection* selection, QWidget* parent)
     horizontalScrollBar()->setSingleStep(20);
     connect(horizontalScrollBar(), &QScrollBar::valueChanged, viewport(),
             qOverload<>(&QWidget::update));
-    connect(selection, &MemberSelection::clustersChanged, this, &DendrogramView::rebuildLayout);
-    connect(selection, &MemberSelection::membersReset, this, &DendrogramView::rebuildLayout);
-    connect(selection, &MemberSelection::selectionChanged, viewport(),
+    connect(selection, &workbench::MemberSelection::clustersChanged, this,
+            &DendrogramView::rebuildLayout);
+    connect(selection, &workbench::MemberSelection::membersReset, this,
+            &DendrogramView::rebuildLayout);
+    connect(selection, &workbench::MemberSelection::selectionChanged, viewport(),
             qOverload<>(&QWidget::update));
-    connect(selection, &MemberSelection::hoverChanged, viewport(), qOverload<>(&QWidget::update));
+    connect(selection, &workbench::MemberSelection::hoverChanged, viewport(),
+            qOverload<>(&QWidget::update));
     rebuildLayout();
 }
 
@@ -98,7 +101,7 @@ void DendrogramView::setZoom(double zoom, double anchorX) {
 QString DendrogramView::boxplotText(int member) const {
     const double depth = m_selection->depth(member);
     if (std::isnan(depth)) return {};
-    const QString value = depthText(depth);
+    const QString value = workbench::depthText(depth);
     if (m_selection->isMedian(member)) {
         return tr("inclusion depth %1, the median of the contour boxplot (the deepest member)")
             .arg(value);

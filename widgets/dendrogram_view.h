@@ -1,4 +1,4 @@
-// The dendrogram dock: the merge tree of the shared MemberSelection, painted by
+// The dendrogram dock: the merge tree of the shared workbench::MemberSelection, painted by
 // paintDendrogram. Drag the dashed cut line up or down to choose the number of clusters (live);
 // click a branch to select its members (Shift adds, Ctrl toggles; a click on empty space
 // clears); hover a branch for its merge height (its members are shaded), a member's stem to
@@ -12,14 +12,16 @@
 #include "widgets/dendrogram_layout.h"
 #include "widgets/dendrogram_painter.h"
 
-namespace ensil::ui {
-
+namespace ensil::workbench {
 class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
 
 class DendrogramView : public QAbstractScrollArea {
     Q_OBJECT
 public:
-    explicit DendrogramView(MemberSelection* selection, QWidget* parent = nullptr);
+    explicit DendrogramView(workbench::MemberSelection* selection, QWidget* parent = nullptr);
 
     [[nodiscard]] const DendrogramLayout& layout() const { return m_layout; }
     // The pixel frame the tree is drawn in now (viewport coordinates).
@@ -55,7 +57,7 @@ private:
     // "inclusion depth 0.672, the median of the contour boxplot ..."; empty when not known.
     [[nodiscard]] QString boxplotText(int member) const;
 
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
     DendrogramLayout m_layout;
     double m_zoom = 1.0;  // 1: all leaves fit the width
     bool m_draggingCut = false;

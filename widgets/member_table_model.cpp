@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 namespace {
@@ -19,23 +19,24 @@ QString numberText(double value) {
 }
 }  // namespace
 
-MemberTableModel::MemberTableModel(MemberSelection* selection, QObject* parent)
+MemberTableModel::MemberTableModel(workbench::MemberSelection* selection, QObject* parent)
     : QAbstractTableModel(parent), m_selection(selection) {
-    connect(selection, &MemberSelection::membersAboutToBeReset, this,
+    connect(selection, &workbench::MemberSelection::membersAboutToBeReset, this,
             &MemberTableModel::beginResetModel);
-    connect(selection, &MemberSelection::membersReset, this, &MemberTableModel::endResetModel);
-    connect(selection, &MemberSelection::clustersChanged, this, [this] {
+    connect(selection, &workbench::MemberSelection::membersReset, this,
+            &MemberTableModel::endResetModel);
+    connect(selection, &workbench::MemberSelection::clustersChanged, this, [this] {
         columnChanged(Cluster, {Qt::DisplayRole, Qt::DecorationRole, SortRole});
     });
-    connect(selection, &MemberSelection::visibilityChanged, this, [this] {
+    connect(selection, &workbench::MemberSelection::visibilityChanged, this, [this] {
         columnChanged(Visible, {Qt::CheckStateRole, SortRole});
     });
-    connect(selection, &MemberSelection::hoverChanged, this, [this](int member) {
+    connect(selection, &workbench::MemberSelection::hoverChanged, this, [this](int member) {
         rowChanged(m_hoveredRow, {Qt::BackgroundRole});
         m_hoveredRow = member;
         rowChanged(m_hoveredRow, {Qt::BackgroundRole});
     });
-    connect(selection, &MemberSelection::membersReset, this,
+    connect(selection, &workbench::MemberSelection::membersReset, this,
             [this] { m_hoveredRow = m_selection->hovered(); });
 }
 
@@ -125,9 +126,11 @@ QVariant MemberTableModel::data(const QModelIndex& index, int role) const {
                 const double depth = m_selection->depth(m);
                 if (sort) return number(depth);
                 const QString dot = QStringLiteral(" ") + QChar(0x00B7) + QStringLiteral(" ");
-                if (m_selection->isMedian(m)) return depthText(depth) + dot + tr("median");
-                if (m_selection->isOutlier(m)) return depthText(depth) + dot + tr("outlier");
-                return depthText(depth);
+                if (m_selection->isMedian(m))
+                    return workbench::depthText(depth) + dot + tr("median");
+                if (m_selection->isOutlier(m))
+                    return workbench::depthText(depth) + dot + tr("outlier");
+                return workbench::depthText(depth);
             }
             case Visible:
                 return sort ? QVariant(m_selection->isMemberVisible(m)) : QVariant();
@@ -168,7 +171,7 @@ QString MemberTableModel::depthToolTip(int m) const {
     if (std::isnan(depth)) {
         return tr("The depth of %1 comes with the isovalue's surfaces").arg(name);
     }
-    const QString value = depthText(depth);
+    const QString value = workbench::depthText(depth);
     if (m_selection->isMedian(m)) {
         return tr("%1 is the median of the contour boxplot: its isosurface is the deepest "
                   "(inclusion depth %2), the most central among the others")

@@ -1,10 +1,10 @@
 // The members as a table for QTableView: index, name, cluster (with its colour), distance to
 // the mean member, mean outlyingness, inclusion depth (the contour boxplot's median and outliers
 // named in its cell: "0.672 · median"), and a visibility checkbox; the hovered member's row is
-// tinted. A view onto MemberSelection, which it follows and edits (the checkbox); selection is
-// not part of the model but of the shared MemberSelection (see MemberTablePanel). For data
-// with time steps, optional columns after these give each member's cluster at each step
-// (MemberTableSteps). GUI thread only.
+// tinted. A view onto workbench::MemberSelection, which it follows and edits (the checkbox);
+// selection is not part of the model but of the shared workbench::MemberSelection (see
+// MemberTablePanel). For data with time steps, optional columns after these give each member's
+// cluster at each step (MemberTableSteps). GUI thread only.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -12,9 +12,11 @@
 
 #include "widgets/member_table_steps.h"
 
-namespace ensil::ui {
-
+namespace ensil::workbench {
 class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
 
 class MemberTableModel : public QAbstractTableModel {
     Q_OBJECT
@@ -32,7 +34,7 @@ public:
     // Numbers for sorting (Qt::DisplayRole holds the text shown).
     static constexpr int SortRole = Qt::UserRole + 1;
 
-    explicit MemberTableModel(MemberSelection* selection, QObject* parent = nullptr);
+    explicit MemberTableModel(workbench::MemberSelection* selection, QObject* parent = nullptr);
 
     [[nodiscard]] int rowCount(const QModelIndex& parent = {}) const override;
     [[nodiscard]] int columnCount(const QModelIndex& parent = {}) const override;
@@ -62,7 +64,7 @@ private:
     void rowChanged(int row, const QList<int>& roles);
     [[nodiscard]] QString depthToolTip(int member) const;
 
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
     MemberTableSteps m_steps;
     bool m_stepColumnsShown = false;
     int m_hoveredRow = -1;  // the row tinted as hovered, to clear it when the hover moves

@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "widgets/member_filter_proxy.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::ui {
 
-MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
+MemberTablePanel::MemberTablePanel(workbench::MemberSelection* selection, QWidget* parent)
     : QWidget(parent),
       m_selection(selection),
       m_model(new MemberTableModel(selection, this)),
@@ -92,7 +92,7 @@ MemberTablePanel::MemberTablePanel(MemberSelection* selection, QWidget* parent)
     connect(m_filter, &QLineEdit::textChanged, m_proxy, &MemberFilterProxy::setFilterText);
     connect(m_table->selectionModel(), &QItemSelectionModel::selectionChanged, this,
             &MemberTablePanel::tableSelectionChanged);
-    connect(m_selection, &MemberSelection::selectionChanged, this,
+    connect(m_selection, &workbench::MemberSelection::selectionChanged, this,
             &MemberTablePanel::showSharedSelection);
 }
 

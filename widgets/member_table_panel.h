@@ -1,8 +1,8 @@
 // The member table dock: a filter box over a sortable table of members (MemberTableModel
-// through MemberFilterProxy). Rows selected in the table are the shared MemberSelection's
-// selection and the other way round; members hidden by the filter keep their selection.
-// Hovering a row hovers its member. For data with time steps, a button beside the filter shows
-// each member's cluster per step as columns. GUI thread only.
+// through MemberFilterProxy). Rows selected in the table are the shared
+// workbench::MemberSelection's selection and the other way round; members hidden by the filter keep
+// their selection. Hovering a row hovers its member. For data with time steps, a button beside the
+// filter shows each member's cluster per step as columns. GUI thread only.
 #pragma once
 
 #include <QWidget>
@@ -12,16 +12,19 @@ class QLineEdit;
 class QTableView;
 class QToolButton;
 
+namespace ensil::workbench {
+class MemberSelection;
+}  // namespace ensil::workbench
+
 namespace ensil::ui {
 
-class MemberSelection;
 class MemberTableModel;
 class MemberFilterProxy;
 
 class MemberTablePanel : public QWidget {
     Q_OBJECT
 public:
-    explicit MemberTablePanel(MemberSelection* selection, QWidget* parent = nullptr);
+    explicit MemberTablePanel(workbench::MemberSelection* selection, QWidget* parent = nullptr);
 
     [[nodiscard]] QTableView* table() const { return m_table; }
     [[nodiscard]] QLineEdit* filterBox() const { return m_filter; }
@@ -42,7 +45,7 @@ private:
     // Fits the columns (all but the name's, which takes the rest) when new members arrive.
     void fitColumns();
 
-    MemberSelection* m_selection;
+    workbench::MemberSelection* m_selection;
     MemberTableModel* m_model;
     MemberFilterProxy* m_proxy;
     QLineEdit* m_filter;

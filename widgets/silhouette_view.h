@@ -20,12 +20,15 @@
 #include <functional>
 
 #include "gl/renderer.h"
+#include "workbench/surface_display.h"
 
 class QRubberBand;
 
 namespace ensil::ui {
 
-class SilhouetteView : public QOpenGLWidget {
+// The isovalue controller's display (workbench/surface_display.h): its surfaces go to the
+// renderer.
+class SilhouetteView : public QOpenGLWidget, public workbench::SurfaceDisplay {
     Q_OBJECT
 public:
     // A press and release closer than this (in widget pixels) is a click, not a drag.
@@ -37,6 +40,16 @@ public:
     ~SilhouetteView() override;
 
     [[nodiscard]] gl::Renderer& renderer() { return m_renderer; }
+    void setSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
+        m_renderer.setMeshes(std::move(meshes));
+    }
+    void setMotionSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
+        m_renderer.setMotionMeshes(std::move(meshes));
+    }
+    [[nodiscard]] std::shared_ptr<const data::MeshSet> surfaces() const override {
+        return m_renderer.meshes();
+    }
+    void requestRepaint() override { update(); }
     // The error from the last initialisation attempt, empty when rendering works.
     [[nodiscard]] QString glError() const { return m_glError; }
 
@@ -88,15 +101,15 @@ public slots:
     // Another control changes the picture continuously (a slider being dragged, a time step's
     // preview until its full surfaces): its frames are drawn as camera motion is, until it
     // ends, even when a passing change (showPassingChange) would have settled meanwhile.
-    void beginInteraction();
-    void endInteraction() { stopMoving(); }
+    void beginInteraction() override;
+    void endInteraction() override { stopMoving(); }
     // A change that others may follow at once (a time step while stepping or playing): drawn
     // as a motion frame, at the resolution motion gets, and at full resolution once such
     // changes pause, as wheel turns are, so a step is on screen without a full software frame.
-    void showPassingChange();
+    void showPassingChange() override;
     // Runs `work` once, after the next frame is on screen: background work that would take the
     // cores a software OpenGL's frame needs starts when that frame is drawn.
-    void afterNextFrame(QObject* context, std::function<void()> work);
+    void afterNextFrame(QObject* context, std::function<void()> work) override;
 
 signals:
     // Emitted once when the view cannot render (no OpenGL 4.1 core, a shader that fails).

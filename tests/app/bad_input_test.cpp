@@ -61,7 +61,6 @@ bool holdsNull(const QJsonValue& value) {
     return false;
 }
 
-QJsonObject jsonOf(const Outcome& o) { return QJsonDocument::fromJson(o.out.toUtf8()).object(); }
 }  // namespace
 
 TEST(BadInput, EveryCorruptFileIsRefusedClearlyByInfoAndPreprocess) {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QString>
 #include <QStringList>
 #include <QTextStream>
@@ -26,6 +28,14 @@ inline EnsilRun runEnsil(const QStringList& args) {
     err.flush();
     return r;
 }
+
+// What a command printed with --json.
+inline QJsonObject jsonOf(const EnsilRun& run) {
+    return QJsonDocument::fromJson(run.out.toUtf8()).object();
+}
+
+// The ERA5 ensemble of data assimilation members (four times) that several command tests read.
+inline const QString kEra5 = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
 
 // The merge tree of `ensil preprocess --json`'s "linkage" (SciPy's rows a, b, height, size).
 inline prep::MergeTree treeOfLinkageJson(const QJsonArray& linkage, int members) {

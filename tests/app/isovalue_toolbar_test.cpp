@@ -7,7 +7,6 @@
 #include <QTest>
 #include <memory>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "engine/isovalue_job.h"
 #include "engine/picture_title.h"
@@ -18,6 +17,7 @@
 #include "widgets/isovalue_control.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
 
 using namespace ensil;
 using ensil::ui::IsovalueControl;
@@ -27,7 +27,7 @@ namespace {
 bool showSmallDemo(app::MainWindow& window) {
     if (!test::showWorkbench(window, {1000, 700})) return false;
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 4});
     return loaded.wait(30000) && (built.count() > 0 || built.wait(60000));
 }
@@ -38,7 +38,7 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.loadDemo({.members = 6, .nx = 48, .ny = 24, .nz = 8, .seed = 4});
     ASSERT_TRUE(loaded.wait(30000));
     ui::IsovalueControl* control = window.renderToolbar()->isovalueControl();
@@ -54,7 +54,7 @@ TEST(IsovalueToolbar, ShowsTheHistogramAndKeepsTheLastSurfacesUntilTheNewOnesAre
     // stay on screen.
     QSlider* slider = control->slider();
     built.clear();
-    QSignalSpy started(window.isovalueSession(), &app::IsovalueSession::started);
+    QSignalSpy started(window.isovalueSession(), &workbench::IsovalueSession::started);
     slider->setSliderDown(true);
     slider->setSliderPosition(IsovalueControl::kSliderSteps / 2);
     EXPECT_EQ(started.count(), 0);
@@ -81,10 +81,10 @@ TEST(IsovalueToolbar, ScrubbingPreviewsOnlyTheNewestValueAndEndsOnTheFullSurface
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(showSmallDemo(window));
-    app::IsovalueSession* session = window.isovalueSession();
-    QSignalSpy built(session, &app::IsovalueSession::finished);
+    workbench::IsovalueSession* session = window.isovalueSession();
+    QSignalSpy built(session, &workbench::IsovalueSession::finished);
     ui::IsovalueControl* control = window.renderToolbar()->isovalueControl();
-    QSignalSpy shown(session, &app::IsovalueSession::previewShown);
+    QSignalSpy shown(session, &workbench::IsovalueSession::previewShown);
 
     // A drag over twenty values, faster than any preview is built: the first is built, the
     // newest waits, every value between is dropped.
@@ -148,15 +148,15 @@ TEST(IsovalueToolbar, APreviewIsBuiltWhileEverySharedWorkerThreadIsBusy) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(showSmallDemo(window));
-    app::IsovalueSession* session = window.isovalueSession();
-    QSignalSpy built(session, &app::IsovalueSession::finished);
+    workbench::IsovalueSession* session = window.isovalueSession();
+    QSignalSpy built(session, &workbench::IsovalueSession::finished);
 
     // Every thread of the jobs' pool held. (Held on Qt's global pool, as the jobs were before,
     // the window's next repaint waited for them: Qt's raster painting uses it.)
     test::HeldJobThreads jobThreads;
     ASSERT_TRUE(jobThreads.held()) << "the jobs' threads are all held";
 
-    QSignalSpy shown(session, &app::IsovalueSession::previewShown);
+    QSignalSpy shown(session, &workbench::IsovalueSession::previewShown);
     QSlider* slider = window.renderToolbar()->isovalueControl()->slider();
     slider->setSliderDown(true);
     slider->setSliderPosition(slider->maximum() / 3);

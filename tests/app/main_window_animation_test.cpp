@@ -5,15 +5,15 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "preprocessing/clustering.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/animation_bar.h"
-#include "widgets/member_selection.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -31,7 +31,7 @@ TEST(MainWindowAnimation, PlaysTheMembersInClusterThenSimilarityOrder) {
     QSignalSpy shown(&bar, &ui::AnimationBar::memberShown);
     bar.play();
     QTRY_VERIFY_WITH_TIMEOUT(!bar.isPlaying(), 5000);
-    const app::IsovalueResult& result = *window.isovalueSession()->result();
+    const workbench::IsovalueResult& result = *window.isovalueSession()->result();
     const std::vector<int> labels = window.isovalueSession()->labels();
     const int k = *std::max_element(labels.begin(), labels.end()) + 1;
     const std::vector<int> expected = prep::animationOrder(result.tree, result.distances, k);

@@ -13,11 +13,11 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/temp_dir.h"
-#include "widgets/member_selection.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 namespace ensil::test {
 namespace {
@@ -40,7 +40,7 @@ std::vector<std::string> blockNames(const QString& vtm) {
 
 TEST_F(WorkbenchExport, TheSelectedMembersAreWrittenWithTheMeanForParaView) {
     TempDir dir;
-    ui::MemberSelection& selection = *window.memberSelection();
+    workbench::MemberSelection& selection = *window.memberSelection();
     selection.setSelection({1, 4});
     QSignalSpy written(&window, &app::MainWindow::surfacesExported);
     window.exportSurfaces(QString::fromStdString((dir.path() / "jet.vtm").string()));
@@ -57,7 +57,7 @@ TEST_F(WorkbenchExport, TheSelectedMembersAreWrittenWithTheMeanForParaView) {
 
 TEST_F(WorkbenchExport, WithoutASelectionTheVisibleMembersAreWritten) {
     TempDir dir;
-    ui::MemberSelection& selection = *window.memberSelection();
+    workbench::MemberSelection& selection = *window.memberSelection();
     selection.clearSelection();
     selection.setMemberVisible(0, false);
     QSignalSpy written(&window, &app::MainWindow::surfacesExported);

@@ -8,15 +8,15 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -60,7 +60,7 @@ TEST_F(History, UndoingARenderingSettingPutsItBackAndTheMenuNamesTheStep) {
 
 TEST_F(History, UndoingAnIsovalueShowsTheEarlierSurfacesAgain) {
     const double first = window.renderToolbar()->isovalue();
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.renderToolbar()->isovalueBox()->setValue(first - 3.0);
     ASSERT_TRUE(built.wait(60000));
     ASSERT_TRUE(recorded(1));

@@ -14,7 +14,6 @@
 #include <QTableView>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
@@ -24,11 +23,12 @@
 #include "widgets/cluster_panel.h"
 #include "widgets/dendrogram_view.h"
 #include "widgets/member_filter_proxy.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -64,7 +64,7 @@ protected:
 
     ensil::test::ScopedCacheHome m_cache;
     app::MainWindow window;
-    ui::MemberSelection* selection = nullptr;
+    workbench::MemberSelection* selection = nullptr;
 };
 
 int differingPixels(const QImage& a, const QImage& b) {
@@ -275,7 +275,7 @@ TEST(MainWindowLayout, ScreenshotWithTheDemoLoaded) {
     window.resize(1600, 1000);
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.loadDemo({.members = 20, .nx = 128, .ny = 64, .nz = 16, .seed = 1});
     ASSERT_TRUE(built.wait(120000)) << "no isosurfaces were built";
     window.memberSelection()->setSelection(window.memberSelection()->membersOfCluster(1));

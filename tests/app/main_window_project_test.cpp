@@ -11,7 +11,6 @@
 #include <QTest>
 #include <QTextStream>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "cli/command_line.h"
 #include "preprocessing/cluster_identity.h"
@@ -23,10 +22,11 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -163,7 +163,7 @@ TEST_F(ProjectWindow, AMovedDataFileIsLocatedByTheUser) {
         data::DataSelection selection;
         selection.paths = {original.toStdString()};
         selection.variable = "t";
-        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+        QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
         window.openFiles(selection);
         ASSERT_TRUE(built.wait(60000)) << "no surfaces were built";
         ASSERT_TRUE(window.saveProjectTo(path));
@@ -288,8 +288,8 @@ TEST_F(ProjectWindow, AReopenedProjectNumbersAndColoursItsClustersAsTheyWereSave
         app::MainWindow window;
         ASSERT_TRUE(test::showWorkbench(window, {900, 600}));
         ASSERT_TRUE(test::loadDemoAndWait(window, kDemo));
-        ui::MemberSelection* selection = window.memberSelection();
-        QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+        workbench::MemberSelection* selection = window.memberSelection();
+        QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
         const double iso = window.renderToolbar()->isovalue();
         // As a user makes them: more clusters, another isovalue and another linkage (each new
         // tree's clusters matched to the shown ones), fewer clusters (merged along the tree).

@@ -10,15 +10,15 @@
 #include <QSlider>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -142,7 +142,7 @@ TEST(MainWindowRenderDocks, TheCutFaceShowsTheFieldChosenInThePlanePanelAndTheMe
     fill->setCurrentIndex(static_cast<int>(gl::SectionField::Member));
     QCoreApplication::processEvents();
     EXPECT_FALSE(renderer.sectionShown()) << "no member in focus yet";
-    ui::MemberSelection& selection = *window.memberSelection();
+    workbench::MemberSelection& selection = *window.memberSelection();
     selection.setHovered(2);
     selection.setHovered(-1);  // the cursor moves on, to the section
     const data::Ensemble& e = *window.overview()->ensemble;
@@ -169,7 +169,7 @@ TEST(MainWindowRenderDocks, TheContextSurfacesAreMadeOnlyWhileTheViewDrawsThem) 
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
     ASSERT_TRUE(
         test::loadDemoAndWait(window, {.members = 8, .nx = 48, .ny = 40, .nz = 12, .seed = 3}));
-    app::IsovalueSession& session = *window.isovalueSession();
+    workbench::IsovalueSession& session = *window.isovalueSession();
     gl::Renderer& renderer = window.view()->renderer();
     ASSERT_NE(session.result(), nullptr);
     EXPECT_FALSE(session.result()->contextSurfaces);
@@ -198,7 +198,7 @@ TEST(MainWindowRenderDocks, TheContextSurfacesAreMadeOnlyWhileTheViewDrawsThem) 
     EXPECT_EQ(withBand->members.size(), all.meshes.members.size());
 
     // Another isovalue while the band is on: made with it.
-    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    QSignalSpy built(&session, &workbench::IsovalueSession::finished);
     session.setIsovalue(withBand->isovalue * 1.1F, 1.0F);
     ASSERT_TRUE(built.wait(60000));
     EXPECT_TRUE(session.result()->contextSurfaces);

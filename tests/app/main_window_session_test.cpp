@@ -7,16 +7,16 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -47,7 +47,7 @@ TEST_F(SessionBindings, AnExaggerationKeepsThePlaneAcrossTheBoxAndUndoPutsBothBa
     plane->setCutting(true);
     QCoreApplication::processEvents();  // the plane's own undo step is recorded (queued)
     const float offsetBefore = window.view()->renderer().settings().plane.offset;
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.renderPanel()->setVerticalExaggeration(1.0);
     window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration")->setValue(3.0);
     ASSERT_TRUE(built.wait(60000)) << "a new exaggeration rebuilds the attributes";

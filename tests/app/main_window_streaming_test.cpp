@@ -11,7 +11,6 @@
 #include <QTest>
 #include <QToolButton>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
@@ -24,7 +23,8 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_timeline.h"
 #include "widgets/ensemble_info_panel.h"
-#include "widgets/member_selection.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -52,7 +52,7 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
     window.setMemoryLimit(engine::inMemoryPeakBytes(d) - 1);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
     window.openFiles(selection);
     ASSERT_TRUE(built.wait(280000))
@@ -88,7 +88,7 @@ TEST(MainWindowStreaming, OpensDataLargerThanItsBudgetInSlabsWithTheInMemorySurf
     input.options.isovalue = *state.isovalue;
     input.verticalExaggeration = state.verticalExaggeration;
     const engine::IsovalueOutcome want = engine::runIsovalueJob(input);
-    const app::IsovalueResult& got = *window.isovalueSession()->result();
+    const workbench::IsovalueResult& got = *window.isovalueSession()->result();
     ASSERT_EQ(got.meshes->members.size(), want.meshes.members.size());
     for (std::size_t m = 0; m < want.meshes.members.size(); ++m) {
         EXPECT_TRUE(test::sameMesh(got.meshes->members[m], want.meshes.members[m]))

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/isovalue_session.h"
 #include "data/ensemble_reader.h"
 #include "preprocessing/inclusion_depth.h"
 #include "tests/app/workbench_helpers.h"
@@ -20,12 +19,13 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/ensemble_info_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -113,8 +113,8 @@ TEST(MainWindow, LeavesOutAMemberWithoutDataLikeTheCommandLineAndSaysSo) {
     // and its NaN distances reached the linkage.
     test::ScopedCacheHome cache;
     app::MainWindow window;
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
-    QSignalSpy failed(window.isovalueSession(), &app::IsovalueSession::failed);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
+    QSignalSpy failed(window.isovalueSession(), &workbench::IsovalueSession::failed);
     QSignalSpy loadFailed(&window, &app::MainWindow::loadingFailed);
     data::DataSelection selection;
     selection.paths = {ENSIL_SHARED_DATA_DIR "/../bad/member_without_data.nc"};
@@ -128,13 +128,13 @@ TEST(MainWindow, LeavesOutAMemberWithoutDataLikeTheCommandLineAndSaysSo) {
 
     // The clustering and the member table hold the three members with data, as the command
     // line's do.
-    const ui::MemberSelection* members = window.memberSelection();
+    const workbench::MemberSelection* members = window.memberSelection();
     ASSERT_EQ(members->memberCount(), 3);
     EXPECT_EQ(members->tree().memberCount, 3);
     QStringList names;
     for (int m = 0; m < members->memberCount(); ++m) names << members->name(m);
     EXPECT_EQ(names, (QStringList{"member 0", "member 1", "member 3"}));
-    const app::IsovalueResult* result = window.isovalueSession()->result();
+    const workbench::IsovalueResult* result = window.isovalueSession()->result();
     ASSERT_NE(result, nullptr);
     ASSERT_EQ(result->distances.size, 3u);
     for (std::size_t i = 0; i < 3; ++i)
@@ -198,7 +198,7 @@ TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     ASSERT_TRUE(
         test::loadDemoAndWait(window, {.members = 8, .nx = 64, .ny = 32, .nz = 8, .seed = 11}))
         << "no isosurfaces were built";
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     const auto& meshes = window.view()->renderer().meshes();
     ASSERT_NE(meshes, nullptr);
     EXPECT_EQ(meshes->members.size(), 8u);
@@ -241,7 +241,7 @@ TEST(MainWindow, TheMemberTableShowsEachIsovaluesContourBoxplotAndANewEnsembleCl
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     const std::string file = ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc";
     data::DataSelection selection;
     selection.paths = {file};
@@ -264,16 +264,17 @@ TEST(MainWindow, TheMemberTableShowsEachIsovaluesContourBoxplotAndANewEnsembleCl
             const bool median = static_cast<std::size_t>(m) == expected.median;
             const bool outlier = std::find(expected.outliers.begin(), expected.outliers.end(),
                                            static_cast<std::size_t>(m)) != expected.outliers.end();
-            const QString text = ui::depthText(depth) + (median    ? dot + QStringLiteral("median")
-                                                         : outlier ? dot + QStringLiteral("outlier")
-                                                                   : QString());
+            const QString text =
+                workbench::depthText(depth) + (median    ? dot + QStringLiteral("median")
+                                               : outlier ? dot + QStringLiteral("outlier")
+                                                         : QString());
             EXPECT_EQ(cell.data().toString().toStdString(), text.toStdString())
                 << "member " << m << " at " << iso;
         }
         outliersSeen += expected.outliers.size();
     };
     checkTable();
-    EXPECT_FALSE(ui::depthText(window.memberSelection()->depth(0)).isEmpty());
+    EXPECT_FALSE(workbench::depthText(window.memberSelection()->depth(0)).isEmpty());
 
     // Another isovalue brings its own boxplot: at 260 K member 5 is an outlier.
     built.clear();
@@ -286,7 +287,7 @@ TEST(MainWindow, TheMemberTableShowsEachIsovaluesContourBoxplotAndANewEnsembleCl
     // A new ensemble: the members are shown at once, without the old ensemble's depths, which
     // come back with the new ensemble's first isovalue.
     std::vector<bool> boxplotOnReset;
-    QObject::connect(window.memberSelection(), &ui::MemberSelection::membersReset, &window,
+    QObject::connect(window.memberSelection(), &workbench::MemberSelection::membersReset, &window,
                      [&] { boxplotOnReset.push_back(window.memberSelection()->hasBoxplot()); });
     built.clear();
     window.loadDemo({.members = 6, .nx = 64, .ny = 32, .nz = 8, .seed = 5});

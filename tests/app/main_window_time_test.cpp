@@ -10,7 +10,6 @@
 #include <QTest>
 #include <QToolButton>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
@@ -21,11 +20,12 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_timeline.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -53,7 +53,7 @@ bool stepShown(app::MainWindow& window, int step) {
 bool openEra5(app::MainWindow& window, QSize size, const char* variable,
               const char* file = "era5_eda_members.nc") {
     if (!test::showWorkbench(window, size)) return false;
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     data::DataSelection selection;
     selection.paths = {std::string(ENSIL_SHARED_DATA_DIR "/") + file};
     selection.variable = variable;
@@ -79,7 +79,7 @@ TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilT
     // Until step 1 is built, step 0's surfaces stay on screen: when step 1's surfaces start
     // being built (its data read), step 0's are still there.
     std::shared_ptr<const data::MeshSet> whileBuilding;
-    QObject::connect(window.isovalueSession(), &app::IsovalueSession::started, &window,
+    QObject::connect(window.isovalueSession(), &workbench::IsovalueSession::started, &window,
                      [&] { whileBuilding = renderer.meshes(); });
     bar.step(1);
     EXPECT_EQ(bar.pendingStep(), 1);
@@ -95,7 +95,7 @@ TEST(MainWindowTime, TheTimeBarStepsThroughEra5sTimesKeepingTheLastPictureUntilT
     const ui::ClusterTimeline& strip = *window.findChild<ui::ClusterTimeline*>();
     EXPECT_EQ(strip.stepClusters(0).size(), 10u);
     EXPECT_EQ(strip.stepClusters(1).size(), 10u);
-    ui::MemberSelection& members = *window.memberSelection();
+    workbench::MemberSelection& members = *window.memberSelection();
     for (int m = 0; m < 10; ++m) {
         EXPECT_EQ(strip.stepClusters(1)[static_cast<std::size_t>(m)],
                   members.identityOf(members.clusterOf(m)));
@@ -123,7 +123,7 @@ TEST(MainWindowTime, PlayingThroughEra5ShowsEveryStepOnceAndFillsTheStrip) {
     ui::TimeBar& bar = *window.timeBar();
     // Each step shown is saved as the workbench shows it (for the eye; see the closing note).
     std::vector<int> shown;
-    QObject::connect(window.isovalueSession(), &app::IsovalueSession::finished, &window, [&] {
+    QObject::connect(window.isovalueSession(), &workbench::IsovalueSession::finished, &window, [&] {
         shown.push_back(bar.shownStep());
         window.grab().save(
             QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/era5_time_step_%1.png").arg(bar.shownStep()));
@@ -150,7 +150,7 @@ TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
     // before step 0's surfaces are on screen.
     int frames = 0;
     QObject::connect(window.view(), &QOpenGLWidget::frameSwapped, &window, [&] { ++frames; });
-    QSignalSpy finished(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy finished(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.timeBar()->step(-1);
     EXPECT_FALSE(window.isovalueSession()->isRunning()) << "a kept step needs no job";
     EXPECT_EQ(finished.count(), 1) << "its surfaces shown at once, with its floor and title";
@@ -168,18 +168,18 @@ TEST(MainWindowTime, AStepVisitedAgainIsShownAsBuiltBeforeWithoutRebuilding) {
 TEST(MainWindowTime, TheNextStepIsReadAndBuiltAheadAndShownAtOnceAsBuiltDirectly) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
-    QSignalSpy prepared(window.isovalueSession(), &app::IsovalueSession::preparationEnded);
+    QSignalSpy prepared(window.isovalueSession(), &workbench::IsovalueSession::preparationEnded);
     ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
     // While step 0 is looked at, step 1 is read and its surfaces built in the background.
     ASSERT_TRUE(prepared.count() > 0 || prepared.wait(60000));
     EXPECT_FALSE(window.isovalueSession()->isPreparing());
     EXPECT_EQ(window.timeBar()->shownStep(), 0) << "built ahead, not shown";
-    QSignalSpy finished(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy finished(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.timeBar()->step(1);
     EXPECT_EQ(finished.count(), 1) << "shown at once, in the request's own event";
     EXPECT_FALSE(window.isovalueSession()->isRunning());
     ASSERT_TRUE(stepShown(window, 1));
-    const app::IsovalueResult& shown = *window.isovalueSession()->result();
+    const workbench::IsovalueResult& shown = *window.isovalueSession()->result();
     EXPECT_TRUE(shown.keptInMemory);
     // Built with its motion meshes, which its first frame (a motion frame) draws.
     ASSERT_NE(shown.motionMeshes, nullptr);
@@ -215,15 +215,15 @@ TEST(MainWindowTime, AStepAskedForWhileBuiltAheadWaitsForThatBuild) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(openEra5(window, {1000, 700}, "t"));
-    app::IsovalueSession& session = *window.isovalueSession();
+    workbench::IsovalueSession& session = *window.isovalueSession();
     const engine::EnsembleOverview& shown = *window.overview();
     const float iso = session.result()->meshes->isovalue;
     // Another step's data (the same values under another key), prepared and then asked for
     // before the preparation can have ended (its result needs this thread's events).
     session.prepareTimeStep(shown.ensemble, shown.moments, "another step", iso, 1.0F);
     ASSERT_TRUE(session.isPreparing());
-    QSignalSpy finished(&session, &app::IsovalueSession::finished);
-    QSignalSpy failed(&session, &app::IsovalueSession::failed);
+    QSignalSpy finished(&session, &workbench::IsovalueSession::finished);
+    QSignalSpy failed(&session, &workbench::IsovalueSession::failed);
     session.setTimeStep(shown.ensemble, shown.moments, "another step");
     session.setIsovalue(iso, 1.0F);
     EXPECT_TRUE(session.awaitsPreparedStep()) << "no second build of the same surfaces";
@@ -247,8 +247,8 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     const std::string path = writeTwoDemoSteps(dir, kDemo);
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    app::IsovalueSession& session = *window.isovalueSession();
-    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    workbench::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &workbench::IsovalueSession::finished);
     window.openFiles(data::DataSelection{.paths = {path}});
     ASSERT_TRUE(built.wait(120000));
     const auto first = window.view()->renderer().meshes();
@@ -264,14 +264,14 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     ASSERT_TRUE(jobThreads.held());
     std::vector<std::string> order;
     std::shared_ptr<const data::MeshSet> previewed;
-    QObject::connect(&session, &app::IsovalueSession::previewShown, &window, [&] {
+    QObject::connect(&session, &workbench::IsovalueSession::previewShown, &window, [&] {
         order.emplace_back("preview");
         previewed = window.view()->renderer().meshes();
         EXPECT_TRUE(window.view()->inMotion()) << "a preview is drawn as motion frames";
         jobThreads.release();
     });
     std::shared_ptr<const data::MeshSet> motionAtFirstFrame;
-    QObject::connect(&session, &app::IsovalueSession::finished, &window, [&] {
+    QObject::connect(&session, &workbench::IsovalueSession::finished, &window, [&] {
         order.emplace_back("full");
         motionAtFirstFrame = window.view()->renderer().motionMeshes();
     });
@@ -281,7 +281,7 @@ TEST(MainWindowTime, AStepNeverSeenIsPreviewedInReducedDetailUntilItsFullSurface
     ASSERT_NE(previewed, nullptr);
     EXPECT_NE(previewed, first) << "the preview is step 1's";
     EXPECT_EQ(previewed->members.size(), kDemo.members);
-    const app::IsovalueResult& full = *session.result();
+    const workbench::IsovalueResult& full = *session.result();
     EXPECT_FALSE(full.keptInMemory);
     const auto indices = [](const data::MeshSet& set) {
         std::size_t n = 0;
@@ -402,8 +402,8 @@ TEST(MainWindowTime, TheStepOpenedFirstComesBackWithItsMotionMeshes) {
     const std::string path = writeTwoDemoSteps(dir, kDemo);
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1000, 700}));
-    app::IsovalueSession& session = *window.isovalueSession();
-    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    workbench::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &workbench::IsovalueSession::finished);
     QSignalSpy drawn(window.view(), &QOpenGLWidget::frameSwapped);
     window.openFiles(data::DataSelection{.paths = {path}});
     ASSERT_TRUE(built.wait(120000));
@@ -414,7 +414,7 @@ TEST(MainWindowTime, TheStepOpenedFirstComesBackWithItsMotionMeshes) {
     window.timeBar()->step(1);
     ASSERT_TRUE(stepShown(window, 1));
     std::shared_ptr<const data::MeshSet> motionAtReturn;
-    QObject::connect(&session, &app::IsovalueSession::finished, &window,
+    QObject::connect(&session, &workbench::IsovalueSession::finished, &window,
                      [&] { motionAtReturn = window.view()->renderer().motionMeshes(); });
     window.timeBar()->step(-1);
     ASSERT_TRUE(stepShown(window, 0));

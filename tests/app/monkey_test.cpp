@@ -28,9 +28,9 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/time_bar.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -98,7 +98,7 @@ private:
 
     void act(int action) {
         app::MainWindow& w = *m_window;
-        ui::MemberSelection* selection = w.memberSelection();
+        workbench::MemberSelection* selection = w.memberSelection();
         const int members = selection->memberCount();
         switch (action) {
             case 0:

@@ -12,7 +12,6 @@
 #include <QTest>
 #include <cmath>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "gl/palette.h"
 #include "tests/app/workbench_helpers.h"
@@ -20,9 +19,10 @@
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
 #include "widgets/animation_bar.h"
-#include "widgets/member_selection.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -49,9 +49,9 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(test::showActiveWorkbench(window, {1400, 900}));
-    app::IsovalueSession& session = *window.isovalueSession();
-    QSignalSpy built(&session, &app::IsovalueSession::finished);
-    QSignalSpy failed(&session, &app::IsovalueSession::failed);
+    workbench::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &workbench::IsovalueSession::finished);
+    QSignalSpy failed(&session, &workbench::IsovalueSession::failed);
 
     // Start on the demo.
     ASSERT_TRUE(
@@ -96,7 +96,7 @@ TEST(ScriptedSession, DemoIsovalueCancelPickAnimateScreenshot) {
         }
     }
     ASSERT_GE(expected, 0) << "no silhouette in the middle of the view";
-    ui::MemberSelection& selection = *window.memberSelection();
+    workbench::MemberSelection& selection = *window.memberSelection();
     QTest::mouseClick(&view, Qt::LeftButton, {}, onSilhouette);
     EXPECT_EQ(selection.selectedMembers(), QList<int>{expected});
     EXPECT_TRUE(view.renderer().appearances()[static_cast<std::size_t>(expected)].selected)

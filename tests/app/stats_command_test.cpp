@@ -24,13 +24,9 @@
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
+using ensil::test::kEra5;
 
 namespace {
-const QString kEra5 = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
-
-QJsonObject jsonOf(const test::EnsilRun& o) {
-    return QJsonDocument::fromJson(o.out.toUtf8()).object();
-}
 
 // The statistics at one point, worked out here from the members' values the plain way
 // (two passes, sample standard deviation), over the members listed.

@@ -21,15 +21,12 @@
 #include "tests/support/temp_dir.h"
 
 using namespace ensil;
+using ensil::test::kEra5;
 
 namespace {
-const QString kEra5 = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
 const QStringList kEra5Times{"2017-01-01T00:00", "2017-01-01T12:00", "2017-01-02T00:00",
                              "2017-01-02T12:00"};
 
-QJsonObject jsonOf(const test::EnsilRun& run) {
-    return QJsonDocument::fromJson(run.out.toUtf8()).object();
-}
 }  // namespace
 
 TEST(StepRange, AllAndInclusiveRangesAndRefusalsNamingTheSteps) {

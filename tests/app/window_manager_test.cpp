@@ -13,7 +13,7 @@
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 

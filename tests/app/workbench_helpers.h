@@ -9,10 +9,10 @@
 #include <QSize>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "tests/support/scoped_cache_home.h"
+#include "workbench/isovalue_session.h"
 
 namespace ensil::test {
 
@@ -49,7 +49,7 @@ namespace ensil::test {
 [[nodiscard]] inline bool loadDemoAndWait(app::MainWindow& window,
                                           const data::DemoEnsembleParams& params,
                                           int timeoutMs = 120000) {
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     window.loadDemo(params);
     return built.count() > 0 || built.wait(timeoutMs);
 }

@@ -10,13 +10,13 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/image_compare.h"
 #include "tests/support/scoped_cache_home.h"
 #include "widgets/render_panel.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
 
 using namespace ensil;
 
@@ -61,7 +61,7 @@ TEST(WorkbenchScreenshot, Era5Temperature) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     data::DataSelection selection;
     selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
     selection.variable = "t";
@@ -76,8 +76,8 @@ TEST(WorkbenchScreenshot, Era5TemperatureWithTheContourBoxplotsBand) {
     const test::ScopedCacheHome cache;
     app::MainWindow window;
     ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
-    app::IsovalueSession& session = *window.isovalueSession();
-    QSignalSpy built(&session, &app::IsovalueSession::finished);
+    workbench::IsovalueSession& session = *window.isovalueSession();
+    QSignalSpy built(&session, &workbench::IsovalueSession::finished);
     data::DataSelection selection;
     selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
     selection.variable = "t";

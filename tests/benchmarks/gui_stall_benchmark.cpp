@@ -31,11 +31,11 @@
 #include <utility>
 #include <vector>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/working_memory.h"
 #include "widgets/silhouette_view.h"
 #include "workbench/event_loop_stall_monitor.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/workbench_surface_format.h"
 
 namespace {
@@ -232,12 +232,12 @@ int main(int argc, char** argv) {
     });
     QObject::connect(&window, &ensil::app::MainWindow::loadingFailed,
                      [&](const QString& m) { failure = m; });
-    QObject::connect(window.isovalueSession(), &ensil::app::IsovalueSession::finished, [&] {
+    QObject::connect(window.isovalueSession(), &ensil::workbench::IsovalueSession::finished, [&] {
         built = true;
         endPhase("preprocessing (the isovalue job)");
         beginPhase();
     });
-    QObject::connect(window.isovalueSession(), &ensil::app::IsovalueSession::failed,
+    QObject::connect(window.isovalueSession(), &ensil::workbench::IsovalueSession::failed,
                      [&](const QString& m) { failure = m; });
 
     beginPhase();

@@ -22,8 +22,8 @@
 #include "timing.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/dendrogram_view.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_panel.h"
+#include "workbench/member_selection.h"
 
 using ensil::bench::medianMs;
 namespace prep = ensil::prep;
@@ -46,8 +46,8 @@ prep::DistanceMatrix clusteredDistances(std::size_t n) {
     return ensil::bench::euclideanDistances(points, n, 4);
 }
 
-ui::MemberFigures figures(std::size_t n) {
-    ui::MemberFigures f;
+ensil::workbench::MemberFigures figures(std::size_t n) {
+    ensil::workbench::MemberFigures f;
     for (std::size_t m = 0; m < n; ++m) {
         f.names << QStringLiteral("member %1").arg(m + 1);
         f.distanceToMean.push_back(0.01 * static_cast<double>(m));
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
         if (std::strcmp(argv[i], "--grab") == 0) grabPath = argv[i + 1];
     }
     QApplication app(argc, argv);
-    ui::MemberSelection selection;
+    ensil::workbench::MemberSelection selection;
     ui::MemberTablePanel table(&selection);
     ui::ClusterPanel clusters(&selection);
     ui::DendrogramView dendrogram(&selection);

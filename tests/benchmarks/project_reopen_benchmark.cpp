@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/working_memory.h"
 #include "session/project_file.h"
 #include "timing.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/workbench_surface_format.h"
 
 namespace {

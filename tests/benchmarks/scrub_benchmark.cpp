@@ -21,7 +21,6 @@
 #include <string>
 #include <vector>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/working_memory.h"
@@ -30,6 +29,7 @@
 #include "widgets/isovalue_control.h"
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
     ui::SilhouetteView* view = window.view();
     // The view itself 1000 x 600, whatever the docks around it take.
     window.resize(window.width() + 1000 - view->width(), window.height() + 600 - view->height());
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     const data::DemoEnsembleParams params;
     window.loadDemo(params);
     if (!built.wait(600000)) {
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
             }
         }
     }
-    app::IsovalueSession& session = *window.isovalueSession();
+    workbench::IsovalueSession& session = *window.isovalueSession();
     ui::IsovalueControl& control = *window.renderToolbar()->isovalueControl();
     QSlider& slider = *control.slider();
 
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
                               static_cast<double>(clock.nsecsElapsed()) * 1e-6);
     });
     std::shared_ptr<const data::MeshSet> lastPreview;
-    QObject::connect(&session, &app::IsovalueSession::previewShown, [&](float, double s) {
+    QObject::connect(&session, &workbench::IsovalueSession::previewShown, [&](float, double s) {
         lastPreview = view->renderer().meshes();
         if (s > 0.0) previewBuildMs.push_back(s * 1e3);
     });

@@ -19,12 +19,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/working_memory.h"
 #include "engine/ensemble_overview.h"
 #include "engine/run_memory.h"
 #include "engine/streaming_run.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
@@ -67,9 +67,9 @@ int main(int argc, char** argv) {
     if (!QTest::qWaitForWindowExposed(&window)) return 1;
     window.setMemoryLimit(*limit);
     QSignalSpy loaded(&window, &app::MainWindow::ensembleLoaded);
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     QSignalSpy failed(&window, &app::MainWindow::loadingFailed);
-    QSignalSpy buildFailed(window.isovalueSession(), &app::IsovalueSession::failed);
+    QSignalSpy buildFailed(window.isovalueSession(), &workbench::IsovalueSession::failed);
     const engine::RunMemoryMeter meter;
     QElapsedTimer timer;
     timer.start();

@@ -21,7 +21,6 @@
 #include <string>
 #include <vector>
 
-#include "app/isovalue_session.h"
 #include "app/main_window.h"
 #include "data/demo_ensemble.h"
 #include "data/netcdf_writer.h"
@@ -29,6 +28,7 @@
 #include "timing.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
+#include "workbench/isovalue_session.h"
 #include "workbench/workbench_surface_format.h"
 
 using namespace ensil;
@@ -55,15 +55,15 @@ Step stepTo(app::MainWindow& window, int step) {
     Step s;
     const auto now = [&] { return static_cast<double>(timer.nsecsElapsed()) * 1e-6; };
     const QMetaObject::Connection started =
-        QObject::connect(window.isovalueSession(), &app::IsovalueSession::started, [&] {
+        QObject::connect(window.isovalueSession(), &workbench::IsovalueSession::started, [&] {
             if (s.startedMs < 0) s.startedMs = now();
         });
     const QMetaObject::Connection finished =
-        QObject::connect(window.isovalueSession(), &app::IsovalueSession::finished, [&] {
+        QObject::connect(window.isovalueSession(), &workbench::IsovalueSession::finished, [&] {
             if (s.readyMs < 0 && bar.shownStep() == step) s.readyMs = now();
         });
     const QMetaObject::Connection previewed =
-        QObject::connect(window.isovalueSession(), &app::IsovalueSession::previewShown, [&] {
+        QObject::connect(window.isovalueSession(), &workbench::IsovalueSession::previewShown, [&] {
             if (s.previewMs < 0 && s.readyMs < 0) s.previewMs = now();
         });
     const QMetaObject::Connection frames =
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
     app::MainWindow window;
     window.resize(1400, 900);
     window.show();
-    QSignalSpy built(window.isovalueSession(), &app::IsovalueSession::finished);
+    QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
     data::DataSelection selection;
     selection.paths = {path};
     window.openFiles(selection);
@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
     std::vector<double> lookedMs;
     const int half = kSteps / 2;
     // Each preparation ended since a step was asked for: the next one built ahead.
-    QSignalSpy prepared(window.isovalueSession(), &app::IsovalueSession::preparationEnded);
+    QSignalSpy prepared(window.isovalueSession(), &workbench::IsovalueSession::preparationEnded);
     for (int s = 1; s <= half; ++s) {
         prepared.clear();
         fresh.push_back(stepTo(window, s));

@@ -14,6 +14,7 @@
 
 #include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
+#include "tests/support/private_user_folders.h"
 
 namespace {
 bool listingOnly(int argc, char** argv) {
@@ -32,31 +33,6 @@ void ensureShaderCacheDir() {
     std::filesystem::create_directories(dir);
     ::setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 1);
 }
-// Remembered settings, recent files, layouts and caches go to folders of this test process
-// alone, never the user's (and never another test's: CTest runs each test in its own process).
-// Removed when the process ends.
-class PrivateUserFolders {
-public:
-    PrivateUserFolders() {
-        m_root = std::filesystem::temp_directory_path() /
-                 ("ensil-test-home-" + std::to_string(::getpid()));
-        std::filesystem::remove_all(m_root);
-        for (const char* variable : {"XDG_CONFIG_HOME", "XDG_DATA_HOME", "XDG_CACHE_HOME"}) {
-            const auto dir = m_root / variable;
-            std::filesystem::create_directories(dir);
-            ::setenv(variable, dir.c_str(), 1);
-        }
-    }
-    PrivateUserFolders(const PrivateUserFolders&) = delete;
-    PrivateUserFolders& operator=(const PrivateUserFolders&) = delete;
-    ~PrivateUserFolders() {
-        std::error_code ignored;
-        std::filesystem::remove_all(m_root, ignored);
-    }
-
-private:
-    std::filesystem::path m_root;
-};
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -72,7 +48,7 @@ int main(int argc, char** argv) {
     }
     ensil::gl::ensureRuntimeDirectory();  // as ensil does: Qt would warn at every start
     ensureShaderCacheDir();
-    const PrivateUserFolders userFolders;
+    const ensil::test::PrivateUserFolders userFolders;
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
     QApplication app(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("ensil-tests"));

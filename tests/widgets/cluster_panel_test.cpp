@@ -10,13 +10,13 @@
 
 #include "panel_fixtures.h"
 #include "widgets/cluster_list_model.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 using ui::ClusterListModel;
 
 TEST(ClusterListModel, KeepsQtsModelContractThroughEveryChange) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ClusterListModel model(&s);
     test::ModelContractCheck check(&model);
     test::loadTwoGroups(s);
@@ -32,7 +32,7 @@ TEST(ClusterListModel, KeepsQtsModelContractThroughEveryChange) {
 }
 
 TEST(ClusterListModel, ShowsColourSizeAndVisibility) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ClusterListModel model(&s);
     EXPECT_EQ(model.rowCount(), 0) << "no tree, no clusters";
     test::loadTwoGroups(s, 3);  // {0, 2, 4} stays, {1, 3, 5} splits into {1, 3} and {5}
@@ -60,7 +60,7 @@ TEST(ClusterListModel, ShowsColourSizeAndVisibility) {
 }
 
 TEST(ClusterPanel, SelectingAClusterSelectsItsMembersAndTheOtherWayRound) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::ClusterPanel panel(&s);
     test::loadTwoGroups(s);
     panel.show();
@@ -77,7 +77,7 @@ TEST(ClusterPanel, SelectingAClusterSelectsItsMembersAndTheOtherWayRound) {
 }
 
 TEST(ClusterPanel, SoloShowsOnlyTheCurrentClusterAndShowAllEverything) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::ClusterPanel panel(&s);
     test::loadTwoGroups(s);
     const int a = s.clusterOf(0);
@@ -89,7 +89,7 @@ TEST(ClusterPanel, SoloShowsOnlyTheCurrentClusterAndShowAllEverything) {
 }
 
 TEST(ClusterPanel, OffersEveryLinkageThePreprocessingKnows) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::ClusterPanel panel(&s);
     EXPECT_EQ(panel.linkage(), prep::Linkage::Average);
     QSignalSpy changed(&panel, &ui::ClusterPanel::linkageChanged);
@@ -107,10 +107,10 @@ TEST(ClusterPanel, OffersEveryLinkageThePreprocessingKnows) {
 }
 
 TEST(ClusterListModel, SaysWhichClusterHoldsTheMedianAndWhichTheOutliers) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ClusterListModel model(&s);
     // Two groups, {0, 2, 4} and {1, 3, 5}; member 4 is the median, 3 and 5 are outliers.
-    ui::MemberFigures figures = test::figuresOnALine(test::kTwoGroups);
+    workbench::MemberFigures figures = test::figuresOnALine(test::kTwoGroups);
     figures.depth = {0.5, 0.4, 0.6, 0.1, 0.9, 0.05};
     figures.median = 4;
     figures.outliers = {3, 5};

@@ -8,7 +8,7 @@
 #include <QTest>
 
 #include "panel_fixtures.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -22,7 +22,7 @@ struct FourMembersOverThreeSteps : ::testing::Test {
         strip.setStepClusters(0, {0, 0, 1, 1});
         strip.setStepClusters(1, {0, 1, 1, 1});
     }
-    ui::MemberSelection selection;
+    workbench::MemberSelection selection;
     ui::ClusterTimeline strip{&selection};
 };
 }  // namespace

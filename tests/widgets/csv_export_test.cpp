@@ -10,7 +10,7 @@
 using namespace ensil;
 
 TEST(CsvExport, WritesOneQuotedLinePerMemberWithItsCluster) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     auto figures = test::figuresOnALine({0.25, 10.0, 1.0});
     figures.names[0] = QStringLiteral("run \"A\", control");
     s.setMembers(figures);
@@ -36,7 +36,7 @@ TEST(CsvExport, WritesOneQuotedLinePerMemberWithItsCluster) {
 }
 
 TEST(CsvExport, WritesTheFileOrSaysWhyNot) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     test::loadTwoGroups(s);
     test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("members.csv"));

@@ -16,7 +16,7 @@
 #include "widgets/dendrogram_layout.h"
 #include "widgets/dendrogram_painter.h"
 #include "widgets/dendrogram_view.h"
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 using ui::DendrogramLayout;
@@ -40,8 +40,8 @@ void showAndWait(QWidget& w) {
 }
 
 // The two groups' figures with a contour boxplot: member 4 the median, member 5 an outlier.
-ui::MemberFigures twoGroupsWithABoxplot() {
-    ui::MemberFigures f = test::figuresOnALine(test::kTwoGroups);
+workbench::MemberFigures twoGroupsWithABoxplot() {
+    workbench::MemberFigures f = test::figuresOnALine(test::kTwoGroups);
     f.depth = {0.5, 0.4, 0.6, 0.45, 0.8, 0.05};
     f.median = 4;
     f.outliers = {5};
@@ -80,7 +80,7 @@ protected:
         test::loadTwoGroups(s);
         showAndWait(view);
     }
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::DendrogramView view{&s};
 };
 }  // namespace
@@ -188,7 +188,7 @@ TEST_F(ShownDendrogram, DraggingTheCutLineSetsTheNumberOfClustersLive) {
     const ui::DendrogramFrame frame = view.frame();
     const int x = static_cast<int>(frame.plot.right()) - 10;
     const int from = static_cast<int>(std::lround(frame.pixelY(layout.cutHeight(2))));
-    QSignalSpy changed(&s, &ui::MemberSelection::clustersChanged);
+    QSignalSpy changed(&s, &workbench::MemberSelection::clustersChanged);
     QTest::mousePress(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, from));
     QTest::mouseMove(view.viewport(),
                      QPoint(x, static_cast<int>(frame.pixelY(layout.cutHeight(4)))));
@@ -227,7 +227,7 @@ TEST_F(ShownDendrogram, TellsTheMergeHeightUnderThePointer) {
 }
 
 TEST(DendrogramView, TheWheelZoomsAroundThePointer) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::DendrogramView view(&s);
     std::vector<double> positions;
     for (int m = 0; m < 200; ++m) positions.push_back(std::sin(m * 0.37) * 10.0 + m * 0.01);
@@ -264,7 +264,7 @@ TEST_F(ShownDendrogram, ShowsSelectedMembersUnderTheirLeaves) {
 }
 
 TEST(DendrogramExport, WritesAnSvgWithEveryMemberNameAndRoundMergeHeights) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     test::loadTwoGroups(s);
     test::TempDir dir;
     const QString path = QString::fromStdString(dir.file("tree.svg"));
@@ -290,7 +290,7 @@ TEST(DendrogramExport, WritesAnSvgWithEveryMemberNameAndRoundMergeHeights) {
 }
 
 TEST(DendrogramExport, ExplainsWhatWentWrong) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     QString error;
     EXPECT_FALSE(ui::writeDendrogramSvg(s, "/tmp/never.svg", &error));
     EXPECT_TRUE(error.contains("no dendrogram yet")) << error.toStdString();
@@ -300,7 +300,7 @@ TEST(DendrogramExport, ExplainsWhatWentWrong) {
 }
 
 TEST(DendrogramExport, MarksTheMediansAndTheOutliersNames) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     test::loadTwoGroups(s);
     s.setMembers(twoGroupsWithABoxplot());  // the same members: the tree stays
     ASSERT_TRUE(s.isClustered());
@@ -373,11 +373,11 @@ TEST_F(ShownDendrogram, MarksTheMedianAndTheOutliersUnderTheirLeaves) {
 TEST(DendrogramView, MarksTheBoxplotReadablyAtFiftyMembers) {
     // 50 members in a 600 pixel view: too narrow for names, so the marks alone tell the median
     // and the outliers, each under its own leaf without touching the next.
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::DendrogramView view(&s);
     std::vector<double> positions;
     for (int m = 0; m < 50; ++m) positions.push_back(std::sin(m * 0.37) * 10.0 + m * 0.01);
-    ui::MemberFigures figures = test::figuresOnALine(positions);
+    workbench::MemberFigures figures = test::figuresOnALine(positions);
     for (int m = 0; m < 50; ++m) figures.depth.push_back(0.5 + 0.4 * std::cos(m * 0.37));
     figures.median = 17;
     figures.outliers = {3, 4, 41};

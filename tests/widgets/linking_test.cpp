@@ -1,5 +1,5 @@
-// The panels on one shared MemberSelection, the way the workbench docks them: whatever is
-// selected or cut in one shows in the others, with no panel calling another.
+// The panels on one shared workbench::MemberSelection, the way the workbench docks them: whatever
+// is selected or cut in one shows in the others, with no panel calling another.
 #include <gtest/gtest.h>
 
 #include <QApplication>
@@ -14,9 +14,9 @@
 #include "widgets/cluster_panel.h"
 #include "widgets/dendrogram_view.h"
 #include "widgets/member_filter_proxy.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 
@@ -62,7 +62,7 @@ protected:
         table.table()->selectionModel()->select(rows, QItemSelectionModel::ClearAndSelect);
     }
 
-    ui::MemberSelection selection;
+    workbench::MemberSelection selection;
     ui::MemberTablePanel table{&selection};
     ui::ClusterPanel clusters{&selection};
     ui::DendrogramView dendrogram{&selection};

@@ -14,9 +14,9 @@
 #include "panel_fixtures.h"
 #include "widgets/csv_export.h"
 #include "widgets/member_filter_proxy.h"
-#include "widgets/member_selection.h"
 #include "widgets/member_table_model.h"
 #include "widgets/member_table_panel.h"
+#include "workbench/member_selection.h"
 
 using namespace ensil;
 using ui::MemberTableModel;
@@ -40,7 +40,7 @@ protected:
         panel.show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
     }
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::MemberTablePanel panel{&s};
 };
 }  // namespace
@@ -61,7 +61,7 @@ TEST(ModelContractCheck, NoticesABrokenModel) {
 }
 
 TEST(MemberTableModel, KeepsQtsModelContractThroughEveryChange) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     ui::MemberFilterProxy proxy;
     proxy.setSourceModel(&model);
@@ -83,7 +83,7 @@ TEST(MemberTableModel, KeepsQtsModelContractThroughEveryChange) {
 }
 
 TEST(MemberTableModel, ShowsEveryColumnAndFollowsTheCut) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     test::loadTwoGroups(s);
     ASSERT_EQ(model.rowCount(), 6);
@@ -114,16 +114,16 @@ TEST(MemberTableModel, ShowsEveryColumnAndFollowsTheCut) {
 
 namespace {
 // Members whose figures are not known yet, as a new ensemble's.
-ui::MemberFigures namesOnly(const QStringList& names) {
-    ui::MemberFigures f;
+workbench::MemberFigures namesOnly(const QStringList& names) {
+    workbench::MemberFigures f;
     f.names = names;
     return f;
 }
 
 // Four members with a contour boxplot: member 1 the median (0.9), member 2 an outlier (0.1).
 // Member 3's depth (1e-5) reads "1.00e-05", which sorts above "0.900" as text.
-ui::MemberFigures figuresWithABoxplot() {
-    ui::MemberFigures f = test::figuresOnALine({3.0, 20.0, 100.0, 1.0});
+workbench::MemberFigures figuresWithABoxplot() {
+    workbench::MemberFigures f = test::figuresOnALine({3.0, 20.0, 100.0, 1.0});
     f.depth = {0.45, 0.9, 0.1, 0.00001};
     f.median = 1;
     f.outliers = {2};
@@ -132,7 +132,7 @@ ui::MemberFigures figuresWithABoxplot() {
 }  // namespace
 
 TEST(MemberTableModel, ShowsEachMembersDepthAndNamesTheMedianAndTheOutliers) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     s.setMembers(figuresWithABoxplot());
     const auto cell = [&](int row, int role = Qt::DisplayRole) {
@@ -171,8 +171,8 @@ TEST(MemberTableModel, ShowsEachMembersDepthAndNamesTheMedianAndTheOutliers) {
 }
 
 TEST(MemberTableModel, RefusesABoxplotOfOtherMembers) {
-    ui::MemberSelection s;
-    ui::MemberFigures f = figuresWithABoxplot();
+    workbench::MemberSelection s;
+    workbench::MemberFigures f = figuresWithABoxplot();
     f.depth.pop_back();
     EXPECT_THROW(s.setMembers(f), std::invalid_argument);
     f = figuresWithABoxplot();
@@ -184,7 +184,7 @@ TEST(MemberTableModel, RefusesABoxplotOfOtherMembers) {
 }
 
 TEST(MemberFilterProxy, SortsByDepthAsNumbers) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     ui::MemberFilterProxy proxy;
     proxy.setSourceModel(&model);
@@ -197,7 +197,7 @@ TEST(MemberFilterProxy, SortsByDepthAsNumbers) {
 }
 
 TEST(MemberTableModel, TheCsvHasTheDepthAndTheMedianAndOutlierFlags) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     s.setMembers(figuresWithABoxplot());
     const QStringList lines = ui::memberTableCsv(s).split(QStringLiteral("\r\n"));
     ASSERT_GE(lines.size(), 5);
@@ -222,12 +222,12 @@ TEST(MemberTableModel, TheCsvHasTheDepthAndTheMedianAndOutlierFlags) {
 TEST(MemberTablePanel, NamesAndDepthsStayReadableInASideDock) {
     // ERA5's ten members in a panel as wide as the workbench's side dock (460 pixels): the names
     // and the depth column with its words are shown whole, and every header's text fits.
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     ui::MemberTablePanel panel(&s);
     panel.resize(450, 400);
     panel.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&panel));
-    ui::MemberFigures f;
+    workbench::MemberFigures f;
     for (int m = 0; m < 10; ++m) {
         f.names << QStringLiteral("member %1").arg(m);
         f.distanceToMean.push_back(0.006396 + 1e-6 * m);
@@ -265,7 +265,7 @@ TEST(MemberTablePanel, NamesAndDepthsStayReadableInASideDock) {
 }
 
 TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     test::loadTwoGroups(s);
     const QModelIndex box = model.index(4, MemberTableModel::Visible);
@@ -279,7 +279,7 @@ TEST(MemberTableModel, TheVisibleCheckboxHidesTheMember) {
 }
 
 TEST(MemberTableModel, TintsTheHoveredMembersRow) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     test::loadTwoGroups(s);
     QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
@@ -295,7 +295,7 @@ TEST(MemberTableModel, TintsTheHoveredMembersRow) {
 }
 
 TEST(MemberFilterProxy, SortsNumbersAsNumbersWithUnknownValuesLast) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     ui::MemberFilterProxy proxy;
     proxy.setSourceModel(&model);
@@ -308,7 +308,7 @@ TEST(MemberFilterProxy, SortsNumbersAsNumbersWithUnknownValuesLast) {
 }
 
 TEST(MemberFilterProxy, FiltersByNameOrIndex) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     ui::MemberFilterProxy proxy;
     proxy.setSourceModel(&model);
@@ -331,7 +331,7 @@ TEST_F(ShownMemberTable, SelectingRowsSelectsMembersAndTheOtherWayRound) {
     panel.table()->sortByColumn(MemberTableModel::DistanceToMean, Qt::DescendingOrder);
     ASSERT_EQ(panel.memberAtRow(0), 5);
 
-    QSignalSpy changed(&s, &ui::MemberSelection::selectionChanged);
+    QSignalSpy changed(&s, &workbench::MemberSelection::selectionChanged);
     panel.table()->selectRow(0);
     EXPECT_EQ(s.selectedMembers(), (QList<int>{5}));
     const QRect row2 = panel.table()->visualRect(panel.proxy()->index(2, MemberTableModel::Name));
@@ -372,7 +372,7 @@ TEST_F(ShownMemberTable, LongNamesAreElidedInTheMiddleSoTheirEndsStayApart) {
 TEST(MemberTableModel, TheNumberColumnCountsFromOneWhateverTheFileCallsItsMembers) {
     // Issue 37: ERA5 calls its members "member 0" ... "member 9" (its `number` coordinate); the
     // # column is ensil's number, 1..N as every output gives it, and the name the file's.
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     MemberTableModel model(&s);
     s.setMembers(namesOnly({QStringLiteral("member 0"), QStringLiteral("member 9")}));
     EXPECT_EQ(model.data(model.index(0, MemberTableModel::Index), Qt::DisplayRole).toInt(), 1);
@@ -388,7 +388,7 @@ TEST(MemberTableModel, TheNumberColumnCountsFromOneWhateverTheFileCallsItsMember
 // Clusters over time (issue 17): one optional column per step, each member's cluster there in
 // the strip's number and colour, bold where it moved, empty for a step not clustered yet.
 TEST(MemberTableModel, ShowsEachMembersClusterPerStepInTheStripsColours) {
-    ui::MemberSelection s;
+    workbench::MemberSelection s;
     s.setMembers(test::figuresOnALine({0.0, 1.0, 2.0, 3.0}));
     MemberTableModel model(&s);
     test::ModelContractCheck check(&model);

@@ -1,4 +1,4 @@
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "gl/palette.h"
-#include "panel_fixtures.h"
+#include "tests/workbench/selection_fixtures.h"
 
 using namespace ensil;
-using ui::MemberSelection;
+using workbench::MemberSelection;
 
 TEST(MemberSelection, CutsTheTreeIntoTheRequestedClusters) {
     MemberSelection s;

@@ -1,7 +1,7 @@
 // Keeps the view's isosurfaces in step with the chosen isovalue: for each new isovalue it runs
 // one background job (meshes through the disk cache, similarity matrix, clustering, each
 // member's distance to the mean and mean outlyingness, the contour boxplot's depths, median and
-// outliers) and, when it is done, hands the meshes to the renderer and the members, their
+// outliers) and, when it is done, hands the meshes to the display and the members, their
 // figures and the merge tree to the shared MemberSelection (which colours the view and feeds
 // the panels; see MainWindow). The previous isovalue stays on screen until the new one is
 // ready; a newer request drops an older result. The number of clusters and the linkage change
@@ -31,12 +31,10 @@
 #include "preprocessing/similarity.h"
 #include "workbench/background_job.h"
 
-namespace ensil::ui {
-class SilhouetteView;
-class MemberSelection;
-}  // namespace ensil::ui
+namespace ensil::workbench {
 
-namespace ensil::app {
+class MemberSelection;
+class SurfaceDisplay;
 
 struct IsovalueResult {
     std::shared_ptr<const data::MeshSet> meshes;
@@ -67,9 +65,9 @@ struct IsovalueResult {
 class IsovalueSession : public QObject {
     Q_OBJECT
 public:
-    // The selection outlives the session (both are the main window's).
-    IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* selection,
-                    QString cacheDirectory, QObject* parent = nullptr);
+    // The display and the selection outlive the session (all are the workbench's).
+    IsovalueSession(SurfaceDisplay* display, MemberSelection* selection, QString cacheDirectory,
+                    QObject* parent = nullptr);
 
     // A new ensemble: forgets the old meshes. sourceKey identifies the data for the cache.
     // With `streamed`, `ensemble` and `moments` are a thinned copy's and each isovalue's
@@ -194,8 +192,8 @@ private:
     std::vector<std::pair<std::string, std::shared_ptr<const IsovalueResult>>> m_kept;
     [[nodiscard]] QStringList memberNames() const;
 
-    ui::SilhouetteView* m_view;
-    ui::MemberSelection* m_selection;
+    SurfaceDisplay* m_display;
+    MemberSelection* m_selection;
     QString m_cacheDirectory;
     std::shared_ptr<const data::Ensemble> m_ensemble;
     std::shared_ptr<const prep::EnsembleMoments> m_moments;
@@ -206,13 +204,13 @@ private:
     std::string m_shownKey;
     float m_shownExaggeration = 1.0F;
     bool m_contextWanted = true;
-    workbench::BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
+    BackgroundJob<std::shared_ptr<const data::MeshSet>> m_contextJob{this};
     std::string m_motionSourceKey;  // the data of the result m_motionJob builds for
     std::shared_ptr<const data::MeshSet> m_contextFor;  // the meshes m_contextJob completes
     prep::Linkage m_linkage = prep::Linkage::Average;
-    workbench::BackgroundJob<IsovalueResult> m_job{this};
+    BackgroundJob<IsovalueResult> m_job{this};
     // The step prepared ahead: its key, and whether the surfaces asked for are that build's.
-    workbench::BackgroundJob<IsovalueResult> m_prepareJob{this};
+    BackgroundJob<IsovalueResult> m_prepareJob{this};
     std::string m_preparingKey;
     bool m_awaitingPrepared = false;
     float m_awaitedIsovalue = 0.0F;
@@ -227,7 +225,7 @@ private:
         double seconds = 0.0;
     };
     // A preview's work: its meshes marked with this median and these outliers.
-    static workbench::BackgroundJob<BuiltPreview>::Work previewWork(
+    static BackgroundJob<BuiltPreview>::Work previewWork(
         std::shared_ptr<const data::Ensemble> ensemble,
         std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
         int median, std::vector<int> outliers);
@@ -235,10 +233,10 @@ private:
     // while a full build and a time step's motion meshes, or the reading ahead, held every
     // thread, and a step never seen could then reach full detail with no preview first.
     QThreadPool m_previewThread;
-    workbench::BackgroundJob<BuiltPreview> m_previewJob{
-        this, workbench::BackgroundJob<BuiltPreview>::WhenDestroyed::Wait, &m_previewThread};
+    BackgroundJob<BuiltPreview> m_previewJob{this, BackgroundJob<BuiltPreview>::WhenDestroyed::Wait,
+                                             &m_previewThread};
     // A result's motion meshes: the one shown, or that of a time step just left.
-    workbench::BackgroundJob<BuiltPreview> m_motionJob{this};
+    BackgroundJob<BuiltPreview> m_motionJob{this};
     std::optional<PreviewRequest> m_pendingPreview;
     bool m_previewing = false;
     // A preview job started and not yet handed back (done or dropped): until then new values
@@ -250,4 +248,4 @@ private:
     std::vector<std::pair<std::string, std::shared_ptr<const data::MeshSet>>> m_keptPreviews;
 };
 
-}  // namespace ensil::app
+}  // namespace ensil::workbench

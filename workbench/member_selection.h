@@ -17,7 +17,7 @@
 #include "gl/render_settings.h"
 #include "preprocessing/clustering.h"
 
-namespace ensil::ui {
+namespace ensil::workbench {
 
 // What the member table shows besides the cluster; one entry per member. Empty vectors mean
 // "not known yet" (the figures come with each isovalue).
@@ -140,4 +140,4 @@ private:
     int m_hovered = -1;
 };
 
-}  // namespace ensil::ui
+}  // namespace ensil::workbench

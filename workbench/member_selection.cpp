@@ -1,4 +1,4 @@
-#include "widgets/member_selection.h"
+#include "workbench/member_selection.h"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +12,7 @@
 #include "preprocessing/cluster_identity.h"
 #include "session/member_appearance.h"
 
-namespace ensil::ui {
+namespace ensil::workbench {
 namespace {
 constexpr double kUnknown = std::numeric_limits<double>::quiet_NaN();
 
@@ -277,4 +277,4 @@ std::vector<gl::MemberAppearance> MemberSelection::appearance() const {
     return session::memberAppearance(m_labels, m_identities, {m_visible, m_selected});
 }
 
-}  // namespace ensil::ui
+}  // namespace ensil::workbench

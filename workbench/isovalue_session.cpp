@@ -1,4 +1,4 @@
-#include "app/isovalue_session.h"
+#include "workbench/isovalue_session.h"
 
 #include <QElapsedTimer>
 #include <functional>
@@ -8,15 +8,16 @@
 #include "engine/isovalue_job.h"
 #include "engine/streamed_isovalue_job.h"
 #include "preprocessing/preview_meshes.h"
-#include "widgets/member_selection.h"
-#include "widgets/silhouette_view.h"
+#include "session/session_state.h"
+#include "workbench/member_selection.h"
+#include "workbench/surface_display.h"
 
-namespace ensil::app {
+namespace ensil::workbench {
 
-IsovalueSession::IsovalueSession(ui::SilhouetteView* view, ui::MemberSelection* selection,
+IsovalueSession::IsovalueSession(SurfaceDisplay* display, MemberSelection* selection,
                                  QString cacheDirectory, QObject* parent)
     : QObject(parent),
-      m_view(view),
+      m_display(display),
       m_selection(selection),
       m_cacheDirectory(std::move(cacheDirectory)) {
     m_previewThread.setMaxThreadCount(1);  // one preview runs at a time anyway
@@ -39,14 +40,15 @@ void IsovalueSession::setEnsemble(std::shared_ptr<const data::Ensemble> ensemble
     m_prepareJob.cancel();  // a step of other data
     m_kept.clear();         // other data
     m_result.reset();
-    m_view->renderer().setMeshes(nullptr);
+    m_display->setSurfaces(nullptr);
     // The members are known now; their figures and clusters come with the first isovalue.
-    ui::MemberFigures names;
+    MemberFigures names;
     names.names = memberNames();
     m_selection->setMembers(std::move(names));
     m_selection->setTree({});  // the same names may belong to other data
-    m_selection->setClusterCount(std::min<int>(5, static_cast<int>(m_ensemble->memberCount())));
-    m_view->update();
+    m_selection->setClusterCount(
+        session::defaultClusters(static_cast<int>(m_ensemble->memberCount())));
+    m_display->requestRepaint();
 }
 
 void IsovalueSession::setTimeStep(std::shared_ptr<const data::Ensemble> ensemble,
@@ -197,7 +199,7 @@ void IsovalueSession::prepareTimeStep(std::shared_ptr<const data::Ensemble> ense
         });
 }
 
-workbench::BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
+BackgroundJob<IsovalueSession::BuiltPreview>::Work IsovalueSession::previewWork(
     std::shared_ptr<const data::Ensemble> ensemble,
     std::shared_ptr<const prep::EnsembleMoments> moments, float isovalue, float exaggeration,
     int median, std::vector<int> outliers) {
@@ -237,7 +239,7 @@ void IsovalueSession::attachMotionMeshes(const std::string& key,
     changeKept(key, shown, [&motion](IsovalueResult& kept) { kept.motionMeshes = motion; });
     if (!m_result || m_result->meshes != shown) return;  // another result meanwhile
     m_result->motionMeshes = motion;
-    if (m_view->renderer().meshes() == shown) m_view->renderer().setMotionMeshes(std::move(motion));
+    if (m_display->surfaces() == shown) m_display->setMotionSurfaces(std::move(motion));
 }
 
 std::shared_ptr<const data::MeshSet> IsovalueSession::keptPreview(const std::string& key) const {
@@ -268,9 +270,9 @@ void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
             if (m_buildInFlight && !m_previewing && ensemble == m_ensemble) {
                 m_stepPreviewShown = true;
                 // Motion frames until the full surfaces (show) let the view settle.
-                m_view->beginInteraction();
-                m_view->renderer().setMeshes(std::move(built.meshes));
-                m_view->update();
+                m_display->beginInteraction();
+                m_display->setSurfaces(std::move(built.meshes));
+                m_display->requestRepaint();
                 emit previewShown(isovalue, built.seconds);
             }
             startWaitingPreview();  // a scrub begun meanwhile
@@ -284,9 +286,9 @@ void IsovalueSession::previewTimeStep(float isovalue, float exaggeration) {
 void IsovalueSession::endStepPreview(bool settle) {
     if (!std::exchange(m_stepPreviewShown, false)) return;
     if (settle) {
-        m_view->showPassingChange();  // one more motion frame, then full resolution
+        m_display->showPassingChange();  // one more motion frame, then full resolution
     } else {
-        m_view->endInteraction();
+        m_display->endInteraction();
     }
 }
 
@@ -376,8 +378,8 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
     m_shownExaggeration = exaggeration;
     // While the user scrubs, the view follows the pointer; endPreview shows these after.
     if (!m_previewing) {
-        m_view->renderer().setMeshes(m_result->meshes);
-        m_view->renderer().setMotionMeshes(m_result->motionMeshes);
+        m_display->setSurfaces(m_result->meshes);
+        m_display->setMotionSurfaces(m_result->motionMeshes);
     }
     // Motion meshes not built or kept with the result (as a step prepared ahead has them):
     if (auto preview = m_result->motionMeshes ? nullptr : keptPreview(key)) {
@@ -390,7 +392,7 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
         // Not when another time step was asked for before that frame: the data at hand is
         // that step's (this result gets its motion meshes when visited again).
         const auto shown = m_result->meshes;
-        m_view->afterNextFrame(this, [this, key, exaggeration, shown, source = m_sourceKey] {
+        m_display->afterNextFrame(this, [this, key, exaggeration, shown, source = m_sourceKey] {
             if (m_result && m_result->meshes == shown && m_sourceKey == source) {
                 buildMotionMeshes(key, exaggeration);
             }
@@ -398,7 +400,7 @@ void IsovalueSession::show(IsovalueResult result, float isovalue, float exaggera
     }
     addContextSurfacesIfWanted();
     // Same names: the selection keeps what the user selected and hid.
-    ui::MemberFigures figures;
+    MemberFigures figures;
     figures.names = memberNames();
     figures.distanceToMean = m_result->distancesToMean;
     figures.meanOutlyingness = m_result->meanOutlyingness;
@@ -454,10 +456,10 @@ void IsovalueSession::addContextSurfacesIfWanted() {
             };
             changeKept(key, shown, addContext);
             addContext(*m_result);
-            if (m_view->renderer().meshes() == shown) {
-                m_view->renderer().setMeshes(withContext);
-                m_view->renderer().setMotionMeshes(m_result->motionMeshes);
-                m_view->update();
+            if (m_display->surfaces() == shown) {
+                m_display->setSurfaces(withContext);
+                m_display->setMotionSurfaces(m_result->motionMeshes);
+                m_display->requestRepaint();
             }
         },
         // A surface that could not be made is not drawn; the result stays as it is.
@@ -475,7 +477,7 @@ void IsovalueSession::previewIsovalue(float isovalue, float exaggeration) {
     if (!m_ensemble || !m_moments) return;
     if (!m_previewing) {
         m_previewing = true;
-        m_view->beginInteraction();  // frames at the resolution motion gets, see SilhouetteView
+        m_display->beginInteraction();  // frames at the resolution motion gets, see SilhouetteView
     }
     if (m_previewInFlight) {
         // The newest value replaces the one waiting: values the pointer passed are dropped.
@@ -514,8 +516,8 @@ void IsovalueSession::startPreview(float isovalue, float exaggeration) {
 void IsovalueSession::showPreview(std::shared_ptr<const data::MeshSet> meshes, float isovalue,
                                   double seconds) {
     if (!m_previewing) return;  // the scrub ended while it was built
-    m_view->renderer().setMeshes(std::move(meshes));
-    m_view->update();
+    m_display->setSurfaces(std::move(meshes));
+    m_display->requestRepaint();
     emit previewShown(isovalue, seconds);
     startWaitingPreview();
 }
@@ -532,12 +534,12 @@ void IsovalueSession::endPreview() {
     m_previewing = false;
     m_previewJob.cancel();
     m_pendingPreview.reset();
-    m_view->endInteraction();
+    m_display->endInteraction();
     // Released where it started: the full surfaces of that value come back.
     if (!m_buildInFlight && m_result) {
-        m_view->renderer().setMeshes(m_result->meshes);
-        m_view->renderer().setMotionMeshes(m_result->motionMeshes);
-        m_view->update();
+        m_display->setSurfaces(m_result->meshes);
+        m_display->setMotionSurfaces(m_result->motionMeshes);
+        m_display->requestRepaint();
     }
 }
 
@@ -553,4 +555,4 @@ void IsovalueSession::setLinkage(prep::Linkage linkage) {
     m_selection->setTree(m_result->tree);
 }
 
-}  // namespace ensil::app
+}  // namespace ensil::workbench

@@ -1,0 +1,30 @@
+// What follows each isovalue's surfaces reaching the screen (workbench::IsovalueSession::
+// finished), in one place and in this order: the status bar, the floor and the section (which
+// show the new P(f > c) and isovalue), the removal band's range, the animation's order, the time
+// step now shown, a project's members waiting for their clusters, and the undo history of new
+// data. Before, each was its own connection in another file, run in the order they were made.
+#include <utility>
+
+#include "app/main_window.h"
+#include "session/session_history.h"
+#include "session/session_model.h"
+#include "widgets/animation_bar.h"
+
+namespace ensil::app {
+
+void MainWindow::showBuiltSurfaces(const QString& summary) {
+    setIdle(summary);
+    showFloor(m_model->state().render);
+    showSection();
+    // The removal thresholds range over the outlyingness of the meshes on screen.
+    showOutlyingnessRange();
+    // A new isovalue changes the animation's order: the next play computes it again.
+    m_animation->setSequence({});
+    showBuiltTimeStep();
+    // A project's visibility and selection apply to its members once their clusters are known.
+    applyPendingProjectMembers();
+    // New data: what was done to the old data cannot be undone on it.
+    if (std::exchange(m_historyStartsAfresh, false)) m_history->reset();
+}
+
+}  // namespace ensil::app
