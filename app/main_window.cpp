@@ -604,14 +604,7 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
 
 void MainWindow::showFloor(const gl::RenderSettings& settings) {
     if (!m_overview) return;
-    engine::ColumnMaxima maxima = m_overview->columnMaxima;
-    // The probability's floor belongs to the isovalue shown.
-    if (const workbench::IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
-        maxima.exceedance = shown->exceedanceColumnMaximum;
-        maxima.isovalue = shown->meshes->isovalue;
-    }
-    m_view->renderer().setFloorMap(
-        engine::floorMapFor(*m_overview->ensemble, m_overview->moments->mean, maxima, settings));
+    m_view->renderer().setFloorMap(engine::sceneFloor(sceneData(), settings));
 }
 
 }  // namespace ensil::app

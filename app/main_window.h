@@ -18,6 +18,7 @@
 #include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "engine/ensemble_overview.h"
+#include "engine/session_scene.h"
 #include "engine/surface_export.h"
 #include "engine/time_series.h"
 #include "session/session_model.h"
@@ -164,6 +165,9 @@ private:
     void showSection();
     // The members' spread the context surface may be coloured by, for the data shown.
     void showSpread();
+    // The data on screen and the result of the isovalue drawn, as the scene is drawn from
+    // (engine/session_scene.h; main_window_section.cpp).
+    [[nodiscard]] engine::SceneData sceneData() const;
     // The screenshot dialog's first suggestion: the picture's facts as a file name.
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.
@@ -315,7 +319,6 @@ private:
     // The session on screen: every control writes into it, and its bindings show it.
     session::SessionModel* m_model;
     bool m_showingNewData = false;  // showOverview: one rebuild at its end, not one per part
-    bool m_showingMembers = false;  // the session's visibility and selection being shown
     session::SessionHistory* m_history = nullptr;
     QAction* m_resetCameraAction = nullptr;
     QList<QAction*> m_viewPresetActions;  // map view, views from the sides

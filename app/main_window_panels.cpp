@@ -40,7 +40,7 @@ QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* nam
 }  // namespace
 
 void MainWindow::createPanels() {
-    m_selection = new workbench::MemberSelection(this);
+    m_selection = new workbench::MemberSelection(m_model, this);
     m_clusterPanel = new ui::ClusterPanel(m_selection);
     m_memberTable = new ui::MemberTablePanel(m_selection);
     m_dendrogram = new ui::DendrogramView(m_selection);

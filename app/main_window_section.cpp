@@ -2,7 +2,7 @@
 // 18): which field, for which member and isovalue. The volume is copied and uploaded only when
 // one of those changes, not at every hover.
 #include "app/main_window.h"
-#include "engine/section_volume.h"
+#include "engine/session_scene.h"
 #include "session/session_model.h"
 #include "widgets/silhouette_view.h"
 #include "workbench/isovalue_session.h"
@@ -10,13 +10,27 @@
 
 namespace ensil::app {
 
+engine::SceneData MainWindow::sceneData() const {
+    engine::SceneData scene;
+    if (!m_overview) return scene;
+    scene.ensemble = m_overview->ensemble.get();
+    scene.mean = &m_overview->moments->mean;
+    scene.columnMaxima = &m_overview->columnMaxima;
+    scene.valueMinimum = m_overview->statistics.minimum;
+    scene.valueMaximum = m_overview->statistics.maximum;
+    // The isovalue whose surfaces are drawn (none before the first).
+    if (const workbench::IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
+        scene.isovalue = shown->meshes->isovalue;
+        scene.exceedance = shown->exceedance.get();
+        scene.exceedanceColumnMaximum = &shown->exceedanceColumnMaximum;
+    }
+    return scene;
+}
+
 void MainWindow::showSpread() {
     if (!m_overview) return;
-    engine::SectionSources sources;
-    sources.ensemble = m_overview->ensemble.get();
-    sources.stddev = m_overview->columnMaxima.stddev.get();
     m_view->renderer().setSpreadVolume(
-        engine::sectionVolumeFor(sources, gl::SectionField::StandardDeviation));
+        engine::sceneSection(sceneData(), gl::SectionField::StandardDeviation, -1));
 }
 
 void MainWindow::showSection() {
@@ -28,27 +42,14 @@ void MainWindow::showSection() {
         m_shownSection = {};
         return;
     }
-    // A member: the first selected (a deliberate choice), else the one last hovered.
-    const QList<int> selected = m_selection->selectedMembers();
-    const int member = !selected.isEmpty() ? selected.front() : m_lastHoveredMember;
-    const workbench::IsovalueResult* shown = m_session->result();
-    const data::FieldValues* exceedance =
-        shown != nullptr && shown->exceedance ? shown->exceedance.get() : nullptr;
+    const int member = engine::sectionMember(m_model->state().selection, m_lastHoveredMember);
+    const engine::SceneData scene = sceneData();
     const ShownSection wanted{field, field == gl::SectionField::Member ? member : -1,
-                              field == gl::SectionField::Probability ? exceedance : nullptr,
+                              field == gl::SectionField::Probability ? scene.exceedance : nullptr,
                               m_overview.get()};
     if (wanted == m_shownSection) return;
     m_shownSection = wanted;
-    engine::SectionSources sources;
-    sources.ensemble = m_overview->ensemble.get();
-    sources.mean = &m_overview->moments->mean;
-    sources.stddev = m_overview->columnMaxima.stddev.get();
-    sources.exceedance = exceedance;
-    sources.isovalue = shown != nullptr && shown->meshes ? shown->meshes->isovalue : 0.0F;
-    sources.valueMinimum = m_overview->statistics.minimum;
-    sources.valueMaximum = m_overview->statistics.maximum;
-    sources.member = member;
-    renderer.setSectionVolume(engine::sectionVolumeFor(sources, field));
+    renderer.setSectionVolume(engine::sceneSection(scene, field, member));
     m_view->update();
 }
 

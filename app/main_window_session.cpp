@@ -4,13 +4,11 @@
 // rebuilt when the isovalue or the vertical exaggeration changed. Every control writes into
 // the session (never into another control), so the window holds no second copy of it.
 #include <QAction>
-#include <QScopedValueRollback>
 #include <QSignalBlocker>
 
 #include "app/main_window.h"
 #include "data/units_text.h"
 #include "engine/picture_title.h"
-#include "session/member_appearance.h"
 #include "session/session_model.h"
 #include "widgets/cluster_panel.h"
 #include "widgets/cutting_plane_panel.h"
@@ -27,30 +25,12 @@ using session::SessionPart;
 
 void MainWindow::bindSession() {
     connect(m_model, &session::SessionModel::changed, this, &MainWindow::showSessionParts);
-    // What the shared selection changes by itself (the dendrogram's cut line, visibility,
-    // selection; a new ensemble's members) goes into the session too.
+    // The cluster count the shared selection changes by itself (the dendrogram's cut line) goes
+    // into the session too; its visibility and selection are the session's own.
     connect(m_selection, &workbench::MemberSelection::clustersChanged, this, [this] {
         if (!m_selection->isClustered()) return;
         const int k = m_selection->requestedClusterCount();
         m_model->update([k](session::SessionState& s) { s.clusters = k; });
-    });
-    connect(m_selection, &workbench::MemberSelection::visibilityChanged, this, [this] {
-        if (m_showingMembers) return;  // the session's own visibility being shown
-        std::vector<int> hidden;
-        for (int m = 0; m < m_selection->memberCount(); ++m) {
-            if (!m_selection->isMemberVisible(m)) hidden.push_back(m);
-        }
-        m_model->update([&hidden](session::SessionState& s) {
-            s.hiddenMembers = hidden;
-            s.hiddenClusters.clear();  // resolved into their members
-        });
-    });
-    connect(m_selection, &workbench::MemberSelection::selectionChanged, this, [this] {
-        if (m_showingMembers) return;
-        const QList<int> selected = m_selection->selectedMembers();
-        m_model->update([&selected](session::SessionState& s) {
-            s.selection.assign(selected.begin(), selected.end());
-        });
     });
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, [this](double v) {
         m_model->update([v](session::SessionState& s) { s.isovalue = static_cast<float>(v); });
@@ -101,9 +81,8 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     // First the box, which the plane is placed across: without a new plane, the plane keeps
     // its place across the reshaped box (a change of the session of its own, made here).
     if (parts & SessionPart::Exaggeration) {
-        const float exaggeration = m_model->state().verticalExaggeration;
-        m_renderPanel->setVerticalExaggeration(exaggeration);
-        renderer.setVerticalExaggeration(exaggeration);
+        m_renderPanel->setVerticalExaggeration(m_model->state().verticalExaggeration);
+        engine::showSession(renderer, m_model->state(), sceneData(), SessionPart::Exaggeration);
         if (parts & SessionPart::Plane) {
             setPlaneBox();
         } else {
@@ -111,12 +90,12 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         }
     }
     const session::SessionState& s = m_model->state();
+    // What the renderer draws of the session, as `ensil render` draws it (the data's part is
+    // shown when its overview arrives, showOverview).
+    engine::showSession(
+        renderer, s, sceneData(),
+        parts & ~session::SessionParts(SessionPart::Exaggeration | SessionPart::Data));
     if (parts & (SessionPart::Rendering | SessionPart::Plane)) {
-        if (s.render.floor != renderer.settings().floor ||
-            s.render.floorLevel != renderer.settings().floorLevel) {
-            showFloor(s.render);
-        }
-        renderer.settings() = s.render;
         m_renderPanel->setSettings(s.render);
         m_session->setContextSurfacesWanted(s.render.drawsContextSurfaces());
         showSection();
@@ -129,14 +108,8 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     if (parts & SessionPart::Background) {
         m_renderPanel->setBackground(
             QColor::fromRgbF(s.background.r, s.background.g, s.background.b));
-        renderer.setBackground({s.background, 1.0F});
     }
-    if (parts & SessionPart::Projection) {
-        m_renderPanel->setOrthographic(s.camera.orthographic);
-        renderer.camera().setProjection(s.camera.orthographic
-                                            ? gl::Camera::Projection::Orthographic
-                                            : gl::Camera::Projection::Perspective);
-    }
+    if (parts & SessionPart::Projection) m_renderPanel->setOrthographic(s.camera.orthographic);
     if (parts & SessionPart::Linkage) {
         m_clusterPanel->setLinkage(s.linkage);
         m_session->setLinkage(s.linkage);
@@ -152,17 +125,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         !m_showingNewData) {
         m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
     }
-    if (parts & (SessionPart::Visibility | SessionPart::Selection)) {
-        const session::MemberFlags flags =
-            session::memberFlags(s, m_selection->labels(), m_selection->memberCount());
-        const QScopedValueRollback showing(m_showingMembers, true);
-        QList<int> selected;
-        for (int m = 0; m < m_selection->memberCount(); ++m) {
-            m_selection->setMemberVisible(m, flags.visible[static_cast<std::size_t>(m)]);
-            if (flags.selected[static_cast<std::size_t>(m)]) selected << m;
-        }
-        m_selection->setSelection(selected);
-    }
+    // (Visibility and selection: the shared selection shows the session's, MemberSelection.)
     // Another time step alone changes nothing on screen until its surfaces are shown, which
     // draws them: a frame of the step left here took a software frame's cores (200 ms at full
     // resolution) from reading the next.

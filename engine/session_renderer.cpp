@@ -8,11 +8,10 @@
 #include <algorithm>
 
 #include "data/demo_ensemble.h"
-#include "engine/floor_map.h"
 #include "engine/isovalue_job.h"
 #include "engine/picture_title.h"
 #include "engine/preprocess_run.h"
-#include "engine/section_volume.h"
+#include "engine/session_scene.h"
 #include "engine/time_series.h"
 #include "gl/offscreen_context.h"
 #include "gl/renderer.h"
@@ -21,7 +20,6 @@
 #include "preprocessing/column_maximum.h"
 #include "preprocessing/default_isovalue.h"
 #include "preprocessing/field_statistics.h"
-#include "session/member_appearance.h"
 #include "session/project_file.h"
 #include "session/session_camera.h"
 
@@ -87,29 +85,24 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     renderer.initialize();
     renderer.setViewSize(request.width, request.height);
     renderer.setGrid(ensemble.grid);
-    renderer.setVerticalExaggeration(state.verticalExaggeration);
-    ColumnMaxima maxima = computeColumnMaxima(ensemble, moments.mean);
-    maxima.exceedance = outcome.exceedanceColumnMaximum;
-    maxima.isovalue = iso;
-    gl::FloorMap floor = floorMapFor(ensemble, moments.mean, maxima, state.render);
-    if (request.floorRange && !floor.values.empty()) {
-        floor.minimum = request.floorRange->first;
-        floor.maximum = request.floorRange->second;
-        floor.caption += QString::fromStdString(request.floorRangeNote);
-    }
-    renderer.setFloorMap(std::move(floor));
-    SectionSources section;
-    section.ensemble = &ensemble;
-    section.mean = &moments.mean;
-    section.stddev = maxima.stddev.get();
-    section.exceedance = outcome.exceedance.get();
-    section.isovalue = iso;
-    section.valueMinimum = stats.minimum;
-    section.valueMaximum = stats.maximum;
-    // No hover in a picture: the first selected member.
-    section.member = state.selection.empty() ? -1 : state.selection.front();
-    renderer.setSectionVolume(sectionVolumeFor(section, state.render.plane.fill));
-    renderer.setSpreadVolume(sectionVolumeFor(section, gl::SectionField::StandardDeviation));
+    const ColumnMaxima maxima = computeColumnMaxima(ensemble, moments.mean);
+    SceneData scene;
+    scene.ensemble = &ensemble;
+    scene.mean = &moments.mean;
+    scene.columnMaxima = &maxima;
+    scene.valueMinimum = stats.minimum;
+    scene.valueMaximum = stats.maximum;
+    scene.isovalue = iso;
+    scene.exceedance = outcome.exceedance.get();
+    scene.exceedanceColumnMaximum = &outcome.exceedanceColumnMaximum;
+    scene.floorRange = request.floorRange;
+    scene.floorRangeNote = request.floorRangeNote;
+    // As the workbench shows the session: every part of it (session_scene.h).
+    showSession(renderer, state, scene, session::SessionParts::fromInt(~0));
+    // No hover in a picture: a member section shows the first selected.
+    renderer.setSectionVolume(
+        sceneSection(scene, state.render.plane.fill, sectionMember(state.selection, -1)));
+    renderer.setSpreadVolume(sceneSection(scene, gl::SectionField::StandardDeviation, -1));
     renderer.setMapLines(std::make_shared<const std::vector<geo::MapLine>>(
         geo::mapLinesFor(ensemble.grid, ensemble.gridMapping)));
     const std::size_t triangles = outcome.meshes.triangles;
@@ -126,14 +119,9 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
         for (const int number : state.memberClusters) previous.push_back(number - 1);
     }
     const std::vector<int> identities = matchStepIdentities(outcome.tree, k, labels, previous);
-    renderer.setAppearance(session::memberAppearance(labels, identities,
-                                                     session::memberFlags(state, labels, members)));
-    renderer.settings() = state.render;
+    renderer.setAppearance(sceneAppearance(state, labels, identities, members));
     renderer.setTitle(QString::fromStdString(pictureTitle(ensemble, iso)));
-    renderer.setBackground({state.background, 1.0F});
     gl::Camera& camera = renderer.camera();
-    camera.setProjection(state.camera.orthographic ? gl::Camera::Projection::Orthographic
-                                                   : gl::Camera::Projection::Perspective);
     session::placeCamera(state.camera, renderer);
     if (request.planeAcrossBox) {
         const glm::vec4 p = *request.planeAcrossBox;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/session_scene.h"
 #include "gl/palette.h"
 #include "preprocessing/cluster_identity.h"
 #include "session/member_appearance.h"
@@ -44,7 +45,50 @@ QString depthText(double depth) {
     return QString::fromLatin1(text.data());
 }
 
-MemberSelection::MemberSelection(QObject* parent) : QObject(parent) {}
+MemberSelection::MemberSelection(session::SessionModel* session, QObject* parent)
+    : QObject(parent), m_session(session) {
+    connect(m_session, &session::SessionModel::changed, this, &MemberSelection::showSessionMembers);
+}
+
+MemberSelection::MemberSelection(QObject* parent)
+    : MemberSelection(new session::SessionModel, parent) {
+    m_session->setParent(this);
+}
+
+session::MemberFlags MemberSelection::flagsOfSession() const {
+    return session::memberFlags(m_session->state(), m_labels, memberCount());
+}
+
+void MemberSelection::showSessionMembers(session::SessionParts parts) {
+    using session::SessionPart;
+    if (!(parts & (SessionPart::Visibility | SessionPart::Selection))) return;
+    session::MemberFlags flags = flagsOfSession();
+    const bool visibility = flags.visible != m_visible;
+    const bool selection = flags.selected != m_selected;
+    m_visible = std::move(flags.visible);
+    m_selected = std::move(flags.selected);
+    if (visibility) emit visibilityChanged();
+    if (selection) emit selectionChanged();
+}
+
+void MemberSelection::writeVisible(const std::vector<bool>& visible) {
+    std::vector<int> hidden;
+    for (std::size_t m = 0; m < visible.size(); ++m) {
+        if (!visible[m]) hidden.push_back(static_cast<int>(m));
+    }
+    m_session->update([&hidden](session::SessionState& s) {
+        s.hiddenMembers = hidden;
+        s.hiddenClusters.clear();  // resolved into their members
+    });
+}
+
+void MemberSelection::writeSelected(const std::vector<bool>& selected) {
+    std::vector<int> members;
+    for (std::size_t m = 0; m < selected.size(); ++m) {
+        if (selected[m]) members.push_back(static_cast<int>(m));
+    }
+    m_session->update([&members](session::SessionState& s) { s.selection = members; });
+}
 
 void MemberSelection::setMembers(MemberFigures figures) {
     requireLength(figures.distanceToMean, figures.names.size(), "the distance to the mean");
@@ -53,18 +97,26 @@ void MemberSelection::setMembers(MemberFigures figures) {
     if (figures.median != -1) requireMember(figures.median, figures.names.size(), "the median");
     for (const int m : figures.outliers) requireMember(m, figures.names.size(), "the outlier");
     const bool sameMembers = figures.names == m_figures.names;
+    // Other members: nothing of the last ones' stays hidden or selected.
+    if (!sameMembers) {
+        m_session->update([](session::SessionState& s) {
+            s.hiddenMembers.clear();
+            s.hiddenClusters.clear();
+            s.selection.clear();
+        });
+    }
     emit membersAboutToBeReset();
     emit clustersAboutToChange();
     m_figures = std::move(figures);
-    const auto n = static_cast<std::size_t>(memberCount());
     if (!sameMembers) {
-        m_visible.assign(n, true);
-        m_selected.assign(n, false);
         m_hovered = -1;
         m_tree = {};
         m_identities.clear();  // other members: colours start afresh
     }
     relabel(/*newTree=*/false, m_clusters);
+    session::MemberFlags flags = flagsOfSession();
+    m_visible = std::move(flags.visible);
+    m_selected = std::move(flags.selected);
     emit clustersChanged();
     emit membersReset();
     if (!sameMembers) {
@@ -83,6 +135,8 @@ void MemberSelection::setTree(prep::MergeTree tree) {
     m_tree = std::move(tree);
     relabel(/*newTree=*/true, m_clusters);
     emit clustersChanged();
+    // Hidden clusters (a project's, until resolved) hide other members under other clusters.
+    showSessionMembers(session::SessionPart::Visibility);
 }
 
 void MemberSelection::setClusterCount(int k) {
@@ -92,6 +146,7 @@ void MemberSelection::setClusterCount(int k) {
     m_clusters = k;
     relabel(/*newTree=*/false, previous);
     emit clustersChanged();
+    showSessionMembers(session::SessionPart::Visibility);
 }
 
 void MemberSelection::relabel(bool newTree, int previousK) {
@@ -192,33 +247,29 @@ Qt::CheckState MemberSelection::clusterVisibility(int cluster) const {
 
 void MemberSelection::setMemberVisible(int member, bool visible) {
     if (!valid(member) || m_visible[static_cast<std::size_t>(member)] == visible) return;
-    m_visible[static_cast<std::size_t>(member)] = visible;
-    emit visibilityChanged();
+    std::vector<bool> next = m_visible;
+    next[static_cast<std::size_t>(member)] = visible;
+    writeVisible(next);
 }
 
 void MemberSelection::setClusterVisible(int cluster, bool visible) {
-    bool changed = false;
+    std::vector<bool> next = m_visible;
     for (std::size_t m = 0; m < m_labels.size(); ++m) {
-        if (m_labels[m] != cluster || m_visible[m] == visible) continue;
-        m_visible[m] = visible;
-        changed = true;
+        if (m_labels[m] == cluster) next[m] = visible;
     }
-    if (changed) emit visibilityChanged();
+    if (next != m_visible) writeVisible(next);
 }
 
 void MemberSelection::soloCluster(int cluster) {
     if (cluster < 0 || cluster >= clusterCount()) return;
     std::vector<bool> visible(m_visible.size());
     for (std::size_t m = 0; m < m_labels.size(); ++m) visible[m] = m_labels[m] == cluster;
-    if (visible == m_visible) return;
-    m_visible = std::move(visible);
-    emit visibilityChanged();
+    if (visible != m_visible) writeVisible(visible);
 }
 
 void MemberSelection::showAll() {
     if (std::all_of(m_visible.begin(), m_visible.end(), [](bool v) { return v; })) return;
-    m_visible.assign(m_visible.size(), true);
-    emit visibilityChanged();
+    writeVisible(std::vector<bool>(m_visible.size(), true));
 }
 
 bool MemberSelection::isSelected(int member) const {
@@ -242,9 +293,7 @@ void MemberSelection::setSelection(const QList<int>& members) {
     for (int m : members) {
         if (valid(m)) selected[static_cast<std::size_t>(m)] = true;
     }
-    if (selected == m_selected) return;
-    m_selected = std::move(selected);
-    emit selectionChanged();
+    if (selected != m_selected) writeSelected(selected);
 }
 
 void MemberSelection::click(const QList<int>& members, Qt::KeyboardModifiers modifiers) {
@@ -274,7 +323,8 @@ void MemberSelection::setHovered(int member) {
 }
 
 std::vector<gl::MemberAppearance> MemberSelection::appearance() const {
-    return session::memberAppearance(m_labels, m_identities, {m_visible, m_selected});
+    // As every picture of the session is coloured (ensil render's too).
+    return engine::sceneAppearance(m_session->state(), m_labels, m_identities, memberCount());
 }
 
 }  // namespace ensil::workbench

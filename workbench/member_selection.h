@@ -4,8 +4,12 @@
 // observe it and change it through it; no view calls another. GUI thread only; owned by the
 // main window (or a test), panels keep a pointer.
 //
-// Visibility is kept per member; a cluster's visibility is derived from its members' (all,
-// some or none visible), so hiding a cluster and hiding its members are the same thing.
+// Which members are hidden and selected is the session's (session::SessionState's
+// hiddenMembers, hiddenClusters and selection): this model reads them from the session model it
+// is given, writes its edits there, and says so when they change, whoever changed them (a panel,
+// undo, a project). It keeps only what is derived from them (each member's flags under the
+// current clusters) or transient (the hover). Visibility is per member; a cluster's is derived
+// from its members' (all, some or none visible), so hiding a cluster hides its members.
 #pragma once
 
 #include <QColor>
@@ -16,6 +20,8 @@
 
 #include "gl/render_settings.h"
 #include "preprocessing/clustering.h"
+#include "session/member_appearance.h"
+#include "session/session_model.h"
 
 namespace ensil::workbench {
 
@@ -40,6 +46,9 @@ struct MemberFigures {
 class MemberSelection : public QObject {
     Q_OBJECT
 public:
+    // Shows and edits the visibility and selection of `session`, which outlives it.
+    explicit MemberSelection(session::SessionModel* session, QObject* parent = nullptr);
+    // With a session of its own (a panel tested alone).
     explicit MemberSelection(QObject* parent = nullptr);
 
     // New members. Selection, visibility and hover survive when the names are the same (a new
@@ -126,6 +135,13 @@ signals:
 
 private:
     [[nodiscard]] bool valid(int member) const { return member >= 0 && member < memberCount(); }
+    // The members' flags from the session under the current clusters; emits what changed.
+    void showSessionMembers(session::SessionParts parts);
+    [[nodiscard]] session::MemberFlags flagsOfSession() const;
+    // Writes these flags into the session: hidden members by index (hidden clusters resolved
+    // into their members), the selection ascending.
+    void writeVisible(const std::vector<bool>& visible);
+    void writeSelected(const std::vector<bool>& selected);
     // Recomputes the labels of the cut, and the identities: matched to the previous ones
     // after a new tree, followed along the tree after a new k, from the tree when new.
     void relabel(bool newTree, int previousK);
@@ -135,9 +151,11 @@ private:
     int m_clusters = 5;
     std::vector<int> m_labels;
     std::vector<int> m_identities;  // per label
+    session::SessionModel* m_session;
+    // Derived from the session: per member, for the current members and clusters.
     std::vector<bool> m_visible;
     std::vector<bool> m_selected;
-    int m_hovered = -1;
+    int m_hovered = -1;  // transient: not part of the session
 };
 
 }  // namespace ensil::workbench

@@ -4,8 +4,10 @@
 
 #include <QSignalSpy>
 #include <stdexcept>
+#include <vector>
 
 #include "gl/palette.h"
+#include "session/session_model.h"
 #include "tests/workbench/selection_fixtures.h"
 
 using namespace ensil;
@@ -176,4 +178,63 @@ TEST(MemberSelection, ANewTreeOfTheSameMembersKeepsColoursByTheirMembers) {
     const std::vector<QColor> after = colours(s);
     for (const int m : {0, 1, 2, 3, 5}) EXPECT_EQ(after[m], before[m]) << m;
     EXPECT_EQ(after[4], before[1]);
+}
+
+// One truth: what is hidden and selected is the session's. The selection writes its edits there,
+// and shows whatever the session says, whoever changed it (undo, a project).
+TEST(MemberSelection, HiddenAndSelectedMembersAreTheSessionsBothWays) {
+    session::SessionModel model;
+    MemberSelection s(&model);
+    test::loadTwoGroups(s);
+    s.setMemberVisible(3, false);
+    s.click({1, 4}, Qt::NoModifier);
+    EXPECT_EQ(model.state().hiddenMembers, std::vector<int>{3});
+    EXPECT_EQ(model.state().selection, (std::vector<int>{1, 4}));
+
+    QSignalSpy visibility(&s, &MemberSelection::visibilityChanged);
+    QSignalSpy selection(&s, &MemberSelection::selectionChanged);
+    model.update([](session::SessionState& state) {
+        state.hiddenMembers = {0, 5};
+        state.selection = {2};
+    });
+    EXPECT_EQ(visibility.count(), 1);
+    EXPECT_EQ(selection.count(), 1);
+    EXPECT_FALSE(s.isMemberVisible(0));
+    EXPECT_TRUE(s.isMemberVisible(3));
+    EXPECT_FALSE(s.isMemberVisible(5));
+    EXPECT_EQ(s.selectedMembers(), QList<int>{2});
+    // A change of another part says nothing of the members.
+    model.update([](session::SessionState& state) { state.clusters = 4; });
+    EXPECT_EQ(visibility.count(), 1);
+    EXPECT_EQ(selection.count(), 1);
+}
+
+TEST(MemberSelection, AClusterHiddenInTheSessionHidesItsMembersUnderTheClustersShown) {
+    session::SessionModel model;
+    MemberSelection s(&model);
+    test::loadTwoGroups(s);
+    const int farGroup = s.clusterOf(1);  // {1, 3, 5}
+    model.update([farGroup](session::SessionState& state) { state.hiddenClusters = {farGroup}; });
+    EXPECT_EQ(s.clusterVisibility(farGroup), Qt::Unchecked);
+    EXPECT_TRUE(s.isMemberVisible(0));
+    EXPECT_FALSE(s.isMemberVisible(5));
+    // Showing one of them again resolves the cluster into its members in the session.
+    s.setMemberVisible(5, true);
+    EXPECT_TRUE(model.state().hiddenClusters.empty());
+    EXPECT_EQ(model.state().hiddenMembers, (std::vector<int>{1, 3}));
+}
+
+TEST(MemberSelection, OtherMembersStartWithNothingHiddenOrSelectedInTheSession) {
+    session::SessionModel model;
+    MemberSelection s(&model);
+    test::loadTwoGroups(s);
+    s.setMemberVisible(2, false);
+    s.setSelection({0});
+    workbench::MemberFigures others;
+    others.names = QStringList{"a", "b", "c"};
+    s.setMembers(others);
+    EXPECT_TRUE(model.state().hiddenMembers.empty());
+    EXPECT_TRUE(model.state().selection.empty());
+    EXPECT_TRUE(s.isMemberVisible(2));
+    EXPECT_EQ(s.selectedCount(), 0);
 }
