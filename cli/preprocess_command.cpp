@@ -33,8 +33,9 @@ namespace {
 
 struct Options {
     QCommandLineOption iso{QStringLiteral("iso"),
-                           QStringLiteral("The isovalue (default: the workbench's, the 90th "
-                                          "percentile of the values; --json reports it)."),
+                           QStringLiteral("The isovalue (default: the workbench's, where most "
+                                          "members have a surface in the middle of the box and "
+                                          "differ; --json reports it)."),
                            QStringLiteral("X")};
     QCommandLineOption error{QStringLiteral("error"),
                              QStringLiteral("Decimation error bound in grid cells (default 0.25; a "

@@ -22,8 +22,8 @@ namespace {
 
 struct Options {
     QCommandLineOption iso{"iso",
-                           "The isovalue (default: the workbench's, the 90th percentile of the "
-                           "values; --json reports it).",
+                           "The isovalue (default: the workbench's, where most members have a "
+                           "surface in the middle of the box and differ; --json reports it).",
                            "X"};
     QCommandLineOption output{"out", "The PNG file to write (required).", "FILE.png"};
     QCommandLineOption size{"size", "Image size in pixels (default 1600x1000).", "WxH",

@@ -35,6 +35,7 @@ struct DataSelection {
 struct VariableInfo {
     std::string name;
     std::string longName;
+    std::string standardName;  // CF's, where the file gives one
     std::string units;
     std::vector<std::string>
         dimensions;  // as stored, e.g. {"number", "time", "plev", "lat", "lon"}

@@ -8,6 +8,7 @@
 
 #include "data/error.h"
 #include "data/reader_support.h"
+#include "data/variable_choice.h"
 
 namespace ensil::data {
 namespace {
@@ -279,16 +280,16 @@ std::vector<VariableInfo> listGribVariables(const GribInventory& inventory,
 GribPlan planGribVariable(const GribInventory& inventory, const std::string& path,
                           const DataSelection& selection) {
     const std::vector<Variable> variables = groupVariables(inventory, path);
-    // Named, that variable; else the usable one with the most levels, the first among equals
-    // (as the NetCDF reader chooses).
+    // Named, that variable; else the one a meteorologist would look at first, as the NetCDF
+    // reader chooses (data/variable_choice.h).
     const Variable* chosen = nullptr;
+    if (selection.variable.empty()) {
+        std::vector<VariableInfo> infos;
+        for (const Variable& v : variables) infos.push_back(infoOf(v));
+        if (const auto index = chooseVariable(infos)) chosen = &variables[*index];
+    }
     for (const Variable& v : variables) {
-        if (!selection.variable.empty()) {
-            if (v.name == selection.variable) chosen = &v;
-        } else if (v.whyNot.empty() &&
-                   (chosen == nullptr || v.levels.size() > chosen->levels.size())) {
-            chosen = &v;
-        }
+        if (!selection.variable.empty() && v.name == selection.variable) chosen = &v;
     }
     if (chosen == nullptr && !selection.variable.empty()) {
         std::vector<std::string> usable;

@@ -9,6 +9,7 @@
 #include "data/cf_conventions.h"
 #include "data/error.h"
 #include "data/reader_support.h"
+#include "data/variable_choice.h"
 #include "data/wrf_conventions.h"
 
 namespace ensil::data {
@@ -236,6 +237,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
         VariableInfo info;
         info.name = var.name;
         info.longName = file.text(var.id, "long_name");
+        info.standardName = file.text(var.id, "standard_name");
         info.units = file.text(var.id, "units");
         for (int id : var.dimIds) {
             info.dimensions.push_back(file.dimension(id).name);
@@ -254,6 +256,7 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
             VariableInfo info;
             info.name = "wind_speed";
             info.longName = windSpeedLongName(uv->first->name, uv->second->name);
+            info.standardName = "wind_speed";
             info.units = file.text(uv->first->id, "units");
             info.derived = true;
             for (int id : uv->first->dimIds) info.dimensions.push_back(file.dimension(id).name);
@@ -270,18 +273,16 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
 
 NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool requireMemberDim) {
     const std::vector<VariableInfo> variables = listVariables(file, selection.memberDimension);
-    // Named, that variable; else the usable one with the most vertical levels (the most 3D
-    // structure to show: a two-level field is a sheet one cell thick), the first in the file
-    // among equals.
+    // Named, that variable; else the one a meteorologist would look at first
+    // (data/variable_choice.h).
     const VariableInfo* chosen = nullptr;
+    if (selection.variable.empty()) {
+        if (const auto index = chooseVariable(variables)) chosen = &variables[*index];
+    }
     for (const VariableInfo& v : variables) {
-        if (!selection.variable.empty()) {
-            if (v.name == selection.variable) {
-                chosen = &v;
-                break;
-            }
-        } else if (v.usable && (chosen == nullptr || v.levels > chosen->levels)) {
+        if (!selection.variable.empty() && v.name == selection.variable) {
             chosen = &v;
+            break;
         }
     }
     if (chosen == nullptr && !selection.variable.empty()) {

@@ -43,7 +43,7 @@ struct SessionState {
     bool demo = false;
     data::DemoEnsembleParams demoParams;
     data::DataSelection data;
-    std::optional<float> isovalue;  // none: the default for the variable (its 90th percentile)
+    std::optional<float> isovalue;  // none: the variable's default (METHODS.md section 14)
     CameraState camera;
     gl::RenderSettings render;
     float verticalExaggeration = 1.0F;
