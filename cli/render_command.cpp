@@ -55,7 +55,8 @@ struct Options {
         "N", "1"};
     QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
     QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
-    QCommandLineOption json{"json", "Print frame_ms, gpu_bytes, width, height as JSON."};
+    QCommandLineOption json{"json",
+                            "Print frame_ms, gpu_bytes, width, height, vertical_scale... as JSON."};
     QCommandLineOption times{
         "times",
         "Draw one picture per time step from A to B, both included (time indices from 0, as "
@@ -360,7 +361,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
         if (parser.isSet(o.saveProject))
             session::saveProject(result.drawn, parser.value(o.saveProject));
         if (parser.isSet(o.json)) {
-            const QJsonObject json{
+            QJsonObject json{
                 {"frame_ms", result.frameMs},
                 {"gpu_bytes", static_cast<qint64>(result.gpuBytes)},
                 {"width", result.image.width()},
@@ -373,6 +374,13 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
                 {"gl_renderer", QString::fromStdString(result.glRenderer)},
                 {"display", result.withoutDisplay ? QStringLiteral("none (EGL surfaceless)")
                                                   : QGuiApplication::platformName()}};
+            // The figure's stated vertical scale ("vertical ×480"), and whence its heights came.
+            if (result.verticalScale) {
+                json.insert("vertical_scale", result.verticalScale->factor);
+                json.insert("vertical_heights", result.verticalScale->standardAtmosphere
+                                                    ? QStringLiteral("standard atmosphere")
+                                                    : QStringLiteral("the axis"));
+            }
             out << QJsonDocument(json).toJson(QJsonDocument::Compact) << "\n";
         } else {
             out << "wrote " << parser.value(o.output) << ": " << result.image.width() << " x "

@@ -191,10 +191,6 @@ GridMapping readGridMapping(const NetcdfFile& file, const NcVariable& var) {
     return result;
 }
 
-bool isLengthUnit(const std::string& units) {
-    const std::string u = lower(units);
-    return u == "m" || u == "km" || u == "meters" || u == "metres" || u == "meter" ||
-           u == "metre" || u == "kilometers" || u == "kilometres";
-}
+bool isLengthUnit(const std::string& units) { return metresPer(units) > 0.0; }
 
 }  // namespace ensil::data

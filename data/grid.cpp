@@ -30,11 +30,31 @@ double Axis::valueAt(double index) const {
     return values[i] + f * (values[i + 1] - values[i]);
 }
 
-bool isPressureUnit(const std::string& units) {
+namespace {
+std::string lowerUnits(const std::string& units) {
     std::string u;
-    for (char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return u == "pa" || u == "hpa" || u == "kpa" || u == "mbar" || u == "millibar" ||
-           u == "millibars" || u == "mb" || u == "bar" || u == "atm";
+    for (const char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return u;
+}
+}  // namespace
+
+bool isPressureUnit(const std::string& units) { return hectopascalsPer(units) > 0.0; }
+
+double hectopascalsPer(const std::string& units) {
+    const std::string u = lowerUnits(units);
+    if (u == "pa") return 0.01;
+    if (u == "hpa" || u == "mbar" || u == "millibar" || u == "millibars" || u == "mb") return 1.0;
+    if (u == "kpa") return 10.0;
+    if (u == "bar") return 1000.0;
+    if (u == "atm") return 1013.25;
+    return 0.0;
+}
+
+double metresPer(const std::string& units) {
+    const std::string u = lowerUnits(units);
+    if (u == "m" || u == "meters" || u == "metres" || u == "meter" || u == "metre") return 1.0;
+    if (u == "km" || u == "kilometers" || u == "kilometres") return 1000.0;
+    return 0.0;
 }
 
 Axis makeUniformAxis(std::string name, std::string units, double first, double last,

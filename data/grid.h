@@ -35,6 +35,10 @@ Axis makeUniformAxis(std::string name, std::string units, double first, double l
 
 // True for units that name a pressure (Pa, hPa, mbar, millibars, ...), case-insensitive.
 bool isPressureUnit(const std::string& units);
+// hPa per unit of a pressure, metres per unit of a length (m, km, metres...); 0 for units that
+// are not one ensil knows. Case-insensitive.
+double hectopascalsPer(const std::string& units);
+double metresPer(const std::string& units);
 
 class Grid {
 public:

@@ -174,6 +174,7 @@ RenderOutcome renderEnsemble(std::shared_ptr<const data::Ensemble> read,
     result.members = ensemble.memberCount();
     result.variable = ensemble.variable;
     result.note = data::fewLevelsWarning(ensemble.grid).value_or("");
+    result.verticalScale = data::verticalScaleOf(ensemble.grid, renderer.frame());
     result.glRenderer = reinterpret_cast<const char*>(f->glGetString(GL_RENDERER));
     result.withoutDisplay = gl::renderingWithoutDisplay();
     result.memberNames = std::move(names);

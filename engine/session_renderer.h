@@ -15,6 +15,7 @@
 #include <string>
 #include <utility>
 
+#include "data/vertical_scale.h"
 #include "session/session_state.h"
 
 namespace ensil::engine {
@@ -54,9 +55,12 @@ struct RenderOutcome {
     std::size_t gpuBytes = 0;
     std::size_t triangles = 0;
     std::size_t members = 0;
-    std::string variable;    // the one drawn (the default when none was named)
-    std::string note;        // what the data cannot show well (data::fewLevelsWarning), or empty
-    std::string glRenderer;  // GL_RENDERER: the driver that drew it
+    std::string variable;  // the one drawn (the default when none was named)
+    std::string note;      // what the data cannot show well (data::fewLevelsWarning), or empty
+    // How much the box stretches heights over their true proportion, as its vertical axis's
+    // title says (data/vertical_scale.h); none where it cannot be known.
+    std::optional<data::VerticalScale> verticalScale;
+    std::string glRenderer;                // GL_RENDERER: the driver that drew it
     bool withoutDisplay = false;           // drawn through EGL's surfaceless platform
     std::vector<std::string> memberNames;  // of the members drawn, and each one's identity:
     std::vector<int> memberIdentities;     // the next frame's RenderRequest::previous...

@@ -31,18 +31,6 @@ std::vector<double> niceTicks(double lo, double hi, int wanted) {
 
 namespace {
 
-// hPa per unit of a pressure axis; 0 for units that are not a pressure ensil knows.
-double hectopascalsPer(const std::string& units) {
-    std::string u;
-    for (const char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (u == "pa") return 0.01;
-    if (u == "hpa" || u == "mbar" || u == "millibar" || u == "millibars" || u == "mb") return 1.0;
-    if (u == "kpa") return 10.0;
-    if (u == "bar") return 1000.0;
-    if (u == "atm") return 1013.25;
-    return 0.0;
-}
-
 // The standard pressure levels (WMO mandatory levels and the usual model levels), the main
 // ones first.
 constexpr std::array kMainLevels{1000.0, 850.0, 700.0, 500.0, 300.0, 200.0,
@@ -58,7 +46,7 @@ AxisLabelling labellingFor(const data::Axis& axis) {
     const double hi = axis.maxValue();
     AxisLabelling labelling;
     labelling.units = axis.units;
-    if (const double hPa = hectopascalsPer(axis.units); hPa > 0.0) {
+    if (const double hPa = data::hectopascalsPer(axis.units); hPa > 0.0) {
         labelling.shownPerUnit = hPa;
         labelling.units = "hPa";
         const double tolerance = 1e-9 * (hi - lo);
@@ -77,8 +65,7 @@ AxisLabelling labellingFor(const data::Axis& axis) {
         }
         return labelling;
     }
-    const bool metres = axis.units == "m" || axis.units == "metre" || axis.units == "metres" ||
-                        axis.units == "meter" || axis.units == "meters";
+    const bool metres = data::metresPer(axis.units) == 1.0;
     if (metres && std::max(std::abs(lo), std::abs(hi)) > kKilometreAbove) {
         labelling.shownPerUnit = 0.001;
         labelling.units = "km";

@@ -13,6 +13,7 @@
 #include <map>
 
 #include "data/number_text.h"
+#include "data/vertical_scale.h"
 #include "gl/axis_ticks.h"
 #include "gl/palette.h"
 
@@ -36,6 +37,20 @@ QString axisTitle(const data::Axis& axis, const std::string& units) {
     const QString name = QString::fromStdString(axis.name);
     return units.empty() ? name
                          : QStringLiteral("%1 (%2)").arg(name, QString::fromStdString(units));
+}
+
+// The vertical axis's title says how much the box stretches heights (data/vertical_scale.h):
+// "plev (hPa), vertical ×480", the factor to two significant digits (for pressure levels through
+// the standard atmosphere's heights, which METHODS.md and --json say).
+QString verticalAxisTitle(const QString& title, const OverlayInput& in) {
+    const auto scale = data::verticalScaleOf(*in.grid, *in.frame);
+    if (!scale) return title;
+    const double f = scale->factor;
+    const double magnitude = std::pow(10.0, std::floor(std::log10(f)) - 1.0);
+    const double rounded =
+        f >= 10.0 ? std::round(f / magnitude) * magnitude : std::round(f * 10.0) / 10.0;
+    return QStringLiteral("%1, vertical \u00d7%2")
+        .arg(title, QString::fromStdString(data::readableNumber(rounded)));
 }
 
 // An edge seen end-on (the vertical one from straight above) has no room for labels: they
@@ -73,8 +88,9 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
         place(in.frame->toDisplay(point)[a], formatTick(tick * labelling.shownPerUnit),
               kTickOffsetPx, false);
     }
-    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]), axisTitle(axis, labelling.units),
-          kTitleOffsetPx, true);
+    const QString title = axisTitle(axis, labelling.units);
+    place(0.5F * (in.frame->boxMin()[a] + in.frame->boxMax()[a]),
+          a == 2 ? verticalAxisTitle(title, in) : title, kTitleOffsetPx, true);
 }
 // The legend's place: the first corner (top left, top right, bottom left, bottom right) where
 // it keeps clear of the data box on screen, else the corner where it covers least of it.

@@ -111,6 +111,24 @@ TEST(OverlayLayout, OnEveryRealFileNoLabelCollidesOrIsCutOffDownTo480x320) {
                     }
                 }
                 EXPECT_GE(ticks, 4) << where << ": too few tick values are left";
+                // The vertical axis's title states how much the box stretches heights (every
+                // real file has pressures or heights over degrees). From the top, or where the
+                // vertical edge is too short on screen for labels, it has no title.
+                const QString vertical = QString::fromStdString(e.grid.z().name);
+                for (const gl::PaintedItem& item : painted) {
+                    if (item.text.startsWith(vertical + " (")) {
+                        EXPECT_TRUE(item.text.contains(QStringLiteral(", vertical \u00d7")))
+                            << where << ": '" << item.text.toStdString() << "' states no scale";
+                    }
+                }
+                if (!top && size.width() >= 1200) {
+                    EXPECT_TRUE(std::any_of(painted.begin(), painted.end(),
+                                            [](auto& p) {
+                                                return p.text.contains(
+                                                    QStringLiteral(", vertical \u00d7"));
+                                            }))
+                        << where << ": the vertical scale is not stated";
+                }
             }
         }
     }

@@ -180,6 +180,11 @@ TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
     EXPECT_FLOAT_EQ(
         static_cast<float>(o["isovalue"].toDouble()),
         test::workbenchDefaultIsovalue(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "t"));
+    // The vertical scale the figure states: 850 to 500 hPa (1457 to 5574 m in the standard
+    // atmosphere) drawn 0.2 high under the 357 degrees of longitude the file spans (the
+    // longer axis spans the box's 1), about 1900 times true.
+    EXPECT_NEAR(o["vertical_scale"].toDouble(), 0.2 * 357.0 * 111195.08 / (5574.0 - 1457.0), 5.0);
+    EXPECT_EQ(o["vertical_heights"].toString(), "standard atmosphere");
 }
 
 // --view top is the map view: north up, from straight above, orthographic; the same picture as
