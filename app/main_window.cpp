@@ -98,6 +98,7 @@ MainWindow::MainWindow(QWidget* parent)
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     createDocks();
     createStatusBar();
+    createVariableChoice();
     createToolbar();
     createRenderDocks();
     createAnimation();
@@ -466,6 +467,7 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(engine::ensembleFacts(*m_overview));
+    offerVariables();
     m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
                            m_overview->streamed);
     QStringList times;

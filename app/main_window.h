@@ -228,6 +228,14 @@ private:
     void setPlaneBox();
     void updatePlaneBox();
     void createStatusBar();
+    // The Ensemble panel's choice of another variable of the files (main_window_variable.cpp).
+    struct VariableChoices {
+        QStringList names;
+        QString current;
+    };
+    void createVariableChoice();
+    void offerVariables();
+    workbench::BackgroundJob<VariableChoices> m_variableProbe{this};
     // main_window_panels.cpp
     void createPanels();
     void arrangeDefaultLayout();

@@ -30,6 +30,7 @@ EnsembleFacts ensembleFacts(const EnsembleOverview& overview) {
     EnsembleFacts facts;
     facts.source = QString::fromStdString(e.source);
     facts.variable = QString::fromStdString(e.variable);
+    facts.variableName = facts.variable;
     if (!e.longName.empty()) facts.variable += QStringLiteral(" (%1)").arg(e.longName.c_str());
     facts.units = QString::fromStdString(e.units);
     facts.memberDimension = QString::fromStdString(e.memberDimension);

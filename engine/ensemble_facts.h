@@ -12,7 +12,8 @@ namespace ensil::engine {
 // The plain facts the info panel and `ensil info` show about what is loaded.
 struct EnsembleFacts {
     QString source;
-    QString variable;  // "wind_speed (Wind speed)"
+    QString variable;      // "wind_speed (Wind speed)"
+    QString variableName;  // "wind_speed": as a file names it
     QString units;
     QString memberDimension;
     int members = 0;

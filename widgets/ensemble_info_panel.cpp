@@ -1,5 +1,6 @@
 #include "widgets/ensemble_info_panel.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -20,13 +21,33 @@ EnsembleInfoPanel::EnsembleInfoPanel(QWidget* parent)
 
 void EnsembleInfoPanel::showMessage(const QString& message) {
     while (m_form->rowCount() > 0) m_form->removeRow(0);
+    m_variableChoice = nullptr;  // deleted with its row
+    m_showingFacts = false;
     m_message->setText(message);
     m_message->setVisible(true);
 }
 
 void EnsembleInfoPanel::showFacts(const engine::EnsembleFacts& facts) {
+    m_facts = facts;
+    // Choices of other files do not carry over to these.
+    if (!m_variables.contains(facts.variableName)) {
+        m_variables.clear();
+        m_currentVariable.clear();
+    }
+    showRows();
+}
+
+void EnsembleInfoPanel::setVariableChoices(const QStringList& names, const QString& current) {
+    m_variables = names;
+    m_currentVariable = current;
+    if (m_showingFacts) showRows();
+}
+
+void EnsembleInfoPanel::showRows() {
+    const engine::EnsembleFacts& facts = m_facts;
     showMessage(QString());
     m_message->setVisible(false);
+    m_showingFacts = true;
     const auto row = [this](const QString& label, const QString& value) {
         auto* field = new QLabel(value, this);
         field->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -34,7 +55,21 @@ void EnsembleInfoPanel::showFacts(const engine::EnsembleFacts& facts) {
         m_form->addRow(label, field);
     };
     row(tr("Source"), facts.source);
-    row(tr("Variable"), facts.variable);
+    if (m_variables.size() >= 2 && m_variables.contains(facts.variableName)) {
+        m_variableChoice = new QComboBox(this);
+        m_variableChoice->addItems(m_variables);
+        m_variableChoice->setCurrentText(facts.variableName);
+        m_variableChoice->setToolTip(
+            tr("%1\nAnother variable of the files opens in its place.").arg(facts.variable));
+        // Only a user's pick: filling the list says nothing.
+        connect(m_variableChoice, &QComboBox::activated, this, [this](int index) {
+            const QString name = m_variableChoice->itemText(index);
+            if (name != m_facts.variableName) emit variableChosen(name);
+        });
+        m_form->addRow(tr("&Variable"), m_variableChoice);
+    } else {
+        row(tr("Variable"), facts.variable);
+    }
     row(tr("Units"), facts.units);
     row(tr("Members"), tr("%1 (dimension '%2')").arg(facts.members).arg(facts.memberDimension));
     row(tr("Grid"), facts.gridSize);
@@ -51,8 +86,13 @@ QString EnsembleInfoPanel::text() const {
     for (int r = 0; r < m_form->rowCount(); ++r) {
         auto* label = m_form->itemAt(r, QFormLayout::LabelRole);
         auto* field = m_form->itemAt(r, QFormLayout::FieldRole);
-        const auto labelText = label ? qobject_cast<QLabel*>(label->widget())->text() : QString();
-        const auto fieldText = field ? qobject_cast<QLabel*>(field->widget())->text() : QString();
+        const auto textOf = [](QLayoutItem* item) {
+            if (item == nullptr) return QString();
+            if (auto* box = qobject_cast<QComboBox*>(item->widget())) return box->currentText();
+            return qobject_cast<QLabel*>(item->widget())->text();
+        };
+        const QString labelText = textOf(label).remove(QLatin1Char('&'));  // a shortcut's mark
+        const QString fieldText = textOf(field);
         lines << labelText + QStringLiteral(": ") + fieldText;
     }
     return lines.join(QLatin1Char('\n'));
