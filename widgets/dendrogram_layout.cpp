@@ -54,6 +54,14 @@ DendrogramLayout::DendrogramLayout(const prep::MergeTree& tree)
         a.parent = b.parent = n + static_cast<int>(k);
     }
     m_top = std::max(m_nodes.back().height, highestFinite) * (1.0 + kHeadroom);
+    std::vector<double> heights;
+    for (int node = n; node < nodeCount(); ++node) heights.push_back(at(node).height);
+    if (heights.size() >= 2) {
+        std::partial_sort(heights.begin(), heights.begin() + 2, heights.end(), std::greater<>());
+        if (heights[1] > 0.0 && heights[0] > kBreakAbove * heights[1]) {
+            m_break = heights[1] * (1.0 + kHeadroom);
+        }
+    }
 }
 
 double DendrogramLayout::mergeHeight(int node) const { return at(node).mergeHeight; }

@@ -46,6 +46,13 @@ public:
     }
     // The drawn height of the root plus headroom: the top of the plot.
     [[nodiscard]] double topHeight() const { return m_top; }
+    // Where the height axis is broken (0: it is not): when the highest merge stands more than
+    // kBreakAbove times above the next (one far outlier joining last), a linear axis squeezes
+    // every other merge into the plot's bottom pixels, with the cut lines among them; the axis
+    // then runs linearly up to just above the second-highest merge over most of the plot, and
+    // the rest above a break (DendrogramFrame).
+    [[nodiscard]] double breakHeight() const { return m_break; }
+    static constexpr double kBreakAbove = 4.0;
 
     // Where the cut line for k clusters is drawn: midway between the last merge kept and the
     // first undone; for k = 1 between the root and the top. k is clamped to 1..N.
@@ -74,6 +81,7 @@ private:
     std::vector<int> m_order;
     std::vector<Node> m_nodes;
     double m_top = 1.0;
+    double m_break = 0.0;
 };
 
 // Maps dendrogram coordinates to pixels: x in leaf units times leafWidth, minus the scroll;
@@ -83,18 +91,34 @@ struct DendrogramFrame {
     double leafWidth = 10.0;  // pixels per leaf
     double scroll = 0.0;      // pixels scrolled to the right
     double topHeight = 1.0;
+    // Heights above this one are drawn above a break in the axis, in its top kAboveBreak of the
+    // plot (DendrogramLayout::breakHeight; 0: one linear axis), as the axis shows.
+    double breakHeight = 0.0;
+    static constexpr double kAboveBreak = 0.2;
 
     [[nodiscard]] double pixelX(double leafX) const {
         return plot.left() + leafX * leafWidth - scroll;
     }
+    // The fraction of the plot's height a height is drawn at, and back.
+    [[nodiscard]] double fractionOf(double height) const {
+        if (breakHeight <= 0.0 || breakHeight >= topHeight) return height / topHeight;
+        if (height <= breakHeight) return (1.0 - kAboveBreak) * height / breakHeight;
+        return 1.0 - kAboveBreak + kAboveBreak * (height - breakHeight) / (topHeight - breakHeight);
+    }
+    [[nodiscard]] double heightOf(double fraction) const {
+        if (breakHeight <= 0.0 || breakHeight >= topHeight) return fraction * topHeight;
+        if (fraction <= 1.0 - kAboveBreak) return fraction / (1.0 - kAboveBreak) * breakHeight;
+        return breakHeight +
+               (fraction - (1.0 - kAboveBreak)) / kAboveBreak * (topHeight - breakHeight);
+    }
     [[nodiscard]] double pixelY(double height) const {
-        return plot.bottom() - height / topHeight * plot.height();
+        return plot.bottom() - fractionOf(height) * plot.height();
     }
     [[nodiscard]] QPointF toPixel(double leafX, double height) const {
         return {pixelX(leafX), pixelY(height)};
     }
     [[nodiscard]] double heightAt(double y) const {
-        return (plot.bottom() - y) / plot.height() * topHeight;
+        return heightOf((plot.bottom() - y) / plot.height());
     }
 };
 

@@ -1,10 +1,12 @@
 #include "widgets/dendrogram_painter.h"
 
 #include <QFontMetricsF>
+#include <QObject>
 #include <QPainterPath>
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "gl/axis_ticks.h"
@@ -102,13 +104,38 @@ void drawAxis(QPainter& painter, const DendrogramFrame& frame, const DendrogramS
     const QFontMetricsF metrics(style.font);
     const double x = frame.plot.left();
     painter.drawLine(QPointF(x, frame.plot.top()), QPointF(x, frame.plot.bottom()));
-    // Round merge heights (1, 2, 2.5 or 5 times a power of ten), as on the view's axes.
-    for (const double h : gl::niceTicks(0.0, frame.topHeight, kTicks)) {
+    // Round merge heights (1, 2, 2.5 or 5 times a power of ten), as on the view's axes: below
+    // a break, of the heights there, and above it, of the heights beyond.
+    std::vector<double> ticks;
+    if (frame.breakHeight > 0.0) {
+        ticks = gl::niceTicks(0.0, frame.breakHeight, kTicks);
+        for (const double h : gl::niceTicks(frame.breakHeight, frame.topHeight, 2)) {
+            if (h > frame.breakHeight) ticks.push_back(h);
+        }
+    } else {
+        ticks = gl::niceTicks(0.0, frame.topHeight, kTicks);
+    }
+    double lastY = std::numeric_limits<double>::infinity();
+    for (const double h : ticks) {
         const double y = frame.pixelY(h);
+        if (lastY - y < metrics.height()) continue;  // too near the tick below
+        lastY = y;
         painter.drawLine(QPointF(x - kTickLength, y), QPointF(x, y));
         const QString label = QString::number(h, 'g', 3);
         const double w = metrics.horizontalAdvance(label);
         painter.drawText(QPointF(x - kTickLength - 2.0 - w, y + metrics.ascent() / 2.0), label);
+    }
+    // A break: the axis's line is interrupted by two slanted strokes, as on a printed chart.
+    if (frame.breakHeight > 0.0) {
+        const double y = frame.pixelY(frame.breakHeight);
+        painter.save();
+        painter.setPen(QPen(style.background, 3.0));
+        painter.drawLine(QPointF(x, y - 3.0), QPointF(x, y + 3.0));
+        painter.setPen(QPen(style.text, 1.0));
+        for (const double dy : {-3.0, 3.0}) {
+            painter.drawLine(QPointF(x - 4.0, y + dy + 2.0), QPointF(x + 4.0, y + dy - 2.0));
+        }
+        painter.restore();
     }
 }
 
@@ -225,6 +252,7 @@ DendrogramFrame dendrogramFrame(const DendrogramLayout& layout,
     frame.leafWidth = leafWidth;
     frame.scroll = scroll;
     frame.topHeight = layout.topHeight();
+    frame.breakHeight = layout.breakHeight();
     return frame;
 }
 

@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QFile>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QSvgRenderer>
@@ -405,4 +406,81 @@ TEST(DendrogramView, MarksTheBoxplotReadablyAtFiftyMembers) {
     EXPECT_GE(legend.top(), frame.plot.bottom());
     EXPECT_LE(legend.right(), ui::boxplotMarkCenter(frame, 0.5).x() - ui::boxplotMarkRadius(frame));
     EXPECT_TRUE(hasColourIn(image, legend, view.style().outlier));
+}
+
+// One far outlier (issue: a dendrogram 20 px tall): on a linear axis every other merge, and the
+// cut lines between them, would lie in the plot's bottom pixels. The axis breaks above the
+// second-highest merge: below, most of the plot for the bulk; above, the outlier's merge; and
+// each cut line can be grabbed apart from the next, however far the outlier.
+TEST(DendrogramLayout, AFarOutlierBreaksTheHeightAxisAndKeepsCutLinesApart) {
+    for (const double far : {100.0, 1e6}) {
+        const std::vector<double> outlier{0.0, 0.5, 1.1, 1.6, 2.3, 3.0, 3.4, far};
+        const ui::DendrogramLayout layout(test::treeOnALine(outlier));
+        ASSERT_GT(layout.breakHeight(), 0.0) << far;
+        // Just above the bulk's highest merge, below the outlier's.
+        EXPECT_GT(layout.breakHeight(), layout.height(layout.root() - 1));
+        EXPECT_LT(layout.breakHeight(), layout.height(layout.root()));
+
+        ui::DendrogramFrame frame;
+        frame.plot = QRectF(40, 10, 300, 200);
+        frame.topHeight = layout.topHeight();
+        const auto gap = [&](int k) {
+            return std::abs(frame.pixelY(layout.cutHeight(k)) -
+                            frame.pixelY(layout.cutHeight(k + 1)));
+        };
+        EXPECT_LT(gap(3), 4.0) << far << ": on one linear axis the cut lines nearly touch";
+        frame.breakHeight = layout.breakHeight();
+        for (int k = 1; k <= 4; ++k) EXPECT_GT(gap(k), 10.0) << far << " " << k;  // 2 grabs
+        // A drag reads heights back through the same axis, either side of the break.
+        for (const double h : {0.0, 0.7, 3.0, 0.5 * far}) {
+            EXPECT_NEAR(frame.heightAt(frame.pixelY(h)), h, 1e-9 * layout.topHeight());
+        }
+        for (int k = 1; k <= 4; ++k) {  // (below 5, merges at equal heights make cuts ambiguous)
+            EXPECT_EQ(layout.clustersAtHeight(frame.heightAt(frame.pixelY(layout.cutHeight(k)))),
+                      k);
+        }
+    }
+    // Evenly spread members read well on one axis.
+    EXPECT_EQ(ui::DendrogramLayout(test::treeOnALine({0, 1, 2, 3, 4, 5})).breakHeight(), 0.0);
+}
+
+TEST(DendrogramExport, ABrokenAxisLabelsTheBulksHeightsAndTheOutliers) {
+    workbench::MemberSelection s;
+    const std::vector<double> outlier{0.0, 0.5, 1.1, 1.6, 2.3, 3.0, 3.4, 100.0};
+    s.setMembers(test::figuresOnALine(outlier));
+    s.setTree(test::treeOnALine(outlier));
+    // Kept in the test output, to look at.
+    const QString path = QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/dendrogram_far_outlier.svg");
+    QString error;
+    ASSERT_TRUE(ui::writeDendrogramSvg(s, path, &error)) << error.toStdString();
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString svg = QString::fromUtf8(file.readAll());
+    // Round heights of the bulk (merges up to about 2) and of the outlier's (about 97).
+    EXPECT_TRUE(svg.contains(">1<") && svg.contains(">2<")) << "the bulk's heights";
+    EXPECT_TRUE(svg.contains(QRegularExpression(">(80|90|100|95)<"))) << "the outlier's height";
+}
+
+// In the view: with the axis broken by a far outlier, the default cut line is grabbed and
+// dragged across the bulk's merges by the mouse, as on any dendrogram.
+TEST(DendrogramView, WithAFarOutlierTheCutLineIsDraggedAcrossTheBulk) {
+    workbench::MemberSelection s;
+    const std::vector<double> outlier{0.0, 0.5, 1.1, 1.6, 2.3, 3.0, 3.4, 100.0};
+    s.setMembers(test::figuresOnALine(outlier));
+    s.setTree(test::treeOnALine(outlier));
+    s.setClusterCount(4);
+    ui::DendrogramView view(&s);
+    view.resize(600, 260);
+    showAndWait(view);
+    view.grab().save(QStringLiteral(ENSIL_TEST_OUTPUT_DIR "/dendrogram_far_outlier.png"));
+    const auto& layout = view.layout();
+    const ui::DendrogramFrame frame = view.frame();
+    ASSERT_GT(frame.breakHeight, 0.0);
+    const int x = static_cast<int>(frame.plot.right()) - 10;
+    const int from = static_cast<int>(std::lround(frame.pixelY(layout.cutHeight(4))));
+    QTest::mousePress(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, from));
+    const int to = static_cast<int>(std::lround(frame.pixelY(layout.cutHeight(3))));
+    QTest::mouseMove(view.viewport(), QPoint(x, to));
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, to));
+    EXPECT_EQ(s.clusterCount(), 3);
 }
