@@ -493,6 +493,26 @@ std::vector<double> NetcdfFile::readDoubles(const NcVariable& var) const {
     return values;
 }
 
+std::vector<std::string> NetcdfFile::readStrings(const NcVariable& var) const {
+    if (var.type != NC_CHAR || var.dimIds.size() != 2) {
+        throw Error(ErrorKind::InvalidArgument,
+                    "'" + m_path + "': '" + var.name + "' is not a 2D character variable");
+    }
+    const std::size_t rows = dimension(var.dimIds[0]).size;
+    const std::size_t length = dimension(var.dimIds[1]).size;
+    std::vector<char> text(rows * length);
+    if (!text.empty()) {
+        check(nc_get_var_text(m_id, var.id, text.data()), "read variable '" + var.name + "'");
+    }
+    std::vector<std::string> strings;
+    for (std::size_t r = 0; r < rows; ++r) {
+        std::string row(text.data() + r * length, length);
+        row.erase(row.find_last_not_of(std::string(" \0", 2)) + 1);
+        strings.push_back(std::move(row));
+    }
+    return strings;
+}
+
 std::vector<double> NetcdfFile::readDoubles(const NcVariable& var,
                                             const std::vector<std::size_t>& start,
                                             const std::vector<std::size_t>& count) const {

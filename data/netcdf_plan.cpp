@@ -97,8 +97,15 @@ std::optional<std::pair<const NcVariable*, const NcVariable*>> windComponents(
         if (sn == "eastward_wind" && u == nullptr) u = &var;
         if (sn == "northward_wind" && v == nullptr) v = &var;
     }
-    static constexpr std::array<std::pair<const char*, const char*>, 4> kNames{
-        {{"u", "v"}, {"U", "V"}, {"ua", "va"}, {"uwnd", "vwnd"}}};
+    // Grid-relative components (x_wind, y_wind: the Met Office's, on rotated or projected grids)
+    // give the same speed: a rotation keeps a vector's length.
+    for (const NcVariable& var : file.variables()) {
+        const std::string sn = file.text(var.id, "standard_name");
+        if ((sn == "x_wind" || sn == "grid_eastward_wind") && u == nullptr) u = &var;
+        if ((sn == "y_wind" || sn == "grid_northward_wind") && v == nullptr) v = &var;
+    }
+    static constexpr std::array<std::pair<const char*, const char*>, 5> kNames{
+        {{"u", "v"}, {"U", "V"}, {"ua", "va"}, {"uwnd", "vwnd"}, {"x_wind", "y_wind"}}};
     for (const auto& [un, vn] : kNames) {
         if (u != nullptr && v != nullptr) break;
         if (file.findVariable(un) != nullptr && file.findVariable(vn) != nullptr) {
@@ -228,6 +235,23 @@ std::string suggestMemberDimension(const NetcdfFile& file, const NcPlan& plan) {
     return text + "or open one file per member";
 }
 
+// WRF's T, the perturbation potential temperature (theta - 300 K), from which ensil derives the
+// potential temperature itself; null for files that are not WRF's or hold theta already.
+const NcVariable* wrfPerturbationTheta(const NetcdfFile& file) {
+    const NcVariable* t = file.findVariable("T");
+    if (t == nullptr || file.findVariable("theta") != nullptr ||
+        file.findVariable("THETA") != nullptr) {
+        return nullptr;
+    }
+    const std::string description = file.text(t->id, "description");
+    const std::vector<std::string> global = file.attributeNames(NC_GLOBAL);
+    const bool wrf = description.find("perturbation potential temperature") != std::string::npos ||
+                     std::find(global.begin(), global.end(), "MAP_PROJ") != global.end();
+    return wrf ? t : nullptr;
+}
+
+constexpr double kWrfThetaBase = 300.0;  // WRF's t0
+
 }  // namespace
 
 std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::string& memberDim) {
@@ -237,6 +261,8 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
         VariableInfo info;
         info.name = var.name;
         info.longName = file.text(var.id, "long_name");
+        // WRF says what a field is in `description`.
+        if (info.longName.empty()) info.longName = file.text(var.id, "description");
         info.standardName = file.text(var.id, "standard_name");
         info.units = file.text(var.id, "units");
         for (int id : var.dimIds) {
@@ -267,6 +293,20 @@ std::vector<VariableInfo> listVariables(const NetcdfFile& file, const std::strin
                                                 : "";
             list.push_back(std::move(info));
         }
+    }
+    if (const NcVariable* t = wrfPerturbationTheta(file)) {
+        const Analysis a = analyze(file, *t, memberDim);
+        VariableInfo info;
+        info.name = "theta";
+        info.longName = "potential temperature, WRF's T + 300 K, derived by ensil";
+        info.standardName = "air_potential_temperature";
+        info.units = "K";
+        info.derived = true;
+        for (int id : t->dimIds) info.dimensions.push_back(file.dimension(id).name);
+        info.usable = a.component.has_value();
+        if (a.component) info.levels = a.component->sizes[2];
+        info.whyNotUsable = a.component ? "" : "T " + a.whyNot;
+        list.push_back(std::move(info));
     }
     return list;
 }
@@ -314,7 +354,10 @@ NcPlan planVariable(const NetcdfFile& file, const DataSelection& selection, bool
     plan.derived = chosen->derived;
     plan.timeIndex = selection.timeIndex;
     std::vector<const NcVariable*> parts;
-    if (chosen->derived) {
+    if (chosen->derived && chosen->name == "theta") {
+        parts = {wrfPerturbationTheta(file)};
+        plan.offset = kWrfThetaBase;
+    } else if (chosen->derived) {
         const auto uv = windComponents(file);
         parts = {uv->first, uv->second};
     } else {
@@ -423,9 +466,12 @@ TimeSteps describeTimeSteps(const NetcdfFile& file, const NcPlan& plan) {
             calendar = file.text(coord->id, "calendar");
         }
     }
+    const std::vector<std::string> wrfTimes =
+        values.empty() ? wrfTimeLabels(file, *first) : std::vector<std::string>{};
     for (std::size_t i = 0; i < count; ++i) {
         std::optional<std::string> date;
         if (i < values.size()) date = formatCfTime(values[i], units, calendar);
+        if (!date && i < wrfTimes.size() && !wrfTimes[i].empty()) date = wrfTimes[i];
         steps.labels.push_back(date.value_or(std::to_string(i)));
     }
     return steps;
@@ -443,7 +489,14 @@ std::vector<std::string> memberNames(const NetcdfFile& file, const NcPlan& plan)
         units = file.text(coord->id, "units");
         calendar = file.text(coord->id, "calendar");
     }
+    // WRF names its times in Times(Time, DateStrLen), not in a coordinate.
+    const std::vector<std::string> wrfTimes =
+        values.empty() ? wrfTimeLabels(file, dim) : std::vector<std::string>{};
     for (std::size_t m = 0; m < dim.size; ++m) {
+        if (m < wrfTimes.size() && !wrfTimes[m].empty()) {
+            names[m] = wrfTimes[m];
+            continue;
+        }
         if (values.empty()) {
             // Without a coordinate the file names no member: the name is ensil's number, 1..N,
             // as the demo's, HDF5's and every output's (METHODS.md, numbers of members).

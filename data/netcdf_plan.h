@@ -26,6 +26,9 @@ struct NcPlan {
     std::string longName;
     std::string units;
     bool derived = false;
+    // Added to every value read: 300 K for the potential temperature derived from WRF's T (its
+    // perturbation from 300 K). 0 otherwise.
+    double offset = 0.0;
     std::vector<NcComponent> components;
     int memberDim = -1;  // dimension id, -1 when the file holds one member
     std::string memberReason;

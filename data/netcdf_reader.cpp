@@ -169,7 +169,11 @@ void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, 
     const NcComponent first = componentLayers(plan, plan.components.front(), grid.nz());
     readComponent(file, plan, first, member, out, scratch, firstLayer);
     destagger(first, grid, out);
-    if (!plan.derived) return;
+    if (plan.offset != 0.0) {
+        const auto offset = static_cast<float>(plan.offset);
+        for (float& v : out) v += offset;  // NaN stays NaN
+    }
+    if (plan.components.size() < 2) return;
     const NcComponent second = componentLayers(plan, plan.components.at(1), grid.nz());
     readComponent(file, plan, second, member, part, scratch, firstLayer);
     destagger(second, grid, part);

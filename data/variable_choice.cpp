@@ -34,6 +34,8 @@ Quantity quantityOf(const std::string& nameIn, const std::string& standardNameIn
     const std::string name = lower(nameIn);
     const std::string standard = lower(standardNameIn);
     const std::string longName = lower(longNameIn);
+    // A perturbation from a base state (WRF's T, P, PH) is not the quantity a figure shows.
+    if (contains(longName, "perturbation")) return Quantity::Other;
     // Names as ECMWF (cfgrib's short names), NCEP, CMIP, WRF and the CF standard names give them.
     if (oneOf(name, {"wind_speed", "ws", "wspd", "ff", "wind", "windspeed"}) ||
         standard == "wind_speed" || contains(longName, "wind speed")) {

@@ -27,6 +27,28 @@ std::string numberText(double value) {
 
 }  // namespace
 
+std::vector<std::string> wrfTimeLabels(const NetcdfFile& file, const NcDimension& dim) {
+    const NcVariable* times = file.findVariable("Times");
+    if (times == nullptr || times->type != NC_CHAR || times->dimIds.size() != 2 ||
+        times->dimIds.front() != dim.id) {
+        return {};
+    }
+    std::vector<std::string> labels;
+    try {
+        labels = file.readStrings(*times);
+    } catch (const Error&) {
+        return {};
+    }
+    for (std::string& label : labels) {
+        // "YYYY-MM-DD_hh:mm:ss": the date and time joined by T, whole minutes without seconds.
+        if (label.size() == 19 && label[10] == '_') {
+            label[10] = 'T';
+            if (label.ends_with(":00")) label.resize(16);
+        }
+    }
+    return labels;
+}
+
 bool isWrfHorizontalDimension(const std::string& name) {
     return name == "west_east" || name == "west_east_stag" || name == "south_north" ||
            name == "south_north_stag";

@@ -8,6 +8,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "data/grid.h"
 #include "data/grid_mapping.h"
@@ -42,6 +44,11 @@ std::optional<WrfProjection> readWrfProjection(const NetcdfFile& file);
 
 // Whether a dimension is one of WRF's horizontal ones (west_east, south_north, *_stag).
 bool isWrfHorizontalDimension(const std::string& name);
+
+// WRF's Times(Time, DateStrLen) along `dim`, as ensil writes dates: "2016-10-06_12:00:00" is
+// "2016-10-06T12:00". Empty when the file has no such variable along that dimension (or it
+// cannot be read).
+std::vector<std::string> wrfTimeLabels(const NetcdfFile& file, const NcDimension& dim);
 
 // Places the grid's x and y (indices along west_east and south_north, or their _stag forms)
 // on the map of a usable projection. The anchor is the file's own first mass point

@@ -56,6 +56,13 @@ public:
         for (std::size_t i = 0; i < count; ++i) values[i] = fill(i);
         EXPECT_EQ(nc_put_var_double(m_id, var, values.data()), NC_NOERR);
     }
+    // Ends definitions and writes a character variable's rows, each padded to its length.
+    void writeRows(int var, const std::vector<std::string>& rows, std::size_t length) {
+        endDefinitions();
+        std::string all;
+        for (const std::string& row : rows) all += row + std::string(length - row.size(), ' ');
+        EXPECT_EQ(nc_put_var_text(m_id, var, all.data()), NC_NOERR);
+    }
     void endDefinitions() {
         if (m_defining) {
             EXPECT_EQ(nc_enddef(m_id), NC_NOERR);

@@ -29,12 +29,12 @@ std::string chosen(const std::vector<data::VariableInfo>& variables) {
 }
 }  // namespace
 
-TEST(VariableChoice, WrfOpensOnTemperatureNotOnStaggeredVerticalVelocity) {
+TEST(VariableChoice, WrfOpensOnPotentialTemperatureNotOnStaggeredVerticalVelocity) {
     const std::vector<std::string> mass{"Time", "bottom_top", "south_north", "west_east"};
     const std::vector<std::string> wStag{"Time", "bottom_top_stag", "south_north", "west_east"};
     const std::vector<std::string> uStag{"Time", "bottom_top", "south_north", "west_east_stag"};
     // In wrfout's order; W has the most levels (bottom_top_stag is one longer).
-    const std::vector<data::VariableInfo> wrf{
+    std::vector<data::VariableInfo> wrf{
         field("U", 39, uStag, "x-wind component"),
         field("W", 40, wStag, "z-wind component"),
         field("PH", 40, wStag, "perturbation geopotential"),
@@ -42,7 +42,13 @@ TEST(VariableChoice, WrfOpensOnTemperatureNotOnStaggeredVerticalVelocity) {
         field("P", 39, mass, "perturbation pressure"),
         field("QVAPOR", 39, mass, "Water vapor mixing ratio"),
     };
-    EXPECT_EQ(chosen(wrf), "T");
+    // T, P and PH are perturbations from a base state; humidity is the physical field left.
+    EXPECT_EQ(chosen(wrf), "QVAPOR");
+    // The potential temperature ensil derives from T (the NetCDF reader lists it last).
+    wrf.push_back(field("theta", 39, mass,
+                        "potential temperature, WRF's T + 300 K, derived by ensil",
+                        "air_potential_temperature"));
+    EXPECT_EQ(chosen(wrf), "theta");
 }
 
 TEST(VariableChoice, GfsOpensOnWindSpeedThenTemperatureNeverOnGeopotentialFirst) {
