@@ -8,16 +8,11 @@
 #include <regex>
 #include <string_view>
 
+#include "data/ascii_case.h"
 #include "data/grid.h"
 
 namespace ensil::data {
 namespace {
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
 
 template <std::size_t N>
 bool oneOf(const std::string& value, const std::array<std::string_view, N>& options) {
@@ -51,12 +46,12 @@ constexpr std::array<std::string_view, 7> kMemberNames{"number", "member", "memb
                                                        "ens",    "ens0",   "ensemble"};
 
 std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVariable& coord) {
-    const std::string axis = lower(file.text(coord.id, "axis"));
+    const std::string axis = asciiLower(file.text(coord.id, "axis"));
     if (axis == "x") return AxisRole::X;
     if (axis == "y") return AxisRole::Y;
     if (axis == "z") return AxisRole::Z;
     if (axis == "t") return AxisRole::Time;
-    const std::string standard = lower(file.text(coord.id, "standard_name"));
+    const std::string standard = asciiLower(file.text(coord.id, "standard_name"));
     if (standard == "longitude" || standard == "grid_longitude" ||
         standard == "projection_x_coordinate") {
         return AxisRole::X;
@@ -74,7 +69,7 @@ std::optional<AxisRole> roleFromAttributes(const NetcdfFile& file, const NcVaria
         standard.starts_with("atmosphere_") || standard.starts_with("ocean_")) {
         return AxisRole::Z;
     }
-    const std::string units = lower(file.text(coord.id, "units"));
+    const std::string units = asciiLower(file.text(coord.id, "units"));
     if (units == "degrees_east" || units == "degree_east" || units == "degrees_e") {
         return AxisRole::X;
     }
@@ -92,7 +87,7 @@ AxisRole classifyDimension(const NetcdfFile& file, const NcDimension& dim) {
     if (const NcVariable* coord = file.coordinateVariable(dim)) {
         if (auto role = roleFromAttributes(file, *coord)) return *role;
     }
-    const std::string name = lower(dim.name);
+    const std::string name = asciiLower(dim.name);
     if (oneOf(name, kXNames)) return AxisRole::X;
     if (oneOf(name, kYNames)) return AxisRole::Y;
     if (oneOf(name, kZNames)) return AxisRole::Z;
@@ -122,7 +117,7 @@ MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariabl
     }
     for (int id : var.dimIds) {
         const NcDimension& dim = file.dimension(id);
-        if (oneOf(lower(dim.name), kMemberNames)) {
+        if (oneOf(asciiLower(dim.name), kMemberNames)) {
             return {&dim, "dimension named '" + dim.name + "'"};
         }
     }
@@ -131,7 +126,7 @@ MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariabl
 
 std::optional<std::string> formatCfTime(double value, const std::string& units,
                                         const std::string& calendar) {
-    const std::string cal = lower(calendar);
+    const std::string cal = asciiLower(calendar);
     if (!cal.empty() && cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") {
         return std::nullopt;
     }
@@ -140,7 +135,7 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
         std::regex::icase);
     std::smatch m;
     if (!std::regex_match(units, m, pattern) || !std::isfinite(value)) return std::nullopt;
-    const std::string unit = lower(m[1].str());
+    const std::string unit = asciiLower(m[1].str());
     const double secondsPerUnit = unit.starts_with("second")   ? 1.0
                                   : unit.starts_with("minute") ? 60.0
                                   : unit.starts_with("hour")   ? 3600.0

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "data/ascii_case.h"
 #include "data/error.h"
 
 namespace ensil::data {
@@ -30,18 +31,10 @@ double Axis::valueAt(double index) const {
     return values[i] + f * (values[i + 1] - values[i]);
 }
 
-namespace {
-std::string lowerUnits(const std::string& units) {
-    std::string u;
-    for (const char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return u;
-}
-}  // namespace
-
 bool isPressureUnit(const std::string& units) { return hectopascalsPer(units) > 0.0; }
 
 double hectopascalsPer(const std::string& units) {
-    const std::string u = lowerUnits(units);
+    const std::string u = asciiLower(units);
     if (u == "pa") return 0.01;
     if (u == "hpa" || u == "mbar" || u == "millibar" || u == "millibars" || u == "mb") return 1.0;
     if (u == "kpa") return 10.0;
@@ -51,7 +44,7 @@ double hectopascalsPer(const std::string& units) {
 }
 
 double metresPer(const std::string& units) {
-    const std::string u = lowerUnits(units);
+    const std::string u = asciiLower(units);
     if (u == "m" || u == "meters" || u == "metres" || u == "meter" || u == "metre") return 1.0;
     if (u == "km" || u == "kilometers" || u == "kilometres") return 1000.0;
     return 0.0;

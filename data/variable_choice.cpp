@@ -5,14 +5,10 @@
 #include <cctype>
 #include <tuple>
 
+#include "data/ascii_case.h"
+
 namespace ensil::data {
 namespace {
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 bool oneOf(const std::string& word, std::initializer_list<const char*> words) {
     return std::any_of(words.begin(), words.end(), [&word](const char* w) { return word == w; });
@@ -24,16 +20,16 @@ bool contains(const std::string& text, const char* part) {
 
 bool staggered(const VariableInfo& v) {
     return std::any_of(v.dimensions.begin(), v.dimensions.end(),
-                       [](const std::string& d) { return lower(d).ends_with("_stag"); });
+                       [](const std::string& d) { return asciiLower(d).ends_with("_stag"); });
 }
 
 }  // namespace
 
 Quantity quantityOf(const std::string& nameIn, const std::string& standardNameIn,
                     const std::string& longNameIn) {
-    const std::string name = lower(nameIn);
-    const std::string standard = lower(standardNameIn);
-    const std::string longName = lower(longNameIn);
+    const std::string name = asciiLower(nameIn);
+    const std::string standard = asciiLower(standardNameIn);
+    const std::string longName = asciiLower(longNameIn);
     // A perturbation from a base state (WRF's T, P, PH) is not the quantity a figure shows.
     if (contains(longName, "perturbation")) return Quantity::Other;
     // Names as ECMWF (cfgrib's short names), NCEP, CMIP, WRF and the CF standard names give them.

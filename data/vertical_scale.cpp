@@ -5,6 +5,8 @@
 #include <cmath>
 #include <string>
 
+#include "data/ascii_case.h"
+
 namespace ensil::data {
 namespace {
 
@@ -13,8 +15,7 @@ namespace {
 constexpr double kMetresPerDegree = 6371008.8 * 3.14159265358979323846 / 180.0;
 
 bool isDegreeUnit(const std::string& units) {
-    std::string u;
-    for (const char c : units) u += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string u = asciiLower(units);
     return u.starts_with("degree") || u == "deg";
 }
 

@@ -11,16 +11,11 @@
 #include <fstream>
 #include <limits>
 
+#include "data/ascii_case.h"
 #include "data/error.h"
 
 namespace ensil::data::vtk {
 namespace {
-
-std::string lower(std::string text) {
-    std::ranges::transform(text, text.begin(),
-                           [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 // Legacy files write spaces and other special characters in names as %XX.
 std::string decodeName(const std::string& text) {
@@ -213,7 +208,7 @@ void Scanner::skipMetadata() {
     while (std::getline(m_in, text)) {
         if (!text.empty() && text.back() == '\r') text.pop_back();
         if (text.empty()) return;
-        if (lower(text).starts_with("component_names")) {
+        if (asciiLower(text).starts_with("component_names")) {
             for (std::size_t c = 0; c < m_components; ++c) {
                 if (!std::getline(m_in, text)) return;
             }
@@ -226,7 +221,7 @@ void Scanner::skipMetadata() {
 bool Scanner::metadataFollows() {
     const std::streampos at = m_in.tellg();
     std::string word;
-    if (token(word) && lower(word) == "metadata") {
+    if (token(word) && asciiLower(word) == "metadata") {
         skipMetadata();
         return true;
     }
@@ -254,7 +249,7 @@ void Scanner::fieldArrays(LegacyStructure* s, std::size_t arrays) {
         if (name == "NULL_ARRAY") continue;
         const auto components = count("the component count of '" + name + "'");
         const auto tuples = count("the tuple count of '" + name + "'");
-        const std::string type = lower(need("the type of '" + name + "'"));
+        const std::string type = asciiLower(need("the type of '" + name + "'"));
         recordAndSkip(s, name, type, components, tuples);
         metadataFollows();  // as vtkDataReader looks for it: after every array
     }
@@ -282,7 +277,7 @@ void Scanner::geometry(LegacyStructure& s, const std::string& keyword) {
         const auto axis = static_cast<std::size_t>(keyword[0] - 'x');
         if (axis > 2) fail("has an unknown keyword '" + keyword + "'");
         const auto values = count(keyword + " count");
-        const std::string type = lower(need(keyword + " type"));
+        const std::string type = asciiLower(need(keyword + " type"));
         s.coordinates[axis] = readValues(type, values, keyword);
         m_components = 1;
     } else if (keyword == "field") {
@@ -309,12 +304,12 @@ void Scanner::attribute(LegacyStructure& s, const std::string& keyword) {
         fieldArrays(record, count("field array count"));
     } else if (keyword == "scalars") {
         const std::string name = decodeName(need("a scalar array name"));
-        const std::string type = lower(need("the type of '" + name + "'"));
-        std::string next = lower(need("LOOKUP_TABLE"));
+        const std::string type = asciiLower(need("the type of '" + name + "'"));
+        std::string next = asciiLower(need("LOOKUP_TABLE"));
         std::size_t count = 1;
         if (next != "lookup_table") {
             count = static_cast<std::size_t>(std::max(1, std::atoi(next.c_str())));
-            next = lower(need("LOOKUP_TABLE"));
+            next = asciiLower(need("LOOKUP_TABLE"));
         }
         if (next != "lookup_table") fail("has no LOOKUP_TABLE after scalars '" + name + "'");
         need("a lookup table name");
@@ -330,10 +325,10 @@ void Scanner::attribute(LegacyStructure& s, const std::string& keyword) {
     } else if (keyword == "texture_coordinates") {
         const std::string name = decodeName(need("a texture coordinate name"));
         const auto dim = count("the texture coordinate dimension");
-        recordAndSkip(record, name, lower(need("the type of '" + name + "'")), dim, m_tuples);
+        recordAndSkip(record, name, asciiLower(need("the type of '" + name + "'")), dim, m_tuples);
     } else if (const std::size_t components = fixedComponents(keyword); components > 0) {
         const std::string name = decodeName(need("an array name"));
-        recordAndSkip(record, name, lower(need("the type of '" + name + "'")), components,
+        recordAndSkip(record, name, asciiLower(need("the type of '" + name + "'")), components,
                       m_tuples);
     } else {
         fail("has an unknown keyword '" + keyword + "' among its point and cell data");
@@ -343,14 +338,14 @@ void Scanner::attribute(LegacyStructure& s, const std::string& keyword) {
 LegacyStructure Scanner::scan() {
     LegacyStructure s;
     if (!line().starts_with("# vtk DataFile")) fail("does not start with '# vtk DataFile'");
-    line();                                                     // the title
-    const std::string format = lower(need("ASCII or BINARY"));  // blank lines may come first
+    line();                                                          // the title
+    const std::string format = asciiLower(need("ASCII or BINARY"));  // blank lines may come first
     if (!format.starts_with("ascii") && !format.starts_with("binary")) {
         fail("says '" + format + "' where ASCII or BINARY should be");
     }
     s.binary = format.starts_with("binary");
     m_binary = s.binary;
-    if (lower(need("DATASET")) != "dataset") fail("has no DATASET line");
+    if (asciiLower(need("DATASET")) != "dataset") fail("has no DATASET line");
     std::string keyword = need("the dataset type");
     std::ranges::transform(keyword, keyword.begin(),
                            [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -358,7 +353,7 @@ LegacyStructure Scanner::scan() {
     if (s.dataset != "STRUCTURED_POINTS" && s.dataset != "RECTILINEAR_GRID") return s;
     bool attributes = false;
     while (token(keyword)) {
-        keyword = lower(keyword);
+        keyword = asciiLower(keyword);
         if (keyword == "point_data" || keyword == "cell_data") {
             attributes = true;
             m_pointSection = keyword == "point_data";

@@ -80,15 +80,26 @@ SmallDemo smallDemo(std::size_t members) {
 }
 
 constexpr int kWaitMs = 60000;  // an upper bound for a loaded CI machine, not a pace
-}  // namespace
 
-TEST(IsovalueSession, ShowsTheSurfacesAndGivesTheMembersTheirClustersWithoutAWindow) {
+// A controller with its display, selection and a cache of its own, as the workbench has them.
+class IsovalueSessionTest : public ::testing::Test {
+protected:
+    // Gives the controller a small demo of `members` members.
+    void load(std::size_t members) {
+        const SmallDemo demo = smallDemo(members);
+        session.setEnsemble(demo.ensemble, demo.moments, "demo-" + std::to_string(members));
+    }
+
     const test::TempDir cache;
     RecordingDisplay display;
     workbench::MemberSelection selection;
-    workbench::IsovalueSession session(&display, &selection, QString::fromStdString(cache.path()));
-    const SmallDemo demo = smallDemo(6);
-    session.setEnsemble(demo.ensemble, demo.moments, "demo-6");
+    workbench::IsovalueSession session{&display, &selection, QString::fromStdString(cache.path())};
+};
+
+}  // namespace
+
+TEST_F(IsovalueSessionTest, ShowsTheSurfacesAndGivesTheMembersTheirClustersWithoutAWindow) {
+    load(6);
     // The members are known at once, clustered as the workbench opens data (about half of 6).
     ASSERT_EQ(selection.memberCount(), 6);
     EXPECT_EQ(selection.requestedClusterCount(), session::defaultClusters(6));
@@ -126,13 +137,8 @@ TEST(IsovalueSession, ShowsTheSurfacesAndGivesTheMembersTheirClustersWithoutAWin
     EXPECT_EQ(display.interactions, 0);
 }
 
-TEST(IsovalueSession, ANewerIsovalueReplacesAnOlderOneStillBeingBuilt) {
-    const test::TempDir cache;
-    RecordingDisplay display;
-    workbench::MemberSelection selection;
-    workbench::IsovalueSession session(&display, &selection, QString::fromStdString(cache.path()));
-    const SmallDemo demo = smallDemo(4);
-    session.setEnsemble(demo.ensemble, demo.moments, "demo-4");
+TEST_F(IsovalueSessionTest, ANewerIsovalueReplacesAnOlderOneStillBeingBuilt) {
+    load(4);
     QSignalSpy finished(&session, &workbench::IsovalueSession::finished);
     session.setIsovalue(25.0F, 1.0F);
     session.setIsovalue(35.0F, 1.0F);
@@ -146,13 +152,8 @@ TEST(IsovalueSession, ANewerIsovalueReplacesAnOlderOneStillBeingBuilt) {
     }
 }
 
-TEST(IsovalueSession, AScrubShowsPreviewsAsMotionAndItsReleaseEndsOnTheFullSurfaces) {
-    const test::TempDir cache;
-    RecordingDisplay display;
-    workbench::MemberSelection selection;
-    workbench::IsovalueSession session(&display, &selection, QString::fromStdString(cache.path()));
-    const SmallDemo demo = smallDemo(4);
-    session.setEnsemble(demo.ensemble, demo.moments, "demo-4");
+TEST_F(IsovalueSessionTest, AScrubShowsPreviewsAsMotionAndItsReleaseEndsOnTheFullSurfaces) {
+    load(4);
     QSignalSpy finished(&session, &workbench::IsovalueSession::finished);
     session.setIsovalue(30.0F, 1.0F);
     ASSERT_TRUE(finished.wait(kWaitMs));
