@@ -500,6 +500,14 @@ std::vector<std::string> NetcdfFile::readStrings(const NcVariable& var) const {
     }
     const std::size_t rows = dimension(var.dimIds[0]).size;
     const std::size_t length = dimension(var.dimIds[1]).size;
+    // Validated before allocating: a header may declare sizes its file never holds.
+    constexpr std::size_t kMostBytes = std::size_t{16} << 20;
+    if (length != 0 && rows > kMostBytes / length) {
+        throw Error(ErrorKind::InvalidArgument, "'" + m_path + "': '" + var.name + "' holds " +
+                                                    std::to_string(rows) + " strings of " +
+                                                    std::to_string(length) +
+                                                    " characters, more than ensil reads as text");
+    }
     std::vector<char> text(rows * length);
     if (!text.empty()) {
         check(nc_get_var_text(m_id, var.id, text.data()), "read variable '" + var.name + "'");

@@ -62,7 +62,7 @@ public:
     [[nodiscard]] std::vector<double> readDoubles(const NcVariable& var) const;
     // The rows of a 2D character variable (n, length) as strings, trailing blanks and NULs
     // dropped: WRF's Times(Time, DateStrLen). Throws Error(CorruptFile), and
-    // Error(InvalidArgument) for a variable of another type or shape.
+    // Error(InvalidArgument) for a variable of another type or shape, or of more than 16 MiB.
     [[nodiscard]] std::vector<std::string> readStrings(const NcVariable& var) const;
     // Values of the hyperslab start .. start + count of a variable as doubles. Throws
     // Error(CorruptFile).
