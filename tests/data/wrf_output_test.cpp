@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "data/ensemble_reader.h"
+#include "data/error.h"
+#include "data/netcdf_file.h"
 #include "tests/data/netcdf_test_file.h"
 #include "tests/support/temp_dir.h"
 
@@ -107,4 +109,35 @@ TEST(WindSpeed, DerivedFromGridRelativeXAndYWind) {
     EXPECT_EQ(e.variable, "wind_speed");  // the default: wind speed first
     ASSERT_EQ(e.memberCount(), 2U);
     EXPECT_FLOAT_EQ(e.members[1].values[5], 5.0F);
+}
+
+// A header may declare a Times larger than anything a file holds: it is not read (nor allocated),
+// and the members keep ensil's numbers.
+TEST(WrfTimes, ATimesDeclaredHugeIsLeftUnreadAndTheMembersAreNumbered) {
+    const test::TempDir dir;
+    const std::string path = dir.file("wrfout_huge_times");
+    {
+        test::NcTestFile f(path);
+        const int time = f.dim("Time", 3);
+        const int length = f.dim("DateStrLen", 20'000'000);  // 60 MB of text, never written
+        const int z = f.dim("bottom_top", 2);
+        const int y = f.dim("south_north", 2);
+        const int x = f.dim("west_east", 2);
+        (void)f.variable("Times", NC_CHAR, {time, length});
+        const int t = f.variable("T", NC_FLOAT, {time, z, y, x});
+        f.write(t, 24, [](std::size_t i) { return static_cast<double>(i); });
+    }
+    const data::NetcdfFile file(path);
+    try {
+        (void)file.readStrings(*file.findVariable("Times"));
+        ADD_FAILURE() << "60 MB of declared text were read";
+    } catch (const data::Error& e) {
+        EXPECT_EQ(e.kind(), data::ErrorKind::InvalidArgument);
+        EXPECT_NE(std::string(e.what()).find("'Times' holds 3 strings of 20000000 characters"),
+                  std::string::npos)
+            << e.what();
+    }
+    const data::EnsembleDescription d =
+        data::describeEnsemble({.paths = {path}, .memberDimension = "Time"});
+    EXPECT_EQ(d.memberNames, (std::vector<std::string>{"member 1", "member 2", "member 3"}));
 }
