@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <glm/common.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
@@ -77,5 +78,12 @@ inline std::vector<MemberAppearance> clusterAppearance(const std::vector<int>& l
 }
 
 inline constexpr glm::vec3 kMeanSurfaceColor{0.62F, 0.62F, 0.62F};
+
+// A member that steps back (the others selected, or the contour boxplot's band shown): its
+// colour most of the way to the background. The renderer draws it so and the legend shows it so.
+inline constexpr float kSteppedBack = 0.6F;
+inline glm::vec3 steppedBack(const glm::vec3& colour, const glm::vec3& background) {
+    return glm::mix(colour, background, kSteppedBack);
+}
 
 }  // namespace ensil::gl

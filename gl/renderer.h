@@ -163,7 +163,6 @@ public:
         bool solid = true;
     };
     static constexpr int kMaxSolidSelection = 3;
-    static constexpr float kUnselectedDimming = 0.6F;
     // The rims where the surfaces meet the box (gl/mesh_rims.h), in pixels to either side of
     // the line: about the width of a silhouette at the default tau, wider when selected.
     static constexpr float kRimHalfWidth = 0.9F;

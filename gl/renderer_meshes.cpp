@@ -197,13 +197,11 @@ glm::vec3 Renderer::memberColour(std::size_t member, const MemberAppearance& a,
     glm::vec3 colour = a.color;
     // With a selection, the others step back: their colour goes most of the way to the
     // background.
-    if (selection.any && !a.selected) {
-        colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
-    }
+    if (selection.any && !a.selected) colour = steppedBack(colour, glm::vec3(m_background));
     // While the band is shown it and the outliers (dashed) are what the picture says; the
     // other members step back too, unless selected.
     if (m_scene.settings.showBand && !a.selected && !isOutlier(member)) {
-        colour = glm::mix(colour, glm::vec3(m_background), kUnselectedDimming);
+        colour = steppedBack(colour, glm::vec3(m_background));
     }
     if (static_cast<int>(member) == m_highlighted)
         colour = glm::mix(colour, glm::vec3(1.0F), 0.55F);

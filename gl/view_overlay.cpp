@@ -316,8 +316,10 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
         }
         for (const auto& [cluster, entry] : clusters) {
             const int n = entry.second;
+            // With the band shown the members (but its outliers and any selected) step back,
+            // and their swatch shows them so.
             overlay.legend.push_back(
-                {entry.first,
+                {in.band ? steppedBack(entry.first, in.background) : entry.first,
                  n == 0 ? QStringLiteral("Cluster %1 \u00b7 hidden").arg(cluster + 1)
                  : n == 1
                      ? QStringLiteral("Cluster %1 \u00b7 1 member").arg(cluster + 1)

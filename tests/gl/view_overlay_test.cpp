@@ -329,6 +329,21 @@ TEST(ViewOverlay, TheBandAndTheDashedEntriesHaveSwatchesOfTheirOwn) {
     EXPECT_EQ(entry(QStringLiteral("Plane curves (dashed)")), gl::Swatch::Dashed);
 }
 
+// With the contour boxplot's band shown the members step back towards the background (all but
+// the outliers and any selected); their legend entries once stayed bright. Both take the colour
+// from gl::steppedBack, which the renderer draws the members with.
+TEST(ViewOverlay, WithTheBandShownTheClusterSwatchesStepBackAsTheMembersDo) {
+    Scene scene;
+    gl::OverlayInput in = scene.input();
+    in.background = {0.11F, 0.12F, 0.14F};
+    const glm::vec3 bright = gl::computeOverlay(in).legend.front().color;
+    EXPECT_EQ(bright, gl::clusterColor(0));
+    in.band = true;
+    const glm::vec3 drawn = gl::computeOverlay(in).legend.front().color;
+    EXPECT_EQ(drawn, gl::steppedBack(gl::clusterColor(0), in.background));
+    EXPECT_LT(glm::length(drawn - in.background), 0.5F * glm::length(bright - in.background));
+}
+
 TEST(ViewOverlay, ADashedSwatchIsPaintedAsDashesAndTheBandTranslucent) {
     // One magenta entry painted each way; the pixels of the swatch's own colour are counted.
     const auto magentaPixels = [](gl::Swatch swatch, int* blended) {
