@@ -288,7 +288,7 @@ void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
         [params] { return engine::demoSourceKey(params); },
         [params](const std::stop_token& stop, const data::Progress& progress) {
             return engine::WorkbenchEnsemble{
-                data::makeDemoEnsemble(params, stop, progress).ensemble, {}};
+                data::makeDemoEnsemble(params, stop, progress).ensemble, {}, {}};
         });
 }
 
@@ -325,6 +325,7 @@ engine::EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
         [&](double f) { data::report(progress, 0.6 + 0.4 * f); }, sameData);
     overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
     overview.membersWithoutData = std::move(withoutData);
+    overview.variables = std::move(loaded.variables);
     if (loaded.streamed) {
         overview.streamed =
             std::make_shared<const engine::StreamedSource>(std::move(*loaded.streamed));

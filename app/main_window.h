@@ -229,13 +229,8 @@ private:
     void updatePlaneBox();
     void createStatusBar();
     // The Ensemble panel's choice of another variable of the files (main_window_variable.cpp).
-    struct VariableChoices {
-        QStringList names;
-        QString current;
-    };
     void createVariableChoice();
     void offerVariables();
-    workbench::BackgroundJob<VariableChoices> m_variableProbe{this};
     // main_window_panels.cpp
     void createPanels();
     void arrangeDefaultLayout();

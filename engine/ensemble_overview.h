@@ -30,6 +30,9 @@ struct EnsembleOverview {
     std::string sourceKey;  // identity of the data (with a content hash), for the mesh cache
     // Members with no valid value, left out of `ensemble` (data::leaveOutMembersWithoutData).
     std::vector<std::string> membersWithoutData;
+    // The files' variables that can be opened (engine::WorkbenchEnsemble::variables); empty
+    // for the demo.
+    std::vector<std::string> variables;
     // Set when the data are larger than the workbench's memory budget: `ensemble` is then a
     // thinned copy, and the surfaces come from the whole data read in slabs.
     std::shared_ptr<const StreamedSource> streamed;

@@ -54,8 +54,14 @@ std::optional<StreamedSource> streamedSourceFor(const data::DataSelection& selec
 WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::size_t memoryLimit,
                                    const std::stop_token& stop, const data::Progress& progress) {
     const data::EnsembleDescription d = data::describeEnsemble(selection);
+    std::vector<std::string> variables;
+    for (const data::VariableInfo& v : d.variables) {
+        if (v.usable) variables.push_back(v.name);
+    }
     std::optional<StreamedSource> source = streamedSourceFor(selection, d, memoryLimit);
-    if (!source) return {data::openEnsemble(selection, stop, progress), std::nullopt};
+    if (!source) {
+        return {data::openEnsemble(selection, stop, progress), std::nullopt, std::move(variables)};
+    }
     data::Ensemble copy =
         data::openThinnedEnsemble(selection, d, source->plan.slabs, source->stride, stop, progress);
     if (data::membersWithoutData(copy).size() == copy.members.size()) {
@@ -65,7 +71,7 @@ WorkbenchEnsemble readForWorkbench(const data::DataSelection& selection, std::si
                               " is missing (fill value or outside valid_range): there is "
                               "nothing to draw");
     }
-    return {std::move(copy), std::move(source)};
+    return {std::move(copy), std::move(source), std::move(variables)};
 }
 
 std::string howItOpens(const data::DataSelection& selection, const data::EnsembleDescription& d,

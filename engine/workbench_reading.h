@@ -32,6 +32,9 @@ struct StreamedSource {
 struct WorkbenchEnsemble {
     data::Ensemble ensemble;  // the whole ensemble, or the thinned copy when `streamed`
     std::optional<StreamedSource> streamed;
+    // The variables of the files that can be opened, by name (from the headers read anyway),
+    // for the Ensemble panel's choice of another.
+    std::vector<std::string> variables;
 };
 
 // The share of the budget the thinned copy may take with what the workbench builds from it (the

@@ -29,17 +29,11 @@ void EnsembleInfoPanel::showMessage(const QString& message) {
 
 void EnsembleInfoPanel::showFacts(const engine::EnsembleFacts& facts) {
     m_facts = facts;
-    // Choices of other files do not carry over to these.
-    if (!m_variables.contains(facts.variableName)) {
-        m_variables.clear();
-        m_currentVariable.clear();
-    }
     showRows();
 }
 
-void EnsembleInfoPanel::setVariableChoices(const QStringList& names, const QString& current) {
+void EnsembleInfoPanel::setVariableChoices(const QStringList& names) {
     m_variables = names;
-    m_currentVariable = current;
     if (m_showingFacts) showRows();
 }
 
@@ -57,13 +51,16 @@ void EnsembleInfoPanel::showRows() {
     row(tr("Source"), facts.source);
     if (m_variables.size() >= 2 && m_variables.contains(facts.variableName)) {
         m_variableChoice = new QComboBox(this);
-        m_variableChoice->addItems(m_variables);
-        m_variableChoice->setCurrentText(facts.variableName);
-        m_variableChoice->setToolTip(
-            tr("%1\nAnother variable of the files opens in its place.").arg(facts.variable));
+        // Each item's data is the variable's name; the one shown reads as the facts say it,
+        // with its long name.
+        for (const QString& name : m_variables) {
+            m_variableChoice->addItem(name == facts.variableName ? facts.variable : name, name);
+        }
+        m_variableChoice->setCurrentIndex(m_variableChoice->findData(facts.variableName));
+        m_variableChoice->setToolTip(tr("Another variable of the files opens in its place."));
         // Only a user's pick: filling the list says nothing.
         connect(m_variableChoice, &QComboBox::activated, this, [this](int index) {
-            const QString name = m_variableChoice->itemText(index);
+            const QString name = m_variableChoice->itemData(index).toString();
             if (name != m_facts.variableName) emit variableChosen(name);
         });
         m_form->addRow(tr("&Variable"), m_variableChoice);

@@ -21,9 +21,9 @@ public:
 
     void showFacts(const engine::EnsembleFacts& facts);
     void showMessage(const QString& message);  // e.g. while loading, or an error
-    // The variables the files hold that can be opened, by name, and the one shown: with two or
-    // more, the Variable row is a list (Alt+V). Empty: a plain line.
-    void setVariableChoices(const QStringList& names, const QString& current);
+    // The variables the files hold that can be opened, by name: with two or more, among them the
+    // one shown, the Variable row is a list (Alt+V). Empty: a plain line. Kept until set again.
+    void setVariableChoices(const QStringList& names);
     [[nodiscard]] QComboBox* variableChoice() const { return m_variableChoice; }
     // The panel's text as shown, line by line (for tests and copying).
     [[nodiscard]] QString text() const;
@@ -41,7 +41,6 @@ private:
     engine::EnsembleFacts m_facts;
     bool m_showingFacts = false;
     QStringList m_variables;
-    QString m_currentVariable;
 };
 
 }  // namespace ensil::ui

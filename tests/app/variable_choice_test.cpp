@@ -25,17 +25,17 @@ TEST(VariableChoice, TheEnsemblePanelOpensAnotherVariableOfTheFilesInPlace) {
     window.openFiles(selection);
     ASSERT_TRUE(loaded.wait(30000));
     EXPECT_EQ(window.overview()->ensemble->variable, "t");  // the default (variable_choice.h)
-    // The headers are read in the background: then the variable is a list of both.
+    // The variables of the file came with it: the variable is a list of both.
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return window.infoPanel()->variableChoice() != nullptr; }, 30000));
     QComboBox* choice = window.infoPanel()->variableChoice();
     ASSERT_EQ(choice->count(), 2);
-    EXPECT_EQ(choice->currentText(), "t");
+    EXPECT_EQ(choice->currentData().toString(), "t");  // the item reads "t (Temperature)"
     EXPECT_TRUE(window.infoPanel()->text().contains("Variable: t"))
         << window.infoPanel()->text().toStdString();
 
     // A pick, as a user makes it: the same file and time step, with z.
-    const int z = choice->findText(QStringLiteral("z"));
+    const int z = choice->findData(QStringLiteral("z"));
     ASSERT_GE(z, 0);
     choice->setCurrentIndex(z);
     emit choice->activated(z);
@@ -48,7 +48,7 @@ TEST(VariableChoice, TheEnsemblePanelOpensAnotherVariableOfTheFilesInPlace) {
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
             return window.infoPanel()->variableChoice() != nullptr &&
-                   window.infoPanel()->variableChoice()->currentText() == "z";
+                   window.infoPanel()->variableChoice()->currentData().toString() == "z";
         },
         30000));
 }
