@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include "data/ascii_case.h"
 #include "data/error.h"
@@ -29,6 +30,19 @@ double Axis::valueAt(double index) const {
     const auto i = std::min(static_cast<std::size_t>(t), values.size() - 2);
     const double f = t - static_cast<double>(i);
     return values[i] + f * (values[i + 1] - values[i]);
+}
+
+double Axis::indexOf(double value) const {
+    if (!std::isfinite(value) || value < minValue() || value > maxValue()) {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    // The axis is strictly monotonic: the first step whose far end passes the value holds it.
+    const bool increasing = values.back() > values.front();
+    for (std::size_t i = 0; i + 1 < values.size(); ++i) {
+        const double a = values[i], b = values[i + 1];
+        if (increasing ? value <= b : value >= b) return static_cast<double>(i) + (value - a) / (b - a);
+    }
+    return static_cast<double>(values.size() - 1);
 }
 
 bool isPressureUnit(const std::string& units) { return hectopascalsPer(units) > 0.0; }

@@ -26,6 +26,9 @@ struct Axis {
     [[nodiscard]] double maxValue() const;
     // The coordinate at a fractional index, linear between grid points, clamped to the axis.
     [[nodiscard]] double valueAt(double index) const;
+    // The fractional index of a coordinate, linear between grid points (the inverse of
+    // valueAt); NaN outside the axis or for a non-finite value.
+    [[nodiscard]] double indexOf(double value) const;
     // True when all steps are equal within 1 % of a step (float-stored coordinates jitter).
     [[nodiscard]] bool isUniform() const;
 };

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "data/error.h"
 
 using namespace ensil::data;
@@ -86,4 +88,22 @@ TEST(Grid, FewLevelsAreSaidWithWhatTheyMean) {
     const Grid four(makeUniformAxis("x", "", 0, 1, 4), makeUniformAxis("y", "", 0, 1, 3),
                     makeUniformAxis("z", "", 0, 1, kFewLevels));
     EXPECT_FALSE(fewLevelsWarning(four));
+}
+
+TEST(Axis, IndexOfIsTheInverseOfValueAt) {
+    // Pressure levels fall: the index still rises with them.
+    const Axis levels = axisOf("plev", {1000.0, 850.0, 500.0, 250.0});
+    EXPECT_DOUBLE_EQ(levels.indexOf(1000.0), 0.0);
+    EXPECT_DOUBLE_EQ(levels.indexOf(500.0), 2.0);
+    EXPECT_DOUBLE_EQ(levels.indexOf(675.0), 1.5);
+    EXPECT_DOUBLE_EQ(levels.indexOf(250.0), 3.0);
+    for (const double index : {0.25, 1.0, 1.8, 2.5}) {
+        EXPECT_NEAR(levels.indexOf(levels.valueAt(index)), index, 1e-12);
+    }
+    const Axis lon = makeUniformAxis("lon", "degrees_east", -10.0, 10.0, 21);
+    EXPECT_DOUBLE_EQ(lon.indexOf(0.5), 10.5);
+    // Outside the axis there is no index, not the nearest end.
+    EXPECT_TRUE(std::isnan(levels.indexOf(1013.0)));
+    EXPECT_TRUE(std::isnan(lon.indexOf(10.01)));
+    EXPECT_TRUE(std::isnan(lon.indexOf(std::nan(""))));
 }
