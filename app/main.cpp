@@ -50,6 +50,14 @@ int main(int argc, char* argv[]) {
         setApplicationIdentity();
         return ensil::cli::runCommandLine(args, out, err).exitCode;
     }
+    if (args.size() >= 2 && args.at(1) == QLatin1String("section") && !helpOnly) {
+        // Text needs a QGuiApplication's fonts; Qt's offscreen platform gives them with no
+        // display server, and no window is ever shown.
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+        QGuiApplication app(argc, argv);
+        setApplicationIdentity();
+        return ensil::cli::runCommandLine(args, out, err).exitCode;
+    }
     if (ensil::cli::isHeadlessInvocation(args)) {
         QCoreApplication app(argc, argv);
         setApplicationIdentity();

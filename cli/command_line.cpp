@@ -11,6 +11,7 @@
 #include "cli/info_command.h"
 #include "cli/preprocess_command.h"
 #include "cli/render_command.h"
+#include "cli/section_command.h"
 #include "cli/stats_command.h"
 #include "data/library_versions.h"
 #include "engine/streaming_run.h"
@@ -25,12 +26,13 @@ struct Subcommand {
     int (*run)(const QStringList&, QTextStream&, QTextStream&);
 };
 
-constexpr std::array<Subcommand, 5> kSubcommands{{
+constexpr std::array<Subcommand, 6> kSubcommands{{
     {"generate", "Write the built-in demo ensemble as a CF NetCDF file", &runGenerateCommand},
     {"stats", "Write ensemble statistics at an isovalue as a CF NetCDF file", &runStatsCommand},
     {"info", "Describe the ensembles in NetCDF, HDF5, VTK or GRIB files", &runInfoCommand},
     {"preprocess", "Mesh, analyse and cluster an ensemble at an isovalue", &runPreprocessCommand},
     {"render", "Draw an ensemble's silhouettes to a PNG without a window", &runRenderCommand},
+    {"section", "Draw a map or cross-section with every member's contour", &runSectionCommand},
 }};
 
 const Subcommand* findSubcommand(const QString& name) {

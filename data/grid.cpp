@@ -40,7 +40,8 @@ double Axis::indexOf(double value) const {
     const bool increasing = values.back() > values.front();
     for (std::size_t i = 0; i + 1 < values.size(); ++i) {
         const double a = values[i], b = values[i + 1];
-        if (increasing ? value <= b : value >= b) return static_cast<double>(i) + (value - a) / (b - a);
+        if (increasing ? value <= b : value >= b)
+            return static_cast<double>(i) + (value - a) / (b - a);
     }
     return static_cast<double>(values.size() - 1);
 }

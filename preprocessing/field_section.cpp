@@ -19,8 +19,7 @@ SectionLattice horizontalLattice(const data::Grid& grid, double zIndex) {
     if (!within(zIndex, grid.nz())) {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           "a map at level index " + std::to_string(zIndex) +
-                              " lies outside the grid's " + std::to_string(grid.nz()) +
-                              " levels");
+                              " lies outside the grid's " + std::to_string(grid.nz()) + " levels");
     }
     SectionLattice lattice{grid.nx(), grid.ny(), {}};
     lattice.indices.reserve(grid.nx() * grid.ny());

@@ -50,10 +50,14 @@ std::vector<ContourLine> contourLines(std::span<const float> values, std::size_t
     // An edge by its lower-left end and direction: 2 (u + columns v) along u, + 1 along v.
     const auto edgeOf = [columns](std::size_t u, std::size_t v, Side side) -> std::uint64_t {
         switch (side) {
-            case B: return 2 * (u + columns * v);
-            case T: return 2 * (u + columns * (v + 1));
-            case L: return 2 * (u + columns * v) + 1;
-            default: return 2 * (u + 1 + columns * v) + 1;
+            case B:
+                return 2 * (u + columns * v);
+            case T:
+                return 2 * (u + columns * (v + 1));
+            case L:
+                return 2 * (u + columns * v) + 1;
+            default:
+                return 2 * (u + 1 + columns * v) + 1;
         }
     };
     std::unordered_map<std::uint64_t, glm::dvec2> crossing;  // where each edge is cut

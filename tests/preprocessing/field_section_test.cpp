@@ -47,7 +47,7 @@ TEST(FieldSection, CrossSectionHasEveryLevelUnderEachPathPoint) {
     ASSERT_EQ(lattice.columns, 3U);
     ASSERT_EQ(lattice.rows, 3U);
     const std::vector<float> section = prep::sampleSection(grid, linearField(grid), lattice);
-    EXPECT_FLOAT_EQ(section[0], 0.5F + 10.0F);             // column 0, level 0
+    EXPECT_FLOAT_EQ(section[0], 0.5F + 10.0F);                   // column 0, level 0
     EXPECT_FLOAT_EQ(section[1 + 3 * 2], 2.0F + 15.0F + 200.0F);  // column 1, level 2
     EXPECT_FLOAT_EQ(section[2 + 3 * 1], 4.0F + 30.0F + 100.0F);
 }

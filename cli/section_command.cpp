@@ -1,0 +1,274 @@
+#include "cli/section_command.h"
+
+#include <QCommandLineParser>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+
+#include "cli/command_progress.h"
+#include "cli/data_selection_options.h"
+#include "cli/subcommand.h"
+#include "data/demo_ensemble.h"
+#include "data/error.h"
+#include "engine/ensemble_section.h"
+#include "engine/isovalue_job.h"
+#include "engine/preprocess_run.h"
+#include "engine/section_painter.h"
+#include "engine/section_place.h"
+#include "gl/palette.h"
+#include "session/setting_options.h"
+
+namespace ensil::cli {
+namespace {
+
+constexpr int kDefaultWidth = 1400;
+
+struct Options {
+    QCommandLineOption level{"level",
+                             "A map at this level: 500hPa, 85000Pa, 5km, 1500m, a number in the "
+                             "vertical axis's own units, or index:N (a level from 0).",
+                             "LEVEL"};
+    QCommandLineOption latitude{"lat",
+                                "A cross-section along this latitude (45, 45N, 30S), through "
+                                "the grid's map projection.",
+                                "DEG"};
+    QCommandLineOption longitude{"lon", "A cross-section along this longitude (10, 10E, 75W).",
+                                 "DEG"};
+    QCommandLineOption path{"path",
+                            "A cross-section along the great circle between two points, "
+                            "LON,LAT:LON,LAT in degrees (the grid's own X,Y:X,Y for data "
+                            "without a map).",
+                            "A:B"};
+    QCommandLineOption fill{"fill",
+                            "What fills the section: mean (default), spread (the members' "
+                            "standard deviation), probability (of exceeding the isovalue), "
+                            "member:N, anomaly:N (member N minus the mean; members count from 1), "
+                            "or none.",
+                            "FIELD", "mean"};
+    QCommandLineOption iso{"iso",
+                           "The isovalue of the contours (default: the workbench's, where most "
+                           "members have a surface in the middle of the box and differ).",
+                           "C"};
+    QCommandLineOption output{"out", "The picture to write: .png, .svg or .pdf (required).",
+                              "FILE"};
+    QCommandLineOption size{"size",
+                            "Picture size in pixels (PDF: points). Default: 1400 wide and as "
+                            "high as the section's proportions need.",
+                            "WxH"};
+    QCommandLineOption noCache{"no-cache", "Neither read nor write the preprocessing cache."};
+    QCommandLineOption demo{"demo", "Use the built-in demo ensemble instead of files."};
+    QCommandLineOption json{"json", "Print what was drawn as one JSON object."};
+    QCommandLineOption quiet = CommandProgress::quietOption();
+};
+
+const session::SettingOptions& clusterOptions() {
+    static const session::SettingOptions options{"clusters", "linkage"};
+    return options;
+}
+
+// The fill named on the command line; nullopt with `problem` set when it is not one.
+std::optional<std::pair<engine::SectionFill, int>> parseFill(const QString& text,
+                                                             QString& problem) {
+    using engine::SectionFill;
+    const QString t = text.trimmed().toLower();
+    if (t == QLatin1String("mean")) return std::pair{SectionFill::Mean, -1};
+    if (t == QLatin1String("spread")) return std::pair{SectionFill::Spread, -1};
+    if (t == QLatin1String("probability")) return std::pair{SectionFill::Probability, -1};
+    if (t == QLatin1String("none")) return std::pair{SectionFill::None, -1};
+    for (const auto& [prefix, fill] : {std::pair{QStringLiteral("member:"), SectionFill::Member},
+                                       std::pair{QStringLiteral("anomaly:"), SectionFill::Anomaly}}) {
+        if (!t.startsWith(prefix)) continue;
+        bool ok = false;
+        const int number = t.mid(prefix.size()).toInt(&ok);
+        if (ok && number >= 1) return std::pair{fill, number - 1};
+    }
+    problem = QStringLiteral(
+                  "--fill '%1' is refused: it must be mean, spread, probability, member:N, "
+                  "anomaly:N (members count from 1) or none")
+                  .arg(text);
+    return std::nullopt;
+}
+
+// The one place option given, read; nullopt with `problem` set.
+std::optional<engine::SectionPlace> placeFrom(const QCommandLineParser& parser, const Options& o,
+                                              QString& problem) {
+    int given = 0;
+    for (const QCommandLineOption* option : {&o.level, &o.latitude, &o.longitude, &o.path}) {
+        given += parser.isSet(*option) ? 1 : 0;
+    }
+    if (given != 1) {
+        problem = QStringLiteral(
+            "say where the section lies with one of --level (a map), --lat, --lon or --path "
+            "(a cross-section)");
+        return std::nullopt;
+    }
+    std::string why;
+    std::optional<engine::SectionPlace> place;
+    QString option;
+    if (parser.isSet(o.level)) {
+        option = QStringLiteral("--level");
+        place = engine::parseLevel(parser.value(o.level).toStdString(), why);
+    } else if (parser.isSet(o.latitude)) {
+        option = QStringLiteral("--lat");
+        place = engine::parseLatitude(parser.value(o.latitude).toStdString(), why);
+    } else if (parser.isSet(o.longitude)) {
+        option = QStringLiteral("--lon");
+        place = engine::parseLongitude(parser.value(o.longitude).toStdString(), why);
+    } else {
+        option = QStringLiteral("--path");
+        place = engine::parsePath(parser.value(o.path).toStdString(), why);
+    }
+    if (!place) problem = option + QStringLiteral(" is refused: ") + QString::fromStdString(why);
+    return place;
+}
+
+QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResult& clusters,
+                   float isovalue, const QString& path) {
+    QJsonArray members;
+    for (const engine::MemberContour& c : view.members) {
+        std::size_t points = 0;
+        for (const engine::SectionLine& l : c.lines) points += l.points.size();
+        members.append(QJsonObject{
+            {"number", static_cast<qint64>(c.member + 1)},
+            {"name", QString::fromStdString(clusters.ensemble->members[c.member].name)},
+            {"cluster", clusters.clusterNumbers.at(c.member)},
+            {"color", QString::fromStdString(clusters.colors.at(c.member))},
+            {"contour_lines", static_cast<qint64>(c.lines.size())},
+            {"contour_points", static_cast<qint64>(points)}});
+    }
+    QJsonObject o{{"out", path},
+                  {"title", QString::fromStdString(view.title)},
+                  {"place", QString::fromStdString(view.placeText)},
+                  {"isovalue", static_cast<double>(isovalue)},
+                  {"columns", static_cast<qint64>(view.columns)},
+                  {"rows", static_cast<qint64>(view.rows)},
+                  {"members", members},
+                  {"mean_contour_lines", static_cast<qint64>(view.meanContour.size())}};
+    if (!view.fill.empty()) {
+        o.insert("fill", QJsonObject{{"caption", QString::fromStdString(view.fillCaption)},
+                                     {"minimum", static_cast<double>(view.fillMinimum)},
+                                     {"maximum", static_cast<double>(view.fillMaximum)}});
+    }
+    return o;
+}
+
+}  // namespace
+
+int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Draw a map or a cross-section of an ensemble: every member's contour of the isovalue "
+        "in its cluster's colour, the mean's contour, over a filled field, with coastlines, "
+        "axes in degrees and hPa, and a colour bar. PNG, SVG (text as text, contours as "
+        "paths) or PDF; no display server is needed."));
+    parser.addHelpOption();
+    const DataSelectionOptions selectionOptions;
+    selectionOptions.addTo(parser);
+    const Options o;
+    parser.addOptions({o.level, o.latitude, o.longitude, o.path, o.fill, o.iso, o.output, o.size,
+                       o.noCache, o.demo, o.json, o.quiet});
+    clusterOptions().addTo(parser);
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("section"), out, err)) return *done;
+
+    QString problem;
+    session::SessionState requested;
+    const auto selection = selectionOptions.selection(parser, problem);
+    const auto place = selection ? placeFrom(parser, o, problem) : std::nullopt;
+    const auto fill = place ? parseFill(parser.value(o.fill), problem) : std::nullopt;
+    const auto size = !fill ? std::nullopt
+                      : parser.isSet(o.size)
+                          ? session::parseImageSize(QStringLiteral("--size"), parser.value(o.size),
+                                                    problem)
+                          : std::optional<std::pair<int, int>>(std::pair{kDefaultWidth, 0});
+    std::optional<double> iso;
+    if (size && parser.isSet(o.iso)) {
+        iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso), -1e30,
+                                          1e30, false, problem);
+    }
+    const QString path = parser.value(o.output);
+    const QString suffix = path.section(QLatin1Char('.'), -1).toLower();
+    if (!size || (parser.isSet(o.iso) && !iso) ||
+        !clusterOptions().applyTo(parser, requested, problem)) {
+        // said below
+    } else if (!parser.isSet(o.output)) {
+        problem = QStringLiteral("say where to write the picture with --out FILE.png|.svg|.pdf");
+    } else if (suffix != QLatin1String("png") && suffix != QLatin1String("svg") &&
+               suffix != QLatin1String("pdf")) {
+        problem = QStringLiteral("--out '%1' is refused: the name must end in .png, .svg or .pdf")
+                      .arg(path);
+    } else if (selection->paths.empty() != parser.isSet(o.demo)) {
+        problem = QStringLiteral("name the files to draw, or use --demo");
+    }
+    if (!problem.isEmpty()) {
+        err << "ensil section: " << problem << "\n";
+        return 2;
+    }
+
+    CommandProgress progress(err, QStringLiteral("ensil section"),
+                             CommandProgress::shownOnThisTerminal(parser.isSet(o.quiet)));
+    try {
+        const data::DemoEnsembleParams demo;
+        auto ensemble = std::make_shared<const data::Ensemble>(
+            parser.isSet(o.demo)
+                ? data::makeDemoEnsemble(demo, {}, progress.callback(QStringLiteral("generating")))
+                      .ensemble
+                : data::openEnsemble(*selection, {}, progress.callback(QStringLiteral("reading"))));
+        // The clusters the workbench shows at this isovalue (from the mesh cache when it has
+        // them), so a member's colour here is its colour there.
+        engine::PreprocessRequest request;
+        request.isovalue = iso;
+        request.clusters = requested.clusters;
+        request.clustersGiven = clusterOptions().given(parser).contains("--clusters");
+        request.linkage = requested.linkage;
+        if (!parser.isSet(o.noCache)) request.cacheDirectory = engine::defaultMeshCacheDirectory();
+        request.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
+                                                       " seed=" + std::to_string(demo.seed)
+                                                 : data::sourceIdentity(*selection);
+        // Warnings about the data (members left out, infinities); the notes are about
+        // silhouettes in 3D (too few levels for a shape), not about a section.
+        const auto notice = [&](const std::string& kind, const std::string& text) {
+            if (kind != "warning") return;
+            progress.endLine();
+            err << "ensil section: " << QString::fromStdString(kind) << ": "
+                << QString::fromStdString(text) << "\n";
+        };
+        const engine::PreprocessResult clusters = engine::preprocessEnsemble(
+            std::move(ensemble), request, notice, {},
+            progress.callback(QStringLiteral("clustering")));
+        engine::SectionRequest section;
+        section.place = *place;
+        section.fill = fill->first;
+        section.member = fill->second;
+        section.isovalue = clusters.meshes.isovalue;
+        section.clusterNumbers = clusters.clusterNumbers;
+        for (const int number : clusters.clusterNumbers) {
+            section.memberColours.push_back(gl::clusterColor(number - 1));
+        }
+        const engine::SectionView view = engine::buildSection(*clusters.ensemble, section);
+        const QSize pictureSize = size->second > 0
+                                      ? QSize(size->first, size->second)
+                                      : engine::sectionPictureSize(view, size->first);
+        engine::writeSectionPicture(view, path, pictureSize);
+        progress.endLine();
+        if (parser.isSet(o.json)) {
+            out << QJsonDocument(toJson(view, clusters, section.isovalue, path))
+                       .toJson(QJsonDocument::Compact)
+                << "\n";
+        } else {
+            out << "ensil section: wrote " << path << ": " << QString::fromStdString(view.title)
+                << ", " << view.members.size() << " members' contours at "
+                << section.isovalue << "\n";
+        }
+        return 0;
+    } catch (const engine::PreprocessRefused& e) {
+        progress.endLine();
+        err << "ensil section: " << e.what() << "\n";
+        return e.exitCode();
+    } catch (const data::Error& e) {
+        progress.endLine();
+        err << "ensil section: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace ensil::cli

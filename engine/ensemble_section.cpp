@@ -1,0 +1,207 @@
+#include "engine/ensemble_section.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "data/error.h"
+#include "data/number_text.h"
+#include "data/units_text.h"
+#include "engine/picture_title.h"
+#include "engine/section_place.h"
+#include "gl/axis_ticks.h"
+#include "gl/palette.h"
+#include "preprocessing/field_section.h"
+
+namespace ensil::engine {
+namespace {
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+// Lattice coordinates (fractional column, row) to the plot's unit square.
+double across(const std::vector<double>& positions, double index) {
+    const double i = std::clamp(index, 0.0, static_cast<double>(positions.size() - 1));
+    const auto lo = std::min(static_cast<std::size_t>(i), positions.size() - 2);
+    const double f = i - static_cast<double>(lo);
+    return positions[lo] + f * (positions[lo + 1] - positions[lo]);
+}
+
+std::vector<SectionLine> toPlot(const std::vector<prep::ContourLine>& lines,
+                                const PlacedSection& placed) {
+    std::vector<SectionLine> out;
+    out.reserve(lines.size());
+    for (const prep::ContourLine& line : lines) {
+        SectionLine plotted{{}, line.closed};
+        plotted.points.reserve(line.points.size());
+        for (const glm::dvec2& p : line.points) {
+            plotted.points.emplace_back(across(placed.columnPositions, p.x),
+                                        across(placed.rowPositions, p.y));
+        }
+        out.push_back(std::move(plotted));
+    }
+    return out;
+}
+
+// Per sample, over the members with a value there: the mean, the sample standard deviation
+// (NaN below two members), the share above the isovalue.
+struct SampleMoments {
+    std::vector<float> mean, spread, probability;
+};
+
+SampleMoments momentsOf(const std::vector<std::vector<float>>& members, std::size_t samples,
+                        float isovalue) {
+    SampleMoments m{std::vector<float>(samples, kNaN), std::vector<float>(samples, kNaN),
+                    std::vector<float>(samples, kNaN)};
+    for (std::size_t s = 0; s < samples; ++s) {
+        double sum = 0.0, squares = 0.0;
+        int n = 0, above = 0;
+        for (const std::vector<float>& member : members) {
+            const float v = member[s];
+            if (std::isnan(v)) continue;
+            sum += v;
+            ++n;
+            above += v > isovalue ? 1 : 0;
+        }
+        if (n == 0) continue;
+        const double mean = sum / n;
+        for (const std::vector<float>& member : members) {
+            if (!std::isnan(member[s])) squares += (member[s] - mean) * (member[s] - mean);
+        }
+        m.mean[s] = static_cast<float>(mean);
+        m.probability[s] = static_cast<float>(above) / static_cast<float>(n);
+        if (n > 1) m.spread[s] = static_cast<float>(std::sqrt(squares / (n - 1)));
+    }
+    return m;
+}
+
+}  // namespace
+
+SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request) {
+    const std::size_t memberCount = ensemble.members.size();
+    if (memberCount == 0) {
+        throw data::Error(data::ErrorKind::InvalidArgument, "a section needs members");
+    }
+    const bool oneMember =
+        request.fill == SectionFill::Member || request.fill == SectionFill::Anomaly;
+    if (oneMember && (request.member < 0 || static_cast<std::size_t>(request.member) >= memberCount)) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "member " + std::to_string(request.member + 1) +
+                              " is not one of the " + std::to_string(memberCount) +
+                              " members (1 to " + std::to_string(memberCount) + ")");
+    }
+    PlacedSection placed = placeSection(ensemble, request.place);
+    SectionView view;
+    view.placeText = placed.placeText;
+    view.columns = placed.lattice.columns;
+    view.rows = placed.lattice.rows;
+    view.aspect = placed.aspect;
+    view.bottom = std::move(placed.bottom);
+    view.left = std::move(placed.left);
+    view.mapLines = std::move(placed.mapLines);
+    view.graticule = std::move(placed.graticule);
+    const std::string name = ensemble.variable;
+    view.title = name + (request.place.kind == SectionKind::Map ? " at " : " along ") +
+                 placed.placeText;
+    if (request.place.kind == SectionKind::Path) view.title = name + " from " + placed.placeText;
+
+    view.memberValues.reserve(memberCount);
+    for (const data::Member& member : ensemble.members) {
+        view.memberValues.push_back(
+            prep::sampleSection(ensemble.grid, member.values, placed.lattice));
+    }
+    const std::size_t samples = placed.lattice.indices.size();
+    const SampleMoments moments = momentsOf(view.memberValues, samples, request.isovalue);
+    const std::string units = unitsInBrackets(ensemble);
+    const auto memberName = [&](int m) {
+        return ensemble.members[static_cast<std::size_t>(m)].name;
+    };
+    switch (request.fill) {
+        case SectionFill::None: break;
+        case SectionFill::Member:
+            view.fill = view.memberValues[static_cast<std::size_t>(request.member)];
+            view.fillCaption = memberName(request.member) + ": " + name + units;
+            break;
+        case SectionFill::Mean:
+            view.fill = moments.mean;
+            view.fillCaption = "mean " + name + units;
+            break;
+        case SectionFill::Spread:
+            view.fill = moments.spread;
+            view.fillCaption = "standard deviation of " + name + units;
+            break;
+        case SectionFill::Probability:
+            view.fill = moments.probability;
+            view.fillCaption = exceedanceText(ensemble, request.isovalue);
+            view.scale = ColourScaleKind::Probability;
+            break;
+        case SectionFill::Anomaly: {
+            view.fill = view.memberValues[static_cast<std::size_t>(request.member)];
+            for (std::size_t s = 0; s < samples; ++s) view.fill[s] -= moments.mean[s];
+            view.fillCaption = memberName(request.member) + " minus the mean, " + name + units;
+            view.scale = ColourScaleKind::Diverging;
+            break;
+        }
+    }
+    // The colour bar spans the section's own values (a difference: symmetric about 0; a
+    // probability: 0 to 1; a spread: from 0), so the map has the contrast its values allow.
+    if (!view.fill.empty()) {
+        float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+        for (const float v : view.fill) {
+            if (std::isnan(v)) continue;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        if (lo > hi) lo = hi = 0.0F;  // nothing but missing values
+        if (view.scale == ColourScaleKind::Probability) {
+            lo = 0.0F;
+            hi = 1.0F;
+        } else if (view.scale == ColourScaleKind::Diverging) {
+            hi = std::max(std::abs(lo), std::abs(hi));
+            lo = -hi;
+        } else if (request.fill == SectionFill::Spread) {
+            lo = 0.0F;
+        }
+        if (!(hi > lo)) {
+            const float pad = std::max(1.0F, std::abs(hi)) * 0.5F;
+            lo -= pad;
+            hi += pad;
+        }
+        view.fillMinimum = lo;
+        view.fillMaximum = hi;
+        view.colourTicks = gl::niceTicks(lo, hi, 6);
+    }
+
+    // Every member's contour in its cluster's colour, and the mean's.
+    std::map<int, SectionView::LegendEntry> legend;
+    for (std::size_t m = 0; m < memberCount; ++m) {
+        MemberContour contour;
+        contour.member = m;
+        contour.colour = m < request.memberColours.size() ? request.memberColours[m]
+                                                          : gl::kUnclusteredColor;
+        contour.lines = toPlot(prep::contourLines(view.memberValues[m], view.columns, view.rows,
+                                                  request.isovalue),
+                               placed);
+        view.members.push_back(std::move(contour));
+        if (m < request.clusterNumbers.size()) {
+            SectionView::LegendEntry& entry = legend[request.clusterNumbers[m]];
+            entry.cluster = request.clusterNumbers[m];
+            entry.colour = view.members.back().colour;
+            ++entry.members;
+        }
+    }
+    view.meanContour =
+        toPlot(prep::contourLines(moments.mean, view.columns, view.rows, request.isovalue), placed);
+    for (const auto& [number, entry] : legend) view.legend.push_back(entry);
+    view.columnPositions = std::move(placed.columnPositions);
+    view.rowPositions = std::move(placed.rowPositions);
+
+    view.subtitle = "isovalue " + data::readableNumber(request.isovalue) +
+                    (ensemble.units.empty() ? "" : " " + data::readableUnits(ensemble.units)) +
+                    " · " +
+                    std::to_string(memberCount) + " members" +
+                    (view.fill.empty() ? "" : " · fill: " + view.fillCaption);
+    return view;
+}
+
+}  // namespace ensil::engine

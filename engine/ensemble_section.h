@@ -1,0 +1,118 @@
+// A map or a cross-section of an ensemble, ready to draw (engine/section_painter.h): where it
+// lies (a level in the vertical axis's units, a latitude, a longitude or a great-circle path
+// between two points), the filled field (a member, the mean, the spread, P(f > c), a member's
+// difference from the mean, or none), every member's contour of the isovalue in its cluster's
+// colour, the mean's contour, the map lines and the axes' ticks. Everything is laid out in the
+// plot's unit square (x right, y up), as the 3D view places the same data (data::DisplayFrame:
+// true horizontal proportions, pressure through log-pressure), so a map reads as the 3D view's
+// top and a cross-section as its side. The fields are sampled from the members themselves
+// (prep::sampleSection), and the mean, spread and probability taken over those samples, so a
+// section costs members x its samples, never a pass over the volume (METHODS.md section 22).
+// Shared by `ensil section`, the workbench's Sections dock and Python. Pure; any thread.
+#pragma once
+
+#include <cstddef>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "data/ensemble.h"
+#include "preprocessing/marching_squares.h"
+
+namespace ensil::engine {
+
+enum class SectionKind { Map, Latitude, Longitude, Path };
+
+struct SectionPlace {
+    SectionKind kind = SectionKind::Map;
+    // Map: the level, in `levelUnits`: a pressure unit ("hPa", "Pa"), a length ("km", "m"),
+    // "index" (a vertical grid index from 0), or "" for the vertical axis's own units.
+    double level = 0.0;
+    std::string levelUnits;
+    double latitude = 0.0;   // Latitude: degrees north
+    double longitude = 0.0;  // Longitude: degrees east
+    // Path: two points, longitude and latitude in degrees (grid axis coordinates for data
+    // without geography), joined by the great circle.
+    glm::dvec2 from{0.0};
+    glm::dvec2 to{0.0};
+};
+
+enum class SectionFill { None, Member, Mean, Spread, Probability, Anomaly };
+
+struct SectionRequest {
+    SectionPlace place;
+    SectionFill fill = SectionFill::Mean;
+    int member = -1;  // Member and Anomaly: the member's index in the ensemble
+    float isovalue = 0.0F;
+    // Each member's contour colour (its cluster's) and the legend's entries; members beyond it
+    // are drawn in the unclustered gray.
+    std::vector<glm::vec3> memberColours;
+    std::vector<int> clusterNumbers;  // as the legend numbers them, per member; may be empty
+};
+
+struct SectionTick {
+    double position = 0.0;  // along the axis, 0 to 1
+    std::string label;
+};
+
+struct SectionAxis {
+    std::string title;
+    std::vector<SectionTick> ticks;
+};
+
+// A polyline in the plot's unit square.
+struct SectionLine {
+    std::vector<glm::dvec2> points;
+    bool closed = false;
+};
+
+struct MemberContour {
+    std::size_t member = 0;
+    glm::vec3 colour{0.0F};
+    std::vector<SectionLine> lines;
+};
+
+enum class ColourScaleKind { Sequential, Diverging, Probability };
+
+struct SectionView {
+    std::string title;     // "t at 500 hPa", "t along 45°N", "t from 10°W 50°N to 20°E 40°N"
+    std::string subtitle;  // "isovalue 260 K · fill: mean t [K] · 50 members"
+    double aspect = 1.0;   // the plot's width over its height
+    // The lattice: the fill's samples, columns x rows, column fastest, and where each column
+    // and row lies across the plot (ascending or descending, 0 to 1).
+    std::size_t columns = 0;
+    std::size_t rows = 0;
+    std::vector<double> columnPositions;
+    std::vector<double> rowPositions;
+    std::vector<float> fill;  // empty for SectionFill::None; NaN where missing
+    std::string fillCaption;  // "mean t [K]"
+    ColourScaleKind scale = ColourScaleKind::Sequential;
+    float fillMinimum = 0.0F;  // the colour bar's range: the section's own values by default
+    float fillMaximum = 1.0F;
+    std::vector<double> colourTicks;  // round numbers inside the range
+    std::vector<MemberContour> members;
+    std::vector<SectionLine> meanContour;  // of the members' mean
+    std::vector<SectionLine> mapLines;     // coastlines and borders (maps only)
+    std::vector<SectionLine> graticule;    // a projected map's true meridians and parallels
+    SectionAxis bottom;
+    SectionAxis left;
+    // Legend: each cluster number with its colour and member count, ascending.
+    struct LegendEntry {
+        int cluster = 0;
+        glm::vec3 colour{0.0F};
+        int members = 0;
+    };
+    std::vector<LegendEntry> legend;
+    // Samples of each member's field, kept for hover (value under the pointer) and for Python.
+    std::vector<std::vector<float>> memberValues;
+    // The place in words, for file names and JSON: "500 hPa", "45°N", "10°E", "path".
+    std::string placeText;
+};
+
+// Throws data::Error(InvalidArgument) naming the place when it lies outside the data (a level
+// above the top, a latitude the grid does not reach) or the fill's member does not exist.
+SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request);
+
+}  // namespace ensil::engine

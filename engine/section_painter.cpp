@@ -1,0 +1,386 @@
+#include "engine/section_painter.h"
+
+#include <QFileInfo>
+#include <QFontMetricsF>
+#include <QImage>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPdfWriter>
+#include <QSvgGenerator>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "data/error.h"
+#include "gl/palette.h"
+#include "gl/view_overlay.h"
+
+namespace ensil::engine {
+namespace {
+
+constexpr double kMargin = 12.0;
+constexpr double kSideColumn = 200.0;  // the colour bar and the legend, right of the plot
+constexpr double kTickLength = 4.0;
+const QColor kMissing(0xd9, 0xd9, 0xd9);
+
+QColor toColour(glm::vec3 c) {
+    return QColor::fromRgbF(std::clamp(c.r, 0.0F, 1.0F), std::clamp(c.g, 0.0F, 1.0F),
+                            std::clamp(c.b, 0.0F, 1.0F));
+}
+
+// ColorBrewer's RdBu (blue below zero, red above) and YlGnBu (probabilities: pale at 0, so the
+// contours stay readable where little is likely), by Cynthia Brewer, colorbrewer2.org; the
+// anchors are the published colours, interpolated linearly between.
+constexpr std::array<unsigned, 11> kDiverging{0x053061, 0x2166ac, 0x4393c3, 0x92c5de,
+                                              0xd1e5f0, 0xf7f7f7, 0xfddbc7, 0xf4a582,
+                                              0xd6604d, 0xb2182b, 0x67001f};
+constexpr std::array<unsigned, 9> kProbability{0xffffd9, 0xedf8b1, 0xc7e9b4, 0x7fcdbb, 0x41b6c4,
+                                               0x1d91c0, 0x225ea8, 0x253494, 0x081d58};
+
+template <std::size_t N>
+QRgb fromAnchors(const std::array<unsigned, N>& anchors, double t) {
+    const double x = std::clamp(t, 0.0, 1.0) * static_cast<double>(N - 1);
+    const auto i = std::min(static_cast<std::size_t>(x), N - 2);
+    const double f = x - static_cast<double>(i);
+    const auto channel = [&](int shift) {
+        const double a = (anchors[i] >> shift) & 0xff, b = (anchors[i + 1] >> shift) & 0xff;
+        return static_cast<int>(std::lround(a + f * (b - a)));
+    };
+    return qRgb(channel(16), channel(8), channel(0));
+}
+
+QRgb colourAt(ColourScaleKind scale, double t) {
+    switch (scale) {
+        case ColourScaleKind::Diverging: return fromAnchors(kDiverging, t);
+        case ColourScaleKind::Probability: return fromAnchors(kProbability, t);
+        case ColourScaleKind::Sequential: break;
+    }
+    return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();
+}
+
+// The fractional index whose position (ascending or descending table) is t.
+double indexAt(const std::vector<double>& positions, double t) {
+    const bool ascending = positions.back() >= positions.front();
+    const auto before = [ascending](double p, double v) { return ascending ? p < v : p > v; };
+    const auto it = std::lower_bound(positions.begin(), positions.end(), t, before);
+    if (it == positions.begin()) return 0.0;
+    if (it == positions.end()) return static_cast<double>(positions.size() - 1);
+    const auto i = static_cast<std::size_t>(it - positions.begin());
+    const double a = positions[i - 1], b = positions[i];
+    return static_cast<double>(i - 1) + (b == a ? 0.0 : (t - a) / (b - a));
+}
+
+// The filled field drawn into an image of `width` x `height` pixels covering the plot.
+QImage fillImage(const SectionView& view, int width, int height) {
+    QImage image(width, height, QImage::Format_RGB32);
+    std::vector<double> columnAt(static_cast<std::size_t>(width));
+    for (int x = 0; x < width; ++x) {
+        columnAt[static_cast<std::size_t>(x)] = indexAt(view.columnPositions, (x + 0.5) / width);
+    }
+    const double range = static_cast<double>(view.fillMaximum) - view.fillMinimum;
+    for (int y = 0; y < height; ++y) {
+        const double row = indexAt(view.rowPositions, 1.0 - (y + 0.5) / height);
+        const auto r0 = std::min(static_cast<std::size_t>(row), view.rows - 2);
+        const double fr = row - static_cast<double>(r0);
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < width; ++x) {
+            const double column = columnAt[static_cast<std::size_t>(x)];
+            const auto c0 = std::min(static_cast<std::size_t>(column), view.columns - 2);
+            const double fc = column - static_cast<double>(c0);
+            double sum = 0.0, weights = 0.0;
+            for (int corner = 0; corner < 4; ++corner) {
+                const std::size_t c = c0 + (corner & 1), r = r0 + (corner >> 1);
+                const double w = ((corner & 1) ? fc : 1 - fc) * ((corner >> 1) ? fr : 1 - fr);
+                const float v = view.fill[c + view.columns * r];
+                if (std::isnan(v) || w <= 0.0) continue;
+                sum += w * v;
+                weights += w;
+            }
+            // Missing where the nearest sample is: the fill does not bleed into missing data.
+            const std::size_t nc = c0 + (fc >= 0.5 ? 1 : 0), nr = r0 + (fr >= 0.5 ? 1 : 0);
+            line[x] = weights <= 0.0 || std::isnan(view.fill[nc + view.columns * nr])
+                          ? kMissing.rgb()
+                          : colourAt(view.scale, (sum / weights - view.fillMinimum) / range);
+        }
+    }
+    return image;
+}
+
+QPainterPath pathOf(const SectionLine& line, const QRectF& plot) {
+    QPainterPath path;
+    for (std::size_t i = 0; i < line.points.size(); ++i) {
+        const QPointF p(plot.left() + line.points[i].x * plot.width(),
+                        plot.bottom() - line.points[i].y * plot.height());
+        if (i == 0) {
+            path.moveTo(p);
+        } else {
+            path.lineTo(p);
+        }
+    }
+    if (line.closed) path.closeSubpath();
+    return path;
+}
+
+void strokeLines(QPainter& painter, const std::vector<SectionLine>& lines, const QRectF& plot,
+                 const QPen& pen) {
+    painter.setPen(pen);
+    painter.setBrush(Qt::NoBrush);
+    for (const SectionLine& line : lines) painter.drawPath(pathOf(line, plot));
+}
+
+struct Layout {
+    QRectF title, plot, side;
+};
+
+// Above the plot (margin, title, subtitle, gap) and below it (ticks, axis title, margin), in
+// lines of text.
+constexpr double kLinesAbove = 3.0;
+constexpr double kLinesBelow = 2.8;
+
+QFont sectionFont(const SectionStyle& style) {
+    QFont font;
+    font.setPointSizeF(style.fontPoints);
+    return font;
+}
+
+Layout layoutOf(const SectionView& view, const QRectF& page, const QFontMetricsF& metrics) {
+    const double line = metrics.height();
+    Layout l;
+    l.title = QRectF(page.left() + kMargin, page.top() + kMargin, page.width() - 2 * kMargin,
+                     2.4 * line);
+    const double left = page.left() + kMargin + 3.2 * line + metrics.horizontalAdvance("1000");
+    const double top = page.top() + kMargin + kLinesAbove * line;
+    const double right = page.right() - kMargin - kSideColumn;
+    const double bottom = page.bottom() - kMargin - kLinesBelow * line;
+    QRectF available(left, top, std::max(10.0, right - left), std::max(10.0, bottom - top));
+    // The plot keeps the data's proportions, centred in the room it has.
+    double w = available.width(), h = w / view.aspect;
+    if (h > available.height()) {
+        h = available.height();
+        w = h * view.aspect;
+    }
+    l.plot = QRectF(available.left() + (available.width() - w) / 2, available.top(), w, h);
+    l.side = QRectF(l.plot.right() + 1.5 * line, top, kSideColumn - 1.5 * line + kMargin, h);
+    return l;
+}
+
+void drawAxes(QPainter& painter, const SectionView& view, const QRectF& plot,
+              const QFontMetricsF& metrics, const SectionStyle& style) {
+    painter.setPen(QPen(style.text, 1.0));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(plot);
+    const double line = metrics.height();
+    double previousRight = -1e9;
+    for (const SectionTick& tick : view.bottom.ticks) {
+        const double x = plot.left() + tick.position * plot.width();
+        painter.drawLine(QPointF(x, plot.bottom()), QPointF(x, plot.bottom() + kTickLength));
+        const QString text = QString::fromStdString(tick.label);
+        const double w = metrics.horizontalAdvance(text);
+        if (x - w / 2 < previousRight + 6) continue;  // labels never touch
+        painter.drawText(QRectF(x - w / 2, plot.bottom() + kTickLength + 1, w, line),
+                         Qt::AlignCenter, text);
+        previousRight = x + w / 2;
+    }
+    painter.drawText(QRectF(plot.left(), plot.bottom() + kTickLength + 1.2 * line, plot.width(),
+                            line),
+                     Qt::AlignCenter, QString::fromStdString(view.bottom.title));
+    double widest = 0.0;
+    double previousTop = 1e9;
+    for (const SectionTick& tick : view.left.ticks) {
+        const double y = plot.bottom() - tick.position * plot.height();
+        if (y < plot.top() - 0.5 || y > plot.bottom() + 0.5) continue;
+        painter.drawLine(QPointF(plot.left() - kTickLength, y), QPointF(plot.left(), y));
+        const QString text = QString::fromStdString(tick.label);
+        const double w = metrics.horizontalAdvance(text);
+        if (std::abs(y - previousTop) < line) continue;
+        widest = std::max(widest, w);
+        painter.drawText(QRectF(plot.left() - kTickLength - 3 - w, y - line / 2, w, line),
+                         Qt::AlignRight | Qt::AlignVCenter, text);
+        previousTop = y;
+    }
+    painter.save();
+    painter.translate(plot.left() - kTickLength - 6 - widest - 0.6 * line, plot.center().y());
+    painter.rotate(-90);
+    painter.drawText(QRectF(-plot.height() / 2, -line, plot.height(), line), Qt::AlignCenter,
+                     QString::fromStdString(view.left.title));
+    painter.restore();
+}
+
+// The colour bar (vertical, its caption above) and below it the legend; returns nothing.
+void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
+              const QFontMetricsF& metrics, const SectionStyle& style) {
+    const double line = metrics.height();
+    double y = side.top();
+    painter.setPen(style.text);
+    if (!view.fill.empty()) {
+        const QRectF caption(side.left(), y, side.width(), 3 * line);
+        QRectF used;
+        painter.drawText(caption, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop,
+                         QString::fromStdString(view.fillCaption), &used);
+        y = used.bottom() + 0.5 * line;
+        const double barHeight = std::max(4 * line, std::min(side.height() * 0.55, 14 * line));
+        const QRectF bar(side.left(), y, 14.0, barHeight);
+        QImage gradient(1, 256, QImage::Format_RGB32);
+        for (int i = 0; i < 256; ++i) {
+            gradient.setPixel(0, i, colourAt(view.scale, 1.0 - (i + 0.5) / 256.0));
+        }
+        painter.drawImage(bar, gradient);
+        painter.setPen(QPen(style.text, 0.8));
+        painter.drawRect(bar);
+        const double range = static_cast<double>(view.fillMaximum) - view.fillMinimum;
+        for (const double t : view.colourTicks) {
+            const double ty = bar.bottom() - (t - view.fillMinimum) / range * bar.height();
+            painter.drawLine(QPointF(bar.right(), ty), QPointF(bar.right() + kTickLength, ty));
+            painter.drawText(QRectF(bar.right() + kTickLength + 3, ty - line / 2, 90, line),
+                             Qt::AlignLeft | Qt::AlignVCenter, gl::formatTick(t));
+        }
+        y = bar.bottom() + 1.2 * line;
+    }
+    // The legend: the mean's line, then each cluster's colour and size.
+    const auto entry = [&](const QPen& pen, const QString& text) {
+        painter.setPen(pen);
+        painter.drawLine(QPointF(side.left(), y + line / 2), QPointF(side.left() + 22, y + line / 2));
+        painter.setPen(style.text);
+        painter.drawText(QRectF(side.left() + 28, y, side.width() - 28, line),
+                         Qt::AlignLeft | Qt::AlignVCenter, text);
+        y += 1.25 * line;
+    };
+    QPen mean(style.text, 1.8, Qt::DashLine);
+    mean.setDashPattern({4.0, 2.5});
+    entry(mean, QStringLiteral("mean of the members"));
+    for (const SectionView::LegendEntry& e : view.legend) {
+        entry(QPen(toColour(e.colour), 2.0),
+              QStringLiteral("cluster %1 (%2)").arg(e.cluster).arg(e.members));
+    }
+}
+
+}  // namespace
+
+QRectF sectionPlotRect(const SectionView& view, const QRectF& page, const SectionStyle& style) {
+    return layoutOf(view, page, QFontMetricsF(sectionFont(style))).plot;
+}
+
+QSize sectionPictureSize(const SectionView& view, int width, const SectionStyle& style) {
+    const QFontMetricsF metrics(sectionFont(style));
+    const double line = metrics.height();
+    const QRectF wide = layoutOf(view, QRectF(0, 0, width, 1e6), metrics).plot;
+    // The side column needs its caption, a colour bar and the legend's lines.
+    const double side = (view.fill.empty() ? 0.0 : 3.0 + 6.0 + 1.2) * line +
+                        1.25 * line * static_cast<double>(view.legend.size() + 1);
+    const double plotHeight = std::max(wide.width() / view.aspect, side);
+    return {width, static_cast<int>(std::ceil(plotHeight + 2 * kMargin +
+                                              (kLinesAbove + kLinesBelow) * line))};
+}
+
+void paintSection(QPainter& painter, const SectionView& view, const QRectF& page,
+                  const SectionEmphasis& emphasis, const SectionStyle& style) {
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(page, style.background);
+    const QFont font = sectionFont(style);
+    painter.setFont(font);
+    const QFontMetricsF metrics(font, painter.device());
+    const Layout layout = layoutOf(view, page, metrics);
+    const QRectF& plot = layout.plot;
+
+    QFont heading = font;
+    heading.setPointSizeF(style.fontPoints * 1.25);
+    heading.setBold(true);
+    painter.setFont(heading);
+    painter.setPen(style.text);
+    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignTop, QString::fromStdString(view.title));
+    painter.setFont(font);
+    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignBottom,
+                     QString::fromStdString(view.subtitle));
+
+    painter.save();
+    painter.setClipRect(plot);
+    if (view.fill.empty() || view.columns < 2 || view.rows < 2) {
+        painter.fillRect(plot, style.background);
+    } else {
+        // At the plot's size on screen and in a PNG; an embedded image of at most 1200 pixels
+        // across in an SVG or PDF.
+        const QTransform t = painter.deviceTransform();
+        const double scale = std::max(1.0, std::sqrt(std::abs(t.determinant())));
+        const int w = std::clamp(static_cast<int>(plot.width() * scale), 2, 1200);
+        const int h = std::clamp(static_cast<int>(plot.height() * scale), 2, 1200);
+        painter.drawImage(plot, fillImage(view, w, h));
+    }
+    strokeLines(painter, view.graticule, plot, QPen(QColor(128, 128, 128, 150), 0.6));
+    // Members: a dark halo under every line first, then the colours, the selected last.
+    const bool anySelected = !emphasis.selected.empty();
+    const auto isSelected = [&](std::size_t m) {
+        return std::find(emphasis.selected.begin(), emphasis.selected.end(), m) !=
+               emphasis.selected.end();
+    };
+    for (const MemberContour& c : view.members) {
+        strokeLines(painter, c.lines, plot, QPen(QColor(0, 0, 0, anySelected ? 50 : 120), 2.6));
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+        for (const MemberContour& c : view.members) {
+            const bool chosen = isSelected(c.member) || static_cast<int>(c.member) == emphasis.hovered;
+            if (chosen != (pass == 1)) continue;
+            QColor colour = toColour(c.colour);
+            if (anySelected && !chosen) colour.setAlphaF(0.35);
+            const double width = static_cast<int>(c.member) == emphasis.hovered ? 3.0
+                                 : chosen                                       ? 2.4
+                                                                                : 1.3;
+            if (chosen) strokeLines(painter, c.lines, plot, QPen(Qt::black, width + 1.6));
+            strokeLines(painter, c.lines, plot, QPen(colour, width));
+        }
+    }
+    // The mean's contour dashed, so the members' lines under it show between the dashes.
+    QPen mean(style.text, 1.8, Qt::DashLine);
+    mean.setDashPattern({4.0, 2.5});
+    strokeLines(painter, view.meanContour, plot, mean);
+    // Coastlines and borders on top of everything.
+    strokeLines(painter, view.mapLines, plot, QPen(QColor(20, 20, 20), 0.9));
+    painter.restore();
+    drawAxes(painter, view, plot, metrics, style);
+    drawSide(painter, view, layout.side, metrics, style);
+    painter.restore();
+}
+
+void writeSectionPicture(const SectionView& view, const QString& path, QSize size) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    const std::string name = path.toStdString();
+    const QRectF page(QPointF(0, 0), QSizeF(size));
+    if (suffix == QLatin1String("png")) {
+        QImage image(size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::white);
+        {
+            QPainter painter(&image);
+            paintSection(painter, view, page);
+        }
+        if (!image.save(path)) {
+            throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+        }
+    } else if (suffix == QLatin1String("svg")) {
+        QSvgGenerator svg;
+        svg.setFileName(path);
+        svg.setSize(size);
+        svg.setViewBox(page);
+        svg.setTitle(QString::fromStdString(view.title));
+        svg.setDescription(QString::fromStdString(view.subtitle));
+        QPainter painter;
+        if (!painter.begin(&svg)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+        paintSection(painter, view, page);
+        painter.end();
+    } else if (suffix == QLatin1String("pdf")) {
+        QPdfWriter pdf(path);
+        pdf.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
+        pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+        pdf.setResolution(72);
+        pdf.setTitle(QString::fromStdString(view.title));
+        QPainter painter;
+        if (!painter.begin(&pdf)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+        paintSection(painter, view, page);
+        painter.end();
+    } else {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          name + ": the picture's name must end in .png, .svg or .pdf");
+    }
+    if (!QFileInfo::exists(path)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+}
+
+}  // namespace ensil::engine
