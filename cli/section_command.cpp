@@ -75,8 +75,9 @@ std::optional<std::pair<engine::SectionFill, int>> parseFill(const QString& text
     if (t == QLatin1String("spread")) return std::pair{SectionFill::Spread, -1};
     if (t == QLatin1String("probability")) return std::pair{SectionFill::Probability, -1};
     if (t == QLatin1String("none")) return std::pair{SectionFill::None, -1};
-    for (const auto& [prefix, fill] : {std::pair{QStringLiteral("member:"), SectionFill::Member},
-                                       std::pair{QStringLiteral("anomaly:"), SectionFill::Anomaly}}) {
+    for (const auto& [prefix, fill] :
+         {std::pair{QStringLiteral("member:"), SectionFill::Member},
+          std::pair{QStringLiteral("anomaly:"), SectionFill::Anomaly}}) {
         if (!t.startsWith(prefix)) continue;
         bool ok = false;
         const int number = t.mid(prefix.size()).toInt(&ok);
@@ -128,13 +129,13 @@ QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResu
     for (const engine::MemberContour& c : view.members) {
         std::size_t points = 0;
         for (const engine::SectionLine& l : c.lines) points += l.points.size();
-        members.append(QJsonObject{
-            {"number", static_cast<qint64>(c.member + 1)},
-            {"name", QString::fromStdString(clusters.ensemble->members[c.member].name)},
-            {"cluster", clusters.clusterNumbers.at(c.member)},
-            {"color", QString::fromStdString(clusters.colors.at(c.member))},
-            {"contour_lines", static_cast<qint64>(c.lines.size())},
-            {"contour_points", static_cast<qint64>(points)}});
+        members.append(
+            QJsonObject{{"number", static_cast<qint64>(c.member + 1)},
+                        {"name", QString::fromStdString(clusters.ensemble->members[c.member].name)},
+                        {"cluster", clusters.clusterNumbers.at(c.member)},
+                        {"color", QString::fromStdString(clusters.colors.at(c.member))},
+                        {"contour_lines", static_cast<qint64>(c.lines.size())},
+                        {"contour_points", static_cast<qint64>(points)}});
     }
     QJsonObject o{{"out", path},
                   {"title", QString::fromStdString(view.title)},
@@ -168,22 +169,23 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
     parser.addOptions({o.level, o.latitude, o.longitude, o.path, o.fill, o.iso, o.output, o.size,
                        o.noCache, o.demo, o.json, o.quiet});
     clusterOptions().addTo(parser);
-    if (auto done = parseSubcommand(parser, args, QStringLiteral("section"), out, err)) return *done;
+    if (auto done = parseSubcommand(parser, args, QStringLiteral("section"), out, err))
+        return *done;
 
     QString problem;
     session::SessionState requested;
     const auto selection = selectionOptions.selection(parser, problem);
     const auto place = selection ? placeFrom(parser, o, problem) : std::nullopt;
     const auto fill = place ? parseFill(parser.value(o.fill), problem) : std::nullopt;
-    const auto size = !fill ? std::nullopt
-                      : parser.isSet(o.size)
-                          ? session::parseImageSize(QStringLiteral("--size"), parser.value(o.size),
-                                                    problem)
-                          : std::optional<std::pair<int, int>>(std::pair{kDefaultWidth, 0});
+    const auto size =
+        !fill ? std::nullopt
+        : parser.isSet(o.size)
+            ? session::parseImageSize(QStringLiteral("--size"), parser.value(o.size), problem)
+            : std::optional<std::pair<int, int>>(std::pair{kDefaultWidth, 0});
     std::optional<double> iso;
     if (size && parser.isSet(o.iso)) {
-        iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso), -1e30,
-                                          1e30, false, problem);
+        iso = session::parseBoundedNumber(QStringLiteral("--iso"), parser.value(o.iso), -1e30, 1e30,
+                                          false, problem);
     }
     const QString path = parser.value(o.output);
     const QString suffix = path.section(QLatin1Char('.'), -1).toLower();
@@ -232,9 +234,9 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
             err << "ensil section: " << QString::fromStdString(kind) << ": "
                 << QString::fromStdString(text) << "\n";
         };
-        const engine::PreprocessResult clusters = engine::preprocessEnsemble(
-            std::move(ensemble), request, notice, {},
-            progress.callback(QStringLiteral("clustering")));
+        const engine::PreprocessResult clusters =
+            engine::preprocessEnsemble(std::move(ensemble), request, notice, {},
+                                       progress.callback(QStringLiteral("clustering")));
         engine::SectionRequest section;
         section.place = *place;
         section.fill = fill->first;
@@ -245,9 +247,8 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
             section.memberColours.push_back(gl::clusterColor(number - 1));
         }
         const engine::SectionView view = engine::buildSection(*clusters.ensemble, section);
-        const QSize pictureSize = size->second > 0
-                                      ? QSize(size->first, size->second)
-                                      : engine::sectionPictureSize(view, size->first);
+        const QSize pictureSize = size->second > 0 ? QSize(size->first, size->second)
+                                                   : engine::sectionPictureSize(view, size->first);
         engine::writeSectionPicture(view, path, pictureSize);
         progress.endLine();
         if (parser.isSet(o.json)) {
@@ -256,8 +257,8 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
                 << "\n";
         } else {
             out << "ensil section: wrote " << path << ": " << QString::fromStdString(view.title)
-                << ", " << view.members.size() << " members' contours at "
-                << section.isovalue << "\n";
+                << ", " << view.members.size() << " members' contours at " << section.isovalue
+                << "\n";
         }
         return 0;
     } catch (const engine::PreprocessRefused& e) {

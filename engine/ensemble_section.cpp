@@ -84,11 +84,12 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     }
     const bool oneMember =
         request.fill == SectionFill::Member || request.fill == SectionFill::Anomaly;
-    if (oneMember && (request.member < 0 || static_cast<std::size_t>(request.member) >= memberCount)) {
+    if (oneMember &&
+        (request.member < 0 || static_cast<std::size_t>(request.member) >= memberCount)) {
         throw data::Error(data::ErrorKind::InvalidArgument,
-                          "member " + std::to_string(request.member + 1) +
-                              " is not one of the " + std::to_string(memberCount) +
-                              " members (1 to " + std::to_string(memberCount) + ")");
+                          "member " + std::to_string(request.member + 1) + " is not one of the " +
+                              std::to_string(memberCount) + " members (1 to " +
+                              std::to_string(memberCount) + ")");
     }
     PlacedSection placed = placeSection(ensemble, request.place);
     SectionView view;
@@ -101,8 +102,8 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     view.mapLines = std::move(placed.mapLines);
     view.graticule = std::move(placed.graticule);
     const std::string name = ensemble.variable;
-    view.title = name + (request.place.kind == SectionKind::Map ? " at " : " along ") +
-                 placed.placeText;
+    view.title =
+        name + (request.place.kind == SectionKind::Map ? " at " : " along ") + placed.placeText;
     if (request.place.kind == SectionKind::Path) view.title = name + " from " + placed.placeText;
 
     view.memberValues.reserve(memberCount);
@@ -117,7 +118,8 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
         return ensemble.members[static_cast<std::size_t>(m)].name;
     };
     switch (request.fill) {
-        case SectionFill::None: break;
+        case SectionFill::None:
+            break;
         case SectionFill::Member:
             view.fill = view.memberValues[static_cast<std::size_t>(request.member)];
             view.fillCaption = memberName(request.member) + ": " + name + units;
@@ -177,11 +179,11 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     for (std::size_t m = 0; m < memberCount; ++m) {
         MemberContour contour;
         contour.member = m;
-        contour.colour = m < request.memberColours.size() ? request.memberColours[m]
-                                                          : gl::kUnclusteredColor;
-        contour.lines = toPlot(prep::contourLines(view.memberValues[m], view.columns, view.rows,
-                                                  request.isovalue),
-                               placed);
+        contour.colour =
+            m < request.memberColours.size() ? request.memberColours[m] : gl::kUnclusteredColor;
+        contour.lines = toPlot(
+            prep::contourLines(view.memberValues[m], view.columns, view.rows, request.isovalue),
+            placed);
         view.members.push_back(std::move(contour));
         if (m < request.clusterNumbers.size()) {
             SectionView::LegendEntry& entry = legend[request.clusterNumbers[m]];
@@ -198,8 +200,7 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
 
     view.subtitle = "isovalue " + data::readableNumber(request.isovalue) +
                     (ensemble.units.empty() ? "" : " " + data::readableUnits(ensemble.units)) +
-                    " · " +
-                    std::to_string(memberCount) + " members" +
+                    " · " + std::to_string(memberCount) + " members" +
                     (view.fill.empty() ? "" : " · fill: " + view.fillCaption);
     return view;
 }

@@ -51,9 +51,12 @@ QRgb fromAnchors(const std::array<unsigned, N>& anchors, double t) {
 
 QRgb colourAt(ColourScaleKind scale, double t) {
     switch (scale) {
-        case ColourScaleKind::Diverging: return fromAnchors(kDiverging, t);
-        case ColourScaleKind::Probability: return fromAnchors(kProbability, t);
-        case ColourScaleKind::Sequential: break;
+        case ColourScaleKind::Diverging:
+            return fromAnchors(kDiverging, t);
+        case ColourScaleKind::Probability:
+            return fromAnchors(kProbability, t);
+        case ColourScaleKind::Sequential:
+            break;
     }
     return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();
 }
@@ -146,8 +149,8 @@ QFont sectionFont(const SectionStyle& style) {
 Layout layoutOf(const SectionView& view, const QRectF& page, const QFontMetricsF& metrics) {
     const double line = metrics.height();
     Layout l;
-    l.title = QRectF(page.left() + kMargin, page.top() + kMargin, page.width() - 2 * kMargin,
-                     2.4 * line);
+    l.title =
+        QRectF(page.left() + kMargin, page.top() + kMargin, page.width() - 2 * kMargin, 2.4 * line);
     const double left = page.left() + kMargin + 3.2 * line + metrics.horizontalAdvance("1000");
     const double top = page.top() + kMargin + kLinesAbove * line;
     const double right = page.right() - kMargin - kSideColumn;
@@ -181,9 +184,9 @@ void drawAxes(QPainter& painter, const SectionView& view, const QRectF& plot,
                          Qt::AlignCenter, text);
         previousRight = x + w / 2;
     }
-    painter.drawText(QRectF(plot.left(), plot.bottom() + kTickLength + 1.2 * line, plot.width(),
-                            line),
-                     Qt::AlignCenter, QString::fromStdString(view.bottom.title));
+    painter.drawText(
+        QRectF(plot.left(), plot.bottom() + kTickLength + 1.2 * line, plot.width(), line),
+        Qt::AlignCenter, QString::fromStdString(view.bottom.title));
     double widest = 0.0;
     double previousTop = 1e9;
     for (const SectionTick& tick : view.left.ticks) {
@@ -239,7 +242,8 @@ void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
     // The legend: the mean's line, then each cluster's colour and size.
     const auto entry = [&](const QPen& pen, const QString& text) {
         painter.setPen(pen);
-        painter.drawLine(QPointF(side.left(), y + line / 2), QPointF(side.left() + 22, y + line / 2));
+        painter.drawLine(QPointF(side.left(), y + line / 2),
+                         QPointF(side.left() + 22, y + line / 2));
         painter.setPen(style.text);
         painter.drawText(QRectF(side.left() + 28, y, side.width() - 28, line),
                          Qt::AlignLeft | Qt::AlignVCenter, text);
@@ -268,8 +272,8 @@ QSize sectionPictureSize(const SectionView& view, int width, const SectionStyle&
     const double side = (view.fill.empty() ? 0.0 : 3.0 + 6.0 + 1.2) * line +
                         1.25 * line * static_cast<double>(view.legend.size() + 1);
     const double plotHeight = std::max(wide.width() / view.aspect, side);
-    return {width, static_cast<int>(std::ceil(plotHeight + 2 * kMargin +
-                                              (kLinesAbove + kLinesBelow) * line))};
+    return {width, static_cast<int>(
+                       std::ceil(plotHeight + 2 * kMargin + (kLinesAbove + kLinesBelow) * line))};
 }
 
 void paintSection(QPainter& painter, const SectionView& view, const QRectF& page,
@@ -288,7 +292,8 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     heading.setBold(true);
     painter.setFont(heading);
     painter.setPen(style.text);
-    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignTop, QString::fromStdString(view.title));
+    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignTop,
+                     QString::fromStdString(view.title));
     painter.setFont(font);
     painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignBottom,
                      QString::fromStdString(view.subtitle));
@@ -318,7 +323,8 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     }
     for (int pass = 0; pass < 2; ++pass) {
         for (const MemberContour& c : view.members) {
-            const bool chosen = isSelected(c.member) || static_cast<int>(c.member) == emphasis.hovered;
+            const bool chosen =
+                isSelected(c.member) || static_cast<int>(c.member) == emphasis.hovered;
             if (chosen != (pass == 1)) continue;
             QColor colour = toColour(c.colour);
             if (anySelected && !chosen) colour.setAlphaF(0.35);
@@ -363,7 +369,8 @@ void writeSectionPicture(const SectionView& view, const QString& path, QSize siz
         svg.setTitle(QString::fromStdString(view.title));
         svg.setDescription(QString::fromStdString(view.subtitle));
         QPainter painter;
-        if (!painter.begin(&svg)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+        if (!painter.begin(&svg))
+            throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
         paintSection(painter, view, page);
         painter.end();
     } else if (suffix == QLatin1String("pdf")) {
@@ -373,14 +380,16 @@ void writeSectionPicture(const SectionView& view, const QString& path, QSize siz
         pdf.setResolution(72);
         pdf.setTitle(QString::fromStdString(view.title));
         QPainter painter;
-        if (!painter.begin(&pdf)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+        if (!painter.begin(&pdf))
+            throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
         paintSection(painter, view, page);
         painter.end();
     } else {
         throw data::Error(data::ErrorKind::InvalidArgument,
                           name + ": the picture's name must end in .png, .svg or .pdf");
     }
-    if (!QFileInfo::exists(path)) throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
+    if (!QFileInfo::exists(path))
+        throw data::Error(data::ErrorKind::WriteFailed, "could not write " + name);
 }
 
 }  // namespace ensil::engine

@@ -22,6 +22,9 @@ using data::ErrorKind;
 
 std::string tickText(double value) { return gl::formatTick(value).toStdString(); }
 
+// A place in a message: to a hundredth of a degree (or unit).
+double rounded(double value) { return std::round(value * 100.0) / 100.0; }
+
 // The whole text as a number, with what follows it in `rest` (spaces trimmed).
 std::optional<double> leadingNumber(const std::string& text, std::string& rest) {
     const char* begin = text.c_str();
@@ -95,9 +98,33 @@ std::vector<glm::dvec2> greatCircle(glm::dvec2 a, glm::dvec2 b, std::size_t n) {
     return points;
 }
 
-// Grid axis coordinates to fractional grid indices; NaN outside.
-glm::dvec2 indexOf(const data::Grid& grid, glm::dvec2 p) {
-    return {grid.x().indexOf(p.x), grid.y().indexOf(p.y)};
+// Whether the grid's longitudes go round the globe (0 to 357 by 3): then a place between the
+// last and the first lies in the cell across the seam.
+bool goesRoundTheGlobe(const data::Grid& grid, const geo::MapProjection& projection) {
+    const data::Axis& x = grid.x();
+    const double step = (x.maxValue() - x.minValue()) / static_cast<double>(x.size() - 1);
+    return projection.kind() == geo::MapProjection::Kind::LonLat && x.isUniform() &&
+           std::abs(x.maxValue() - x.minValue() + step - 360.0) < 0.5 * step;
+}
+
+// Grid axis coordinates to fractional grid indices; NaN outside. Round the globe, an x past
+// the last column (or before the first) is in the seam's cell, index nx - 1 to nx.
+glm::dvec2 indexOf(const data::Grid& grid, glm::dvec2 p, bool roundTheGlobe = false) {
+    double i = grid.x().indexOf(p.x);
+    if (roundTheGlobe && !std::isfinite(i) && std::isfinite(p.x)) {
+        const data::Axis& x = grid.x();
+        const double step = (x.maxValue() - x.minValue()) / static_cast<double>(x.size() - 1);
+        // Past the axis's maximum, measured from it (wrapped by 360 into [0, 360)).
+        const double past = std::fmod(std::fmod(p.x - x.maxValue(), 360.0) + 360.0, 360.0);
+        if (past < step) {
+            const bool increasing = x.back() > x.front();
+            // An increasing axis goes on from its last column into the seam; a decreasing one
+            // from its first, which is index 0 (the seam then lies between columns 0 and -1:
+            // not taken here, as longitude axes in files increase).
+            if (increasing) i = static_cast<double>(x.size() - 1) + past / step;
+        }
+    }
+    return {i, grid.y().indexOf(p.y)};
 }
 
 bool inside(glm::dvec2 index) { return std::isfinite(index.x) && std::isfinite(index.y); }
@@ -148,13 +175,13 @@ SectionAxis mapAxis(const data::Grid& grid, const data::DisplayFrame& frame, int
     const gl::AxisLabelling labelling = gl::labellingFor(axis);
     out.title = degrees ? (a == 0 ? "longitude" : "latitude") : axisTitle(axis, labelling.units);
     const double extent = frame.boxMax()[a];
-    for (const double t : degrees ? degreeTicks(axis.minValue(), axis.maxValue())
-                                  : labelling.ticks) {
+    for (const double t :
+         degrees ? degreeTicks(axis.minValue(), axis.maxValue()) : labelling.ticks) {
         glm::dvec3 p{grid.x().front(), grid.y().front(), grid.z().front()};
         p[a] = t;
-        out.ticks.push_back({frame.toDisplay(p)[a] / extent,
-                             degrees ? degreesText(t, a == 1)
-                                     : tickText(t * labelling.shownPerUnit)});
+        out.ticks.push_back(
+            {frame.toDisplay(p)[a] / extent,
+             degrees ? degreesText(t, a == 1) : tickText(t * labelling.shownPerUnit)});
     }
     std::sort(out.ticks.begin(), out.ticks.end(),
               [](const SectionTick& x, const SectionTick& y) { return x.position < y.position; });
@@ -194,8 +221,9 @@ double levelIndex(const data::Grid& grid, const SectionPlace& place, std::string
         return place.level;
     }
     double coordinate = place.level;
-    text = tickText(place.level) + (place.levelUnits.empty() ? (z.units.empty() ? "" : " " + z.units)
-                                                             : " " + place.levelUnits);
+    text =
+        tickText(place.level) + (place.levelUnits.empty() ? (z.units.empty() ? "" : " " + z.units)
+                                                          : " " + place.levelUnits);
     if (!units.empty()) {
         const double perUnit = data::hectopascalsPer(place.levelUnits);
         const double perMetre = data::metresPer(place.levelUnits);
@@ -229,8 +257,10 @@ std::vector<glm::dvec2> borderLonLat(const data::Grid& grid, const geo::MapProje
         const double t = static_cast<double>(i) / kPerSide;
         const double x = grid.x().valueAt(t * static_cast<double>(grid.nx() - 1));
         const double y = grid.y().valueAt(t * static_cast<double>(grid.ny() - 1));
-        points.insert(points.end(), {{x, grid.y().front()}, {x, grid.y().back()},
-                                     {grid.x().front(), y}, {grid.x().back(), y}});
+        points.insert(points.end(), {{x, grid.y().front()},
+                                     {x, grid.y().back()},
+                                     {grid.x().front(), y},
+                                     {grid.x().back(), y}});
     }
     projection.toLonLat(points);
     std::erase_if(points, [](glm::dvec2 p) { return !std::isfinite(p.x) || !std::isfinite(p.y); });
@@ -244,9 +274,10 @@ std::vector<glm::dvec2> longestInside(const data::Grid& grid, const geo::MapProj
                                       std::vector<glm::dvec2>& kept) {
     std::vector<glm::dvec2> xy = lonLat;
     projection.toGrid(xy);
+    const bool round = goesRoundTheGlobe(grid, projection);
     std::vector<glm::dvec2> best, bestLonLat, run, runLonLat;
     for (std::size_t i = 0; i <= xy.size(); ++i) {
-        const glm::dvec2 index = i < xy.size() ? indexOf(grid, xy[i]) : glm::dvec2(NAN);
+        const glm::dvec2 index = i < xy.size() ? indexOf(grid, xy[i], round) : glm::dvec2(NAN);
         if (inside(index)) {
             run.push_back(index);
             runLonLat.push_back(lonLat[i]);
@@ -316,12 +347,12 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
     const std::size_t samples = std::max<std::size_t>(64, 2 * std::max(grid.nx(), grid.ny()));
     std::vector<glm::dvec2> path, lonLat;
     if (place.kind == SectionKind::Path) {
-        out.placeText = geographic ? degreesText(place.from.x, false) + " " +
-                                         degreesText(place.from.y, true) + " to " +
-                                         degreesText(place.to.x, false) + " " +
-                                         degreesText(place.to.y, true)
-                                   : tickText(place.from.x) + "," + tickText(place.from.y) +
-                                         " to " + tickText(place.to.x) + "," + tickText(place.to.y);
+        out.placeText =
+            geographic
+                ? degreesText(place.from.x, false) + " " + degreesText(place.from.y, true) +
+                      " to " + degreesText(place.to.x, false) + " " + degreesText(place.to.y, true)
+                : tickText(place.from.x) + "," + tickText(place.from.y) + " to " +
+                      tickText(place.to.x) + "," + tickText(place.to.y);
         std::vector<glm::dvec2> points;
         if (geographic) {
             points = greatCircle(place.from, place.to, samples);
@@ -334,13 +365,14 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
         std::vector<glm::dvec2> xy = points;
         if (geographic) projection.toGrid(xy);
         for (std::size_t i = 0; i < xy.size(); ++i) {
-            const glm::dvec2 index = indexOf(grid, xy[i]);
+            const glm::dvec2 index = indexOf(grid, xy[i], goesRoundTheGlobe(grid, projection));
             if (!inside(index)) {
                 throw Error(ErrorKind::InvalidArgument,
                             "the path from " + out.placeText + " leaves the data near " +
-                                (geographic ? degreesText(points[i].x, false) + " " +
-                                                  degreesText(points[i].y, true)
-                                            : tickText(points[i].x) + "," + tickText(points[i].y)));
+                                (geographic ? degreesText(rounded(points[i].x), false) + " " +
+                                                  degreesText(rounded(points[i].y), true)
+                                            : tickText(rounded(points[i].x)) + "," +
+                                                  tickText(rounded(points[i].y))));
             }
             path.push_back(index);
         }
@@ -370,8 +402,8 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
                 hi = std::max(hi, alongParallel ? p.x : p.y);
             }
             for (std::size_t i = 0; i < samples && lo < hi; ++i) {
-                const double v = lo + (hi - lo) * static_cast<double>(i) /
-                                          static_cast<double>(samples - 1);
+                const double v =
+                    lo + (hi - lo) * static_cast<double>(i) / static_cast<double>(samples - 1);
                 points.push_back(alongParallel ? glm::dvec2(v, fixed) : glm::dvec2(fixed, v));
             }
         }
@@ -384,7 +416,7 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
                             tickText(grid.y().front()) + " to " + tickText(grid.y().back()) + ")");
         }
     }
-    out.lattice = prep::verticalLattice(grid, path);
+    out.lattice = prep::verticalLattice(grid, path, goesRoundTheGlobe(grid, projection));
     double total = 0.0;
     out.columnPositions = positionsAlong(lonLat, geographic, total);
     const data::DisplayFrame frame(grid, 1.0F);
@@ -475,8 +507,8 @@ std::optional<SectionPlace> parseLatitude(const std::string& text, std::string& 
 std::optional<SectionPlace> parseLongitude(const std::string& text, std::string& problem) {
     const auto value = parseAngle(text, 'E', 'W', 360.0);
     if (!value) {
-        problem = "'" + text +
-                  "' is not a longitude: give degrees east, -360 to 360 (10, 10E, 75W)";
+        problem =
+            "'" + text + "' is not a longitude: give degrees east, -360 to 360 (10, 10E, 75W)";
         return std::nullopt;
     }
     SectionPlace place;

@@ -24,7 +24,7 @@ struct PlacedSection {
     SectionAxis left;
     std::vector<SectionLine> mapLines;   // coastlines and borders
     std::vector<SectionLine> graticule;  // true meridians and parallels of a projected grid
-    std::string placeText;               // "500 hPa", "45°N", "10°W", "10°W 50°N to 20°E 40°N"
+    std::string placeText;  // "500 hPa", "45°N", "10°W", "10°W 50°N to 20°E 40°N"
 };
 
 // Throws data::Error(InvalidArgument) naming the place and the grid's range when the place

@@ -20,6 +20,9 @@ struct SectionLattice {
     std::size_t columns = 0;
     std::size_t rows = 0;
     std::vector<glm::dvec3> indices;
+    // x runs round the globe: an x index between nx - 1 and nx lies in the cell that joins the
+    // last column to the first (a longitude grid from 0 to 357 crossed at 358.5).
+    bool wrapsX = false;
 };
 
 // Every horizontal grid point at level `zIndex` (from 0 to nz - 1): columns along x, rows
@@ -28,7 +31,9 @@ SectionLattice horizontalLattice(const data::Grid& grid, double zIndex);
 // Every level under each of `path`'s points (fractional x, y indices inside the grid):
 // columns along the path, rows up the z axis's index. Throws data::Error(InvalidArgument) for
 // fewer than 2 points or a point outside the grid.
-SectionLattice verticalLattice(const data::Grid& grid, const std::vector<glm::dvec2>& path);
+// With `wrapsX`, x indices up to nx (not nx - 1) are inside.
+SectionLattice verticalLattice(const data::Grid& grid, const std::vector<glm::dvec2>& path,
+                               bool wrapsX = false);
 
 // The field's values at the lattice's samples (NaN where it has none).
 std::vector<float> sampleSection(const data::Grid& grid, std::span<const float> values,

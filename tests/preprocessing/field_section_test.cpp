@@ -59,3 +59,16 @@ TEST(FieldSection, RefusesPlacesOutsideTheGrid) {
     EXPECT_THROW(prep::verticalLattice(grid, {{0.0, 0.0}, {4.5, 1.0}}), data::Error);
     EXPECT_THROW(prep::verticalLattice(grid, {{1.0, 1.0}}), data::Error);
 }
+
+TEST(FieldSection, AroundTheGlobeTheSeamsCellJoinsTheLastColumnToTheFirst) {
+    const data::Grid grid = smallGrid();
+    const std::vector<float> values = linearField(grid);
+    // Half way from the last column (x = 4) to the first (x = 0), at y = 1, on level 0.
+    const prep::SectionLattice round =
+        prep::verticalLattice(grid, {{4.5, 1.0}, {4.0, 1.0}}, /*wrapsX=*/true);
+    const std::vector<float> section = prep::sampleSection(grid, values, round);
+    EXPECT_FLOAT_EQ(section[0], 0.5F * (4.0F + 10.0F) + 0.5F * (0.0F + 10.0F));
+    EXPECT_FLOAT_EQ(section[1], 14.0F);
+    // Without the wrap the same place is outside.
+    EXPECT_THROW(prep::verticalLattice(grid, {{4.5, 1.0}, {4.0, 1.0}}), data::Error);
+}
