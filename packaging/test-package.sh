@@ -40,6 +40,7 @@ for path in ./usr/bin/ensil \
             ./usr/share/doc/ensil/LICENSE \
             ./usr/share/man/man1/ensil.1.gz \
             ./usr/share/man/man1/ensil-render.1.gz \
+            ./usr/share/man/man1/ensil-section.1.gz \
             ./usr/share/bash-completion/completions/ensil \
             ./usr/share/zsh/vendor-completions/_ensil \
             ./usr/lib/python3/dist-packages/ensil/__init__.py \
@@ -129,6 +130,11 @@ step "ensil render --demo with no display server"
 env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM HOME=$work XDG_RUNTIME_DIR=$work \
     /usr/bin/ensil render --demo --iso 30 --size 320x240 --out "$work/batch.png"
 python3 "$checks" png "$work/batch.png" --size 320x240 --min-covered 0.05 --min-colours 50
+# A section needs no display server either: Qt's offscreen platform, with the installed fonts.
+step "ensil section --demo with no display server"
+env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM HOME=$work XDG_RUNTIME_DIR=$work \
+    /usr/bin/ensil section --demo --level 250hPa --size 640x360 --out "$work/section.png"
+python3 "$checks" png "$work/section.png" --size 640x360 --min-covered 0.05 --min-colours 50
 # The workbench window shows the icon: the embedded SVG renders with the installed Qt plugins.
 xvfb-run -a -s "-screen 0 1600x1000x24" packaging/window-icon-check.sh /usr/bin/ensil
 
