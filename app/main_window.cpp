@@ -17,7 +17,6 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolButton>
-#include <QUnhandledException>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -54,20 +53,9 @@ constexpr int kProgressSteps = 1000;
 // with (ui::FramePacedRepaints): ten repaints a second at the least.
 constexpr std::chrono::milliseconds kLongestScrubRepaintWait{100};
 
-// QtConcurrent wraps exceptions it does not know in QUnhandledException; unwrap them.
-std::exception_ptr unwrap(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);
-    } catch (const QUnhandledException& e) {
-        return e.exception() ? unwrap(e.exception()) : error;
-    } catch (...) {
-        return error;
-    }
-}
-
 QString messageOf(const std::exception_ptr& error) {
     try {
-        std::rethrow_exception(unwrap(error));
+        std::rethrow_exception(error);  // unwrapped by BackgroundJob
     } catch (const std::bad_alloc&) {
         return QObject::tr("not enough memory to load the ensemble");
     } catch (const std::exception& e) {
@@ -80,7 +68,7 @@ QString messageOf(const std::exception_ptr& error) {
 // The reader's typed error, if that is what the worker threw.
 std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
     try {
-        std::rethrow_exception(unwrap(error));
+        std::rethrow_exception(error);  // unwrapped by BackgroundJob
     } catch (const data::Error& e) {
         return e;
     } catch (...) {

@@ -50,6 +50,7 @@ class OpenDataDialog;
 class MemberTablePanel;
 class ClusterPanel;
 class DendrogramView;
+class SectionsPanel;
 }  // namespace ensil::ui
 
 namespace ensil::session {
@@ -108,6 +109,7 @@ public:
     [[nodiscard]] ui::MemberTablePanel* memberTable() const { return m_memberTable; }
     [[nodiscard]] ui::ClusterPanel* clusterPanel() const { return m_clusterPanel; }
     [[nodiscard]] ui::DendrogramView* dendrogram() const { return m_dendrogram; }
+    [[nodiscard]] ui::SectionsPanel* sectionsPanel() const { return m_sections; }
     // Whether a window layout was saved by an earlier run (the first run starts maximised).
     [[nodiscard]] bool hasSavedLayout() const { return m_hasSavedLayout; }
     // What `ensil [FILES | PROJECT.ensil]` (and a double-click on a file) does: shows the
@@ -331,6 +333,7 @@ private:
     ui::MemberTablePanel* m_memberTable = nullptr;
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;
+    ui::SectionsPanel* m_sections = nullptr;
     bool m_hasSavedLayout = false;
     workbench::BackgroundJob<engine::EnsembleOverview> m_loader{this};
     workbench::BackgroundJob<engine::ExportedSurfaces> m_surfaceExport{this};

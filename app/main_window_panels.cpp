@@ -18,6 +18,7 @@
 #include "widgets/dendrogram_view.h"
 #include "widgets/member_table_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/sections_panel.h"
 #include "widgets/silhouette_view.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
@@ -29,6 +30,7 @@ namespace {
 constexpr int kSideDockWidth = 460;
 constexpr int kDendrogramHeight = 230;
 constexpr int kClusterListHeight = 240;
+constexpr double kSectionsShare = 0.4;  // of the window's height, for the Sections dock
 
 QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* name,
                       QWidget* content) {
@@ -49,6 +51,16 @@ void MainWindow::createPanels() {
     makeDock(this, tr("Dendrogram"), "dendrogramDock", m_dendrogram);
     m_timeline = new ui::ClusterTimeline(m_selection);
     makeDock(this, tr("Clusters over Time"), "clusterTimelineDock", m_timeline);
+    m_sections = new ui::SectionsPanel(m_selection);
+    QDockWidget* sections = makeDock(this, tr("Sections"), "sectionsDock", m_sections);
+    // Maps need more room than the dendrogram's strip: shown, the dock takes a good part of
+    // the window's height (the user's own size stays once larger).
+    connect(sections, &QDockWidget::visibilityChanged, this, [this, sections](bool visible) {
+        const int wanted = static_cast<int>(kSectionsShare * height());
+        if (visible && !sections->isFloating() && sections->height() < wanted) {
+            resizeDocks({sections}, {wanted}, Qt::Vertical);
+        }
+    });
     arrangeDefaultLayout();
 }
 
@@ -61,6 +73,7 @@ void MainWindow::arrangeDefaultLayout() {
     auto* members = findChild<QDockWidget*>(QStringLiteral("memberTableDock"));
     auto* dendrogram = findChild<QDockWidget*>(QStringLiteral("dendrogramDock"));
     auto* timeline = findChild<QDockWidget*>(QStringLiteral("clusterTimelineDock"));
+    auto* sections = findChild<QDockWidget*>(QStringLiteral("sectionsDock"));
     setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
     setCorner(Qt::TopRightCorner, Qt::RightDockWidgetArea);
     addDockWidget(Qt::RightDockWidgetArea, clusters);
@@ -70,6 +83,10 @@ void MainWindow::arrangeDefaultLayout() {
     addDockWidget(Qt::BottomDockWidgetArea, dendrogram);
     // Beside the dendrogram, below the view: shown for data with time steps.
     if (timeline != nullptr) splitDockWidget(dendrogram, timeline, Qt::Horizontal);
+    // The sections as a tab beside the dendrogram: wide below the view, map and cross-section
+    // side by side.
+    if (sections != nullptr) tabifyDockWidget(dendrogram, sections);
+    dendrogram->raise();
     clusters->raise();
     resizeDocks({clusters}, {kSideDockWidth}, Qt::Horizontal);
     resizeDocks({clusters, members}, {kClusterListHeight, 1000 - kClusterListHeight}, Qt::Vertical);

@@ -1,14 +1,17 @@
 // What follows each isovalue's surfaces reaching the screen (workbench::IsovalueSession::
 // finished), in one place and in this order: the status bar, the floor and the section (which
-// show the new P(f > c) and isovalue), the removal band's range, the animation's order, the time
-// step now shown, a project's members waiting for their clusters, and the undo history of new
-// data. Before, each was its own connection in another file, run in the order they were made.
+// show the new P(f > c) and isovalue), the Sections dock, the removal band's range, the animation's
+// order, the time step now shown, a project's members waiting for their clusters, and the undo
+// history of new data. Before, each was its own connection in another file, run in the order they
+// were made.
 #include <utility>
 
 #include "app/main_window.h"
 #include "session/session_history.h"
 #include "session/session_model.h"
 #include "widgets/animation_bar.h"
+#include "widgets/sections_panel.h"
+#include "workbench/isovalue_session.h"
 
 namespace ensil::app {
 
@@ -16,6 +19,10 @@ void MainWindow::showBuiltSurfaces(const QString& summary) {
     setIdle(summary);
     showFloor(m_model->state().render);
     showSection();
+    // The Sections dock's maps and cross-sections, at this isovalue (of this time step).
+    if (const workbench::IsovalueResult* result = m_session->result(); result && m_overview) {
+        m_sections->showData(m_overview->ensemble, result->meshes->isovalue);
+    }
     // The removal thresholds range over the outlyingness of the meshes on screen.
     showOutlyingnessRange();
     // A new isovalue changes the animation's order: the next play computes it again.

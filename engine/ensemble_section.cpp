@@ -10,6 +10,7 @@
 #include "data/units_text.h"
 #include "engine/picture_title.h"
 #include "engine/section_place.h"
+#include "geo/map_projection.h"
 #include "gl/axis_ticks.h"
 #include "gl/palette.h"
 #include "preprocessing/field_section.h"
@@ -107,7 +108,9 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     if (request.place.kind == SectionKind::Path) view.title = name + " from " + placed.placeText;
 
     view.memberValues.reserve(memberCount);
+    view.units = data::readableUnits(ensemble.units);
     for (const data::Member& member : ensemble.members) {
+        view.memberNames.push_back(member.name);
         view.memberValues.push_back(
             prep::sampleSection(ensemble.grid, member.values, placed.lattice));
     }
@@ -203,6 +206,128 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
                     " · " + std::to_string(memberCount) + " members" +
                     (view.fill.empty() ? "" : " · fill: " + view.fillCaption);
     return view;
+}
+
+double latticeIndexAt(const std::vector<double>& positions, double t) {
+    const bool ascending = positions.back() >= positions.front();
+    const auto before = [ascending](double p, double v) { return ascending ? p < v : p > v; };
+    const auto it = std::lower_bound(positions.begin(), positions.end(), t, before);
+    if (it == positions.begin()) return 0.0;
+    if (it == positions.end()) return static_cast<double>(positions.size() - 1);
+    const auto i = static_cast<std::size_t>(it - positions.begin());
+    const double a = positions[i - 1], b = positions[i];
+    return static_cast<double>(i - 1) + (b == a ? 0.0 : (t - a) / (b - a));
+}
+
+float sectionValueAt(const SectionView& view, const std::vector<float>& values, glm::dvec2 unit) {
+    if (view.columns < 2 || view.rows < 2 || values.size() != view.columns * view.rows) return kNaN;
+    const double column = latticeIndexAt(view.columnPositions, unit.x);
+    const double row = latticeIndexAt(view.rowPositions, unit.y);
+    const auto c0 = std::min(static_cast<std::size_t>(column), view.columns - 2);
+    const auto r0 = std::min(static_cast<std::size_t>(row), view.rows - 2);
+    const double fc = column - static_cast<double>(c0), fr = row - static_cast<double>(r0);
+    const std::size_t nearest =
+        c0 + (fc >= 0.5 ? 1 : 0) + view.columns * (r0 + (fr >= 0.5 ? 1 : 0));
+    if (std::isnan(values[nearest])) return kNaN;
+    double sum = 0.0, weights = 0.0;
+    for (int corner = 0; corner < 4; ++corner) {
+        const double w = ((corner & 1) ? fc : 1 - fc) * ((corner >> 1) ? fr : 1 - fr);
+        const float v = values[c0 + (corner & 1) + view.columns * (r0 + (corner >> 1))];
+        if (std::isnan(v) || w <= 0.0) continue;
+        sum += w * v;
+        weights += w;
+    }
+    return weights > 0.0 ? static_cast<float>(sum / weights) : kNaN;
+}
+
+void colourSection(SectionView& view, const std::vector<glm::vec3>& memberColours,
+                   const std::vector<int>& clusterNumbers) {
+    std::map<int, SectionView::LegendEntry> legend;
+    for (MemberContour& contour : view.members) {
+        const std::size_t m = contour.member;
+        contour.colour = m < memberColours.size() ? memberColours[m] : gl::kUnclusteredColor;
+        if (m < clusterNumbers.size() && clusterNumbers[m] > 0) {
+            SectionView::LegendEntry& entry = legend[clusterNumbers[m]];
+            entry.cluster = clusterNumbers[m];
+            entry.colour = contour.colour;
+            ++entry.members;
+        }
+    }
+    view.legend.clear();
+    for (const auto& [number, entry] : legend) view.legend.push_back(entry);
+}
+
+DefaultSections defaultSections(const data::Ensemble& ensemble, float isovalue) {
+    const data::Grid& grid = ensemble.grid;
+    const std::size_t nx = grid.nx(), ny = grid.ny(), nz = grid.nz();
+    // Points with members on both sides of the isovalue, per level and per row of each level.
+    std::vector<std::size_t> perRow(ny * nz, 0);
+    for (std::size_t k = 0; k < nz; ++k) {
+        for (std::size_t j = 0; j < ny; ++j) {
+            std::size_t count = 0;
+            for (std::size_t i = 0; i < nx; ++i) {
+                const std::size_t p = grid.index(i, j, k);
+                bool above = false, below = false;
+                for (const data::Member& m : ensemble.members) {
+                    const float v = m.values[p];
+                    above = above || v > isovalue;
+                    below = below || v <= isovalue;  // NaN is neither
+                    if (above && below) break;
+                }
+                count += above && below ? 1 : 0;
+            }
+            perRow[j + ny * k] = count;
+        }
+    }
+    std::size_t level = nz / 2, best = 0;
+    for (std::size_t k = 0; k < nz; ++k) {
+        std::size_t count = 0;
+        for (std::size_t j = 0; j < ny; ++j) count += perRow[j + ny * k];
+        if (count > best) {
+            best = count;
+            level = k;
+        }
+    }
+    std::size_t row = ny / 2;
+    best = 0;
+    for (std::size_t j = 0; j < ny; ++j) {
+        if (perRow[j + ny * level] > best) {
+            best = perRow[j + ny * level];
+            row = j;
+        }
+    }
+    DefaultSections d;
+    d.map.kind = SectionKind::Map;
+    if (grid.z().units.empty()) {
+        d.map.level = static_cast<double>(level);
+        d.map.levelUnits = "index";
+    } else {
+        d.map.level = grid.z().values[level];
+        d.map.levelUnits = grid.z().units;
+        // Pressure as people say it: 250 hPa rather than 25000 Pa.
+        if (const double per = data::hectopascalsPer(grid.z().units); per > 0.0) {
+            d.map.level = grid.z().values[level] * per;
+            d.map.levelUnits = "hPa";
+        }
+    }
+    const geo::MapProjection projection = geo::MapProjection::forGrid(grid, ensemble.gridMapping);
+    const double y = grid.y().values[row];
+    if (projection.kind() == geo::MapProjection::Kind::LonLat) {
+        d.crossSection.kind = SectionKind::Latitude;
+        d.crossSection.latitude = y;
+        return d;
+    }
+    d.crossSection.kind = SectionKind::Path;
+    std::vector<glm::dvec2> ends{{grid.x().front(), y}, {grid.x().back(), y}};
+    if (projection.hasGeography()) {
+        // A little inside the ends, so the great circle between them stays in the grid.
+        const double inset = 0.02 * (grid.x().back() - grid.x().front());
+        ends = {{grid.x().front() + inset, y}, {grid.x().back() - inset, y}};
+        projection.toLonLat(ends);
+    }
+    d.crossSection.from = ends[0];
+    d.crossSection.to = ends[1];
+    return d;
 }
 
 }  // namespace ensil::engine

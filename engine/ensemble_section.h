@@ -107,6 +107,8 @@ struct SectionView {
     std::vector<LegendEntry> legend;
     // Samples of each member's field, kept for hover (value under the pointer) and for Python.
     std::vector<std::vector<float>> memberValues;
+    std::vector<std::string> memberNames;  // as the file names them
+    std::string units;                     // the variable's, as people read them ("m s⁻¹")
     // The place in words, for file names and JSON: "500 hPa", "45°N", "10°E", "path".
     std::string placeText;
 };
@@ -114,5 +116,30 @@ struct SectionView {
 // Throws data::Error(InvalidArgument) naming the place when it lies outside the data (a level
 // above the top, a latitude the grid does not reach) or the fill's member does not exist.
 SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request);
+
+// The fractional lattice index at position t along a table of positions (ascending or
+// descending), clamped to the lattice.
+double latticeIndexAt(const std::vector<double>& positions, double t);
+// The value of `values` (one per lattice sample: view.fill, a member's memberValues) at a place
+// in the plot's unit square, bilinear between samples; NaN where the nearest sample is missing
+// or the size is not the lattice's.
+float sectionValueAt(const SectionView& view, const std::vector<float>& values, glm::dvec2 unit);
+
+// Gives each member's contour its colour and makes the legend (as buildSection does from the
+// request), for new clusters without sampling the section again.
+void colourSection(SectionView& view, const std::vector<glm::vec3>& memberColours,
+                   const std::vector<int>& clusterNumbers);
+
+// Where a section shows most by default: the map at the grid level, and the cross-section along
+// the grid row of that level, where the most points have members on both sides of the isovalue
+// (where the members' contours are, and differ). The level in the axis's own units (an index
+// for an axis without units); the cross-section along the row's latitude on a
+// longitude/latitude grid, else along the row from its first point to its last (as longitude
+// and latitude through `gridMapping`, or in the grid's x, y without a map). Any thread.
+struct DefaultSections {
+    SectionPlace map;
+    SectionPlace crossSection;
+};
+DefaultSections defaultSections(const data::Ensemble& ensemble, float isovalue);
 
 }  // namespace ensil::engine

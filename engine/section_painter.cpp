@@ -18,8 +18,20 @@
 namespace ensil::engine {
 namespace {
 
-constexpr double kMargin = 12.0;
-constexpr double kSideColumn = 200.0;  // the colour bar and the legend, right of the plot
+// A figure's proportions; a compact one (a dock) has no title lines, a narrow side column
+// (the colour bar alone: the clusters' legend is the Clusters panel) and thin margins.
+struct Proportions {
+    double margin;
+    double sideColumn;  // the colour bar and the legend, right of the plot
+    double linesAbove;  // margin, title, subtitle, gap, in lines of text
+    bool titled;
+    bool legend;
+};
+
+Proportions proportionsOf(const SectionStyle& style) {
+    return style.compact ? Proportions{4.0, 96.0, 0.6, false, false}
+                         : Proportions{12.0, 200.0, 3.0, true, true};
+}
 constexpr double kTickLength = 4.0;
 const QColor kMissing(0xd9, 0xd9, 0xd9);
 
@@ -61,49 +73,17 @@ QRgb colourAt(ColourScaleKind scale, double t) {
     return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();
 }
 
-// The fractional index whose position (ascending or descending table) is t.
-double indexAt(const std::vector<double>& positions, double t) {
-    const bool ascending = positions.back() >= positions.front();
-    const auto before = [ascending](double p, double v) { return ascending ? p < v : p > v; };
-    const auto it = std::lower_bound(positions.begin(), positions.end(), t, before);
-    if (it == positions.begin()) return 0.0;
-    if (it == positions.end()) return static_cast<double>(positions.size() - 1);
-    const auto i = static_cast<std::size_t>(it - positions.begin());
-    const double a = positions[i - 1], b = positions[i];
-    return static_cast<double>(i - 1) + (b == a ? 0.0 : (t - a) / (b - a));
-}
-
 // The filled field drawn into an image of `width` x `height` pixels covering the plot.
 QImage fillImage(const SectionView& view, int width, int height) {
     QImage image(width, height, QImage::Format_RGB32);
-    std::vector<double> columnAt(static_cast<std::size_t>(width));
-    for (int x = 0; x < width; ++x) {
-        columnAt[static_cast<std::size_t>(x)] = indexAt(view.columnPositions, (x + 0.5) / width);
-    }
     const double range = static_cast<double>(view.fillMaximum) - view.fillMinimum;
     for (int y = 0; y < height; ++y) {
-        const double row = indexAt(view.rowPositions, 1.0 - (y + 0.5) / height);
-        const auto r0 = std::min(static_cast<std::size_t>(row), view.rows - 2);
-        const double fr = row - static_cast<double>(r0);
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
         for (int x = 0; x < width; ++x) {
-            const double column = columnAt[static_cast<std::size_t>(x)];
-            const auto c0 = std::min(static_cast<std::size_t>(column), view.columns - 2);
-            const double fc = column - static_cast<double>(c0);
-            double sum = 0.0, weights = 0.0;
-            for (int corner = 0; corner < 4; ++corner) {
-                const std::size_t c = c0 + (corner & 1), r = r0 + (corner >> 1);
-                const double w = ((corner & 1) ? fc : 1 - fc) * ((corner >> 1) ? fr : 1 - fr);
-                const float v = view.fill[c + view.columns * r];
-                if (std::isnan(v) || w <= 0.0) continue;
-                sum += w * v;
-                weights += w;
-            }
-            // Missing where the nearest sample is: the fill does not bleed into missing data.
-            const std::size_t nc = c0 + (fc >= 0.5 ? 1 : 0), nr = r0 + (fr >= 0.5 ? 1 : 0);
-            line[x] = weights <= 0.0 || std::isnan(view.fill[nc + view.columns * nr])
-                          ? kMissing.rgb()
-                          : colourAt(view.scale, (sum / weights - view.fillMinimum) / range);
+            const glm::dvec2 unit{(x + 0.5) / width, 1.0 - (y + 0.5) / height};
+            const float v = sectionValueAt(view, view.fill, unit);
+            line[x] = std::isnan(v) ? kMissing.rgb()
+                                    : colourAt(view.scale, (v - view.fillMinimum) / range);
         }
     }
     return image;
@@ -135,9 +115,7 @@ struct Layout {
     QRectF title, plot, side;
 };
 
-// Above the plot (margin, title, subtitle, gap) and below it (ticks, axis title, margin), in
-// lines of text.
-constexpr double kLinesAbove = 3.0;
+// Below the plot (ticks, axis title), in lines of text.
 constexpr double kLinesBelow = 2.8;
 
 QFont sectionFont(const SectionStyle& style) {
@@ -146,14 +124,16 @@ QFont sectionFont(const SectionStyle& style) {
     return font;
 }
 
-Layout layoutOf(const SectionView& view, const QRectF& page, const QFontMetricsF& metrics) {
+Layout layoutOf(const SectionView& view, const QRectF& page, const QFontMetricsF& metrics,
+                const Proportions& p) {
+    const double kMargin = p.margin;
     const double line = metrics.height();
     Layout l;
     l.title =
         QRectF(page.left() + kMargin, page.top() + kMargin, page.width() - 2 * kMargin, 2.4 * line);
     const double left = page.left() + kMargin + 3.2 * line + metrics.horizontalAdvance("1000");
-    const double top = page.top() + kMargin + kLinesAbove * line;
-    const double right = page.right() - kMargin - kSideColumn;
+    const double top = page.top() + kMargin + p.linesAbove * line;
+    const double right = page.right() - kMargin - p.sideColumn;
     const double bottom = page.bottom() - kMargin - kLinesBelow * line;
     QRectF available(left, top, std::max(10.0, right - left), std::max(10.0, bottom - top));
     // The plot keeps the data's proportions, centred in the room it has.
@@ -162,8 +142,10 @@ Layout layoutOf(const SectionView& view, const QRectF& page, const QFontMetricsF
         h = available.height();
         w = h * view.aspect;
     }
-    l.plot = QRectF(available.left() + (available.width() - w) / 2, available.top(), w, h);
-    l.side = QRectF(l.plot.right() + 1.5 * line, top, kSideColumn - 1.5 * line + kMargin, h);
+    l.plot = QRectF(available.left() + (available.width() - w) / 2,
+                    available.top() + (available.height() - h) / 2, w, h);
+    l.side =
+        QRectF(l.plot.right() + 1.5 * line, l.plot.top(), p.sideColumn - 1.5 * line + kMargin, h);
     return l;
 }
 
@@ -188,18 +170,23 @@ void drawAxes(QPainter& painter, const SectionView& view, const QRectF& plot,
         QRectF(plot.left(), plot.bottom() + kTickLength + 1.2 * line, plot.width(), line),
         Qt::AlignCenter, QString::fromStdString(view.bottom.title));
     double widest = 0.0;
-    double previousTop = 1e9;
+    // Labels in the ticks' order of importance (1000, 500, 250 hPa before 925): one that would
+    // touch a label already written is left out, its tick kept.
+    std::vector<double> labelled;
     for (const SectionTick& tick : view.left.ticks) {
         const double y = plot.bottom() - tick.position * plot.height();
         if (y < plot.top() - 0.5 || y > plot.bottom() + 0.5) continue;
         painter.drawLine(QPointF(plot.left() - kTickLength, y), QPointF(plot.left(), y));
         const QString text = QString::fromStdString(tick.label);
         const double w = metrics.horizontalAdvance(text);
-        if (std::abs(y - previousTop) < line) continue;
+        if (std::any_of(labelled.begin(), labelled.end(),
+                        [&](double other) { return std::abs(y - other) < line; })) {
+            continue;
+        }
         widest = std::max(widest, w);
         painter.drawText(QRectF(plot.left() - kTickLength - 3 - w, y - line / 2, w, line),
                          Qt::AlignRight | Qt::AlignVCenter, text);
-        previousTop = y;
+        labelled.push_back(y);
     }
     painter.save();
     painter.translate(plot.left() - kTickLength - 6 - widest - 0.6 * line, plot.center().y());
@@ -211,7 +198,7 @@ void drawAxes(QPainter& painter, const SectionView& view, const QRectF& plot,
 
 // The colour bar (vertical, its caption above) and below it the legend; returns nothing.
 void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
-              const QFontMetricsF& metrics, const SectionStyle& style) {
+              const QFontMetricsF& metrics, const SectionStyle& style, bool legend) {
     const double line = metrics.height();
     double y = side.top();
     painter.setPen(style.text);
@@ -239,6 +226,7 @@ void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
         }
         y = bar.bottom() + 1.2 * line;
     }
+    if (!legend) return;
     // The legend: the mean's line, then each cluster's colour and size.
     const auto entry = [&](const QPen& pen, const QString& text) {
         painter.setPen(pen);
@@ -261,19 +249,21 @@ void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
 }  // namespace
 
 QRectF sectionPlotRect(const SectionView& view, const QRectF& page, const SectionStyle& style) {
-    return layoutOf(view, page, QFontMetricsF(sectionFont(style))).plot;
+    return layoutOf(view, page, QFontMetricsF(sectionFont(style)), proportionsOf(style)).plot;
 }
 
 QSize sectionPictureSize(const SectionView& view, int width, const SectionStyle& style) {
     const QFontMetricsF metrics(sectionFont(style));
     const double line = metrics.height();
-    const QRectF wide = layoutOf(view, QRectF(0, 0, width, 1e6), metrics).plot;
+    const Proportions p = proportionsOf(style);
+    const QRectF wide = layoutOf(view, QRectF(0, 0, width, 1e6), metrics, p).plot;
     // The side column needs its caption, a colour bar and the legend's lines.
-    const double side = (view.fill.empty() ? 0.0 : 3.0 + 6.0 + 1.2) * line +
-                        1.25 * line * static_cast<double>(view.legend.size() + 1);
+    const double side =
+        (view.fill.empty() ? 0.0 : 3.0 + 6.0 + 1.2) * line +
+        (p.legend ? 1.25 * line * static_cast<double>(view.legend.size() + 1) : 0.0);
     const double plotHeight = std::max(wide.width() / view.aspect, side);
     return {width, static_cast<int>(
-                       std::ceil(plotHeight + 2 * kMargin + (kLinesAbove + kLinesBelow) * line))};
+                       std::ceil(plotHeight + 2 * p.margin + (p.linesAbove + kLinesBelow) * line))};
 }
 
 void paintSection(QPainter& painter, const SectionView& view, const QRectF& page,
@@ -284,19 +274,22 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     const QFont font = sectionFont(style);
     painter.setFont(font);
     const QFontMetricsF metrics(font, painter.device());
-    const Layout layout = layoutOf(view, page, metrics);
+    const Proportions proportions = proportionsOf(style);
+    const Layout layout = layoutOf(view, page, metrics, proportions);
     const QRectF& plot = layout.plot;
 
-    QFont heading = font;
-    heading.setPointSizeF(style.fontPoints * 1.25);
-    heading.setBold(true);
-    painter.setFont(heading);
     painter.setPen(style.text);
-    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignTop,
-                     QString::fromStdString(view.title));
-    painter.setFont(font);
-    painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignBottom,
-                     QString::fromStdString(view.subtitle));
+    if (proportions.titled) {
+        QFont heading = font;
+        heading.setPointSizeF(style.fontPoints * 1.25);
+        heading.setBold(true);
+        painter.setFont(heading);
+        painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignTop,
+                         QString::fromStdString(view.title));
+        painter.setFont(font);
+        painter.drawText(layout.title, Qt::AlignLeft | Qt::AlignBottom,
+                         QString::fromStdString(view.subtitle));
+    }
 
     painter.save();
     painter.setClipRect(plot);
@@ -314,15 +307,20 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     strokeLines(painter, view.graticule, plot, QPen(QColor(128, 128, 128, 150), 0.6));
     // Members: a dark halo under every line first, then the colours, the selected last.
     const bool anySelected = !emphasis.selected.empty();
+    const auto isHidden = [&](std::size_t m) {
+        return m < emphasis.hidden.size() && emphasis.hidden[m];
+    };
     const auto isSelected = [&](std::size_t m) {
         return std::find(emphasis.selected.begin(), emphasis.selected.end(), m) !=
                emphasis.selected.end();
     };
     for (const MemberContour& c : view.members) {
+        if (isHidden(c.member)) continue;
         strokeLines(painter, c.lines, plot, QPen(QColor(0, 0, 0, anySelected ? 50 : 120), 2.6));
     }
     for (int pass = 0; pass < 2; ++pass) {
         for (const MemberContour& c : view.members) {
+            if (isHidden(c.member)) continue;
             const bool chosen =
                 isSelected(c.member) || static_cast<int>(c.member) == emphasis.hovered;
             if (chosen != (pass == 1)) continue;
@@ -343,7 +341,7 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     strokeLines(painter, view.mapLines, plot, QPen(QColor(20, 20, 20), 0.9));
     painter.restore();
     drawAxes(painter, view, plot, metrics, style);
-    drawSide(painter, view, layout.side, metrics, style);
+    drawSide(painter, view, layout.side, metrics, style, proportions.legend);
     painter.restore();
 }
 

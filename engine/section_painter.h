@@ -22,12 +22,15 @@ namespace ensil::engine {
 struct SectionEmphasis {
     std::vector<std::size_t> selected;  // drawn wider and last; the others fade while any is
     int hovered = -1;                   // drawn widest
+    std::vector<bool> hidden;           // per member: not drawn (members beyond it are drawn)
 };
 
 struct SectionStyle {
     QColor background = Qt::white;
     QColor text = Qt::black;
     double fontPoints = 9.0;
+    // For a dock: no title lines, the colour bar alone beside the plot, thin margins.
+    bool compact = false;
 };
 
 // Where the plot lies in `page` when paintSection draws it there (for the pointer's place).

@@ -50,6 +50,7 @@ std::optional<double> parseAngle(const std::string& text, char positive, char ne
     std::string rest;
     auto value = leadingNumber(trimmed(text), rest);
     if (!value) return std::nullopt;
+    if (rest.starts_with("°")) rest.erase(0, std::string("°").size());  // as degreesText writes
     if (rest.size() == 1 && std::toupper(static_cast<unsigned char>(rest[0])) == positive) {
         rest.clear();
     } else if (rest.size() == 1 && std::toupper(static_cast<unsigned char>(rest[0])) == negative) {

@@ -33,8 +33,8 @@ PlacedSection placeSection(const data::Ensemble& ensemble, const SectionPlace& p
 
 // A place given as text, as the command line takes it: a level "500hPa", "850 hPa", "5km",
 // "1500m", "index:3" or a bare number (the vertical axis's own units); a latitude "45",
-// "45N", "45S"; a longitude "10", "10E", "10W"; a path "LON,LAT:LON,LAT". nullopt with
-// `problem` set (what was wrong, what is taken) when the text does not read.
+// "45N", "45S", "45°N"; a longitude "10", "10E", "10W", "10°W"; a path "LON,LAT:LON,LAT".
+// nullopt with `problem` set (what was wrong, what is taken) when the text does not read.
 std::optional<SectionPlace> parseLevel(const std::string& text, std::string& problem);
 std::optional<SectionPlace> parseLatitude(const std::string& text, std::string& problem);
 std::optional<SectionPlace> parseLongitude(const std::string& text, std::string& problem);

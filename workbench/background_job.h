@@ -3,8 +3,8 @@
 // inputs by value. Starting a new job cancels the running one and drops its result (the user
 // changed the isovalue meanwhile); cancel() asks the running job to stop. Jobs run at a lower
 // priority than the GUI thread (workbench/worker_priority.h). Callbacks run on the GUI thread,
-// through QFutureWatcher's queued signals. GUI thread only; wait() before destroying what callbacks
-// use.
+// through QFutureWatcher's queued signals; a failure hands on the job's own exception. GUI thread
+// only; wait() before destroying what callbacks use.
 #pragma once
 
 #include <QCoreApplication>
@@ -13,6 +13,7 @@
 #include <QPointer>
 #include <QPromise>
 #include <QThreadPool>
+#include <QUnhandledException>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 #include <functional>
@@ -36,6 +37,18 @@ inline QThreadPool* jobThreadPool() {
     static QPointer<QThreadPool> pool;
     if (pool.isNull()) pool = new QThreadPool(QCoreApplication::instance());
     return pool.data();
+}
+
+// The job's own exception: QtConcurrent wraps one it does not know (any but a QException) in
+// QUnhandledException, whose what() says only "std::exception".
+inline std::exception_ptr unwrapJobError(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const QUnhandledException& e) {
+        return e.exception() ? unwrapJobError(e.exception()) : error;
+    } catch (...) {
+        return error;
+    }
 }
 
 template <typename T>
@@ -124,7 +137,7 @@ private:
             }
             if (m_failed) m_failed(nullptr, true);
         } catch (...) {
-            if (m_failed) m_failed(std::current_exception(), cancelled);
+            if (m_failed) m_failed(unwrapJobError(std::current_exception()), cancelled);
         }
     }
 

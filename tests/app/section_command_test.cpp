@@ -15,9 +15,9 @@ using namespace ensil;
 TEST(SectionCommand, DrawsAMapOfEveryMembersContourAsAPng) {
     test::TempDir dir;
     const QString png = QString::fromStdString(dir.file("t500.png"));
-    const test::EnsilRun r = test::runEnsil({"section", test::kEra5, "--var", "t", "--level",
-                                             "500hPa", "--iso", "250", "--clusters", "3",
-                                             "--out", png, "--no-cache", "--json"});
+    const test::EnsilRun r =
+        test::runEnsil({"section", test::kEra5, "--var", "t", "--level", "500hPa", "--iso", "250",
+                        "--clusters", "3", "--out", png, "--no-cache", "--json"});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     const QJsonObject o = test::jsonOf(r);
     EXPECT_EQ(o["title"].toString(), QStringLiteral("t at 500 hPa"));
@@ -69,8 +69,8 @@ TEST(SectionCommand, SvgHoldsTextAsTextAndContoursAsPaths) {
         if (xml.readNext() != QXmlStreamReader::StartElement) continue;
         if (xml.name() == QLatin1String("path") || xml.name() == QLatin1String("polyline")) ++paths;
         if (xml.name() == QLatin1String("image")) ++images;
-        if (xml.name() == QLatin1String("text")) texts << xml.readElementText(
-                                                       QXmlStreamReader::IncludeChildElements);
+        if (xml.name() == QLatin1String("text"))
+            texts << xml.readElementText(QXmlStreamReader::IncludeChildElements);
     }
     ASSERT_FALSE(xml.hasError()) << xml.errorString().toStdString();
     EXPECT_TRUE(texts.contains(QStringLiteral("t along 45°N"))) << texts.join("|").toStdString();

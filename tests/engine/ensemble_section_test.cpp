@@ -167,9 +167,9 @@ TEST(EnsembleSection, PathFollowsTheGreatCircleAndMeasuresItInKilometres) {
     // The path's length by the spherical law of cosines (R = 6371 km), not by the haversine
     // steps the section sums: about 2,347 km, shorter than the parallel's 2,359.
     const double phi = 45.0 * std::numbers::pi / 180.0;
-    const double length =
-        6371.0 * std::acos(std::sin(phi) * std::sin(phi) +
-                           std::cos(phi) * std::cos(phi) * std::cos(30.0 * std::numbers::pi / 180.0));
+    const double length = 6371.0 * std::acos(std::sin(phi) * std::sin(phi) +
+                                             std::cos(phi) * std::cos(phi) *
+                                                 std::cos(30.0 * std::numbers::pi / 180.0));
     ASSERT_GE(view.bottom.ticks.size(), 2U);
     EXPECT_EQ(view.bottom.title, "distance along the path (km)");
     const double lastTick = std::stod(view.bottom.ticks.back().label);
@@ -193,7 +193,8 @@ TEST(EnsembleSection, AnomalyIsTheMemberLessTheMeanOnAScaleCentredOnZero) {
     EXPECT_EQ(view.scale, engine::ColourScaleKind::Diverging);
     EXPECT_FLOAT_EQ(view.fillMinimum, -view.fillMaximum);
     const std::size_t s = 7 + 41 * 12;
-    const float mean = (e.members[0].values[s] + e.members[1].values[s] + e.members[2].values[s]) / 3;
+    const float mean =
+        (e.members[0].values[s] + e.members[1].values[s] + e.members[2].values[s]) / 3;
     EXPECT_NEAR(view.fill[s], e.members[0].values[s] - mean, 1e-4);
 }
 

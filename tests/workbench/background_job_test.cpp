@@ -4,11 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QObject>
 #include <atomic>
 #include <chrono>
 #include <memory>
 #include <semaphore>
+#include <string>
+
+#include "data/error.h"
 
 using namespace ensil::workbench;
 
@@ -54,4 +58,36 @@ TEST(BackgroundJob, AJobThatWaitsHasReturnedWhenItsOwnerIsGone) {
         held.release->release();
     }
     EXPECT_TRUE(held.returned->load());
+}
+
+TEST(BackgroundJob, AFailureHandsOnTheJobsOwnException) {
+    // QtConcurrent wraps an exception that is not a QException; the callback gets the job's own,
+    // so a panel can say what went wrong rather than "std::exception".
+    QObject owner;
+    BackgroundJob<int> job(&owner);
+    std::string said;
+    bool failed = false;
+    job.start(
+        [](const std::stop_token&, const ensil::data::Progress&) -> int {
+            throw ensil::data::Error(ensil::data::ErrorKind::InvalidArgument,
+                                     "a level of 1000 hPa lies outside the data");
+        },
+        [](int) {},
+        [&](const std::exception_ptr& error, bool cancelled) {
+            failed = !cancelled;
+            try {
+                std::rethrow_exception(error);
+            } catch (const ensil::data::Error& e) {
+                said = e.what();
+            } catch (...) {
+                said = "another exception";
+            }
+        });
+    job.wait();
+    // The outcome comes through the event loop, as a queued signal.
+    for (int i = 0; i < 1000 && !failed; ++i) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    }
+    EXPECT_TRUE(failed);
+    EXPECT_EQ(said, "a level of 1000 hPa lies outside the data");
 }

@@ -1,0 +1,153 @@
+// The Sections dock in the workbench (widgets/sections_panel.h): the map and cross-section of
+// the data on screen appear where the members' contours are, follow the isovalue and the
+// clusters, and a click on a contour selects its member everywhere. Screenshots are kept in
+// test-output/ to be looked at.
+#include <gtest/gtest.h>
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/main_window.h"
+#include "engine/section_painter.h"
+#include "tests/app/workbench_helpers.h"
+#include "tests/support/scoped_cache_home.h"
+#include "tests/support/temp_dir.h"
+#include "widgets/section_canvas.h"
+#include "widgets/sections_panel.h"
+#include "workbench/isovalue_session.h"
+#include "workbench/member_selection.h"
+
+using namespace ensil;
+
+namespace {
+
+// Shows the Sections dock and waits until both sections are on screen.
+bool showSections(app::MainWindow& window) {
+    auto* dock = window.findChild<QDockWidget*>(QStringLiteral("sectionsDock"));
+    if (dock == nullptr) return false;
+    ui::SectionsPanel* panel = window.sectionsPanel();
+    QSignalSpy built(panel, &ui::SectionsPanel::sectionBuilt);
+    dock->show();
+    dock->raise();
+    while (panel->mapCanvas()->view() == nullptr || panel->crossCanvas()->view() == nullptr ||
+           panel->isBuilding()) {
+        if (!built.wait(60000)) return false;
+    }
+    return true;
+}
+
+// A widget position on member m's first contour in the canvas.
+std::optional<QPoint> pointOnContour(const ui::SectionCanvas& canvas, std::size_t m) {
+    const engine::SectionView& view = *canvas.view();
+    const QRectF plot = engine::sectionPlotRect(view, QRectF(canvas.rect()), canvas.sectionStyle());
+    for (const engine::SectionLine& line : view.members.at(m).lines) {
+        for (const glm::dvec2& p : line.points) {
+            const QPoint at(static_cast<int>(std::lround(plot.left() + p.x * plot.width())),
+                            static_cast<int>(std::lround(plot.bottom() - p.y * plot.height())));
+            if (canvas.memberAt(at) == m) return at;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+TEST(SectionsDock, ShowsTheDemosJetsWhereTheContoursAreAndSelectsByClick) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1600, 1000}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 20, .nx = 96, .ny = 48, .nz = 12, .seed = 3}));
+    ASSERT_TRUE(showSections(window));
+    ui::SectionsPanel* panel = window.sectionsPanel();
+    // The default places are where the members' contours are: both sections have them.
+    const engine::SectionView& map = *panel->mapCanvas()->view();
+    const engine::SectionView& cross = *panel->crossCanvas()->view();
+    EXPECT_TRUE(panel->levelEdit()->text().endsWith(QStringLiteral("hPa")))
+        << panel->levelEdit()->text().toStdString();
+    int mapLines = 0, crossLines = 0;
+    for (const auto& c : map.members) mapLines += static_cast<int>(c.lines.size());
+    for (const auto& c : cross.members) crossLines += static_cast<int>(c.lines.size());
+    EXPECT_GT(mapLines, 20);
+    EXPECT_GT(crossLines, 20);
+    // The contours are in the clusters' colours the view shows.
+    workbench::MemberSelection* selection = window.memberSelection();
+    ASSERT_TRUE(selection->isClustered());
+    for (const auto& c : map.members) {
+        const QColor shown = selection->memberColor(static_cast<int>(c.member));
+        EXPECT_NEAR(c.colour.r, shown.redF(), 1e-3);
+        EXPECT_NEAR(c.colour.g, shown.greenF(), 1e-3);
+    }
+    // A click on a member's contour selects it everywhere; Ctrl adds another.
+    const std::size_t member = 5;
+    const auto at = pointOnContour(*panel->mapCanvas(), member);
+    ASSERT_TRUE(at);
+    QTest::mouseClick(panel->mapCanvas(), Qt::LeftButton, Qt::NoModifier, *at);
+    EXPECT_EQ(selection->selectedMembers(), QList<int>{static_cast<int>(member)});
+    // The tooltip names it and its value on its contour: the isovalue.
+    const QString said = panel->mapCanvas()->describe(*at);
+    EXPECT_TRUE(said.contains(QStringLiteral("(#6)"))) << said.toStdString();
+    // Hidden members are neither drawn nor picked.
+    selection->setMemberVisible(static_cast<int>(member), false);
+    EXPECT_NE(panel->mapCanvas()->memberAt(*at), std::optional<std::size_t>(member));
+    selection->setMemberVisible(static_cast<int>(member), true);
+    window.grab().save(test::testOutputDir() + "/sections_dock_demo.png");
+}
+
+TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1400, 900}));
+    QSignalSpy finished(window.isovalueSession(), &workbench::IsovalueSession::finished);
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc"};
+    selection.variable = "t";
+    window.openFiles(selection);
+    ASSERT_TRUE(finished.wait(120000));
+    ASSERT_TRUE(showSections(window));
+    ui::SectionsPanel* panel = window.sectionsPanel();
+    QSignalSpy built(panel, &ui::SectionsPanel::sectionBuilt);
+    // A level typed in hPa on an axis in Pa; a latitude as people write it.
+    panel->levelEdit()->setText(QStringLiteral("500 hPa"));
+    emit panel->levelEdit()->editingFinished();
+    ASSERT_TRUE(built.wait(60000));
+    EXPECT_EQ(panel->mapCanvas()->view()->title, "t at 500 hPa");
+    // A place outside the data is said in the canvas, the edit marked.
+    panel->levelEdit()->setText(QStringLiteral("1000 hPa"));
+    emit panel->levelEdit()->editingFinished();
+    ASSERT_TRUE(built.wait(60000));
+    EXPECT_EQ(panel->mapCanvas()->view(), nullptr);
+    EXPECT_TRUE(panel->mapCanvas()->message().contains(QStringLiteral("outside the data")))
+        << panel->mapCanvas()->message().toStdString();
+    panel->levelEdit()->setText(QStringLiteral("850hPa"));
+    emit panel->levelEdit()->editingFinished();
+    ASSERT_TRUE(built.wait(60000));
+    // A new isovalue: the contours follow it.
+    const float before = window.isovalueSession()->result()->meshes->isovalue;
+    window.isovalueSession()->setIsovalue(before + 5.0F, 1.0F);
+    ASSERT_TRUE(finished.wait(120000));
+    while (panel->isBuilding()) ASSERT_TRUE(built.wait(60000));
+    EXPECT_NE(panel->mapCanvas()->view()->subtitle.find("isovalue"), std::string::npos);
+    const engine::SectionView& map = *panel->mapCanvas()->view();
+    // Every contour point lies where the member's value is the new isovalue.
+    for (const auto& c : map.members) {
+        for (const auto& line : c.lines) {
+            for (const glm::dvec2& p : line.points) {
+                EXPECT_NEAR(engine::sectionValueAt(map, map.memberValues[c.member], p),
+                            before + 5.0F, 0.5);
+            }
+        }
+    }
+    // Exported as a figure a journal takes.
+    test::TempDir dir;
+    QString error;
+    const QString svg = QString::fromStdString(dir.file("map.svg"));
+    ASSERT_TRUE(panel->exportSection(true, svg, &error)) << error.toStdString();
+    EXPECT_GT(QFileInfo(svg).size(), 1000);
+    EXPECT_FALSE(panel->exportSection(true, QString::fromStdString(dir.file("map.gif")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral(".svg"))) << error.toStdString();
+    window.grab().save(test::testOutputDir() + "/sections_dock_era5.png");
+}

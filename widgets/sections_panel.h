@@ -1,0 +1,87 @@
+// The Sections dock: a map at a level and a cross-section along a latitude, a longitude or a
+// path, side by side (one above the other in a tall dock), drawn from the data and isovalue on
+// screen with every member's contour in its cluster's colour over a chosen fill (the mean, the
+// spread, P(f > c), the selected member or its difference from the mean). The places are typed
+// as a meteorologist says them ("500 hPa", "45N", "-10,50:20,40"); new data starts where the
+// members' contours are (engine::defaultSections). Selection, visibility, hover and clusters
+// follow the shared workbench::MemberSelection both ways. Sections are built in the background
+// and only while the dock is shown. GUI thread only.
+#pragma once
+
+#include <QWidget>
+#include <memory>
+
+#include "data/ensemble.h"
+#include "engine/ensemble_section.h"
+#include "workbench/background_job.h"
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QSplitter;
+class QToolButton;
+
+namespace ensil::workbench {
+class MemberSelection;
+}  // namespace ensil::workbench
+
+namespace ensil::ui {
+
+class SectionCanvas;
+
+class SectionsPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit SectionsPanel(workbench::MemberSelection* selection, QWidget* parent = nullptr);
+    ~SectionsPanel() override;
+
+    // The data and isovalue whose contours are drawn. Other data (another variable or grid)
+    // starts from the default places; another time step of the same keeps the user's.
+    void showData(std::shared_ptr<const data::Ensemble> ensemble, float isovalue);
+    // Writes the map (or the cross-section) as a figure, PNG, SVG or PDF by the suffix, 1400
+    // wide; false with `error` set when there is none or it cannot be written.
+    bool exportSection(bool map, const QString& path, QString* error);
+
+    [[nodiscard]] QLineEdit* levelEdit() const { return m_level; }
+    [[nodiscard]] QComboBox* crossKindBox() const { return m_crossKind; }
+    [[nodiscard]] QLineEdit* crossEdit() const { return m_cross; }
+    [[nodiscard]] QComboBox* fillBox() const { return m_fill; }
+    [[nodiscard]] SectionCanvas* mapCanvas() const { return m_mapCanvas; }
+    [[nodiscard]] SectionCanvas* crossCanvas() const { return m_crossCanvas; }
+    [[nodiscard]] bool isBuilding() const { return m_mapJob.isRunning() || m_crossJob.isRunning(); }
+
+signals:
+    void sectionBuilt();  // a map or cross-section reached the screen (or said why not)
+
+protected:
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    void rebuild();
+    void build(bool map);
+    [[nodiscard]] engine::SectionRequest request(bool map, QString* problem) const;
+    void showEmphasis();
+    void recolour();
+    void exportWithDialog(bool map);
+
+    workbench::MemberSelection* m_selection;
+    std::shared_ptr<const data::Ensemble> m_ensemble;
+    float m_isovalue = 0.0F;
+    bool m_dirty = false;         // data or places changed while the dock was hidden
+    bool m_placesChosen = false;  // the places are the user's or this data's defaults
+    QLineEdit* m_level;
+    QComboBox* m_crossKind;
+    QLineEdit* m_cross;
+    QComboBox* m_fill;
+    QToolButton* m_export;
+    QLabel* m_hint;
+    QSplitter* m_splitter;
+    SectionCanvas* m_mapCanvas;
+    SectionCanvas* m_crossCanvas;
+    workbench::BackgroundJob<engine::SectionView> m_mapJob{this};
+    workbench::BackgroundJob<engine::SectionView> m_crossJob{this};
+    workbench::BackgroundJob<engine::DefaultSections> m_defaultsJob{this};
+};
+
+}  // namespace ensil::ui
