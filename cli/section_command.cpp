@@ -15,7 +15,6 @@
 #include "engine/preprocess_run.h"
 #include "engine/section_painter.h"
 #include "engine/section_place.h"
-#include "gl/palette.h"
 #include "session/setting_options.h"
 
 namespace ensil::cli {
@@ -69,25 +68,10 @@ const session::SettingOptions& clusterOptions() {
 // The fill named on the command line; nullopt with `problem` set when it is not one.
 std::optional<std::pair<engine::SectionFill, int>> parseFill(const QString& text,
                                                              QString& problem) {
-    using engine::SectionFill;
-    const QString t = text.trimmed().toLower();
-    if (t == QLatin1String("mean")) return std::pair{SectionFill::Mean, -1};
-    if (t == QLatin1String("spread")) return std::pair{SectionFill::Spread, -1};
-    if (t == QLatin1String("probability")) return std::pair{SectionFill::Probability, -1};
-    if (t == QLatin1String("none")) return std::pair{SectionFill::None, -1};
-    for (const auto& [prefix, fill] :
-         {std::pair{QStringLiteral("member:"), SectionFill::Member},
-          std::pair{QStringLiteral("anomaly:"), SectionFill::Anomaly}}) {
-        if (!t.startsWith(prefix)) continue;
-        bool ok = false;
-        const int number = t.mid(prefix.size()).toInt(&ok);
-        if (ok && number >= 1) return std::pair{fill, number - 1};
-    }
-    problem = QStringLiteral(
-                  "--fill '%1' is refused: it must be mean, spread, probability, member:N, "
-                  "anomaly:N (members count from 1) or none")
-                  .arg(text);
-    return std::nullopt;
+    std::string why;
+    auto fill = engine::parseSectionFill(text.trimmed().toStdString(), why);
+    if (!fill) problem = QStringLiteral("--fill is refused: ") + QString::fromStdString(why);
+    return fill;
 }
 
 // The one place option given, read; nullopt with `problem` set.
@@ -237,15 +221,8 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
         const engine::PreprocessResult clusters =
             engine::preprocessEnsemble(std::move(ensemble), request, notice, {},
                                        progress.callback(QStringLiteral("clustering")));
-        engine::SectionRequest section;
-        section.place = *place;
-        section.fill = fill->first;
-        section.member = fill->second;
-        section.isovalue = clusters.meshes.isovalue;
-        section.clusterNumbers = clusters.clusterNumbers;
-        for (const int number : clusters.clusterNumbers) {
-            section.memberColours.push_back(gl::clusterColor(number - 1));
-        }
+        const engine::SectionRequest section =
+            engine::sectionRequestFor(clusters, *place, fill->first, fill->second);
         const engine::SectionView view = engine::buildSection(*clusters.ensemble, section);
         const QSize pictureSize = size->second > 0 ? QSize(size->first, size->second)
                                                    : engine::sectionPictureSize(view, size->first);

@@ -5,10 +5,12 @@
 #include <limits>
 #include <map>
 
+#include "data/ascii_case.h"
 #include "data/error.h"
 #include "data/number_text.h"
 #include "data/units_text.h"
 #include "engine/picture_title.h"
+#include "engine/preprocess_run.h"
 #include "engine/section_place.h"
 #include "geo/map_projection.h"
 #include "gl/axis_ticks.h"
@@ -206,6 +208,45 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
                     " · " + std::to_string(memberCount) + " members" +
                     (view.fill.empty() ? "" : " · fill: " + view.fillCaption);
     return view;
+}
+
+std::optional<std::pair<SectionFill, int>> parseSectionFill(const std::string& text,
+                                                            std::string& problem) {
+    const std::string t = data::asciiLower(text);
+    if (t == "mean") return std::pair{SectionFill::Mean, -1};
+    if (t == "spread") return std::pair{SectionFill::Spread, -1};
+    if (t == "probability") return std::pair{SectionFill::Probability, -1};
+    if (t == "none") return std::pair{SectionFill::None, -1};
+    for (const auto& [prefix, fill] : {std::pair{std::string("member:"), SectionFill::Member},
+                                       std::pair{std::string("anomaly:"), SectionFill::Anomaly}}) {
+        if (!t.starts_with(prefix)) continue;
+        const std::string digits = t.substr(prefix.size());
+        if (digits.empty() || digits.size() > 9 ||
+            !std::all_of(digits.begin(), digits.end(),
+                         [](char c) { return c >= '0' && c <= '9'; })) {
+            break;
+        }
+        const int number = std::stoi(digits);
+        if (number >= 1) return std::pair{fill, number - 1};
+    }
+    problem = "'" + text +
+              "' is not a fill: give mean, spread, probability, member:N, anomaly:N (members "
+              "count from 1) or none";
+    return std::nullopt;
+}
+
+SectionRequest sectionRequestFor(const PreprocessResult& clusters, const SectionPlace& place,
+                                 SectionFill fill, int member) {
+    SectionRequest r;
+    r.place = place;
+    r.fill = fill;
+    r.member = member;
+    r.isovalue = clusters.meshes.isovalue;
+    r.clusterNumbers = clusters.clusterNumbers;
+    for (const int number : clusters.clusterNumbers) {
+        r.memberColours.push_back(gl::clusterColor(number - 1));
+    }
+    return r;
 }
 
 double latticeIndexAt(const std::vector<double>& positions, double t) {

@@ -113,6 +113,18 @@ struct SectionView {
     std::string placeText;
 };
 
+// The fill as the command line and Python name it: mean, spread, probability, member:N,
+// anomaly:N (N counts members from 1) or none; nullopt with `problem` set otherwise. The
+// member is the index from 0 (-1 for the fills of all members).
+std::optional<std::pair<SectionFill, int>> parseSectionFill(const std::string& text,
+                                                            std::string& problem);
+
+// What `ensil section` and Python draw: the place and fill asked for, at the isovalue of
+// `clusters` (engine::preprocessEnsemble's result), each member in its cluster's colour.
+struct PreprocessResult;
+SectionRequest sectionRequestFor(const PreprocessResult& clusters, const SectionPlace& place,
+                                 SectionFill fill, int member);
+
 // Throws data::Error(InvalidArgument) naming the place when it lies outside the data (a level
 // above the top, a latitude the grid does not reach) or the fill's member does not exist.
 SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request);

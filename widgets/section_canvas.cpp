@@ -34,7 +34,7 @@ engine::SectionStyle SectionCanvas::sectionStyle() const {
 
 SectionCanvas::SectionCanvas(QWidget* parent) : QWidget(parent) {
     setMouseTracking(true);
-    setMinimumSize(200, 140);
+    setMinimumSize(120, 60);
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
 
@@ -105,9 +105,9 @@ QString SectionCanvas::describe(QPointF pos) const {
             .arg(number(engine::sectionValueAt(*m_view, m_view->memberValues[*member], *unit)));
     }
     if (m_view->fill.empty()) return {};
-    return QStringLiteral("%1: %2")
-        .arg(QString::fromStdString(m_view->fillCaption),
-             number(engine::sectionValueAt(*m_view, m_view->fill, *unit)));
+    return QStringLiteral("%1: %2").arg(
+        QString::fromStdString(m_view->fillCaption),
+        number(engine::sectionValueAt(*m_view, m_view->fill, *unit)));
 }
 
 void SectionCanvas::paintEvent(QPaintEvent*) {

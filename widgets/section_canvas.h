@@ -39,7 +39,7 @@ public:
 
 signals:
     void memberClicked(int member, Qt::KeyboardModifiers modifiers);  // -1: beside every one
-    void memberHovered(int member);                                  // -1: none
+    void memberHovered(int member);                                   // -1: none
 
 protected:
     void paintEvent(QPaintEvent* event) override;

@@ -54,20 +54,23 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
     m_level = new QLineEdit(this);
     m_level->setObjectName(QStringLiteral("sectionLevel"));
     m_level->setPlaceholderText(tr("500 hPa"));
-    m_level->setToolTip(tr("The map's level: 500 hPa, 5 km, 1500 m, index:3 or a number in the "
-                           "vertical axis's units"));
+    m_level->setToolTip(
+        tr("The map's level: 500 hPa, 5 km, 1500 m, index:3 or a number in the "
+           "vertical axis's units"));
     m_crossKind = new QComboBox(this);
     m_crossKind->addItem(tr("along latitude"));
     m_crossKind->addItem(tr("along longitude"));
     m_crossKind->addItem(tr("along path"));
     m_cross = new QLineEdit(this);
     m_cross->setObjectName(QStringLiteral("sectionCrossPlace"));
-    m_cross->setToolTip(tr("A latitude (45N, 30S), a longitude (10E, 75W), or a path between two "
-                           "points as LON,LAT:LON,LAT (-10,50:20,40)"));
+    m_cross->setToolTip(
+        tr("A latitude (45N, 30S), a longitude (10E, 75W), or a path between two "
+           "points as LON,LAT:LON,LAT (-10,50:20,40)"));
     m_fill = new QComboBox(this);
     m_fill->setObjectName(QStringLiteral("sectionFill"));
     m_fill->addItem(tr("Mean"), static_cast<int>(engine::SectionFill::Mean));
-    m_fill->addItem(tr("Spread (standard deviation)"), static_cast<int>(engine::SectionFill::Spread));
+    m_fill->addItem(tr("Spread (standard deviation)"),
+                    static_cast<int>(engine::SectionFill::Spread));
     m_fill->addItem(tr("Probability above the isovalue"),
                     static_cast<int>(engine::SectionFill::Probability));
     m_fill->addItem(tr("Selected member"), static_cast<int>(engine::SectionFill::Member));
@@ -87,15 +90,23 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
     m_hint->setWordWrap(true);
     m_hint->hide();
 
-    auto* controls = new QHBoxLayout;
-    controls->addWidget(new QLabel(tr("Map at"), this));
-    controls->addWidget(m_level, 1);
-    controls->addWidget(new QLabel(tr("Cross-section"), this));
-    controls->addWidget(m_crossKind);
-    controls->addWidget(m_cross, 2);
-    controls->addWidget(new QLabel(tr("Fill"), this));
-    controls->addWidget(m_fill);
-    controls->addWidget(m_export);
+    // Two short rows, and combo boxes that do not grow to their longest entry: the dock must not
+    // widen the window beneath the user's size.
+    m_fill->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_fill->setMinimumContentsLength(12);
+    m_crossKind->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_crossKind->setMinimumContentsLength(10);
+    for (QLineEdit* edit : {m_level, m_cross}) edit->setMinimumWidth(60);
+    auto* mapRow = new QHBoxLayout;
+    mapRow->addWidget(new QLabel(tr("Map at"), this));
+    mapRow->addWidget(m_level, 1);
+    mapRow->addWidget(new QLabel(tr("Fill"), this));
+    mapRow->addWidget(m_fill, 1);
+    mapRow->addWidget(m_export);
+    auto* crossRow = new QHBoxLayout;
+    crossRow->addWidget(new QLabel(tr("Cross-section"), this));
+    crossRow->addWidget(m_crossKind);
+    crossRow->addWidget(m_cross, 1);
     m_mapCanvas = new SectionCanvas(this);
     m_crossCanvas = new SectionCanvas(this);
     for (SectionCanvas* canvas : {m_mapCanvas, m_crossCanvas}) {
@@ -112,7 +123,8 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
     m_splitter->addWidget(m_crossCanvas);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
-    layout->addLayout(controls);
+    layout->addLayout(mapRow);
+    layout->addLayout(crossRow);
     layout->addWidget(m_hint);
     layout->addWidget(m_splitter, 1);
 
@@ -177,10 +189,10 @@ void SectionsPanel::rebuild() {
                 m_placesChosen = true;
                 m_level->setText(levelText(defaults.map));
                 const engine::SectionPlace& cross = defaults.crossSection;
-                m_crossKind->setCurrentIndex(cross.kind == engine::SectionKind::Latitude ? AlongLatitude
-                                             : cross.kind == engine::SectionKind::Longitude
-                                                 ? AlongLongitude
-                                                 : AlongPath);
+                m_crossKind->setCurrentIndex(
+                    cross.kind == engine::SectionKind::Latitude    ? AlongLatitude
+                    : cross.kind == engine::SectionKind::Longitude ? AlongLongitude
+                                                                   : AlongPath);
                 m_cross->setText(
                     cross.kind == engine::SectionKind::Latitude
                         ? QString::fromStdString(engine::degreesText(cross.latitude, true))
@@ -245,29 +257,28 @@ void SectionsPanel::build(bool map) {
         return;
     }
     const auto fill = static_cast<engine::SectionFill>(m_fill->currentData().toInt());
-    const bool wantsMember = fill == engine::SectionFill::Member || fill == engine::SectionFill::Anomaly;
+    const bool wantsMember =
+        fill == engine::SectionFill::Member || fill == engine::SectionFill::Anomaly;
     m_hint->setVisible(wantsMember && r.member < 0);
     m_hint->setText(tr("Select a member (click its contour) to fill the sections with it."));
     const auto ensemble = m_ensemble;
     auto& job = map ? m_mapJob : m_crossJob;
-    job.start(
-        [ensemble, r](const std::stop_token&, const data::Progress&) {
-            return engine::buildSection(*ensemble, r);
-        },
-        [this, canvas](engine::SectionView view) {
-            canvas->setView(std::make_shared<const engine::SectionView>(std::move(view)));
-            showEmphasis();
-            emit sectionBuilt();
-        },
-        [this, canvas](const std::exception_ptr& error, bool cancelled) {
-            if (cancelled || !error) return;
-            try {
-                std::rethrow_exception(error);
-            } catch (const std::exception& e) {
-                canvas->setMessage(QString::fromUtf8(e.what()));
-            }
-            emit sectionBuilt();
-        });
+    job.start([ensemble, r](const std::stop_token&,
+                            const data::Progress&) { return engine::buildSection(*ensemble, r); },
+              [this, canvas](engine::SectionView view) {
+                  canvas->setView(std::make_shared<const engine::SectionView>(std::move(view)));
+                  showEmphasis();
+                  emit sectionBuilt();
+              },
+              [this, canvas](const std::exception_ptr& error, bool cancelled) {
+                  if (cancelled || !error) return;
+                  try {
+                      std::rethrow_exception(error);
+                  } catch (const std::exception& e) {
+                      canvas->setMessage(QString::fromUtf8(e.what()));
+                  }
+                  emit sectionBuilt();
+              });
 }
 
 void SectionsPanel::showEmphasis() {
@@ -285,7 +296,8 @@ void SectionsPanel::showEmphasis() {
 
 void SectionsPanel::recolour() {
     std::vector<glm::vec3> colours;
-    for (const gl::MemberAppearance& look : m_selection->appearance()) colours.push_back(look.color);
+    for (const gl::MemberAppearance& look : m_selection->appearance())
+        colours.push_back(look.color);
     const std::vector<int> numbers = m_selection->memberClusterNumbers();
     for (SectionCanvas* canvas : {m_mapCanvas, m_crossCanvas}) {
         if (canvas->view() == nullptr) continue;

@@ -26,6 +26,7 @@ from ._ensil import (  # noqa: F401  (re-exported)
     Error,
     Mesh,
     PreprocessResult,
+    Section,
     Session,
     Settings,
     __version__,
@@ -34,13 +35,13 @@ from ._ensil import (  # noqa: F401  (re-exported)
 from . import _ensil
 
 # help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
-for _type in (Ensemble, Mesh, PreprocessResult, Session, Settings, demo):
+for _type in (Ensemble, Mesh, PreprocessResult, Section, Session, Settings, demo):
     _type.__module__ = __name__
 
 # Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
-    "Session", "Settings", "demo", "from_numpy", "render",
+    "Section", "Session", "Settings", "demo", "from_numpy", "render",
 ]
 
 
@@ -170,3 +171,25 @@ def render(target, iso=None, size=(1600, 1000), mode=None, view=None, cache=True
     rgba, session, facts = _ensil._render(target, iso, tuple(size), view, cache, mode=mode,
                                           **settings)
     return Image(rgba, session, facts)
+
+
+def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mean", iso=None,
+                      clusters=None, linkage="average", cache=True):
+    """A map or a cross-section of the ensemble, as ``ensil section`` draws it: the members'
+    values and their contours of the isovalue, each member in its cluster's colour (the
+    clusters of ``preprocess(iso, clusters, linkage)``, from the mesh cache when it has them).
+
+    level       a map: "500hPa", "5km", "index:3", or a number in the vertical axis's units
+    lat, lon    a cross-section along a latitude or a longitude: 45, "45N", "10W"
+    path        a cross-section along the great circle: ((lon, lat), (lon, lat))
+    fill        mean, spread, probability, member:N, anomaly:N (N from 1) or none
+
+    Returns an ensil.Section: .values (members x rows x columns), .fill, .contours,
+    .mean_contour, .save("figure.svg"). Raises ensil.ArgumentError for a malformed place and
+    ensil.Error for one outside the data, with the command line's messages.
+    """
+    result = self.preprocess(iso=iso, clusters=clusters, linkage=linkage, cache=cache)
+    return result.section(level=level, lat=lat, lon=lon, path=path, fill=fill)
+
+
+Ensemble.section = _ensemble_section

@@ -12,6 +12,7 @@ from ._ensil import (
     Error as Error,
     Mesh as Mesh,
     PreprocessResult as PreprocessResult,
+    Section as Section,
     ProgressCallback,
     Session as Session,
     SettingValue,

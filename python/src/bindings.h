@@ -12,5 +12,6 @@ void bindEnsemble(pybind11::module_& m);    // ensemble_bindings.cpp
 void bindPreprocess(pybind11::module_& m);  // preprocess_bindings.cpp
 void bindSession(pybind11::module_& m);     // session_bindings.cpp
 void bindRender(pybind11::module_& m);      // render_bindings.cpp
+void bindSection(pybind11::module_& m);     // section_bindings.cpp
 
 }  // namespace ensil::python

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_ensil, m) {
     ensil::python::bindPreprocess(m);
     ensil::python::bindSession(m);
     ensil::python::bindRender(m);
+    ensil::python::bindSection(m);
 }

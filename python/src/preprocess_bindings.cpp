@@ -16,17 +16,13 @@
 #include "python/src/interruptible.h"
 #include "python/src/numpy_arrays.h"
 #include "python/src/py_ensemble.h"
+#include "python/src/py_preprocess.h"
 #include "python/src/settings.h"
 
 namespace py = pybind11;
 
 namespace ensil::python {
 namespace {
-
-struct PyPreprocessResult {
-    std::shared_ptr<const engine::PreprocessResult> result;
-    prep::Linkage linkage;
-};
 
 // One isosurface, decoded from the 20-byte GPU vertices (what the vertex shader computes).
 // coordinates='data' or 'display', as `ensil preprocess --coordinates` takes it.

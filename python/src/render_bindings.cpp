@@ -18,6 +18,7 @@
 #include "gl/surface_format.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"
+#include "python/src/gui_application.h"
 #include "python/src/py_ensemble.h"
 #include "python/src/py_session.h"
 #include "python/src/settings.h"
@@ -29,30 +30,6 @@ namespace py = pybind11;
 
 namespace ensil::python {
 namespace {
-
-// The Qt application the renderer needs, made on the first render as `ensil render` makes it:
-// with no display server, on Mesa's surfaceless EGL. It lives until the process ends; a
-// QGuiApplication the host made (a Qt console) is used as it is.
-void ensureGuiApplication() {
-    if (QCoreApplication::instance() == nullptr) {
-        gl::ensureRuntimeDirectory();  // as ensil does: no stray Qt line on the notebook's stderr
-        if (const auto problem = gl::prepareOffscreenPlatform()) {
-            throw std::runtime_error("no display server: " + *problem);
-        }
-        QSurfaceFormat::setDefaultFormat(gl::preferredSurfaceFormat());
-        static int argc = 1;
-        static char name[] = "ensil";
-        static char* argv[] = {name, nullptr};
-        new QGuiApplication(argc, argv);  // never deleted: Qt cannot be started twice
-    } else if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
-        throw std::runtime_error(
-            "ensil.render needs a QGuiApplication, and this process made a QCoreApplication");
-    }
-    if (QThread::currentThread() != QCoreApplication::instance()->thread()) {
-        throw std::runtime_error(
-            "ensil.render must be called from the thread Qt started on (the first render's)");
-    }
-}
 
 py::array_t<std::uint8_t> rgbaArray(const QImage& picture) {
     const QImage rgba = picture.convertToFormat(QImage::Format_RGBA8888);
@@ -129,7 +106,7 @@ py::tuple render(const py::object& target, const std::optional<double>& iso,
     request.height = checked->second;
     request.frames = 1;
     request.useCache = cache;
-    ensureGuiApplication();
+    ensureGuiApplication("ensil.render");
     engine::RenderOutcome outcome;
     {
         const py::gil_scoped_release released;
