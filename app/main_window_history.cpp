@@ -1,6 +1,7 @@
 // Undo and redo in the main window: which edits are recorded as steps (every control that
 // changes the session: the toolbar, the rendering and plane panels, the clusters and linkage,
-// visibility, Reset Camera), and how a step's session is shown again.
+// visibility, the sections' places and fill, Reset Camera), and how a step's session is shown
+// again.
 #include <QAction>
 #include <QMenu>
 
@@ -11,6 +12,7 @@
 #include "widgets/cutting_plane_panel.h"
 #include "widgets/render_panel.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/sections_panel.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 #include "workbench/isovalue_session.h"
@@ -45,6 +47,7 @@ void MainWindow::createHistory(QMenu* edit) {
     connect(m_selection, &workbench::MemberSelection::visibilityChanged, this, record, queued);
     connect(m_clusterPanel, &ui::ClusterPanel::linkageChanged, this, record, queued);
     connect(m_timeBar, &ui::TimeBar::stepRequested, this, record, queued);
+    connect(m_sections, &ui::SectionsPanel::placesEdited, this, record, queued);
     connect(
         m_resetCameraAction, &QAction::triggered, this,
         [this] { m_history->record(/*cameraStep=*/true); }, queued);

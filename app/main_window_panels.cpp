@@ -51,7 +51,7 @@ void MainWindow::createPanels() {
     makeDock(this, tr("Dendrogram"), "dendrogramDock", m_dendrogram);
     m_timeline = new ui::ClusterTimeline(m_selection);
     makeDock(this, tr("Clusters over Time"), "clusterTimelineDock", m_timeline);
-    m_sections = new ui::SectionsPanel(m_selection);
+    m_sections = new ui::SectionsPanel(m_model, m_selection);
     QDockWidget* sections = makeDock(this, tr("Sections"), "sectionsDock", m_sections);
     // Maps need more room than the dendrogram's strip: shown, the dock takes a good part of
     // the window's height (the user's own size stays once larger).

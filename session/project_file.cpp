@@ -8,6 +8,7 @@
 #include <QSaveFile>
 #include <QStringList>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -17,6 +18,9 @@
 namespace ensil::session {
 namespace {
 constexpr const char* kFormatName = "ensil project";
+// SectionPlaces::Cross by name, in its order.
+const std::array<QLatin1String, 3> kCrossKinds{QLatin1String("latitude"),
+                                               QLatin1String("longitude"), QLatin1String("path")};
 
 QJsonArray vec3Json(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
@@ -296,6 +300,11 @@ QByteArray projectToJson(const SessionState& p, const QDir& projectDir) {
                                  {"members", intsJson(p.memberClusters)}}},
         {"members", QJsonObject{{"hidden", intsJson(numbersOf(p.hiddenMembers))},
                                 {"selected", intsJson(numbersOf(p.selection))}}},
+        // As typed in the Sections dock; empty: where the members' contours are.
+        {"sections",
+         QJsonObject{{"level", QString::fromStdString(p.sections.level)},
+                     {"cross_kind", kCrossKinds[static_cast<std::size_t>(p.sections.crossKind)]},
+                     {"cross", QString::fromStdString(p.sections.cross)}}},
         {"layout", QJsonObject{{"geometry", QString::fromLatin1(p.windowGeometry.toBase64())},
                                {"state", QString::fromLatin1(p.windowState.toBase64())}}}};
     if (p.isovalue) root[QStringLiteral("isovalue")] = *p.isovalue;
@@ -380,6 +389,28 @@ SessionState projectFromJson(const QByteArray& json, const QDir& projectDir) {
         const Fields f = root.object(QStringLiteral("members"));
         p.hiddenMembers = f.indices(QStringLiteral("hidden"), firstNumber);
         p.selection = f.indices(QStringLiteral("selected"), firstNumber);
+    }
+    if (root.has(QStringLiteral("sections"))) {
+        const Fields f = root.object(QStringLiteral("sections"));
+        // A place is a short text ("500 hPa", "-10,50:20,40"); whether it lies in the data is
+        // for the data to say when the section is drawn.
+        constexpr qsizetype kLongestPlace = 200;
+        const auto place = [&](const QString& key) {
+            const QString text = f.text(key, {});
+            if (text.size() > kLongestPlace) {
+                f.fail(key, "is longer than " + std::to_string(kLongestPlace) + " characters");
+            }
+            return text.toStdString();
+        };
+        p.sections.level = place(QStringLiteral("level"));
+        p.sections.cross = place(QStringLiteral("cross"));
+        const QString kind = f.text(QStringLiteral("cross_kind"), QLatin1String(kCrossKinds[0]));
+        const auto* found = std::find(kCrossKinds.begin(), kCrossKinds.end(), kind);
+        if (found == kCrossKinds.end()) {
+            f.fail(QStringLiteral("cross_kind"), "must be latitude, longitude or path");
+        }
+        p.sections.crossKind =
+            static_cast<SectionPlaces::Cross>(std::distance(kCrossKinds.begin(), found));
     }
     if (root.has(QStringLiteral("layout"))) {
         const Fields f = root.object(QStringLiteral("layout"));

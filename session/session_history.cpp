@@ -62,6 +62,21 @@ std::optional<SessionChange> describeChange(const SessionState& before, const Se
     if (parts.testFlag(SessionPart::Visibility)) {
         return SessionChange{QStringLiteral("Visibility"), -1};
     }
+    if (parts.testFlag(SessionPart::Sections)) {
+        // A place as typed; none: where the members' contours are.
+        const auto place = [](const std::string& text) {
+            return text.empty() ? QStringLiteral("default") : QString::fromStdString(text);
+        };
+        if (before.sections.level != after.sections.level) {
+            return SessionChange{
+                QStringLiteral("Map Level %1 -> %2")
+                    .arg(place(before.sections.level), place(after.sections.level)),
+                -1};
+        }
+        return SessionChange{QStringLiteral("Cross-Section %1 -> %2")
+                                 .arg(place(before.sections.cross), place(after.sections.cross)),
+                             -1};
+    }
     return std::nullopt;
 }
 

@@ -34,6 +34,9 @@ SessionParts differences(const SessionState& a, const SessionState& b) {
         parts |= SessionPart::Visibility;
     }
     if (a.selection != b.selection) parts |= SessionPart::Selection;
+    if (a.sections != b.sections || a.sectionsFill != b.sectionsFill) {
+        parts |= SessionPart::Sections;
+    }
     if (a.windowGeometry != b.windowGeometry || a.windowState != b.windowState) {
         parts |= SessionPart::Layout;
     }

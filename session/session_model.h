@@ -27,6 +27,7 @@ enum class SessionPart {
     Visibility = 1 << 10,  // hidden members and clusters
     Selection = 1 << 11,
     Layout = 1 << 12,
+    Sections = 1 << 13,  // the Sections dock's places and fill
 };
 Q_DECLARE_FLAGS(SessionParts, SessionPart)
 Q_DECLARE_OPERATORS_FOR_FLAGS(SessionParts)

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "data/demo_ensemble.h"
@@ -38,6 +39,19 @@ struct CameraState {
 // 6: 3, 10 or more: 5). The workbench, `ensil preprocess`, `ensil render` and Python share it.
 inline int defaultClusters(int members) { return std::clamp((members + 1) / 2, 1, 5); }
 
+// Where the Sections dock's map and cross-section lie (engine/section_place.h reads the texts),
+// as the user typed them; empty: where the members' contours are (engine::defaultSections).
+struct SectionPlaces {
+    enum class Cross { Latitude, Longitude, Path };
+    std::string level;  // "500 hPa", "index:3"
+    Cross crossKind = Cross::Latitude;
+    std::string cross;  // "45N", "10W", "-10,50:20,40"
+    bool operator==(const SectionPlaces&) const = default;
+};
+
+// What fills the maps and cross-sections (the setting "sections_fill").
+enum class SectionsFill { Mean, Spread, Probability, SelectedMember, SelectedAnomaly, None };
+
 struct SessionState {
     // Either the built-in demo (with its parameters) or files; paths are absolute in memory.
     bool demo = false;
@@ -58,6 +72,8 @@ struct SessionState {
     // them. Empty: numbered from the tree. Projects keep it; the undo history does not.
     std::vector<int> memberClusters;
     std::vector<int> selection;
+    SectionPlaces sections;
+    SectionsFill sectionsFill = SectionsFill::Mean;
     QByteArray windowGeometry;  // QMainWindow::saveGeometry / saveState, kept as they are
     QByteArray windowState;
 };

@@ -21,13 +21,15 @@ constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "pr
 constexpr std::array<std::string_view, 5> kSectionFields{"none", "member", "mean", "stddev",
                                                          "probability"};
 // In prep::Linkage's order.
+constexpr std::array<std::string_view, 6> kSectionsFills{"mean",   "spread",  "probability",
+                                                         "member", "anomaly", "none"};
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
 float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 31> kSettings{{
+const std::array<Setting, 32> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -448,6 +450,14 @@ const std::array<Setting, 31> kSettings{{
      0, 4, 0, 1, kSectionFields,
      [](const SessionState& s) { return static_cast<double>(s.render.plane.fill); },
      [](SessionState& s, double v) { s.render.plane.fill = static_cast<gl::SectionField>(v); }},
+    {"sections_fill", SettingKind::Choice, "sections.fill", "", "sections/fill", "Sections Fill",
+     "",
+     "What fills the Sections dock's map and cross-section: the mean, the members' standard "
+     "deviation, the probability of exceeding the isovalue, the first selected member, its "
+     "difference from the mean, or nothing",
+     0, 5, 0, 1, kSectionsFills,
+     [](const SessionState& s) { return static_cast<double>(s.sectionsFill); },
+     [](SessionState& s, double v) { s.sectionsFill = static_cast<SectionsFill>(v); }},
 }};
 
 std::string number(double v) {

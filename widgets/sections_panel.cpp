@@ -9,6 +9,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSplitter>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -18,6 +19,7 @@
 #include "engine/section_painter.h"
 #include "engine/section_place.h"
 #include "gl/view_overlay.h"
+#include "session/session_model.h"
 #include "widgets/section_canvas.h"
 #include "workbench/member_selection.h"
 
@@ -41,6 +43,42 @@ QString pathText(const engine::SectionPlace& place) {
         .arg(n(place.from.x), n(place.from.y), n(place.to.x), n(place.to.y));
 }
 
+// A cross-section's place as the edit shows it.
+QString crossText(const engine::SectionPlace& place) {
+    switch (place.kind) {
+        case engine::SectionKind::Latitude:
+            return QString::fromStdString(engine::degreesText(place.latitude, true));
+        case engine::SectionKind::Longitude:
+            return QString::fromStdString(engine::degreesText(place.longitude, false));
+        default:
+            return pathText(place);
+    }
+}
+
+session::SectionPlaces::Cross crossKindOf(const engine::SectionPlace& place) {
+    return place.kind == engine::SectionKind::Latitude    ? session::SectionPlaces::Cross::Latitude
+           : place.kind == engine::SectionKind::Longitude ? session::SectionPlaces::Cross::Longitude
+                                                          : session::SectionPlaces::Cross::Path;
+}
+
+engine::SectionFill engineFill(session::SectionsFill fill) {
+    switch (fill) {
+        case session::SectionsFill::Mean:
+            return engine::SectionFill::Mean;
+        case session::SectionsFill::Spread:
+            return engine::SectionFill::Spread;
+        case session::SectionsFill::Probability:
+            return engine::SectionFill::Probability;
+        case session::SectionsFill::SelectedMember:
+            return engine::SectionFill::Member;
+        case session::SectionsFill::SelectedAnomaly:
+            return engine::SectionFill::Anomaly;
+        case session::SectionsFill::None:
+            break;
+    }
+    return engine::SectionFill::None;
+}
+
 // The selection's first member, else -1.
 int firstSelected(const workbench::MemberSelection& selection) {
     const QList<int> selected = selection.selectedMembers();
@@ -49,8 +87,9 @@ int firstSelected(const workbench::MemberSelection& selection) {
 
 }  // namespace
 
-SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* parent)
-    : QWidget(parent), m_selection(selection) {
+SectionsPanel::SectionsPanel(session::SessionModel* model, workbench::MemberSelection* selection,
+                             QWidget* parent)
+    : QWidget(parent), m_model(model), m_selection(selection) {
     m_level = new QLineEdit(this);
     m_level->setObjectName(QStringLiteral("sectionLevel"));
     m_level->setPlaceholderText(tr("500 hPa"));
@@ -68,16 +107,10 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
            "points as LON,LAT:LON,LAT (-10,50:20,40)"));
     m_fill = new QComboBox(this);
     m_fill->setObjectName(QStringLiteral("sectionFill"));
-    m_fill->addItem(tr("Mean"), static_cast<int>(engine::SectionFill::Mean));
-    m_fill->addItem(tr("Spread (standard deviation)"),
-                    static_cast<int>(engine::SectionFill::Spread));
-    m_fill->addItem(tr("Probability above the isovalue"),
-                    static_cast<int>(engine::SectionFill::Probability));
-    m_fill->addItem(tr("Selected member"), static_cast<int>(engine::SectionFill::Member));
-    m_fill->addItem(tr("Selected member minus the mean"),
-                    static_cast<int>(engine::SectionFill::Anomaly));
-    m_fill->addItem(tr("None"), static_cast<int>(engine::SectionFill::None));
-    m_fill->setCurrentIndex(QSettings().value(QStringLiteral("sections/fill"), 0).toInt());
+    // In session::SectionsFill's order.
+    m_fill->addItems({tr("Mean"), tr("Spread (standard deviation)"),
+                      tr("Probability above the isovalue"), tr("Selected member"),
+                      tr("Selected member minus the mean"), tr("None")});
     m_export = new QToolButton(this);
     m_export->setText(tr("Export"));
     m_export->setPopupMode(QToolButton::InstantPopup);
@@ -128,23 +161,54 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
     layout->addWidget(m_hint);
     layout->addWidget(m_splitter, 1);
 
-    connect(m_level, &QLineEdit::editingFinished, this, [this] { build(true); });
-    connect(m_cross, &QLineEdit::editingFinished, this, [this] { build(false); });
-    connect(m_crossKind, &QComboBox::activated, this, [this](int kind) {
-        // A place of the new kind: the middle of the data, which the user then edits.
-        m_cross->setText(kind == AlongLatitude    ? QStringLiteral("45N")
-                         : kind == AlongLongitude ? QStringLiteral("0E")
-                                                  : m_cross->text());
-        build(false);
+    // Every edit goes into the session (undo, projects); the session's change shows it here.
+    connect(m_level, &QLineEdit::editingFinished, this, [this] {
+        const std::string text = m_level->text().trimmed().toStdString();
+        if (text == levelShown()) return;
+        m_model->update([&](session::SessionState& st) { st.sections.level = text; });
+        emit placesEdited();
     });
-    connect(m_fill, &QComboBox::currentIndexChanged, this, [this](int index) {
-        QSettings().setValue(QStringLiteral("sections/fill"), index);
+    connect(m_cross, &QLineEdit::editingFinished, this, [this] {
+        const std::string text = m_cross->text().trimmed().toStdString();
+        if (text == crossShown().second) return;
+        const auto kind = static_cast<session::SectionPlaces::Cross>(m_crossKind->currentIndex());
+        m_model->update([&](session::SessionState& st) {
+            st.sections.crossKind = kind;
+            st.sections.cross = text;
+        });
+        emit placesEdited();
+    });
+    connect(m_crossKind, &QComboBox::activated, this, [this](int index) {
+        // A place of the new kind: the default one when it is of that kind, else one to edit.
+        const auto kind = static_cast<session::SectionPlaces::Cross>(index);
+        std::string text = kind == session::SectionPlaces::Cross::Latitude    ? "45N"
+                           : kind == session::SectionPlaces::Cross::Longitude ? "0E"
+                                                                              : "";
+        if (m_defaults && crossKindOf(m_defaults->crossSection) == kind) {
+            text = crossText(m_defaults->crossSection).toStdString();
+        }
+        if (text.empty()) text = m_cross->text().toStdString();
+        m_model->update([&](session::SessionState& st) {
+            st.sections.crossKind = kind;
+            st.sections.cross = text;
+        });
+        emit placesEdited();
+    });
+    connect(m_fill, &QComboBox::activated, this, [this](int index) {
+        m_model->update([index](session::SessionState& st) {
+            st.sectionsFill = static_cast<session::SectionsFill>(index);
+        });
+        emit placesEdited();
+    });
+    connect(m_model, &session::SessionModel::changed, this, [this](session::SessionParts parts) {
+        if (!parts.testFlag(session::SessionPart::Sections)) return;
+        showPlaces();
         rebuild();
     });
     connect(m_selection, &workbench::MemberSelection::selectionChanged, this, [this] {
         showEmphasis();
         // A member's fill follows the selection.
-        const auto fill = static_cast<engine::SectionFill>(m_fill->currentData().toInt());
+        const engine::SectionFill fill = engineFill(m_model->state().sectionsFill);
         if (fill == engine::SectionFill::Member || fill == engine::SectionFill::Anomaly) rebuild();
     });
     for (auto signal : {&workbench::MemberSelection::visibilityChanged,
@@ -155,6 +219,7 @@ SectionsPanel::SectionsPanel(workbench::MemberSelection* selection, QWidget* par
             &SectionsPanel::showEmphasis);
     connect(m_selection, &workbench::MemberSelection::clustersChanged, this,
             &SectionsPanel::recolour);
+    showPlaces();
 }
 
 SectionsPanel::~SectionsPanel() = default;
@@ -166,8 +231,33 @@ void SectionsPanel::showData(std::shared_ptr<const data::Ensemble> ensemble, flo
     if (ensemble == m_ensemble && isovalue == m_isovalue) return;
     m_ensemble = std::move(ensemble);
     m_isovalue = isovalue;
-    if (!sameKind) m_placesChosen = false;
+    if (!sameKind) m_defaults.reset();  // found again for these data
     rebuild();
+}
+
+std::string SectionsPanel::levelShown() const {
+    const std::string& typed = m_model->state().sections.level;
+    if (!typed.empty() || !m_defaults) return typed;
+    return levelText(m_defaults->map).toStdString();
+}
+
+std::pair<int, std::string> SectionsPanel::crossShown() const {
+    const session::SectionPlaces& places = m_model->state().sections;
+    if (!places.cross.empty() || !m_defaults) {
+        return {static_cast<int>(places.crossKind), places.cross};
+    }
+    return {static_cast<int>(crossKindOf(m_defaults->crossSection)),
+            crossText(m_defaults->crossSection).toStdString()};
+}
+
+void SectionsPanel::showPlaces() {
+    const QSignalBlocker blockLevel(m_level), blockKind(m_crossKind), blockCross(m_cross),
+        blockFill(m_fill);
+    m_level->setText(QString::fromStdString(levelShown()));
+    const auto [kind, cross] = crossShown();
+    m_crossKind->setCurrentIndex(kind);
+    m_cross->setText(QString::fromStdString(cross));
+    m_fill->setCurrentIndex(static_cast<int>(m_model->state().sectionsFill));
 }
 
 void SectionsPanel::rebuild() {
@@ -177,33 +267,26 @@ void SectionsPanel::rebuild() {
         return;
     }
     m_dirty = false;
-    if (!m_placesChosen) {
+    const session::SectionPlaces& places = m_model->state().sections;
+    if (!m_defaults && (places.level.empty() || places.cross.empty())) {
         // Where the members' contours are: found in the background, then both sections built.
         const auto ensemble = m_ensemble;
         const float isovalue = m_isovalue;
+        m_defaultsPending = true;
         m_defaultsJob.start(
             [ensemble, isovalue](const std::stop_token&, const data::Progress&) {
                 return engine::defaultSections(*ensemble, isovalue);
             },
             [this](engine::DefaultSections defaults) {
-                m_placesChosen = true;
-                m_level->setText(levelText(defaults.map));
-                const engine::SectionPlace& cross = defaults.crossSection;
-                m_crossKind->setCurrentIndex(
-                    cross.kind == engine::SectionKind::Latitude    ? AlongLatitude
-                    : cross.kind == engine::SectionKind::Longitude ? AlongLongitude
-                                                                   : AlongPath);
-                m_cross->setText(
-                    cross.kind == engine::SectionKind::Latitude
-                        ? QString::fromStdString(engine::degreesText(cross.latitude, true))
-                    : cross.kind == engine::SectionKind::Longitude
-                        ? QString::fromStdString(engine::degreesText(cross.longitude, false))
-                        : pathText(cross));
+                m_defaultsPending = false;
+                m_defaults = std::move(defaults);
+                showPlaces();
                 rebuild();
             },
-            [](const std::exception_ptr&, bool) {});
+            [this](const std::exception_ptr&, bool) { m_defaultsPending = false; });
         return;
     }
+    showPlaces();
     build(true);
     build(false);
 }
@@ -212,12 +295,13 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
     engine::SectionRequest r;
     std::string why;
     std::optional<engine::SectionPlace> place;
-    const std::string text = (map ? m_level : m_cross)->text().toStdString();
+    const auto [kind, cross] = crossShown();
+    const std::string text = map ? levelShown() : cross;
     if (map) {
         place = engine::parseLevel(text, why);
-    } else if (m_crossKind->currentIndex() == AlongLatitude) {
+    } else if (kind == AlongLatitude) {
         place = engine::parseLatitude(text, why);
-    } else if (m_crossKind->currentIndex() == AlongLongitude) {
+    } else if (kind == AlongLongitude) {
         place = engine::parseLongitude(text, why);
     } else {
         place = engine::parsePath(text, why);
@@ -228,7 +312,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
     }
     r.place = *place;
     r.isovalue = m_isovalue;
-    r.fill = static_cast<engine::SectionFill>(m_fill->currentData().toInt());
+    r.fill = engineFill(m_model->state().sectionsFill);
     if (r.fill == engine::SectionFill::Member || r.fill == engine::SectionFill::Anomaly) {
         r.member = firstSelected(*m_selection);
         if (r.member < 0) r.fill = engine::SectionFill::None;
@@ -241,7 +325,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
 }
 
 void SectionsPanel::build(bool map) {
-    if (!m_ensemble || !m_placesChosen) return;
+    if (!m_ensemble) return;
     if (!isVisible()) {
         m_dirty = true;
         return;
@@ -252,25 +336,31 @@ void SectionsPanel::build(bool map) {
     engine::SectionRequest r = request(map, &problem);
     edit->setStyleSheet(problem.isEmpty() ? QString() : QStringLiteral("color: #c0392b"));
     if (!problem.isEmpty()) {
+        (map ? m_mapJob : m_crossJob).cancel();  // a section of the place before is not shown
+        (map ? m_mapPending : m_crossPending) = false;
         canvas->setMessage(problem);
         emit sectionBuilt();
         return;
     }
-    const auto fill = static_cast<engine::SectionFill>(m_fill->currentData().toInt());
+    const engine::SectionFill fill = engineFill(m_model->state().sectionsFill);
     const bool wantsMember =
         fill == engine::SectionFill::Member || fill == engine::SectionFill::Anomaly;
     m_hint->setVisible(wantsMember && r.member < 0);
     m_hint->setText(tr("Select a member (click its contour) to fill the sections with it."));
     const auto ensemble = m_ensemble;
     auto& job = map ? m_mapJob : m_crossJob;
+    bool& pending = map ? m_mapPending : m_crossPending;
+    pending = true;
     job.start([ensemble, r](const std::stop_token&,
                             const data::Progress&) { return engine::buildSection(*ensemble, r); },
-              [this, canvas](engine::SectionView view) {
+              [this, canvas, &pending](engine::SectionView view) {
+                  pending = false;
                   canvas->setView(std::make_shared<const engine::SectionView>(std::move(view)));
                   showEmphasis();
                   emit sectionBuilt();
               },
-              [this, canvas](const std::exception_ptr& error, bool cancelled) {
+              [this, canvas, &pending](const std::exception_ptr& error, bool cancelled) {
+                  pending = false;
                   if (cancelled || !error) return;
                   try {
                       std::rethrow_exception(error);

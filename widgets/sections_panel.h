@@ -2,14 +2,18 @@
 // path, side by side (one above the other in a tall dock), drawn from the data and isovalue on
 // screen with every member's contour in its cluster's colour over a chosen fill (the mean, the
 // spread, P(f > c), the selected member or its difference from the mean). The places are typed
-// as a meteorologist says them ("500 hPa", "45N", "-10,50:20,40"); new data starts where the
-// members' contours are (engine::defaultSections). Selection, visibility, hover and clusters
+// as a meteorologist says them ("500 hPa", "45N", "-10,50:20,40") and kept in the session (undo,
+// projects); without any, the sections lie where the members' contours are
+// (engine::defaultSections). Selection, visibility, hover and clusters
 // follow the shared workbench::MemberSelection both ways. Sections are built in the background
 // and only while the dock is shown. GUI thread only.
 #pragma once
 
 #include <QWidget>
 #include <memory>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include "data/ensemble.h"
 #include "engine/ensemble_section.h"
@@ -25,6 +29,10 @@ namespace ensil::workbench {
 class MemberSelection;
 }  // namespace ensil::workbench
 
+namespace ensil::session {
+class SessionModel;
+}  // namespace ensil::session
+
 namespace ensil::ui {
 
 class SectionCanvas;
@@ -32,7 +40,10 @@ class SectionCanvas;
 class SectionsPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit SectionsPanel(workbench::MemberSelection* selection, QWidget* parent = nullptr);
+    // The places and fill are the session's (`model`): edits go there, and undo or a project
+    // shows here. Both outlive the panel.
+    SectionsPanel(session::SessionModel* model, workbench::MemberSelection* selection,
+                  QWidget* parent = nullptr);
     ~SectionsPanel() override;
 
     // The data and isovalue whose contours are drawn. Other data (another variable or grid)
@@ -48,10 +59,15 @@ public:
     [[nodiscard]] QComboBox* fillBox() const { return m_fill; }
     [[nodiscard]] SectionCanvas* mapCanvas() const { return m_mapCanvas; }
     [[nodiscard]] SectionCanvas* crossCanvas() const { return m_crossCanvas; }
-    [[nodiscard]] bool isBuilding() const { return m_mapJob.isRunning() || m_crossJob.isRunning(); }
+    // A section (or the default places) is being made: its result has not reached the screen.
+    [[nodiscard]] bool isBuilding() const {
+        return m_mapPending || m_crossPending || m_defaultsPending;
+    }
 
 signals:
-    void sectionBuilt();  // a map or cross-section reached the screen (or said why not)
+    void sectionBuilt();
+    void placesEdited();  // the user changed a place or the fill (an undo step)  // a map or
+                          // cross-section reached the screen (or said why not)
 
 protected:
     void showEvent(QShowEvent* event) override;
@@ -60,16 +76,25 @@ protected:
 private:
     void rebuild();
     void build(bool map);
+    // The places as shown: the session's, or where the contours are when it has none.
+    [[nodiscard]] std::string levelShown() const;
+    [[nodiscard]] std::pair<int, std::string> crossShown() const;  // kind, place
+    void showPlaces();
     [[nodiscard]] engine::SectionRequest request(bool map, QString* problem) const;
     void showEmphasis();
     void recolour();
     void exportWithDialog(bool map);
 
+    session::SessionModel* m_model;
     workbench::MemberSelection* m_selection;
     std::shared_ptr<const data::Ensemble> m_ensemble;
     float m_isovalue = 0.0F;
-    bool m_dirty = false;         // data or places changed while the dock was hidden
-    bool m_placesChosen = false;  // the places are the user's or this data's defaults
+    bool m_dirty = false;  // data or places changed while the dock was hidden
+    bool m_mapPending = false;
+    bool m_crossPending = false;
+    bool m_defaultsPending = false;
+    // Where the members' contours are in the data shown; none until found.
+    std::optional<engine::DefaultSections> m_defaults;
     QLineEdit* m_level;
     QComboBox* m_crossKind;
     QLineEdit* m_cross;

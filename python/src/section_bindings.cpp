@@ -128,8 +128,8 @@ the bottom (the lowest latitude, the highest pressure); places in the plot are i
 square, x right and y up, laid out as the 3D view lays out the data.)doc")
         .def_property_readonly("title", [](const PySection& s) { return s.view->title; })
         .def_property_readonly("place", [](const PySection& s) { return s.view->placeText; })
-        .def_property_readonly(
-            "isovalue", [](const PySection& s) { return s.clusters->meshes.isovalue; })
+        .def_property_readonly("isovalue",
+                               [](const PySection& s) { return s.clusters->meshes.isovalue; })
         .def_property_readonly(
             "values",
             [](const PySection& s) {
@@ -173,7 +173,8 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
             [](const PySection& s) { return copyOf<double>(s.view->columnPositions); },
             "Where each column lies across the plot, 0 to 1.")
         .def_property_readonly(
-            "row_positions", [](const PySection& s) { return copyOf<double>(s.view->rowPositions); },
+            "row_positions",
+            [](const PySection& s) { return copyOf<double>(s.view->rowPositions); },
             "Where each row lies up the plot, 0 to 1.")
         .def_property_readonly(
             "clusters", [](const PySection& s) { return copyOf<int>(s.clusters->clusterNumbers); },
@@ -201,11 +202,11 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
                    std::to_string(s.view->members.size()) + " members>";
         });
 
-    auto result = py::reinterpret_borrow<py::class_<PyPreprocessResult>>(
-        module.attr("PreprocessResult"));
+    auto result =
+        py::reinterpret_borrow<py::class_<PyPreprocessResult>>(module.attr("PreprocessResult"));
     result.def("section", &section, py::arg("level") = py::none(), py::arg("lat") = py::none(),
-               py::arg("lon") = py::none(), py::arg("path") = py::none(),
-               py::arg("fill") = "mean", R"doc(
+               py::arg("lon") = py::none(), py::arg("path") = py::none(), py::arg("fill") = "mean",
+               R"doc(
 A map or a cross-section at this result's isovalue, members in their clusters' colours:
 level= a map ("500hPa", "5km", "index:3", or a number in the vertical axis's units); lat= or
 lon= a cross-section along a latitude or longitude (45, "45N", "10W"); path= one along the

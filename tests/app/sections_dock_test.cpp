@@ -12,6 +12,7 @@
 
 #include "app/main_window.h"
 #include "engine/section_painter.h"
+#include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
@@ -24,19 +25,20 @@ using namespace ensil;
 
 namespace {
 
+// Until every section asked for has reached the screen.
+bool settled(const ui::SectionsPanel& panel) {
+    return QTest::qWaitFor([&] { return !panel.isBuilding(); }, 60000);
+}
+
 // Shows the Sections dock and waits until both sections are on screen.
 bool showSections(app::MainWindow& window) {
     auto* dock = window.findChild<QDockWidget*>(QStringLiteral("sectionsDock"));
     if (dock == nullptr) return false;
-    ui::SectionsPanel* panel = window.sectionsPanel();
-    QSignalSpy built(panel, &ui::SectionsPanel::sectionBuilt);
     dock->show();
     dock->raise();
-    while (panel->mapCanvas()->view() == nullptr || panel->crossCanvas()->view() == nullptr ||
-           panel->isBuilding()) {
-        if (!built.wait(60000)) return false;
-    }
-    return true;
+    ui::SectionsPanel* panel = window.sectionsPanel();
+    return QTest::qWaitFor([&] { return panel->mapCanvas()->view() != nullptr; }, 60000) &&
+           settled(*panel) && panel->crossCanvas()->view() != nullptr;
 }
 
 // A widget position on member m's first contour in the canvas.
@@ -109,27 +111,36 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     ASSERT_TRUE(finished.wait(120000));
     ASSERT_TRUE(showSections(window));
     ui::SectionsPanel* panel = window.sectionsPanel();
-    QSignalSpy built(panel, &ui::SectionsPanel::sectionBuilt);
+    const QString defaultLevel = panel->levelEdit()->text();
+    EXPECT_TRUE(defaultLevel.endsWith(QStringLiteral(" hPa"))) << defaultLevel.toStdString();
     // A level typed in hPa on an axis in Pa; a latitude as people write it.
-    panel->levelEdit()->setText(QStringLiteral("500 hPa"));
+    panel->levelEdit()->setText(QStringLiteral("500hPa"));
     emit panel->levelEdit()->editingFinished();
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(settled(*panel));
     EXPECT_EQ(panel->mapCanvas()->view()->title, "t at 500 hPa");
+    // The place is the session's: undo takes it back to where the contours are, redo again.
+    EXPECT_EQ(window.history()->stack()->undoText(), QStringLiteral("Map Level default -> 500hPa"));
+    window.history()->stack()->undo();
+    EXPECT_TRUE(window.captureSession().sections.level.empty());
+    EXPECT_EQ(panel->levelEdit()->text(), defaultLevel);  // where the contours are, shown
+    window.history()->stack()->redo();
+    EXPECT_EQ(panel->levelEdit()->text(), QStringLiteral("500hPa"));
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
     // A place outside the data is said in the canvas, the edit marked.
     panel->levelEdit()->setText(QStringLiteral("1000 hPa"));
     emit panel->levelEdit()->editingFinished();
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(settled(*panel));
     EXPECT_EQ(panel->mapCanvas()->view(), nullptr);
     EXPECT_TRUE(panel->mapCanvas()->message().contains(QStringLiteral("outside the data")))
         << panel->mapCanvas()->message().toStdString();
     panel->levelEdit()->setText(QStringLiteral("850hPa"));
     emit panel->levelEdit()->editingFinished();
-    ASSERT_TRUE(built.wait(60000));
+    ASSERT_TRUE(settled(*panel));
     // A new isovalue: the contours follow it.
     const float before = window.isovalueSession()->result()->meshes->isovalue;
     window.isovalueSession()->setIsovalue(before + 5.0F, 1.0F);
     ASSERT_TRUE(finished.wait(120000));
-    while (panel->isBuilding()) ASSERT_TRUE(built.wait(60000));
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
     EXPECT_NE(panel->mapCanvas()->view()->subtitle.find("isovalue"), std::string::npos);
     const engine::SectionView& map = *panel->mapCanvas()->view();
     // Every contour point lies where the member's value is the new isovalue.
@@ -150,4 +161,20 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     EXPECT_FALSE(panel->exportSection(true, QString::fromStdString(dir.file("map.gif")), &error));
     EXPECT_TRUE(error.contains(QStringLiteral(".svg"))) << error.toStdString();
     window.grab().save(test::testOutputDir() + "/sections_dock_era5.png");
+
+    // A project keeps the places and the fill; reopened, the dock shows them.
+    window.memberSelection()->setSelection({3});
+    window.sectionsPanel()->fillBox()->setCurrentIndex(4);  // the selected member less the mean
+    emit window.sectionsPanel()->fillBox()->activated(4);
+    const QString project = QString::fromStdString(dir.file("sections.ensil"));
+    ASSERT_TRUE(window.saveProjectTo(project));
+    app::MainWindow reopened;
+    ASSERT_TRUE(test::showWorkbench(reopened, {1400, 900}));
+    ASSERT_TRUE(test::openProjectAndWait(reopened, project));
+    ASSERT_TRUE(showSections(reopened));
+    EXPECT_EQ(reopened.sectionsPanel()->levelEdit()->text(), QStringLiteral("850hPa"));
+    EXPECT_EQ(reopened.sectionsPanel()->fillBox()->currentIndex(), 4);
+    const engine::SectionView& again = *reopened.sectionsPanel()->mapCanvas()->view();
+    EXPECT_EQ(again.scale, engine::ColourScaleKind::Diverging);
+    EXPECT_NE(again.fillCaption.find("minus the mean"), std::string::npos) << again.fillCaption;
 }

@@ -179,4 +179,4 @@ def test_another_thread_is_told_why_it_cannot_render(spheres):
     worker.start()
     worker.join()
     assert raised == ["ensil.render must be called from the thread Qt started on "
-                      "(the first render's)"]
+                      "(the first picture's)"]

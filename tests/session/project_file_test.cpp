@@ -51,6 +51,10 @@ session::SessionState sample(const QString& dataFile) {
     p.selection = {3, 4};
     p.windowState = QByteArray("\x01\x02state", 7);
     p.windowGeometry = QByteArray("geometry");
+    p.sections.level = "500 hPa";
+    p.sections.crossKind = session::SectionPlaces::Cross::Path;
+    p.sections.cross = "-10,50:20,40";
+    p.sectionsFill = session::SectionsFill::Probability;
     return p;
 }
 
@@ -106,6 +110,8 @@ TEST(Project, EverythingSavedComesBack) {
     EXPECT_EQ(p.selection, e.selection);
     EXPECT_EQ(p.windowState, e.windowState);
     EXPECT_EQ(p.windowGeometry, e.windowGeometry);
+    EXPECT_EQ(p.sections, e.sections);
+    EXPECT_EQ(p.sectionsFill, session::SectionsFill::Probability);
 }
 
 TEST(Project, DataPathsAreRelativeSoTheProjectCanMoveWithItsData) {
@@ -228,6 +234,14 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
     EXPECT_EQ(members, "members.selected must be a list of indices (whole numbers from 0)");
     EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 1, "data": {}})").first,
               "data.files is missing: name the data files or the demo");
+    EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 3, "data": {"demo": {}},
+            "sections": {"cross_kind": "diagonal"}})")
+                  .first,
+              "sections.cross_kind must be latitude, longitude or path");
+    EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 3, "data": {"demo": {}},
+            "sections": {"fill": "median"}})")
+                  .first.find("sections.fill must be"),
+              0U);
 }
 
 TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {

@@ -28,6 +28,15 @@ TEST(SessionChange, NamesTheStepFromWhatChanged) {
     after = before;
     after.render.plane.offset = 0.2F;
     EXPECT_EQ(session::describeChange(before, after, false)->name, "Cutting Plane");
+    after = before;
+    after.sections.level = "500 hPa";
+    EXPECT_EQ(session::describeChange(before, after, false)->name, "Map Level default -> 500 hPa");
+    after = before;
+    after.sections.cross = "45N";
+    EXPECT_EQ(session::describeChange(before, after, false)->name, "Cross-Section default -> 45N");
+    after = before;
+    after.sectionsFill = session::SectionsFill::Spread;
+    EXPECT_EQ(session::describeChange(before, after, false)->name, "Sections Fill mean -> spread");
 }
 
 TEST(SessionChange, TheCamerasOwnMotionAndTheSelectionAreNoSteps) {
