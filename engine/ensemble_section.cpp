@@ -261,12 +261,18 @@ double latticeIndexAt(const std::vector<double>& positions, double t) {
 }
 
 float sectionValueAt(const SectionView& view, const std::vector<float>& values, glm::dvec2 unit) {
+    if (view.columns < 2 || view.rows < 2) return kNaN;
+    return sectionValueAtIndex(view, values, latticeIndexAt(view.columnPositions, unit.x),
+                               latticeIndexAt(view.rowPositions, unit.y));
+}
+
+float sectionValueAtIndex(const SectionView& view, const std::vector<float>& values, double column,
+                          double row) {
     if (view.columns < 2 || view.rows < 2 || values.size() != view.columns * view.rows) return kNaN;
-    const double column = latticeIndexAt(view.columnPositions, unit.x);
-    const double row = latticeIndexAt(view.rowPositions, unit.y);
-    const auto c0 = std::min(static_cast<std::size_t>(column), view.columns - 2);
-    const auto r0 = std::min(static_cast<std::size_t>(row), view.rows - 2);
-    const double fc = column - static_cast<double>(c0), fr = row - static_cast<double>(r0);
+    const auto c0 = std::min(static_cast<std::size_t>(std::max(column, 0.0)), view.columns - 2);
+    const auto r0 = std::min(static_cast<std::size_t>(std::max(row, 0.0)), view.rows - 2);
+    const double fc = std::clamp(column - static_cast<double>(c0), 0.0, 1.0);
+    const double fr = std::clamp(row - static_cast<double>(r0), 0.0, 1.0);
     const std::size_t nearest =
         c0 + (fc >= 0.5 ? 1 : 0) + view.columns * (r0 + (fr >= 0.5 ? 1 : 0));
     if (std::isnan(values[nearest])) return kNaN;

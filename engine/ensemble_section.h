@@ -136,6 +136,9 @@ double latticeIndexAt(const std::vector<double>& positions, double t);
 // in the plot's unit square, bilinear between samples; NaN where the nearest sample is missing
 // or the size is not the lattice's.
 float sectionValueAt(const SectionView& view, const std::vector<float>& values, glm::dvec2 unit);
+// The same at a fractional lattice index (column, row), for a caller that walks the lattice.
+float sectionValueAtIndex(const SectionView& view, const std::vector<float>& values, double column,
+                          double row);
 
 // Gives each member's contour its colour and makes the legend (as buildSection does from the
 // request), for new clusters without sampling the section again.

@@ -41,6 +41,11 @@ QSize sectionPictureSize(const SectionView& view, int width, const SectionStyle&
 void paintSection(QPainter& painter, const SectionView& view, const QRectF& page,
                   const SectionEmphasis& emphasis = {}, const SectionStyle& style = {});
 
+// One member's contour as paintSection draws the hovered one, over a picture drawn before
+// (the dock keeps the rest as an image, so the pointer's moves redraw only this).
+void paintHoveredMember(QPainter& painter, const SectionView& view, const QRectF& page,
+                        std::size_t member, const SectionStyle& style = {});
+
 // Writes the figure as PNG, SVG or PDF by the path's suffix, `size` in pixels (PDF: points).
 // Throws data::Error naming the file when the suffix is none of these or it cannot be written.
 void writeSectionPicture(const SectionView& view, const QString& path, QSize size);

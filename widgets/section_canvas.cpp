@@ -40,6 +40,7 @@ SectionCanvas::SectionCanvas(QWidget* parent) : QWidget(parent) {
 
 void SectionCanvas::setView(std::shared_ptr<const engine::SectionView> view) {
     m_view = std::move(view);
+    m_drawnValid = false;
     if (m_view) m_message.clear();
     update();
 }
@@ -51,8 +52,17 @@ void SectionCanvas::setMessage(const QString& message) {
 }
 
 void SectionCanvas::setEmphasis(engine::SectionEmphasis emphasis) {
+    // The hover alone is drawn over the kept image; anything else redraws it.
+    if (emphasis.selected != m_emphasis.selected || emphasis.hidden != m_emphasis.hidden) {
+        m_drawnValid = false;
+    }
     m_emphasis = std::move(emphasis);
     update();
+}
+
+void SectionCanvas::resizeEvent(QResizeEvent* event) {
+    m_drawnValid = false;
+    QWidget::resizeEvent(event);
 }
 
 std::optional<glm::dvec2> SectionCanvas::unitAt(QPointF pos) const {
@@ -119,10 +129,24 @@ void SectionCanvas::paintEvent(QPaintEvent*) {
                          m_message);
         return;
     }
-    engine::SectionEmphasis emphasis = m_emphasis;
-    emphasis.hovered = m_hovered >= 0 ? m_hovered : m_emphasis.hovered;
     const engine::SectionStyle style = sectionStyle();
-    engine::paintSection(painter, *m_view, QRectF(rect()), emphasis, style);
+    const qreal ratio = devicePixelRatioF();
+    if (!m_drawnValid || m_drawn.size() != size() * ratio) {
+        m_drawn = QImage(size() * ratio, QImage::Format_ARGB32_Premultiplied);
+        m_drawn.setDevicePixelRatio(ratio);
+        QPainter drawn(&m_drawn);
+        engine::SectionEmphasis still = m_emphasis;
+        still.hovered = -1;
+        engine::paintSection(drawn, *m_view, QRectF(rect()), still, style);
+        m_drawnValid = true;
+    }
+    painter.drawImage(0, 0, m_drawn);
+    const int hovered = m_hovered >= 0 ? m_hovered : m_emphasis.hovered;
+    if (hovered >= 0 && (static_cast<std::size_t>(hovered) >= m_emphasis.hidden.size() ||
+                         !m_emphasis.hidden[static_cast<std::size_t>(hovered)])) {
+        engine::paintHoveredMember(painter, *m_view, QRectF(rect()),
+                                   static_cast<std::size_t>(hovered), style);
+    }
 }
 
 void SectionCanvas::mouseMoveEvent(QMouseEvent* event) {

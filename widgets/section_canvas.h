@@ -6,6 +6,7 @@
 // data). GUI thread only.
 #pragma once
 
+#include <QImage>
 #include <QWidget>
 #include <memory>
 #include <optional>
@@ -47,6 +48,7 @@ protected:
     void mousePressEvent(QMouseEvent* event) override;
     void leaveEvent(QEvent* event) override;
     bool event(QEvent* event) override;  // tooltips
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     // The plot's unit-square place of a widget position; nullopt outside the plot.
@@ -54,6 +56,10 @@ private:
 
     std::shared_ptr<const engine::SectionView> m_view;
     engine::SectionEmphasis m_emphasis;
+    // The section as drawn without the hovered member: drawing all of it takes a few hundred
+    // ms in software, so a pointer's move redraws this image and the hovered contour only.
+    QImage m_drawn;
+    bool m_drawnValid = false;
     QString m_message;
     int m_hovered = -1;
 };

@@ -31,10 +31,10 @@ int main(int argc, char** argv) {
     qputenv("QT_QPA_PLATFORM", "offscreen");  // fonts for the drawing, no display server
     QGuiApplication app(argc, argv);
     const data::Ensemble demo = data::makeDemoEnsemble({}).ensemble;
-    const float iso = prep::defaultIsovalue(demo, prep::computeFieldStatistics(demo, prep::kIsovalueHistogramBins));
-    std::printf("demo: %zu members, %zu x %zu x %zu, isovalue %.3f, %d runs\n",
-                demo.memberCount(), demo.grid.nx(), demo.grid.ny(), demo.grid.nz(),
-                static_cast<double>(iso), runs);
+    const float iso = prep::defaultIsovalue(
+        demo, prep::computeFieldStatistics(demo, prep::kIsovalueHistogramBins));
+    std::printf("demo: %zu members, %zu x %zu x %zu, isovalue %.3f, %d runs\n", demo.memberCount(),
+                demo.grid.nx(), demo.grid.ny(), demo.grid.nz(), static_cast<double>(iso), runs);
 
     engine::DefaultSections defaults;
     const double defaultsMs =
@@ -60,7 +60,8 @@ int main(int argc, char** argv) {
     engine::SectionView map;
     for (const auto& c : cases) {
         engine::SectionView view;
-        const double ms = bench::medianMs(runs, [&] { view = engine::buildSection(demo, request(c.place)); });
+        const double ms =
+            bench::medianMs(runs, [&] { view = engine::buildSection(demo, request(c.place)); });
         std::size_t points = 0;
         for (const engine::MemberContour& m : view.members) {
             for (const engine::SectionLine& l : m.lines) points += l.points.size();
@@ -77,6 +78,21 @@ int main(int argc, char** argv) {
         engine::paintSection(painter, map, QRectF(0, 0, 1000, 500), {}, compact);
     });
     std::printf("drawing the map in the dock:    %8.1f ms  (1000 x 500)\n", dockMs);
+    // Where that time goes: the fill alone, and the lines alone.
+    engine::SectionView fillOnly = map;
+    fillOnly.members.clear();
+    fillOnly.meanContour.clear();
+    fillOnly.mapLines.clear();
+    engine::SectionView linesOnly = map;
+    linesOnly.fill.clear();
+    for (const auto& [name, part] : {std::pair{"  of which the fill:", &fillOnly},
+                                     std::pair{"  of which the lines:", &linesOnly}}) {
+        const double ms = bench::medianMs(runs, [&] {
+            QPainter painter(&dock);
+            engine::paintSection(painter, *part, QRectF(0, 0, 1000, 500), {}, compact);
+        });
+        std::printf("%-32s %8.1f ms\n", name, ms);
+    }
     const QSize figure = engine::sectionPictureSize(map, 1400);
     QImage picture(figure, QImage::Format_ARGB32_Premultiplied);
     const double figureMs = bench::medianMs(runs, [&] {
