@@ -4,21 +4,14 @@
 #include <cmath>
 #include <limits>
 
+#include "widgets/segment_distance.h"
+
 namespace ensil::ui {
 namespace {
 // Headroom above the root, and how far above the highest finite merge infinite ones are drawn,
 // as fractions of that height.
 constexpr double kHeadroom = 0.08;
 constexpr double kInfiniteLift = 0.15;
-
-double distanceToSegment(QPointF p, QPointF a, QPointF b) {
-    const QPointF d = b - a;
-    const double length2 = QPointF::dotProduct(d, d);
-    const double t =
-        length2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, d) / length2, 0.0, 1.0) : 0.0;
-    const QPointF nearest = a + t * d;
-    return std::hypot(p.x() - nearest.x(), p.y() - nearest.y());
-}
 }  // namespace
 
 DendrogramLayout::DendrogramLayout(const prep::MergeTree& tree)

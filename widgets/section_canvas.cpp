@@ -7,21 +7,12 @@
 #include <cmath>
 
 #include "data/number_text.h"
+#include "widgets/segment_distance.h"
 
 namespace ensil::ui {
 namespace {
 
 constexpr double kPickPixels = 6.0;  // how near the pointer a contour must pass to be picked
-
-// The distance in pixels from p to the segment a-b.
-double distanceToSegment(QPointF p, QPointF a, QPointF b) {
-    const QPointF ab = b - a;
-    const double length2 = QPointF::dotProduct(ab, ab);
-    const double t =
-        length2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    const QPointF nearest = a + t * ab;
-    return std::hypot(p.x() - nearest.x(), p.y() - nearest.y());
-}
 
 }  // namespace
 
