@@ -6,6 +6,7 @@
 #include <map>
 
 #include "data/ascii_case.h"
+#include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "data/number_text.h"
 #include "data/units_text.h"
@@ -104,11 +105,19 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     view.left = std::move(placed.left);
     view.mapLines = std::move(placed.mapLines);
     view.graticule = std::move(placed.graticule);
+    view.pathOnMap = std::move(placed.pathOnMap);
+    view.levelHeight = placed.levelHeight;
     const std::string name = ensemble.variable;
     view.title =
         name + (request.place.kind == SectionKind::Map ? " at " : " along ") + placed.placeText;
     if (request.place.kind == SectionKind::Path) view.title = name + " from " + placed.placeText;
 
+    // Every member's samples are kept (hover, Python): refused before they are taken when they
+    // would not fit (1,000 members on a 1440 x 721 map are 4 GB).
+    const std::size_t samples = placed.lattice.indices.size();
+    data::checkMemoryFor((memberCount + 4) * samples * sizeof(float),
+                         "a section of " + std::to_string(memberCount) + " members x " +
+                             std::to_string(samples) + " samples");
     view.memberValues.reserve(memberCount);
     view.units = data::readableUnits(ensemble.units);
     for (const data::Member& member : ensemble.members) {
@@ -116,7 +125,6 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
         view.memberValues.push_back(
             prep::sampleSection(ensemble.grid, member.values, placed.lattice));
     }
-    const std::size_t samples = placed.lattice.indices.size();
     const SampleMoments moments = momentsOf(view.memberValues, samples, request.isovalue);
     const std::string units = unitsInBrackets(ensemble);
     const auto memberName = [&](int m) {

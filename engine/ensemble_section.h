@@ -111,6 +111,11 @@ struct SectionView {
     std::string units;                     // the variable's, as people read them ("m s⁻¹")
     // The place in words, for file names and JSON: "500 hPa", "45°N", "10°E", "path".
     std::string placeText;
+    // Where the other kind of section shows this one (engine::PlacedSection): a cross-section's
+    // path across a map of the same data, in the map's unit square; a map's level up a
+    // cross-section, 0 to 1 (-1 for a cross-section).
+    std::vector<glm::dvec2> pathOnMap;
+    double levelHeight = -1.0;
 };
 
 // The fill as the command line and Python name it: mean, spread, probability, member:N,

@@ -317,6 +317,9 @@ void placeMap(const data::Ensemble& ensemble, const SectionPlace& place,
     const data::DisplayFrame frame(grid, 1.0F);
     const double zIndex = levelIndex(grid, place, out.placeText);
     out.lattice = prep::horizontalLattice(grid, zIndex);
+    out.levelHeight =
+        frame.toDisplay({grid.x().front(), grid.y().front(), grid.z().valueAt(zIndex)}).z /
+        frame.boxMax().z;
     const glm::vec3 box = frame.boxMax();
     for (std::size_t i = 0; i < grid.nx(); ++i) {
         out.columnPositions.push_back(
@@ -421,6 +424,18 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
     double total = 0.0;
     out.columnPositions = positionsAlong(lonLat, geographic, total);
     const data::DisplayFrame frame(grid, 1.0F);
+    // Across the seam of a global grid the x index runs past the last column: one more step.
+    const auto xAt = [&grid](double i) {
+        const double last = static_cast<double>(grid.nx() - 1);
+        if (i <= last) return grid.x().valueAt(i);
+        return grid.x().values.back() +
+               (i - last) * (grid.x().values.back() - grid.x().values[grid.nx() - 2]);
+    };
+    for (const glm::dvec2& index : path) {
+        const glm::vec3 d =
+            frame.toDisplay({xAt(index.x), grid.y().valueAt(index.y), grid.z().front()});
+        out.pathOnMap.emplace_back(d.x / frame.boxMax().x, d.y / frame.boxMax().y);
+    }
     for (std::size_t k = 0; k < grid.nz(); ++k) {
         out.rowPositions.push_back(
             frame.toDisplay({grid.x().front(), grid.y().front(), grid.z().values[k]}).z /

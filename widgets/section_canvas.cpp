@@ -51,6 +51,11 @@ void SectionCanvas::setEmphasis(engine::SectionEmphasis emphasis) {
     update();
 }
 
+void SectionCanvas::setOverlay(std::vector<engine::SectionLine> overlay) {
+    m_overlay = std::move(overlay);
+    update();
+}
+
 void SectionCanvas::resizeEvent(QResizeEvent* event) {
     m_drawnValid = false;
     QWidget::resizeEvent(event);
@@ -132,6 +137,28 @@ void SectionCanvas::paintEvent(QPaintEvent*) {
         m_drawnValid = true;
     }
     painter.drawImage(0, 0, m_drawn);
+    // The other section's place, and a path being drawn: dashed, over a white underlay so that
+    // it reads on any fill.
+    std::vector<engine::SectionLine> overlay = m_overlay;
+    if (m_pathStart) overlay.push_back({{*m_pathStart, m_pathEnd}, false});
+    if (!overlay.empty()) {
+        const QRectF plot = engine::sectionPlotRect(*m_view, QRectF(rect()), style);
+        painter.save();
+        painter.setRenderHint(QPainter::Antialiasing);
+        painter.setClipRect(plot);
+        for (const engine::SectionLine& line : overlay) {
+            QPolygonF polygon;
+            for (const glm::dvec2& p : line.points) {
+                polygon << QPointF(plot.left() + p.x * plot.width(),
+                                   plot.bottom() - p.y * plot.height());
+            }
+            painter.setPen(QPen(QColor(255, 255, 255, 200), 3.5));
+            painter.drawPolyline(polygon);
+            painter.setPen(QPen(Qt::black, 1.5, Qt::DashLine));
+            painter.drawPolyline(polygon);
+        }
+        painter.restore();
+    }
     const int hovered = m_hovered >= 0 ? m_hovered : m_emphasis.hovered;
     if (hovered >= 0 && (static_cast<std::size_t>(hovered) >= m_emphasis.hidden.size() ||
                          !m_emphasis.hidden[static_cast<std::size_t>(hovered)])) {
@@ -141,6 +168,11 @@ void SectionCanvas::paintEvent(QPaintEvent*) {
 }
 
 void SectionCanvas::mouseMoveEvent(QMouseEvent* event) {
+    if (m_pathStart) {
+        if (const auto unit = unitAt(event->position())) m_pathEnd = *unit;
+        update();
+        return;
+    }
     const auto member = memberAt(event->position());
     const int hovered = member ? static_cast<int>(*member) : -1;
     if (hovered != m_hovered) {
@@ -151,9 +183,30 @@ void SectionCanvas::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void SectionCanvas::mousePressEvent(QMouseEvent* event) {
+    if (event->button() == Qt::RightButton && m_drawsPaths) {
+        if (const auto unit = unitAt(event->position())) {
+            m_pathStart = *unit;
+            m_pathEnd = *unit;
+        }
+        return;
+    }
     if (event->button() != Qt::LeftButton || !unitAt(event->position())) return;
     const auto member = memberAt(event->position());
     emit memberClicked(member ? static_cast<int>(*member) : -1, event->modifiers());
+}
+
+void SectionCanvas::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->button() != Qt::RightButton || !m_pathStart) return;
+    const glm::dvec2 from = *m_pathStart;
+    m_pathStart.reset();
+    update();
+    // A click is no path: the ends must lie a few pixels apart.
+    const QRectF plot = engine::sectionPlotRect(*m_view, QRectF(rect()), sectionStyle());
+    if (std::hypot((m_pathEnd.x - from.x) * plot.width(), (m_pathEnd.y - from.y) * plot.height()) <
+        2 * kPickPixels) {
+        return;
+    }
+    emit pathDrawn(from, m_pathEnd);
 }
 
 void SectionCanvas::leaveEvent(QEvent*) {

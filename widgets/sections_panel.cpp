@@ -18,6 +18,7 @@
 #include "data/error.h"
 #include "engine/section_painter.h"
 #include "engine/section_place.h"
+#include "geo/map_projection.h"
 #include "gl/view_overlay.h"
 #include "session/session_model.h"
 #include "widgets/section_canvas.h"
@@ -151,6 +152,10 @@ SectionsPanel::SectionsPanel(session::SessionModel* model, workbench::MemberSele
         connect(canvas, &SectionCanvas::memberHovered, m_selection,
                 &workbench::MemberSelection::setHovered);
     }
+    // A drag with the right button across the map places the cross-section along it.
+    m_mapCanvas->setDrawsPaths(true);
+    m_mapCanvas->setToolTip(tr("Drag with the right button to draw the cross-section's path"));
+    connect(m_mapCanvas, &SectionCanvas::pathDrawn, this, &SectionsPanel::placePath);
     m_splitter = new QSplitter(this);
     m_splitter->addWidget(m_mapCanvas);
     m_splitter->addWidget(m_crossCanvas);
@@ -339,6 +344,7 @@ void SectionsPanel::build(bool map) {
         (map ? m_mapJob : m_crossJob).cancel();  // a section of the place before is not shown
         (map ? m_mapPending : m_crossPending) = false;
         canvas->setMessage(problem);
+        showOverlays();
         emit sectionBuilt();
         return;
     }
@@ -357,6 +363,7 @@ void SectionsPanel::build(bool map) {
                   pending = false;
                   canvas->setView(std::make_shared<const engine::SectionView>(std::move(view)));
                   showEmphasis();
+                  showOverlays();
                   emit sectionBuilt();
               },
               [this, canvas, &pending](const std::exception_ptr& error, bool cancelled) {
@@ -367,8 +374,48 @@ void SectionsPanel::build(bool map) {
                   } catch (const std::exception& e) {
                       canvas->setMessage(QString::fromUtf8(e.what()));
                   }
+                  showOverlays();
                   emit sectionBuilt();
               });
+}
+
+void SectionsPanel::showOverlays() {
+    // The cross-section's path on the map, and the map's level across the cross-section.
+    const engine::SectionView* map = m_mapCanvas->view();
+    const engine::SectionView* cross = m_crossCanvas->view();
+    m_mapCanvas->setOverlay(cross != nullptr && !cross->pathOnMap.empty()
+                                ? std::vector<engine::SectionLine>{{cross->pathOnMap, false}}
+                                : std::vector<engine::SectionLine>{});
+    m_crossCanvas->setOverlay(
+        map != nullptr && map->levelHeight >= 0.0
+            ? std::vector<engine::SectionLine>{{{{0.0, map->levelHeight}, {1.0, map->levelHeight}},
+                                                false}}
+            : std::vector<engine::SectionLine>{});
+}
+
+void SectionsPanel::placePath(glm::dvec2 from, glm::dvec2 to) {
+    if (!m_ensemble) return;
+    // The map's unit square is linear in the axes' coordinates (data::DisplayFrame).
+    const data::Grid& grid = m_ensemble->grid;
+    const auto coordinates = [&grid](glm::dvec2 unit) {
+        return glm::dvec2(
+            grid.x().minValue() + unit.x * (grid.x().maxValue() - grid.x().minValue()),
+            grid.y().minValue() + unit.y * (grid.y().maxValue() - grid.y().minValue()));
+    };
+    std::vector<glm::dvec2> ends{coordinates(from), coordinates(to)};
+    const geo::MapProjection projection =
+        geo::MapProjection::forGrid(grid, m_ensemble->gridMapping);
+    if (projection.hasGeography()) projection.toLonLat(ends);
+    engine::SectionPlace place;
+    place.kind = engine::SectionKind::Path;
+    place.from = ends[0];
+    place.to = ends[1];
+    const std::string text = pathText(place).toStdString();
+    m_model->update([&](session::SessionState& st) {
+        st.sections.crossKind = session::SectionPlaces::Cross::Path;
+        st.sections.cross = text;
+    });
+    emit placesEdited();
 }
 
 void SectionsPanel::showEmphasis() {

@@ -4,9 +4,10 @@
 // spread, P(f > c), the selected member or its difference from the mean). The places are typed
 // as a meteorologist says them ("500 hPa", "45N", "-10,50:20,40") and kept in the session (undo,
 // projects); without any, the sections lie where the members' contours are
-// (engine::defaultSections). Selection, visibility, hover and clusters
-// follow the shared workbench::MemberSelection both ways. Sections are built in the background
-// and only while the dock is shown. GUI thread only.
+// (engine::defaultSections). The map shows the cross-section's path, the cross-section the map's
+// level; a drag with the right button across the map draws a new path. Selection, visibility, hover
+// and clusters follow the shared workbench::MemberSelection both ways. Sections are built in the
+// background and only while the dock is shown. GUI thread only.
 #pragma once
 
 #include <QWidget>
@@ -82,6 +83,9 @@ private:
     void showPlaces();
     [[nodiscard]] engine::SectionRequest request(bool map, QString* problem) const;
     void showEmphasis();
+    void showOverlays();
+    // A path drawn on the map (its unit square) becomes the cross-section's.
+    void placePath(glm::dvec2 from, glm::dvec2 to);
     void recolour();
     void exportWithDialog(bool map);
 

@@ -4,9 +4,11 @@
 // test-output/ to be looked at.
 #include <gtest/gtest.h>
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLineEdit>
+#include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -96,7 +98,40 @@ TEST(SectionsDock, ShowsTheDemosJetsWhereTheContoursAreAndSelectsByClick) {
     selection->setMemberVisible(static_cast<int>(member), false);
     EXPECT_NE(panel->mapCanvas()->memberAt(*at), std::optional<std::size_t>(member));
     selection->setMemberVisible(static_cast<int>(member), true);
+    // Each section shows where the other lies: the map the cross-section's path, the
+    // cross-section the map's level.
+    ASSERT_EQ(panel->mapCanvas()->overlay().size(), 1U);
+    ASSERT_EQ(panel->crossCanvas()->overlay().size(), 1U);
+    const double level = panel->crossCanvas()->overlay().front().points.front().y;
+    EXPECT_GT(level, 0.0);
+    EXPECT_LT(level, 1.0);
     window.grab().save(test::testOutputDir() + "/sections_dock_demo.png");
+
+    // A drag with the right button across the map draws the cross-section's path, as the
+    // session's (an undo step).
+    ui::SectionCanvas* canvas = panel->mapCanvas();
+    const QRectF plot =
+        engine::sectionPlotRect(*canvas->view(), QRectF(canvas->rect()), canvas->sectionStyle());
+    const QPoint from = plot.topLeft().toPoint() + QPoint(20, 20);
+    const QPoint to = plot.bottomRight().toPoint() - QPoint(20, 20);
+    QTest::mousePress(canvas, Qt::RightButton, Qt::NoModifier, from);
+    QMouseEvent move(QEvent::MouseMove, QPointF(to), canvas->mapToGlobal(QPointF(to)), Qt::NoButton,
+                     Qt::RightButton, Qt::NoModifier);
+    QApplication::sendEvent(canvas, &move);
+    QTest::mouseRelease(canvas, Qt::RightButton, Qt::NoModifier, to);
+    ASSERT_TRUE(settled(*panel));
+    EXPECT_EQ(window.captureSession().sections.crossKind, session::SectionPlaces::Cross::Path);
+    EXPECT_EQ(panel->crossKindBox()->currentIndex(), 2);
+    ASSERT_NE(panel->crossCanvas()->view(), nullptr)
+        << panel->crossCanvas()->message().toStdString();
+    EXPECT_EQ(panel->crossCanvas()->view()->title.rfind("wind_speed from ", 0), 0U)
+        << panel->crossCanvas()->view()->title;
+    // Its path on the map runs from the top left to the bottom right of the plot.
+    const auto& path = panel->mapCanvas()->overlay().front().points;
+    EXPECT_LT(path.front().x, 0.2);
+    EXPECT_GT(path.front().y, 0.8);
+    EXPECT_GT(path.back().x, 0.8);
+    EXPECT_LT(path.back().y, 0.2);
 }
 
 TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
