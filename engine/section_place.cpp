@@ -413,11 +413,20 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
         }
         path = longestInside(grid, projection, points, lonLat);
         if (path.size() < 2) {
+            // The data's extent in true degrees, whatever its grid's own coordinates.
+            double west = 1e300, east = -1e300, south = 1e300, north = -1e300;
+            for (const glm::dvec2& p : borderLonLat(grid, projection)) {
+                west = std::min(west, p.x);
+                east = std::max(east, p.x);
+                south = std::min(south, p.y);
+                north = std::max(north, p.y);
+            }
             throw Error(ErrorKind::InvalidArgument,
-                        out.placeText + " does not cross the data's map (" + grid.x().name +
-                            " from " + tickText(grid.x().front()) + " to " +
-                            tickText(grid.x().back()) + ", " + grid.y().name + " from " +
-                            tickText(grid.y().front()) + " to " + tickText(grid.y().back()) + ")");
+                        out.placeText + " does not cross the data, which lie from " +
+                            degreesText(rounded(south), true) + " to " +
+                            degreesText(rounded(north), true) + " and from " +
+                            degreesText(rounded(west), false) + " to " +
+                            degreesText(rounded(east), false));
         }
     }
     out.lattice = prep::verticalLattice(grid, path, goesRoundTheGlobe(grid, projection));

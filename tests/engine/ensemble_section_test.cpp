@@ -115,7 +115,15 @@ TEST(EnsembleSection, PlacesOutsideTheDataAreRefusedNamingTheRange) {
     std::string problem;
     engine::SectionRequest north;
     north.place = *engine::parseLatitude("75N", problem);
-    EXPECT_THROW(engine::buildSection(e, north), data::Error);
+    try {
+        engine::buildSection(e, north);
+        ADD_FAILURE() << "a latitude north of the data was taken";
+    } catch (const data::Error& error) {
+        // The extent in true degrees, as a user would check it.
+        EXPECT_NE(std::string(error.what()).find("which lie from 30°N to 60°N and from 0° to 40°E"),
+                  std::string::npos)
+            << error.what();
+    }
     engine::SectionRequest member = mapAt("500hPa", 0.0F);
     member.fill = engine::SectionFill::Anomaly;
     member.member = 2;  // of 2
