@@ -53,6 +53,11 @@ void MainWindow::createPanels() {
     makeDock(this, tr("Clusters over Time"), "clusterTimelineDock", m_timeline);
     m_sections = new ui::SectionsPanel(m_model, m_selection);
     QDockWidget* sections = makeDock(this, tr("Sections"), "sectionsDock", m_sections);
+    // The 3D view shows where the map and the cross-section lie while the dock is shown.
+    connect(m_sections, &ui::SectionsPanel::guidesChanged, this, [this] {
+        m_view->renderer().setSectionGuides(m_sections->guides());
+        m_view->update();
+    });
     // Maps need more room than the dendrogram's strip: shown, the dock takes a good part of
     // the window's height (the user's own size stays once larger).
     connect(sections, &QDockWidget::visibilityChanged, this, [this, sections](bool visible) {

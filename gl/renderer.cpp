@@ -91,6 +91,14 @@ void Renderer::initialize() {
     f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     f.glBindVertexArray(0);
 
+    f.glGenVertexArrays(1, &gpu->guidesVao);
+    f.glGenBuffers(1, &gpu->guidesVbo);
+    f.glBindVertexArray(gpu->guidesVao);
+    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->guidesVbo);
+    f.glEnableVertexAttribArray(0);
+    f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    f.glBindVertexArray(0);
+
     f.glGenTextures(1, &gpu->floorTexture);
     f.glGenTextures(1, &gpu->axisTables);
     f.glGenTextures(1, &gpu->sectionTexture);
@@ -102,6 +110,7 @@ void Renderer::initialize() {
     m_sectionDirty = true;
     m_spreadDirty = true;
     m_mapLinesDirty = true;
+    m_guidesBox = glm::vec3(0.0F);
     m_axisTablesDirty = true;
     m_meshesDirty = true;
     m_motionMeshesDirty = true;
@@ -116,6 +125,8 @@ void Renderer::releaseGpuResources() {
     f.glDeleteBuffers(1, &m_gpu->quadVbo);
     f.glDeleteVertexArrays(1, &m_gpu->mapLinesVao);
     f.glDeleteBuffers(1, &m_gpu->mapLinesVbo);
+    f.glDeleteVertexArrays(1, &m_gpu->guidesVao);
+    f.glDeleteBuffers(1, &m_gpu->guidesVbo);
     f.glDeleteTextures(1, &m_gpu->floorTexture);
     f.glDeleteTextures(1, &m_gpu->axisTables);
     f.glDeleteTextures(1, &m_gpu->sectionTexture);
@@ -441,6 +452,7 @@ void Renderer::drawFloorAndBox(const glm::mat4& viewProjection) {
         f.glDisable(GL_POLYGON_OFFSET_FILL);
     }
     drawMapLines(viewProjection);
+    drawSectionGuides(viewProjection);
 
     const std::array<glm::vec3, 8> c{
         glm::vec3{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},

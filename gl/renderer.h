@@ -195,6 +195,14 @@ public:
     [[nodiscard]] const std::shared_ptr<const std::vector<geo::MapLine>>& mapLines() const {
         return m_scene.mapLines;
     }
+    // Where the Sections dock's map and cross-section lie, as polylines in the box's unit cube
+    // (x and y across the floor, z up the box, 0 to 1 each): a map's outline at its level and a
+    // cross-section's curtain. Drawn as light lines over a dark casing. Empty: none.
+    void setSectionGuides(std::vector<std::vector<glm::dvec3>> polylines);
+    [[nodiscard]] const std::vector<std::vector<glm::dvec3>>& sectionGuides() const {
+        return m_scene.sectionGuides;
+    }
+    static constexpr glm::vec4 kSectionGuideColor{1.0F, 0.85F, 0.35F, 1.0F};
     // How a coastline is drawn, for tests that look for it: a light core over a dark casing.
     static constexpr glm::vec4 kCoastlineColor{0.97F, 0.97F, 0.97F, 1.0F};
     void setVerticalExaggeration(float exaggeration);
@@ -308,6 +316,7 @@ private:
     void uploadFloorMap();
     void uploadMapLines();
     void drawMapLines(const glm::mat4& viewProjection);
+    void drawSectionGuides(const glm::mat4& viewProjection);
     // Binds the program that widens lines on screen (the map lines' and the box's), with the
     // view and the scene's size set.
     QOpenGLShaderProgram& bindScreenLines(const glm::mat4& viewProjection);
@@ -349,6 +358,7 @@ private:
         SectionVolume section;
         SectionVolume spread;
         std::shared_ptr<const std::vector<geo::MapLine>> mapLines;
+        std::vector<std::vector<glm::dvec3>> sectionGuides;
         std::shared_ptr<const data::MeshSet> meshes;
         std::shared_ptr<const data::MeshSet> motionMeshes;
         std::vector<MemberAppearance> appearance;
@@ -366,6 +376,8 @@ private:
     bool m_sectionDirty = false;
     bool m_spreadDirty = false;
     bool m_mapLinesDirty = false;
+    // The box the section guides were uploaded for (they scale with it); zero: upload anew.
+    glm::vec3 m_guidesBox{0.0F};
     bool m_axisTablesDirty = false;
     bool m_meshesDirty = false;
     bool m_motionMeshesDirty = false;

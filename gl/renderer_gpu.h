@@ -35,6 +35,8 @@ struct Renderer::Gpu {
     GLuint emptyVao = 0;  // for the full-screen passes, which need no vertex data
     GLuint floorTexture = 0;
     GLuint mapLinesVao = 0, mapLinesVbo = 0;
+    GLuint guidesVao = 0, guidesVbo = 0;
+    int guideVertices = 0;  // GL_LINES vertices of the section guides
     // The segments of each geo::MapLineKind, in order: first vertex and vertex count.
     std::array<glm::ivec2, 3> mapLineRanges{};
     glm::ivec2 floorSize{0};

@@ -1,5 +1,6 @@
 // The renderer's map lines: coastlines, borders and graticule on the floor of the box, each a
-// light core over a dark casing so it reads over every floor colour and background.
+// light core over a dark casing so it reads over every floor colour and background; and the
+// guides that show where the Sections dock's map and cross-section lie, drawn the same way.
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gl/renderer.h"
@@ -61,6 +62,48 @@ void Renderer::uploadMapLines() {
     f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->mapLinesVbo);
     f.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)),
                    vertices.data(), GL_STATIC_DRAW);
+}
+
+void Renderer::setSectionGuides(std::vector<std::vector<glm::dvec3>> polylines) {
+    m_scene.sectionGuides = std::move(polylines);
+    m_guidesBox = glm::vec3(0.0F);  // uploaded with the next frame
+}
+
+void Renderer::drawSectionGuides(const glm::mat4& viewProjection) {
+    GlFunctions& f = *m_gpu->f;
+    const glm::vec3 box = m_scene.frame.boxMax();
+    // Uploaded when they change and when the box does (the vertical exaggeration).
+    if (box != m_guidesBox) {
+        m_guidesBox = box;
+        std::vector<glm::vec3> vertices;
+        for (const std::vector<glm::dvec3>& line : m_scene.sectionGuides) {
+            for (std::size_t i = 1; i < line.size(); ++i) {
+                vertices.push_back(glm::vec3(line[i - 1]) * box);
+                vertices.push_back(glm::vec3(line[i]) * box);
+            }
+        }
+        f.glBindBuffer(GL_ARRAY_BUFFER, m_gpu->guidesVbo);
+        f.glBufferData(GL_ARRAY_BUFFER,
+                       static_cast<GLsizeiptr>(vertices.size() * sizeof(glm::vec3)),
+                       vertices.data(), GL_STATIC_DRAW);
+        m_gpu->guideVertices = static_cast<int>(vertices.size());
+    }
+    if (m_gpu->guideVertices == 0) return;
+    QOpenGLShaderProgram& program = bindScreenLines(viewProjection);
+    f.glBindVertexArray(m_gpu->guidesVao);
+    f.glEnable(GL_BLEND);
+    f.glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    f.glDepthMask(GL_FALSE);
+    for (const auto& [halfWidth, colour] : {std::pair{1.8F, glm::vec4(0.04F, 0.04F, 0.05F, 0.8F)},
+                                            std::pair{0.8F, kSectionGuideColor}}) {
+        program.setUniformValue("u_halfWidth", halfWidth * m_resolutionScale * m_lineScale);
+        program.setUniformValue("u_color", colour.r, colour.g, colour.b, colour.a);
+        f.glDrawArrays(GL_LINES, 0, m_gpu->guideVertices);
+    }
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_BLEND);
+    f.glBindVertexArray(0);
+    program.release();
 }
 
 QOpenGLShaderProgram& Renderer::bindLinesProgram(const QString& name, const ShaderFiles& files,

@@ -391,6 +391,29 @@ void SectionsPanel::showOverlays() {
             ? std::vector<engine::SectionLine>{{{{0.0, map->levelHeight}, {1.0, map->levelHeight}},
                                                 false}}
             : std::vector<engine::SectionLine>{});
+    emit guidesChanged();
+}
+
+std::vector<std::vector<glm::dvec3>> SectionsPanel::guides() const {
+    std::vector<std::vector<glm::dvec3>> lines;
+    if (!isVisible()) return lines;
+    if (const engine::SectionView* map = m_mapCanvas->view(); map && map->levelHeight >= 0.0) {
+        const double z = map->levelHeight;
+        lines.push_back({{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}, {0, 0, z}});
+    }
+    if (const engine::SectionView* cross = m_crossCanvas->view();
+        cross && cross->pathOnMap.size() >= 2) {
+        std::vector<glm::dvec3> bottom, top;
+        for (const glm::dvec2& p : cross->pathOnMap) {
+            bottom.emplace_back(p, 0.0);
+            top.emplace_back(p, 1.0);
+        }
+        lines.push_back({bottom.front(), top.front()});
+        lines.push_back({bottom.back(), top.back()});
+        lines.push_back(std::move(bottom));
+        lines.push_back(std::move(top));
+    }
+    return lines;
 }
 
 void SectionsPanel::placePath(glm::dvec2 from, glm::dvec2 to) {
@@ -480,6 +503,12 @@ void SectionsPanel::exportWithDialog(bool map) {
 void SectionsPanel::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
     if (m_dirty) rebuild();
+    emit guidesChanged();
+}
+
+void SectionsPanel::hideEvent(QHideEvent* event) {
+    QWidget::hideEvent(event);
+    emit guidesChanged();  // none while hidden
 }
 
 void SectionsPanel::resizeEvent(QResizeEvent* event) {

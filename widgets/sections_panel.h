@@ -61,17 +61,23 @@ public:
     [[nodiscard]] SectionCanvas* mapCanvas() const { return m_mapCanvas; }
     [[nodiscard]] SectionCanvas* crossCanvas() const { return m_crossCanvas; }
     // A section (or the default places) is being made: its result has not reached the screen.
+    // Where the sections lie in the 3D view's box (its unit cube: x, y across the floor, z up):
+    // the map's outline at its level, the cross-section's curtain; none while the dock is
+    // hidden (gl::Renderer::setSectionGuides draws them).
+    [[nodiscard]] std::vector<std::vector<glm::dvec3>> guides() const;
     [[nodiscard]] bool isBuilding() const {
         return m_mapPending || m_crossPending || m_defaultsPending;
     }
 
 signals:
     void sectionBuilt();
-    void placesEdited();  // the user changed a place or the fill (an undo step)  // a map or
-                          // cross-section reached the screen (or said why not)
+    void placesEdited();   // the user changed a place or the fill (an undo step)
+    void guidesChanged();  // guides() has changed  // a map or
+                           // cross-section reached the screen (or said why not)
 
 protected:
     void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:

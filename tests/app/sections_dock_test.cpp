@@ -105,6 +105,10 @@ TEST(SectionsDock, ShowsTheDemosJetsWhereTheContoursAreAndSelectsByClick) {
     const double level = panel->crossCanvas()->overlay().front().points.front().y;
     EXPECT_GT(level, 0.0);
     EXPECT_LT(level, 1.0);
+    // And the 3D view shows both: the map's outline at its level, the cross-section's curtain.
+    const auto& guides = window.view()->renderer().sectionGuides();
+    ASSERT_EQ(guides.size(), 5U);
+    EXPECT_DOUBLE_EQ(guides.front().front().z, level);
     window.grab().save(test::testOutputDir() + "/sections_dock_demo.png");
 
     // A drag with the right button across the map draws the cross-section's path, as the
@@ -132,6 +136,9 @@ TEST(SectionsDock, ShowsTheDemosJetsWhereTheContoursAreAndSelectsByClick) {
     EXPECT_GT(path.front().y, 0.8);
     EXPECT_GT(path.back().x, 0.8);
     EXPECT_LT(path.back().y, 0.2);
+    // A hidden dock leaves the 3D view as it was.
+    window.findChild<QDockWidget*>(QStringLiteral("sectionsDock"))->hide();
+    EXPECT_TRUE(window.view()->renderer().sectionGuides().empty());
 }
 
 TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
