@@ -39,6 +39,7 @@
 #include "widgets/frame_paced_repaints.h"
 #include "widgets/open_data_dialog.h"
 #include "widgets/render_toolbar.h"
+#include "widgets/sections_panel.h"
 #include "widgets/silhouette_view.h"
 #include "widgets/time_bar.h"
 #include "workbench/dialog_paths.h"
@@ -115,6 +116,11 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
+    // Closing hides the docks before they are deleted; what their hiding says must not reach
+    // this window half destroyed.
+    const auto sections = findChild<QDockWidget*>(QStringLiteral("sectionsDock"));
+    if (sections != nullptr) disconnect(sections, nullptr, this, nullptr);
+    disconnect(m_sections, nullptr, this, nullptr);
     // A worker must not outlive the window it reports to.
     m_loader.cancel();
     m_loader.wait();

@@ -58,11 +58,16 @@ void MainWindow::createPanels() {
         m_view->renderer().setSectionGuides(m_sections->guides());
         m_view->update();
     });
+    // Sections are made while the user sees them (a tab behind the dendrogram is not seen,
+    // though Qt keeps it visible).
+    connect(sections, &QDockWidget::visibilityChanged, m_sections,
+            &ui::SectionsPanel::setShownToUser);
     // Maps need more room than the dendrogram's strip: shown, the dock takes a good part of
     // the window's height (the user's own size stays once larger).
     connect(sections, &QDockWidget::visibilityChanged, this, [this, sections](bool visible) {
+        if (!visible || sections->isFloating()) return;
         const int wanted = static_cast<int>(kSectionsShare * height());
-        if (visible && !sections->isFloating() && sections->height() < wanted) {
+        if (sections->height() < wanted) {
             resizeDocks({sections}, {wanted}, Qt::Vertical);
         }
     });

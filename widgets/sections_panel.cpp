@@ -267,7 +267,7 @@ void SectionsPanel::showPlaces() {
 
 void SectionsPanel::rebuild() {
     if (!m_ensemble) return;
-    if (!isVisible()) {
+    if (!m_shown) {
         m_dirty = true;
         return;
     }
@@ -331,7 +331,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
 
 void SectionsPanel::build(bool map) {
     if (!m_ensemble) return;
-    if (!isVisible()) {
+    if (!m_shown) {
         m_dirty = true;
         return;
     }
@@ -396,7 +396,7 @@ void SectionsPanel::showOverlays() {
 
 std::vector<std::vector<glm::dvec3>> SectionsPanel::guides() const {
     std::vector<std::vector<glm::dvec3>> lines;
-    if (!isVisible()) return lines;
+    if (!m_shown) return lines;
     if (const engine::SectionView* map = m_mapCanvas->view(); map && map->levelHeight >= 0.0) {
         const double z = map->levelHeight;
         lines.push_back({{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}, {0, 0, z}});
@@ -500,15 +500,11 @@ void SectionsPanel::exportWithDialog(bool map) {
     }
 }
 
-void SectionsPanel::showEvent(QShowEvent* event) {
-    QWidget::showEvent(event);
-    if (m_dirty) rebuild();
-    emit guidesChanged();
-}
-
-void SectionsPanel::hideEvent(QHideEvent* event) {
-    QWidget::hideEvent(event);
-    emit guidesChanged();  // none while hidden
+void SectionsPanel::setShownToUser(bool shown) {
+    if (shown == m_shown) return;
+    m_shown = shown;
+    if (m_shown && m_dirty) rebuild();
+    emit guidesChanged();  // none while not shown
 }
 
 void SectionsPanel::resizeEvent(QResizeEvent* event) {

@@ -50,6 +50,10 @@ public:
     // The data and isovalue whose contours are drawn. Other data (another variable or grid)
     // starts from the default places; another time step of the same keeps the user's.
     void showData(std::shared_ptr<const data::Ensemble> ensemble, float isovalue);
+    // Whether the user sees the panel (its dock shown and, in a tab group, the current tab:
+    // QDockWidget::visibilityChanged). Sections are made only while shown; a hidden panel
+    // notes that they are due and makes them when shown again.
+    void setShownToUser(bool shown);
     // Writes the map (or the cross-section) as a figure, PNG, SVG or PDF by the suffix, 1400
     // wide; false with `error` set when there is none or it cannot be written.
     bool exportSection(bool map, const QString& path, QString* error);
@@ -76,8 +80,6 @@ signals:
                            // cross-section reached the screen (or said why not)
 
 protected:
-    void showEvent(QShowEvent* event) override;
-    void hideEvent(QHideEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -99,6 +101,7 @@ private:
     workbench::MemberSelection* m_selection;
     std::shared_ptr<const data::Ensemble> m_ensemble;
     float m_isovalue = 0.0F;
+    bool m_shown = false;
     bool m_dirty = false;  // data or places changed while the dock was hidden
     bool m_mapPending = false;
     bool m_crossPending = false;

@@ -220,3 +220,14 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     EXPECT_EQ(again.scale, engine::ColourScaleKind::Diverging);
     EXPECT_NE(again.fillCaption.find("minus the mean"), std::string::npos) << again.fillCaption;
 }
+
+TEST(SectionsDock, IsATabBehindTheDendrogramAtFirstAndCostsNothingThere) {
+    const test::ScopedCacheHome cache;
+    app::MainWindow window;
+    ASSERT_TRUE(test::showWorkbench(window, {1200, 800}));
+    ASSERT_TRUE(
+        test::loadDemoAndWait(window, {.members = 8, .nx = 32, .ny = 16, .nz = 6, .seed = 2}));
+    // Not shown: no section is made, and the 3D view shows no guides.
+    EXPECT_EQ(window.sectionsPanel()->mapCanvas()->view(), nullptr);
+    EXPECT_TRUE(window.view()->renderer().sectionGuides().empty());
+}

@@ -51,8 +51,8 @@ protected:
 
 TEST_F(SectionGuidesRenderTest, ACurtainSeenFromAboveIsItsPath) {
     // A path from (0.2, 0.3) to (0.8, 0.6) across the floor, and the same at the top.
-    m_renderer.setSectionGuides({{{0.2, 0.3, 0.0}, {0.8, 0.6, 0.0}},
-                                 {{0.2, 0.3, 1.0}, {0.8, 0.6, 1.0}}});
+    m_renderer.setSectionGuides(
+        {{{0.2, 0.3, 0.0}, {0.8, 0.6, 0.0}}, {{0.2, 0.3, 1.0}, {0.8, 0.6, 1.0}}});
     const QImage with = draw();
     for (const double t : {0.25, 0.5, 0.75}) {
         const glm::dvec3 p{0.2 + 0.6 * t, 0.3 + 0.3 * t, 0.0};
