@@ -83,21 +83,17 @@ void Renderer::initialize() {
     f.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
     f.glBindVertexArray(0);
 
-    f.glGenVertexArrays(1, &gpu->mapLinesVao);
-    f.glGenBuffers(1, &gpu->mapLinesVbo);
-    f.glBindVertexArray(gpu->mapLinesVao);
-    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->mapLinesVbo);
-    f.glEnableVertexAttribArray(0);
-    f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    f.glBindVertexArray(0);
-
-    f.glGenVertexArrays(1, &gpu->guidesVao);
-    f.glGenBuffers(1, &gpu->guidesVbo);
-    f.glBindVertexArray(gpu->guidesVao);
-    f.glBindBuffer(GL_ARRAY_BUFFER, gpu->guidesVbo);
-    f.glEnableVertexAttribArray(0);
-    f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    f.glBindVertexArray(0);
+    // Lines in display space, their vertices uploaded when they change.
+    for (auto [vao, vbo] : {std::pair{&gpu->mapLinesVao, &gpu->mapLinesVbo},
+                            std::pair{&gpu->guidesVao, &gpu->guidesVbo}}) {
+        f.glGenVertexArrays(1, vao);
+        f.glGenBuffers(1, vbo);
+        f.glBindVertexArray(*vao);
+        f.glBindBuffer(GL_ARRAY_BUFFER, *vbo);
+        f.glEnableVertexAttribArray(0);
+        f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        f.glBindVertexArray(0);
+    }
 
     f.glGenTextures(1, &gpu->floorTexture);
     f.glGenTextures(1, &gpu->axisTables);
