@@ -105,6 +105,7 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     view.left = std::move(placed.left);
     view.mapLines = std::move(placed.mapLines);
     view.graticule = std::move(placed.graticule);
+    view.graticuleLabels = std::move(placed.graticuleLabels);
     view.pathOnMap = std::move(placed.pathOnMap);
     view.levelHeight = placed.levelHeight;
     const std::string name = ensemble.variable;

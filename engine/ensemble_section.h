@@ -96,6 +96,12 @@ struct SectionView {
     std::vector<SectionLine> meanContour;  // of the members' mean
     std::vector<SectionLine> mapLines;     // coastlines and borders (maps only)
     std::vector<SectionLine> graticule;    // a projected map's true meridians and parallels
+    // Each graticule line's degrees ("10°W", "54°N") where it enters the map.
+    struct PlaceLabel {
+        glm::dvec2 at{0.0};  // the plot's unit square
+        std::string text;
+    };
+    std::vector<PlaceLabel> graticuleLabels;
     SectionAxis bottom;
     SectionAxis left;
     // Legend: each cluster number with its colour and member count, ascending.

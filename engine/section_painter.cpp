@@ -393,6 +393,23 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
         painter.drawImage(plot, fillImage(view, w, h));
     }
     strokeLines(painter, view.graticule, plot, QPen(QColor(128, 128, 128, 150), 0.6));
+    // The graticule's degrees where each line enters the map, nudged inside it, over a pale
+    // underlay so they read on the fill.
+    for (const SectionView::PlaceLabel& label : view.graticuleLabels) {
+        const QString text = QString::fromStdString(label.text);
+        const QFontMetricsF small(painter.font());
+        const QSizeF size(small.horizontalAdvance(text) + 4, small.height());
+        QPointF at(plot.left() + label.at.x * plot.width(),
+                   plot.bottom() - label.at.y * plot.height());
+        at.setX(std::clamp(at.x() - size.width() / 2, plot.left() + 1,
+                           plot.right() - size.width() - 1));
+        at.setY(std::clamp(at.y() - size.height() / 2, plot.top() + 1,
+                           plot.bottom() - size.height() - 1));
+        const QRectF box(at, size);
+        painter.fillRect(box, QColor(255, 255, 255, 170));
+        painter.setPen(QColor(60, 60, 60));
+        painter.drawText(box, Qt::AlignCenter, text);
+    }
     // Members: a dark halo under every line first, then the colours, the selected last.
     const bool anySelected = !emphasis.selected.empty();
     const auto isHidden = [&](std::size_t m) {

@@ -339,6 +339,10 @@ void placeMap(const data::Ensemble& ensemble, const SectionPlace& place,
             const glm::vec3 d = frame.toDisplay({p.x, p.y, grid.z().front()});
             placed.points.emplace_back(d.x / box.x, d.y / box.y);
         }
+        if (line.kind == geo::MapLineKind::Graticule && !line.label.empty() &&
+            !placed.points.empty()) {
+            out.graticuleLabels.push_back({placed.points.front(), line.label});
+        }
         (line.kind == geo::MapLineKind::Graticule ? out.graticule : out.mapLines)
             .push_back(std::move(placed));
     }

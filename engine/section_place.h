@@ -24,6 +24,7 @@ struct PlacedSection {
     SectionAxis left;
     std::vector<SectionLine> mapLines;   // coastlines and borders
     std::vector<SectionLine> graticule;  // true meridians and parallels of a projected grid
+    std::vector<SectionView::PlaceLabel> graticuleLabels;
     std::string placeText;  // "500 hPa", "45°N", "10°W", "10°W 50°N to 20°E 40°N"
     // Where the other kind of section shows this one: a cross-section's path across a map of
     // the same data (the map's unit square); a map's level up a cross-section (0 to 1).

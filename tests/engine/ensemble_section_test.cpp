@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "data/ensemble_reader.h"
 #include "data/error.h"
 #include "engine/section_place.h"
 
@@ -229,4 +230,30 @@ TEST(SectionPlace, ReadsPlacesAsTyped) {
     EXPECT_EQ(engine::degreesText(180.0, false), "180°");
     EXPECT_EQ(engine::degreesText(-45.5, true), "45.5°S");
     EXPECT_EQ(engine::degreesText(0.0, true), "0°");
+}
+
+TEST(EnsembleSection, ARotatedPoleMapNamesItsTrueMeridiansAndParallels) {
+    // The Met Office's UK grid (rotated pole): its axes are not degrees of the Earth, so the
+    // map carries a graticule of true ones, each named where it enters the map.
+    data::DataSelection selection;
+    selection.paths = {ENSIL_SHARED_DATA_DIR "/uk_hires.nc"};
+    selection.memberDimension = "time";
+    const data::Ensemble uk = data::openEnsemble(selection);
+    engine::SectionRequest request;
+    std::string problem;
+    request.place = *engine::parseLevel("index:2", problem);
+    request.fill = engine::SectionFill::None;
+    request.isovalue = 290.0F;
+    const engine::SectionView view = engine::buildSection(uk, request);
+    ASSERT_FALSE(view.graticule.empty());
+    ASSERT_FALSE(view.graticuleLabels.empty());
+    bool north = false, west = false;
+    for (const auto& label : view.graticuleLabels) {
+        north = north || label.text.ends_with("N");
+        west = west || label.text.ends_with("W");
+        EXPECT_GE(label.at.x, -1e-9);
+        EXPECT_LE(label.at.x, 1.0 + 1e-9);
+    }
+    EXPECT_TRUE(north);
+    EXPECT_TRUE(west);
 }
