@@ -4,6 +4,8 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
+#include <array>
 
 #include "cli/command_progress.h"
 #include "cli/data_selection_options.h"
@@ -15,6 +17,7 @@
 #include "engine/preprocess_run.h"
 #include "engine/section_painter.h"
 #include "engine/section_place.h"
+#include "engine/session_renderer.h"
 #include "session/setting_options.h"
 
 namespace ensil::cli {
@@ -77,33 +80,28 @@ std::optional<std::pair<engine::SectionFill, int>> parseFill(const QString& text
 // The one place option given, read; nullopt with `problem` set.
 std::optional<engine::SectionPlace> placeFrom(const QCommandLineParser& parser, const Options& o,
                                               QString& problem) {
-    int given = 0;
-    for (const QCommandLineOption* option : {&o.level, &o.latitude, &o.longitude, &o.path}) {
-        given += parser.isSet(*option) ? 1 : 0;
-    }
+    const std::array<std::pair<const QCommandLineOption*, engine::SectionKind>, 4> places{{
+        {&o.level, engine::SectionKind::Map},
+        {&o.latitude, engine::SectionKind::Latitude},
+        {&o.longitude, engine::SectionKind::Longitude},
+        {&o.path, engine::SectionKind::Path},
+    }};
+    const auto given = std::count_if(places.begin(), places.end(),
+                                     [&](const auto& p) { return parser.isSet(*p.first); });
     if (given != 1) {
         problem = QStringLiteral(
             "say where the section lies with one of --level (a map), --lat, --lon or --path "
             "(a cross-section)");
         return std::nullopt;
     }
+    const auto& [option, kind] = *std::find_if(
+        places.begin(), places.end(), [&](const auto& p) { return parser.isSet(*p.first); });
     std::string why;
-    std::optional<engine::SectionPlace> place;
-    QString option;
-    if (parser.isSet(o.level)) {
-        option = QStringLiteral("--level");
-        place = engine::parseLevel(parser.value(o.level).toStdString(), why);
-    } else if (parser.isSet(o.latitude)) {
-        option = QStringLiteral("--lat");
-        place = engine::parseLatitude(parser.value(o.latitude).toStdString(), why);
-    } else if (parser.isSet(o.longitude)) {
-        option = QStringLiteral("--lon");
-        place = engine::parseLongitude(parser.value(o.longitude).toStdString(), why);
-    } else {
-        option = QStringLiteral("--path");
-        place = engine::parsePath(parser.value(o.path).toStdString(), why);
+    auto place = engine::parseSectionPlace(kind, parser.value(*option).toStdString(), why);
+    if (!place) {
+        problem = QStringLiteral("--%1 is refused: %2")
+                      .arg(option->names().front(), QString::fromStdString(why));
     }
-    if (!place) problem = option + QStringLiteral(" is refused: ") + QString::fromStdString(why);
     return place;
 }
 
@@ -172,14 +170,12 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
                                           false, problem);
     }
     const QString path = parser.value(o.output);
-    const QString suffix = path.section(QLatin1Char('.'), -1).toLower();
     if (!size || (parser.isSet(o.iso) && !iso) ||
         !clusterOptions().applyTo(parser, requested, problem)) {
         // said below
     } else if (!parser.isSet(o.output)) {
         problem = QStringLiteral("say where to write the picture with --out FILE.png|.svg|.pdf");
-    } else if (suffix != QLatin1String("png") && suffix != QLatin1String("svg") &&
-               suffix != QLatin1String("pdf")) {
+    } else if (!engine::isSectionPictureName(path)) {
         problem = QStringLiteral("--out '%1' is refused: the name must end in .png, .svg or .pdf")
                       .arg(path);
     } else if (selection->paths.empty() != parser.isSet(o.demo)) {
@@ -207,9 +203,9 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
         request.clustersGiven = clusterOptions().given(parser).contains("--clusters");
         request.linkage = requested.linkage;
         if (!parser.isSet(o.noCache)) request.cacheDirectory = engine::defaultMeshCacheDirectory();
-        request.sourceKey = parser.isSet(o.demo) ? "demo members=" + std::to_string(demo.members) +
-                                                       " seed=" + std::to_string(demo.seed)
-                                                 : data::sourceIdentity(*selection);
+        // The workbench's and Python's identity of the data, so they share cached meshes.
+        request.sourceKey =
+            parser.isSet(o.demo) ? engine::demoSourceKey(demo) : data::sourceIdentity(*selection);
         // Warnings about the data (members left out, infinities); the notes are about
         // silhouettes in 3D (too few levels for a shape), not about a section.
         const auto notice = [&](const std::string& kind, const std::string& text) {

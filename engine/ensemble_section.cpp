@@ -32,15 +32,15 @@ double across(const std::vector<double>& positions, double index) {
 }
 
 std::vector<SectionLine> toPlot(const std::vector<prep::ContourLine>& lines,
-                                const PlacedSection& placed) {
+                                const SectionLayout& layout) {
     std::vector<SectionLine> out;
     out.reserve(lines.size());
     for (const prep::ContourLine& line : lines) {
         SectionLine plotted{{}, line.closed};
         plotted.points.reserve(line.points.size());
         for (const glm::dvec2& p : line.points) {
-            plotted.points.emplace_back(across(placed.columnPositions, p.x),
-                                        across(placed.rowPositions, p.y));
+            plotted.points.emplace_back(across(layout.columnPositions, p.x),
+                                        across(layout.rowPositions, p.y));
         }
         out.push_back(std::move(plotted));
     }
@@ -96,26 +96,20 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
                               std::to_string(memberCount) + ")");
     }
     PlacedSection placed = placeSection(ensemble, request.place);
+    const prep::SectionLattice lattice = std::move(placed.lattice);
     SectionView view;
-    view.placeText = placed.placeText;
-    view.columns = placed.lattice.columns;
-    view.rows = placed.lattice.rows;
-    view.aspect = placed.aspect;
-    view.bottom = std::move(placed.bottom);
-    view.left = std::move(placed.left);
-    view.mapLines = std::move(placed.mapLines);
-    view.graticule = std::move(placed.graticule);
-    view.graticuleLabels = std::move(placed.graticuleLabels);
-    view.pathOnMap = std::move(placed.pathOnMap);
-    view.levelHeight = placed.levelHeight;
-    const std::string name = ensemble.variable;
-    view.title =
-        name + (request.place.kind == SectionKind::Map ? " at " : " along ") + placed.placeText;
-    if (request.place.kind == SectionKind::Path) view.title = name + " from " + placed.placeText;
+    static_cast<SectionLayout&>(view) = std::move(placed);
+    view.columns = lattice.columns;
+    view.rows = lattice.rows;
+    const std::string& name = ensemble.variable;
+    const char* joint = request.place.kind == SectionKind::Map    ? " at "
+                        : request.place.kind == SectionKind::Path ? " from "
+                                                                  : " along ";
+    view.title = name + joint + view.placeText;
 
     // Every member's samples are kept (hover, Python): refused before they are taken when they
     // would not fit (1,000 members on a 1440 x 721 map are 4 GB).
-    const std::size_t samples = placed.lattice.indices.size();
+    const std::size_t samples = lattice.indices.size();
     data::checkMemoryFor((memberCount + 4) * samples * sizeof(float),
                          "a section of " + std::to_string(memberCount) + " members x " +
                              std::to_string(samples) + " samples");
@@ -123,8 +117,7 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     view.units = data::readableUnits(ensemble.units);
     for (const data::Member& member : ensemble.members) {
         view.memberNames.push_back(member.name);
-        view.memberValues.push_back(
-            prep::sampleSection(ensemble.grid, member.values, placed.lattice));
+        view.memberValues.push_back(prep::sampleSection(ensemble.grid, member.values, lattice));
     }
     const SampleMoments moments = momentsOf(view.memberValues, samples, request.isovalue);
     const std::string units = unitsInBrackets(ensemble);
@@ -188,29 +181,18 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
         view.colourTicks = gl::niceTicks(lo, hi, 6);
     }
 
-    // Every member's contour in its cluster's colour, and the mean's.
-    std::map<int, SectionView::LegendEntry> legend;
+    // Every member's contour, and the mean's; the colours and legend as colourSection gives.
     for (std::size_t m = 0; m < memberCount; ++m) {
         MemberContour contour;
         contour.member = m;
-        contour.colour =
-            m < request.memberColours.size() ? request.memberColours[m] : gl::kUnclusteredColor;
         contour.lines = toPlot(
             prep::contourLines(view.memberValues[m], view.columns, view.rows, request.isovalue),
-            placed);
+            view);
         view.members.push_back(std::move(contour));
-        if (m < request.clusterNumbers.size()) {
-            SectionView::LegendEntry& entry = legend[request.clusterNumbers[m]];
-            entry.cluster = request.clusterNumbers[m];
-            entry.colour = view.members.back().colour;
-            ++entry.members;
-        }
     }
+    colourSection(view, request.memberColours, request.clusterNumbers);
     view.meanContour =
-        toPlot(prep::contourLines(moments.mean, view.columns, view.rows, request.isovalue), placed);
-    for (const auto& [number, entry] : legend) view.legend.push_back(entry);
-    view.columnPositions = std::move(placed.columnPositions);
-    view.rowPositions = std::move(placed.rowPositions);
+        toPlot(prep::contourLines(moments.mean, view.columns, view.rows, request.isovalue), view);
 
     view.subtitle = "isovalue " + data::readableNumber(request.isovalue) +
                     (ensemble.units.empty() ? "" : " " + data::readableUnits(ensemble.units)) +

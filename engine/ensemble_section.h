@@ -76,16 +76,39 @@ struct MemberContour {
 
 enum class ColourScaleKind { Sequential, Diverging, Probability };
 
-struct SectionView {
-    std::string title;     // "t at 500 hPa", "t along 45°N", "t from 10°W 50°N to 20°E 40°N"
-    std::string subtitle;  // "isovalue 260 K · fill: mean t [K] · 50 members"
-    double aspect = 1.0;   // the plot's width over its height
-    // The lattice: the fill's samples, columns x rows, column fastest, and where each column
-    // and row lies across the plot (ascending or descending, 0 to 1).
-    std::size_t columns = 0;
-    std::size_t rows = 0;
+// Where a section lies and how it is laid out in its plot's unit square (x right, y up):
+// what engine::placeSection finds from the place alone, before any value is sampled.
+struct SectionLayout {
+    // The place in words, for titles, file names and JSON: "500 hPa", "45°N", "10°W",
+    // "10°W 50°N to 20°E 40°N".
+    std::string placeText;
+    double aspect = 1.0;  // the plot's width over its height
+    // Where each lattice column and row lies across the plot (ascending or descending, 0 to 1).
     std::vector<double> columnPositions;
     std::vector<double> rowPositions;
+    SectionAxis bottom;
+    SectionAxis left;
+    std::vector<SectionLine> mapLines;   // coastlines and borders (maps only)
+    std::vector<SectionLine> graticule;  // a projected map's true meridians and parallels
+    // Each graticule line's degrees ("10°W", "54°N") where it enters the map.
+    struct PlaceLabel {
+        glm::dvec2 at{0.0};  // the plot's unit square
+        std::string text;
+    };
+    std::vector<PlaceLabel> graticuleLabels;
+    // Where the other kind of section shows this one: a cross-section's path across a map of
+    // the same data, in the map's unit square; a map's level up a cross-section, 0 to 1 (-1
+    // for a cross-section).
+    std::vector<glm::dvec2> pathOnMap;
+    double levelHeight = -1.0;
+};
+
+struct SectionView : SectionLayout {
+    std::string title;     // "t at 500 hPa", "t along 45°N", "t from 10°W 50°N to 20°E 40°N"
+    std::string subtitle;  // "isovalue 260 K · fill: mean t [K] · 50 members"
+    // The lattice of the fill's samples: columns x rows, column fastest.
+    std::size_t columns = 0;
+    std::size_t rows = 0;
     std::vector<float> fill;  // empty for SectionFill::None; NaN where missing
     std::string fillCaption;  // "mean t [K]"
     ColourScaleKind scale = ColourScaleKind::Sequential;
@@ -94,16 +117,6 @@ struct SectionView {
     std::vector<double> colourTicks;  // round numbers inside the range
     std::vector<MemberContour> members;
     std::vector<SectionLine> meanContour;  // of the members' mean
-    std::vector<SectionLine> mapLines;     // coastlines and borders (maps only)
-    std::vector<SectionLine> graticule;    // a projected map's true meridians and parallels
-    // Each graticule line's degrees ("10°W", "54°N") where it enters the map.
-    struct PlaceLabel {
-        glm::dvec2 at{0.0};  // the plot's unit square
-        std::string text;
-    };
-    std::vector<PlaceLabel> graticuleLabels;
-    SectionAxis bottom;
-    SectionAxis left;
     // Legend: each cluster number with its colour and member count, ascending.
     struct LegendEntry {
         int cluster = 0;
@@ -115,13 +128,6 @@ struct SectionView {
     std::vector<std::vector<float>> memberValues;
     std::vector<std::string> memberNames;  // as the file names them
     std::string units;                     // the variable's, as people read them ("m s⁻¹")
-    // The place in words, for file names and JSON: "500 hPa", "45°N", "10°E", "path".
-    std::string placeText;
-    // Where the other kind of section shows this one (engine::PlacedSection): a cross-section's
-    // path across a map of the same data, in the map's unit square; a map's level up a
-    // cross-section, 0 to 1 (-1 for a cross-section).
-    std::vector<glm::dvec2> pathOnMap;
-    double levelHeight = -1.0;
 };
 
 // The fill as the command line and Python name it: mean, spread, probability, member:N,

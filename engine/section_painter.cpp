@@ -455,6 +455,12 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
     painter.restore();
 }
 
+bool isSectionPictureName(const QString& path) {
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    return suffix == QLatin1String("png") || suffix == QLatin1String("svg") ||
+           suffix == QLatin1String("pdf");
+}
+
 void writeSectionPicture(const SectionView& view, const QString& path, QSize size) {
     const QString suffix = QFileInfo(path).suffix().toLower();
     const std::string name = path.toStdString();

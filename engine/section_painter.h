@@ -46,6 +46,10 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
 void paintHoveredMember(QPainter& painter, const SectionView& view, const QRectF& page,
                         std::size_t member, const SectionStyle& style = {});
 
+// Whether writeSectionPicture writes a picture of this name (.png, .svg or .pdf): what a
+// command checks before it reads any data.
+bool isSectionPictureName(const QString& path);
+
 // Writes the figure as PNG, SVG or PDF by the path's suffix, `size` in pixels (PDF: points).
 // Throws data::Error naming the file when the suffix is none of these or it cannot be written.
 void writeSectionPicture(const SectionView& view, const QString& path, QSize size);

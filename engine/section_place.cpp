@@ -496,6 +496,21 @@ PlacedSection placeSection(const data::Ensemble& ensemble, const SectionPlace& p
     return out;
 }
 
+std::optional<SectionPlace> parseSectionPlace(SectionKind kind, const std::string& text,
+                                              std::string& problem) {
+    switch (kind) {
+        case SectionKind::Map:
+            return parseLevel(text, problem);
+        case SectionKind::Latitude:
+            return parseLatitude(text, problem);
+        case SectionKind::Longitude:
+            return parseLongitude(text, problem);
+        case SectionKind::Path:
+            break;
+    }
+    return parsePath(text, problem);
+}
+
 std::optional<SectionPlace> parseLevel(const std::string& text, std::string& problem) {
     SectionPlace place;
     place.kind = SectionKind::Map;

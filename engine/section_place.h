@@ -15,21 +15,9 @@
 
 namespace ensil::engine {
 
-struct PlacedSection {
+// A place resolved against a grid: its layout and the grid places of its samples.
+struct PlacedSection : SectionLayout {
     prep::SectionLattice lattice;
-    std::vector<double> columnPositions;
-    std::vector<double> rowPositions;
-    double aspect = 1.0;
-    SectionAxis bottom;
-    SectionAxis left;
-    std::vector<SectionLine> mapLines;   // coastlines and borders
-    std::vector<SectionLine> graticule;  // true meridians and parallels of a projected grid
-    std::vector<SectionView::PlaceLabel> graticuleLabels;
-    std::string placeText;  // "500 hPa", "45°N", "10°W", "10°W 50°N to 20°E 40°N"
-    // Where the other kind of section shows this one: a cross-section's path across a map of
-    // the same data (the map's unit square); a map's level up a cross-section (0 to 1).
-    std::vector<glm::dvec2> pathOnMap;
-    double levelHeight = -1.0;
 };
 
 // Throws data::Error(InvalidArgument) naming the place and the grid's range when the place
@@ -44,6 +32,9 @@ std::optional<SectionPlace> parseLevel(const std::string& text, std::string& pro
 std::optional<SectionPlace> parseLatitude(const std::string& text, std::string& problem);
 std::optional<SectionPlace> parseLongitude(const std::string& text, std::string& problem);
 std::optional<SectionPlace> parsePath(const std::string& text, std::string& problem);
+// The one of those four that reads a place of `kind`.
+std::optional<SectionPlace> parseSectionPlace(SectionKind kind, const std::string& text,
+                                              std::string& problem);
 
 // "10°E", "45°N", "0°": a longitude is put within -180 to 180 first.
 std::string degreesText(double value, bool latitude);

@@ -29,8 +29,6 @@ namespace {
 
 constexpr int kExportWidth = 1400;
 
-enum CrossKind { AlongLatitude, AlongLongitude, AlongPath };
-
 QString levelText(const engine::SectionPlace& place) {
     if (place.levelUnits == "index") return QStringLiteral("index:%1").arg(place.level);
     return gl::formatTick(place.level) +
@@ -78,6 +76,13 @@ engine::SectionFill engineFill(session::SectionsFill fill) {
             break;
     }
     return engine::SectionFill::None;
+}
+
+// Each member's colour as the 3D view draws it.
+std::vector<glm::vec3> memberColours(const workbench::MemberSelection& selection) {
+    std::vector<glm::vec3> colours;
+    for (const gl::MemberAppearance& look : selection.appearance()) colours.push_back(look.color);
+    return colours;
 }
 
 // The selection's first member, else -1.
@@ -299,18 +304,11 @@ void SectionsPanel::rebuild() {
 engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const {
     engine::SectionRequest r;
     std::string why;
-    std::optional<engine::SectionPlace> place;
     const auto [kind, cross] = crossShown();
-    const std::string text = map ? levelShown() : cross;
-    if (map) {
-        place = engine::parseLevel(text, why);
-    } else if (kind == AlongLatitude) {
-        place = engine::parseLatitude(text, why);
-    } else if (kind == AlongLongitude) {
-        place = engine::parseLongitude(text, why);
-    } else {
-        place = engine::parsePath(text, why);
-    }
+    // The dock's cross kinds (latitude, longitude, path) follow the map in SectionKind.
+    const auto place =
+        map ? engine::parseSectionPlace(engine::SectionKind::Map, levelShown(), why)
+            : engine::parseSectionPlace(static_cast<engine::SectionKind>(kind + 1), cross, why);
     if (!place) {
         *problem = QString::fromStdString(why);
         return r;
@@ -322,9 +320,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
         r.member = firstSelected(*m_selection);
         if (r.member < 0) r.fill = engine::SectionFill::None;
     }
-    for (const gl::MemberAppearance& look : m_selection->appearance()) {
-        r.memberColours.push_back(look.color);
-    }
+    r.memberColours = memberColours(*m_selection);
     r.clusterNumbers = m_selection->memberClusterNumbers();
     return r;
 }
@@ -455,9 +451,7 @@ void SectionsPanel::showEmphasis() {
 }
 
 void SectionsPanel::recolour() {
-    std::vector<glm::vec3> colours;
-    for (const gl::MemberAppearance& look : m_selection->appearance())
-        colours.push_back(look.color);
+    const std::vector<glm::vec3> colours = memberColours(*m_selection);
     const std::vector<int> numbers = m_selection->memberClusterNumbers();
     for (SectionCanvas* canvas : {m_mapCanvas, m_crossCanvas}) {
         if (canvas->view() == nullptr) continue;

@@ -6,8 +6,11 @@
 #include <pybind11/stl.h>
 
 #include <QString>
+#include <algorithm>
+#include <array>
 #include <memory>
 #include <sstream>
+#include <tuple>
 
 #include "data/error.h"
 #include "engine/ensemble_section.h"
@@ -38,44 +41,38 @@ std::string placeText(const py::handle& value) {
     return text.str();
 }
 
+// The path as the command line writes it, from ((lon, lat), (lon, lat)) or the text itself.
+std::string pathText(const py::handle& path) {
+    if (py::isinstance<py::str>(path)) return path.cast<std::string>();
+    const auto ends = path.cast<std::vector<std::pair<double, double>>>();
+    if (ends.size() != 2) throw ArgumentError("path must be two (lon, lat) points");
+    std::ostringstream t;
+    t.precision(17);
+    t << ends[0].first << "," << ends[0].second << ":" << ends[1].first << "," << ends[1].second;
+    return t.str();
+}
+
 engine::SectionPlace placeOf(const py::object& level, const py::object& lat, const py::object& lon,
                              const py::object& path) {
-    const int given = (level.is_none() ? 0 : 1) + (lat.is_none() ? 0 : 1) +
-                      (lon.is_none() ? 0 : 1) + (path.is_none() ? 0 : 1);
+    const std::array<std::tuple<const py::object*, const char*, engine::SectionKind>, 4> places{{
+        {&level, "level", engine::SectionKind::Map},
+        {&lat, "lat", engine::SectionKind::Latitude},
+        {&lon, "lon", engine::SectionKind::Longitude},
+        {&path, "path", engine::SectionKind::Path},
+    }};
+    const auto given = std::count_if(places.begin(), places.end(),
+                                     [](const auto& p) { return !std::get<0>(p)->is_none(); });
     if (given != 1) {
         throw ArgumentError(
             "say where the section lies with one of level= (a map), lat=, lon= or path= (a "
             "cross-section)");
     }
+    const auto& [value, name, kind] = *std::find_if(
+        places.begin(), places.end(), [](const auto& p) { return !std::get<0>(p)->is_none(); });
     std::string problem;
-    std::optional<engine::SectionPlace> place;
-    std::string name;
-    if (!level.is_none()) {
-        name = "level";
-        place = engine::parseLevel(placeText(level), problem);
-    } else if (!lat.is_none()) {
-        name = "lat";
-        place = engine::parseLatitude(placeText(lat), problem);
-    } else if (!lon.is_none()) {
-        name = "lon";
-        place = engine::parseLongitude(placeText(lon), problem);
-    } else {
-        name = "path";
-        std::string text;
-        if (py::isinstance<py::str>(path)) {
-            text = path.cast<std::string>();
-        } else {
-            const auto ends = path.cast<std::vector<std::pair<double, double>>>();
-            if (ends.size() != 2) throw ArgumentError("path must be two (lon, lat) points");
-            std::ostringstream t;
-            t.precision(17);
-            t << ends[0].first << "," << ends[0].second << ":" << ends[1].first << ","
-              << ends[1].second;
-            text = t.str();
-        }
-        place = engine::parsePath(text, problem);
-    }
-    if (!place) throw ArgumentError(name + " is refused: " + problem);
+    const auto place = engine::parseSectionPlace(
+        kind, kind == engine::SectionKind::Path ? pathText(*value) : placeText(*value), problem);
+    if (!place) throw ArgumentError(std::string(name) + " is refused: " + problem);
     return *place;
 }
 
