@@ -87,11 +87,20 @@ float removalFactor() {
     return clamp((v_in.outlyingness - lo) / max(hi - lo, 1e-20), 0.0, 1.0);
 }
 
-// The intersection curve's coefficient, like sigma: 0 on the plane, 1 at eps behind it, above 1
-// farther away (METHODS.md section 11). Fragments on the viewer's side are discarded by the caller.
-float planeCoefficient(float behind) {
+// The intersection curve's depth behind the plane: eps, but never more than kCurvePixels of
+// screen. Where a surface meets the plane at a grazing angle its distance behind the plane grows
+// slowly across the screen, and a depth of eps alone would cover an area, not a curve (METHODS.md
+// section 11). `behindPerPixel` is that distance's change per pixel on screen.
+const float kCurvePixels = 3.0;
+float curveDepth(float behindPerPixel) {
+    return max(min(u_planeEpsilon, kCurvePixels * behindPerPixel), 1e-6);
+}
+
+// The intersection curve's coefficient, like sigma: 0 on the plane, 1 at the curve's depth
+// behind it, above 1 farther away. Fragments on the viewer's side are discarded by the caller.
+float planeCoefficient(float behind, float depth) {
     if (!u_planeEnabled) return 2.0;
-    return behind / max(u_planeEpsilon, 1e-6);
+    return behind / depth;
 }
 
 vec3 lit(vec3 colour, vec3 v, vec3 n) {
@@ -121,13 +130,17 @@ void writeTranslucent(vec3 colour, float alpha) {
 
 // The cutting plane's curves are dashed, so they are never mistaken for silhouettes: along the
 // curve (across the gradient of the distance behind the plane, on screen), dashes of the
-// member's colour alternate with darker gaps every kDashPixels.
+// member's colour alternate with darker gaps every kDashPixels. Each member's dashes start
+// elsewhere (by the golden ratio of a period): the curves of many members side by side would
+// otherwise line their dashes up into stripes across them all.
 const float kDashPixels = 6.0;
 vec3 curveColour(vec3 colour, vec2 gradient) {
     if (u_pick || dot(gradient, gradient) < 1e-20) return colour;
     vec2 along = normalize(vec2(-gradient.y, gradient.x));
-    return fract(dot(gl_FragCoord.xy, along) / (2.0 * kDashPixels)) < 0.5 ? colour
-                                                                          : 0.35 * colour;
+    float phase = fract(float(u_memberIndex) * 0.618034);
+    return fract(dot(gl_FragCoord.xy, along) / (2.0 * kDashPixels) + phase) < 0.5
+               ? colour
+               : 0.35 * colour;
 }
 
 // An outlier's silhouettes are dashed: diagonal stripes on screen, kDashPixels of colour and
@@ -143,7 +156,9 @@ void main() {
     float behindPlane = u_planeEnabled ? -side : u_planeEpsilon * 2.0;
     vec3 n = normalize(v_in.normal);
     vec3 v = u_orthographic ? -u_viewDirection : normalize(u_eye - v_in.position);
-    float plane = planeCoefficient(behindPlane);
+    vec2 planeGradient = vec2(dFdx(behindPlane), dFdy(behindPlane));
+    float depth = curveDepth(length(planeGradient));
+    float plane = planeCoefficient(behindPlane, depth);
     float silhouette = silhouetteCoefficient(v, n, u_tau);
     float rim = u_emphasis ? silhouetteCoefficient(v, n, u_tau * kEmphasisThickening) : 2.0;
     // Screen-space rates of change, taken before any fragment is discarded (derivatives are
@@ -151,9 +166,11 @@ void main() {
     // kWidestFilter: on tiny triangles the derivatives come from values extrapolated far
     // beyond the triangle and can be wild, which would sprinkle dust where no band is.
     float silhouetteWidth = clamp(fwidth(silhouette), 1e-4, kWidestFilter);
-    float planeWidth = clamp(fwidth(plane), 1e-4, kWidestFilter);
+    // The plane coefficient's own fwidth, from the distance's: the depth is itself made of
+    // derivatives, which are constant over the 2x2 quads derivatives are taken on.
+    float planeWidth = clamp((abs(planeGradient.x) + abs(planeGradient.y)) / depth, 1e-4,
+                             kWidestFilter);
     float rimWidth = clamp(fwidth(rim), 1e-4, kWidestFilter);
-    vec2 planeGradient = vec2(dFdx(behindPlane), dFdy(behindPlane));
     if (u_planeEnabled && side > 0.0) discard;
     // The context surface may take its colour from a field (the members' spread) here.
     vec3 base = u_colourByField && !u_pick ? fieldColourAt(v_in.position) : u_color;

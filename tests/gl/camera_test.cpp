@@ -131,3 +131,24 @@ TEST(Camera, ZoomTowardKeepsThePointUnderTheCursorInPlace) {
     centred.zoomToward(2.0F, {0.0F, 0.0F}, 600.0F);
     EXPECT_NEAR(glm::distance(centred.target(), target), 0.0F, 1e-6F);
 }
+
+// The side views (issue 39): looking level and orthographic, a level in the middle of the box
+// lies on the screen row of the same level on the box's near edge, so the ticks there read true;
+// in perspective they do not.
+TEST(Camera, LevelOrthographicViewsPutALevelOnItsTicksRowAtAnyDepth) {
+    for (const Camera::Projection projection :
+         {Camera::Projection::Orthographic, Camera::Projection::Perspective}) {
+        Camera cam;
+        cam.setProjection(projection);
+        cam.setAngles(-90.0F, 0.0F);  // from the south
+        cam.fit({0.5F, 0.5F, 0.1F}, 0.75F);
+        const glm::mat4 vp = cam.viewProjection(1.6F);
+        const float nearEdge = ndc(vp, {0.0F, 0.0F, 0.17F}).y;
+        const float middle = ndc(vp, {0.5F, 0.5F, 0.17F}).y;
+        if (projection == Camera::Projection::Orthographic) {
+            EXPECT_NEAR(middle, nearEdge, 1e-5F);
+        } else {
+            EXPECT_GT(std::abs(middle - nearEdge), 0.01F);
+        }
+    }
+}

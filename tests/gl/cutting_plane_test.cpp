@@ -52,7 +52,7 @@ TEST_F(CuttingPlaneTest, TheViewersSideIsCutAwayAndTheCurveDrawnWhereTheSurfaceC
     EXPECT_EQ(test::differingFraction(cut, draw(), 0), 0.0);
 }
 
-TEST_F(CuttingPlaneTest, ThePlaneCutsTheMeanAndTheCurveThicknessGrowsWithEpsilon) {
+TEST_F(CuttingPlaneTest, ThePlaneCutsTheMeanAndTheCurveThicknessGrowsWithEpsilonUpToThreePixels) {
     const glm::vec3 centre{15.5F, 15.5F, 15.5F};
     show(spheres({centre}), {kOrange});
     m_renderer.settings().showMean = false;
@@ -71,10 +71,63 @@ TEST_F(CuttingPlaneTest, ThePlaneCutsTheMeanAndTheCurveThicknessGrowsWithEpsilon
         }();
         return test::differingFraction(image, empty, 8);
     };
-    const double thin = litPixels(0.3F);
-    const double thick = litPixels(1.5F);
+    // A cell is about 6 pixels here, and the plane, seen edge-on, meets the sphere's front face
+    // square-on: eps of 0.1 and 0.4 cells are 0.6 and 2.4 pixels on screen, 3 and 6 cells both
+    // more than the curve's 3-pixel limit.
+    const double thin = litPixels(0.1F);
+    const double thick = litPixels(0.4F);
     EXPECT_GT(thin, 0.0);
-    EXPECT_GT(thick, 2.0 * thin);
+    EXPECT_GT(thick, 1.5 * thin);
+    const double limited = litPixels(3.0F);
+    EXPECT_NEAR(litPixels(6.0F) / limited, 1.0, 0.05) << "never wider than three pixels";
+}
+
+TEST_F(CuttingPlaneTest, WhereASurfaceGrazesThePlaneTheCurveStaysAFewPixelsWide) {
+    // The sheet z = 15.5 - 0.05 (x - 15.5), tilted 2.9 degrees, seen from straight above and
+    // cut by the horizontal plane z = 15.5: they meet along x = 15.5. Half a cell behind the
+    // plane is 10 cells of the sheet (x from 15.5 to 25.5): with the curve eps deep alone that
+    // is a wide band (issue 39's zebra stripes); it must stay a curve, a few pixels wide.
+    data::Ensemble sheet = spheres({{0, 0, 0}});
+    for (std::size_t k = 0; k < 32; ++k) {
+        for (std::size_t j = 0; j < 32; ++j) {
+            for (std::size_t i = 0; i < 32; ++i) {
+                sheet.members[0].values[sheet.grid.index(i, j, k)] =
+                    float(k) + 0.05F * (float(i) - 15.5F);
+            }
+        }
+    }
+    m_renderer.setGrid(sheet.grid);
+    m_renderer.setMeshes(test::meshesOf(sheet, 15.5F));
+    m_renderer.setAppearance({{kOrange, true, false}});
+    m_renderer.camera().setProjection(gl::Camera::Projection::Orthographic);
+    m_renderer.camera().setAngles(-90.0F, 90.0F);
+    m_renderer.camera().fit(m_renderer.frame().center(), 0.45F);
+    m_renderer.settings().showMean = false;
+    m_renderer.settings().thickness = 0.001F;  // a sheet seen face-on: no silhouette
+    m_renderer.settings().plane =
+        gl::CuttingPlane::through({0, 0, 1}, display({15.5F, 15.5F, 15.5F}));
+    m_renderer.settings().plane.thickness = 0.5F / 31.0F;
+    const QImage cut = draw();
+    m_renderer.setAppearance({{kOrange, false, false}});
+    const QImage empty = draw();
+    // The middle row, inside the box's outline: every pixel that the sheet changes is the curve.
+    const int row = project(display({15.5F, 15.5F, 15.5F})).y();
+    const int from = project(display({2, 15.5F, 15.5F})).x();
+    const int to = project(display({29, 15.5F, 15.5F})).x();
+    const int curveX = project(display({15.5F, 15.5F, 15.5F})).x();
+    const int cellPixels = project(display({25.5F, 15.5F, 15.5F})).x() - curveX;
+    ASSERT_GT(std::abs(cellPixels), 40) << "ten cells span a wide band on screen";
+    int lit = 0, farthest = 0;
+    for (int x = std::min(from, to); x <= std::max(from, to); ++x) {
+        const QColor c = empty.pixelColor(x, row);
+        if (channelDistance(cut.pixelColor(x, row), {c.redF(), c.greenF(), c.blueF()}) <= 8)
+            continue;
+        ++lit;
+        farthest = std::max(farthest, std::abs(x - curveX));
+    }
+    EXPECT_GE(lit, 2) << "the curve is drawn";
+    EXPECT_LE(lit, 6) << "a few pixels wide, not an area";
+    EXPECT_LE(farthest, 6) << "where the sheet meets the plane";
 }
 
 TEST_F(RemovalTest, ChangingTheThresholdsChangesOnlyMembersInTheBand) {
