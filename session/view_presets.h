@@ -1,5 +1,5 @@
-// The named camera views a meteorologist asks for: a map (north up, from straight above,
-// orthographic) and the views from the four sides, plus ensil's default 3D view. One table,
+// The named camera views a meteorologist asks for: a map (north up, from straight above) and the
+// level views from the four sides, all orthographic, plus ensil's default 3D view. One table,
 // used by the workbench's View menu and toolbar and by `ensil render --view`. Any thread.
 #pragma once
 
@@ -16,7 +16,7 @@ struct ViewPreset {
     std::string_view label;  // the menu's text, with its mnemonic
     float azimuth;           // degrees, as CameraState
     float elevation;
-    bool forcesOrthographic;  // the map view: a floor seen square-on has no perspective to show
+    bool forcesOrthographic;  // the map and side views: read against their axes, like charts
 };
 
 std::span<const ViewPreset> viewPresets();

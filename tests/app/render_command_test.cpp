@@ -187,7 +187,8 @@ TEST(RenderCommand, WithoutAnIsovalueItDrawsTheWorkbenchsDefaultAndSaysWhich) {
     EXPECT_EQ(o["vertical_heights"].toString(), "standard atmosphere");
 }
 
-// --view top is the map view: north up, from straight above, orthographic; the same picture as
+// --view top is the map view: north up, from straight above, orthographic (and --view south the
+// level orthographic view from the south); the same picture as
 // the angles and projection given by hand. An explicit --projection overrides it, and a view
 // that does not exist is refused, naming those that do.
 TEST(RenderCommand, TheTopViewIsTheNorthUpOrthographicMapAndUnknownViewsAreRefused) {
@@ -211,6 +212,10 @@ TEST(RenderCommand, TheTopViewIsTheNorthUpOrthographicMapAndUnknownViewsAreRefus
     EXPECT_EQ(top, byHand);
     EXPECT_NE(top, perspective);
     EXPECT_NE(top, south);
+    // A side view looks level and orthographic (issue 39: ticks on the near edge match a level
+    // in the middle of the box).
+    EXPECT_EQ(south, render("south-hand.png", {"--azimuth", "-90", "--elevation", "0",
+                                                "--projection", "orthographic"}));
 
     const test::EnsilRun bad =
         test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
