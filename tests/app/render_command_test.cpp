@@ -215,7 +215,7 @@ TEST(RenderCommand, TheTopViewIsTheNorthUpOrthographicMapAndUnknownViewsAreRefus
     // A side view looks level and orthographic (issue 39: ticks on the near edge match a level
     // in the middle of the box).
     EXPECT_EQ(south, render("south-hand.png", {"--azimuth", "-90", "--elevation", "0",
-                                                "--projection", "orthographic"}));
+                                               "--projection", "orthographic"}));
 
     const test::EnsilRun bad =
         test::runEnsil({"render", ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc", "--var", "t",
