@@ -128,14 +128,24 @@ QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResu
                   {"members", members},
                   {"mean_contour_lines", static_cast<qint64>(view.meanContour.size())}};
     if (!view.fill.empty()) {
-        o.insert("fill", QJsonObject{{"caption", QString::fromStdString(view.fillCaption)},
-                                     {"minimum", static_cast<double>(view.fillMinimum)},
-                                     {"maximum", static_cast<double>(view.fillMaximum)}});
+        o.insert("fill",
+                 QJsonObject{{"caption", QString::fromStdString(view.fillCaption)},
+                             {"minimum", static_cast<double>(view.fillMinimum)},
+                             {"maximum", static_cast<double>(view.fillMaximum)},
+                             {"colour_map",
+                              QString::fromUtf8(engine::sectionColourMapName(view.colourMap))}});
     }
     return o;
 }
 
 }  // namespace
+
+// --colour-map, --range-min and --range-max, as the setting table names them.
+const session::SettingOptions& colourOptions() {
+    static const session::SettingOptions options{"sections_colour_map", "sections_range_min",
+                                                 "sections_range_max"};
+    return options;
+}
 
 int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& err) {
     QCommandLineParser parser;
@@ -151,6 +161,7 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
     parser.addOptions({o.level, o.latitude, o.longitude, o.path, o.fill, o.iso, o.output, o.size,
                        o.noCache, o.demo, o.json, o.quiet});
     clusterOptions().addTo(parser);
+    colourOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("section"), out, err))
         return *done;
 
@@ -170,9 +181,23 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
                                           false, problem);
     }
     const QString path = parser.value(o.output);
+    const QStringList rangeGiven = colourOptions().given(parser).filter(QStringLiteral("range"));
     if (!size || (parser.isSet(o.iso) && !iso) ||
-        !clusterOptions().applyTo(parser, requested, problem)) {
+        !clusterOptions().applyTo(parser, requested, problem) ||
+        !colourOptions().applyTo(parser, requested, problem)) {
         // said below
+    } else if (rangeGiven.size() == 2 &&
+               !(requested.sectionsColours.minimum < requested.sectionsColours.maximum)) {
+        problem = QStringLiteral(
+                      "--range-min %1 --range-max %2 is refused: the lower end must "
+                      "lie below the upper end")
+                      .arg(parser.value(QStringLiteral("range-min")),
+                           parser.value(QStringLiteral("range-max")));
+    } else if (rangeGiven.size() == 1) {
+        problem = QStringLiteral("%1 needs %2 too: a fixed colour range has both ends")
+                      .arg(rangeGiven.front(), rangeGiven.front() == QLatin1String("--range-min")
+                                                   ? QStringLiteral("--range-max")
+                                                   : QStringLiteral("--range-min"));
     } else if (!parser.isSet(o.output)) {
         problem = QStringLiteral("say where to write the picture with --out FILE.png|.svg|.pdf");
     } else if (!engine::isSectionPictureName(path)) {
@@ -217,8 +242,10 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
         const engine::PreprocessResult clusters =
             engine::preprocessEnsemble(std::move(ensemble), request, notice, {},
                                        progress.callback(QStringLiteral("clustering")));
-        const engine::SectionRequest section =
+        engine::SectionRequest section =
             engine::sectionRequestFor(clusters, *place, fill->first, fill->second);
+        requested.sectionsColours.fixedRange = !rangeGiven.isEmpty();
+        engine::applySectionColours(section, requested.sectionsColours);
         const engine::SectionView view = engine::buildSection(*clusters.ensemble, section);
         const QSize pictureSize = size->second > 0 ? QSize(size->first, size->second)
                                                    : engine::sectionPictureSize(view, size->first);

@@ -81,6 +81,43 @@ SampleMoments momentsOf(const std::vector<std::vector<float>>& members, std::siz
 
 }  // namespace
 
+const char* sectionColourMapName(SectionColourMap map) {
+    switch (map) {
+        case SectionColourMap::Greys:
+            return "greys";
+        case SectionColourMap::RdBu:
+            return "rdbu";
+        case SectionColourMap::YlGnBu:
+            return "ylgnbu";
+        case SectionColourMap::Viridis:
+            break;
+    }
+    return "viridis";
+}
+
+void applySectionColours(SectionRequest& request, const session::SectionsColours& colours) {
+    using session::SectionsColourMap;
+    switch (colours.map) {
+        case SectionsColourMap::Automatic:
+            request.colourMap.reset();
+            break;
+        case SectionsColourMap::Viridis:
+            request.colourMap = SectionColourMap::Viridis;
+            break;
+        case SectionsColourMap::Greys:
+            request.colourMap = SectionColourMap::Greys;
+            break;
+        case SectionsColourMap::RdBu:
+            request.colourMap = SectionColourMap::RdBu;
+            break;
+        case SectionsColourMap::YlGnBu:
+            request.colourMap = SectionColourMap::YlGnBu;
+            break;
+    }
+    request.range.reset();
+    if (colours.fixedRange) request.range = std::pair{colours.minimum, colours.maximum};
+}
+
 SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request) {
     const std::size_t memberCount = ensemble.members.size();
     if (memberCount == 0) {
@@ -94,6 +131,15 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
                           "member " + std::to_string(request.member + 1) + " is not one of the " +
                               std::to_string(memberCount) + " members (1 to " +
                               std::to_string(memberCount) + ")");
+    }
+    if (request.range &&
+        !(std::isfinite(request.range->first) && std::isfinite(request.range->second) &&
+          request.range->first < request.range->second)) {
+        throw data::Error(data::ErrorKind::InvalidArgument,
+                          "the fixed colour range " +
+                              data::readableNumber(request.range->first, 6) + " to " +
+                              data::readableNumber(request.range->second, 6) +
+                              " is refused: its lower end must lie below its upper end");
     }
     PlacedSection placed = placeSection(ensemble, request.place);
     const prep::SectionLattice lattice = std::move(placed.lattice);
@@ -142,19 +188,25 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
         case SectionFill::Probability:
             view.fill = moments.probability;
             view.fillCaption = exceedanceText(ensemble, request.isovalue);
-            view.scale = ColourScaleKind::Probability;
+            view.colourMap = SectionColourMap::YlGnBu;
             break;
         case SectionFill::Anomaly: {
             view.fill = view.memberValues[static_cast<std::size_t>(request.member)];
             for (std::size_t s = 0; s < samples; ++s) view.fill[s] -= moments.mean[s];
             view.fillCaption = memberName(request.member) + " minus the mean, " + name + units;
-            view.scale = ColourScaleKind::Diverging;
+            view.colourMap = SectionColourMap::RdBu;
             break;
         }
     }
     // The colour bar spans the section's own values (a difference: symmetric about 0; a
-    // probability: 0 to 1; a spread: from 0), so the map has the contrast its values allow.
-    if (!view.fill.empty()) {
+    // probability: 0 to 1; a spread: from 0), so the map has the contrast its values allow,
+    // unless the user fixed it (to compare sections, or times, on one scale).
+    if (request.colourMap) view.colourMap = *request.colourMap;
+    if (!view.fill.empty() && request.range) {
+        view.fillMinimum = static_cast<float>(request.range->first);
+        view.fillMaximum = static_cast<float>(request.range->second);
+        view.colourTicks = gl::niceTicks(request.range->first, request.range->second, 6);
+    } else if (!view.fill.empty()) {
         float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
         for (const float v : view.fill) {
             if (std::isnan(v)) continue;
@@ -162,10 +214,10 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
             hi = std::max(hi, v);
         }
         if (lo > hi) lo = hi = 0.0F;  // nothing but missing values
-        if (view.scale == ColourScaleKind::Probability) {
+        if (request.fill == SectionFill::Probability) {
             lo = 0.0F;
             hi = 1.0F;
-        } else if (view.scale == ColourScaleKind::Diverging) {
+        } else if (request.fill == SectionFill::Anomaly) {
             hi = std::max(std::abs(lo), std::abs(hi));
             lo = -hi;
         } else if (request.fill == SectionFill::Spread) {

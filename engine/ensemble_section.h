@@ -20,6 +20,7 @@
 
 #include "data/ensemble.h"
 #include "preprocessing/marching_squares.h"
+#include "session/session_state.h"
 
 namespace ensil::engine {
 
@@ -41,6 +42,12 @@ struct SectionPlace {
 
 enum class SectionFill { None, Member, Mean, Spread, Probability, Anomaly };
 
+// The fill's colour maps: matplotlib's viridis, ColorBrewer's Greys, RdBu (diverging: blue below
+// the middle, red above) and YlGnBu (pale at 0, for probabilities).
+enum class SectionColourMap { Viridis, Greys, RdBu, YlGnBu };
+// "viridis", "greys", "rdbu", "ylgnbu": as the setting table and Python name them.
+const char* sectionColourMapName(SectionColourMap map);
+
 struct SectionRequest {
     SectionPlace place;
     SectionFill fill = SectionFill::Mean;
@@ -50,6 +57,10 @@ struct SectionRequest {
     // are drawn in the unclustered gray.
     std::vector<glm::vec3> memberColours;
     std::vector<int> clusterNumbers;  // as the legend numbers them, per member; may be empty
+    // The fill's colours: by default chosen by the fill (viridis, RdBu for a difference from
+    // the mean, YlGnBu for a probability) over the section's own range.
+    std::optional<SectionColourMap> colourMap;
+    std::optional<std::pair<double, double>> range;  // fixed: lower below upper, both finite
 };
 
 struct SectionTick {
@@ -73,8 +84,6 @@ struct MemberContour {
     glm::vec3 colour{0.0F};
     std::vector<SectionLine> lines;
 };
-
-enum class ColourScaleKind { Sequential, Diverging, Probability };
 
 // Where a section lies and how it is laid out in its plot's unit square (x right, y up):
 // what engine::placeSection finds from the place alone, before any value is sampled.
@@ -111,7 +120,7 @@ struct SectionView : SectionLayout {
     std::size_t rows = 0;
     std::vector<float> fill;  // empty for SectionFill::None; NaN where missing
     std::string fillCaption;  // "mean t [K]"
-    ColourScaleKind scale = ColourScaleKind::Sequential;
+    SectionColourMap colourMap = SectionColourMap::Viridis;
     float fillMinimum = 0.0F;  // the colour bar's range: the section's own values by default
     float fillMaximum = 1.0F;
     std::vector<double> colourTicks;  // round numbers inside the range
@@ -142,8 +151,13 @@ struct PreprocessResult;
 SectionRequest sectionRequestFor(const PreprocessResult& clusters, const SectionPlace& place,
                                  SectionFill fill, int member);
 
+// The session's colour settings (the setting table's sections_colour_map and fixed range) on a
+// request.
+void applySectionColours(SectionRequest& request, const session::SectionsColours& colours);
+
 // Throws data::Error(InvalidArgument) naming the place when it lies outside the data (a level
-// above the top, a latitude the grid does not reach) or the fill's member does not exist.
+// above the top, a latitude the grid does not reach), the fill's member does not exist or a
+// fixed range is empty.
 SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request);
 
 // The fractional lattice index at position t along a table of positions (ascending or

@@ -41,14 +41,16 @@ QColor toColour(glm::vec3 c) {
                             std::clamp(c.b, 0.0F, 1.0F));
 }
 
-// ColorBrewer's RdBu (blue below zero, red above) and YlGnBu (probabilities: pale at 0, so the
-// contours stay readable where little is likely), by Cynthia Brewer, colorbrewer2.org; the
-// anchors are the published colours, interpolated linearly between.
+// ColorBrewer's RdBu (blue below zero, red above), YlGnBu (probabilities: pale at 0, so the
+// contours stay readable where little is likely) and Greys (for print), by Cynthia Brewer,
+// colorbrewer2.org; the anchors are the published colours, interpolated linearly between.
 constexpr std::array<unsigned, 11> kDiverging{0x053061, 0x2166ac, 0x4393c3, 0x92c5de,
                                               0xd1e5f0, 0xf7f7f7, 0xfddbc7, 0xf4a582,
                                               0xd6604d, 0xb2182b, 0x67001f};
 constexpr std::array<unsigned, 9> kProbability{0xffffd9, 0xedf8b1, 0xc7e9b4, 0x7fcdbb, 0x41b6c4,
                                                0x1d91c0, 0x225ea8, 0x253494, 0x081d58};
+constexpr std::array<unsigned, 9> kGreys{0xffffff, 0xf0f0f0, 0xd9d9d9, 0xbdbdbd, 0x969696,
+                                         0x737373, 0x525252, 0x252525, 0x000000};
 
 template <std::size_t N>
 QRgb fromAnchors(const std::array<unsigned, N>& anchors, double t) {
@@ -62,13 +64,15 @@ QRgb fromAnchors(const std::array<unsigned, N>& anchors, double t) {
     return qRgb(channel(16), channel(8), channel(0));
 }
 
-QRgb colourAt(ColourScaleKind scale, double t) {
-    switch (scale) {
-        case ColourScaleKind::Diverging:
+QRgb colourAt(SectionColourMap map, double t) {
+    switch (map) {
+        case SectionColourMap::RdBu:
             return fromAnchors(kDiverging, t);
-        case ColourScaleKind::Probability:
+        case SectionColourMap::YlGnBu:
             return fromAnchors(kProbability, t);
-        case ColourScaleKind::Sequential:
+        case SectionColourMap::Greys:
+            return fromAnchors(kGreys, t);
+        case SectionColourMap::Viridis:
             break;
     }
     return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();
@@ -91,7 +95,7 @@ QImage fillImage(const SectionView& view, int width, int height) {
             const float v =
                 sectionValueAtIndex(view, view.fill, columnAt[static_cast<std::size_t>(x)], row);
             line[x] = std::isnan(v) ? kMissing.rgb()
-                                    : colourAt(view.scale, (v - view.fillMinimum) / range);
+                                    : colourAt(view.colourMap, (v - view.fillMinimum) / range);
         }
     }
     return image;
@@ -289,7 +293,7 @@ void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
         const QRectF bar(side.left(), y, 14.0, barHeight);
         QImage gradient(1, 256, QImage::Format_RGB32);
         for (int i = 0; i < 256; ++i) {
-            gradient.setPixel(0, i, colourAt(view.scale, 1.0 - (i + 0.5) / 256.0));
+            gradient.setPixel(0, i, colourAt(view.colourMap, 1.0 - (i + 0.5) / 256.0));
         }
         painter.drawImage(bar, gradient);
         painter.setPen(QPen(style.text, 0.8));

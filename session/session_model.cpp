@@ -34,7 +34,8 @@ SessionParts differences(const SessionState& a, const SessionState& b) {
         parts |= SessionPart::Visibility;
     }
     if (a.selection != b.selection) parts |= SessionPart::Selection;
-    if (a.sections != b.sections || a.sectionsFill != b.sectionsFill) {
+    if (a.sections != b.sections || a.sectionsFill != b.sectionsFill ||
+        a.sectionsColours != b.sectionsColours) {
         parts |= SessionPart::Sections;
     }
     if (a.windowGeometry != b.windowGeometry || a.windowState != b.windowState) {

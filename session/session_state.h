@@ -52,6 +52,20 @@ struct SectionPlaces {
 // What fills the maps and cross-sections (the setting "sections_fill").
 enum class SectionsFill { Mean, Spread, Probability, SelectedMember, SelectedAnomaly, None };
 
+// How the fill is coloured (the settings "sections_colour_map", "sections_fixed_range",
+// "sections_range_min" and "sections_range_max"). Automatic picks the map by the fill: viridis
+// for values, RdBu centred on zero for differences from the mean, YlGnBu for probabilities.
+// Without a fixed range the colour bar spans the shown section's own values (a difference:
+// symmetric about 0; a probability: 0 to 1).
+enum class SectionsColourMap { Automatic, Viridis, Greys, RdBu, YlGnBu };
+struct SectionsColours {
+    SectionsColourMap map = SectionsColourMap::Automatic;
+    bool fixedRange = false;
+    double minimum = 0.0;  // the fixed range, in the variable's units
+    double maximum = 1.0;
+    bool operator==(const SectionsColours&) const = default;
+};
+
 struct SessionState {
     // Either the built-in demo (with its parameters) or files; paths are absolute in memory.
     bool demo = false;
@@ -74,6 +88,7 @@ struct SessionState {
     std::vector<int> selection;
     SectionPlaces sections;
     SectionsFill sectionsFill = SectionsFill::Mean;
+    SectionsColours sectionsColours;
     QByteArray windowGeometry;  // QMainWindow::saveGeometry / saveState, kept as they are
     QByteArray windowState;
 };

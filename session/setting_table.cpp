@@ -20,16 +20,20 @@ constexpr std::array<std::string_view, 3> kContextSurfaces{"mean", "median", "pr
 // In gl::SectionField's order.
 constexpr std::array<std::string_view, 5> kSectionFields{"none", "member", "mean", "stddev",
                                                          "probability"};
-// In prep::Linkage's order.
+// In SectionsFill's order.
 constexpr std::array<std::string_view, 6> kSectionsFills{"mean",   "spread",  "probability",
                                                          "member", "anomaly", "none"};
+// In SectionsColourMap's order; the names matplotlib and ColorBrewer give them.
+constexpr std::array<std::string_view, 5> kSectionsColourMaps{"automatic", "viridis", "greys",
+                                                              "rdbu", "ylgnbu"};
+// In prep::Linkage's order.
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
 float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 32> kSettings{{
+const std::array<Setting, 36> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -458,6 +462,60 @@ const std::array<Setting, 32> kSettings{{
      0, 5, 0, 1, kSectionsFills,
      [](const SessionState& s) { return static_cast<double>(s.sectionsFill); },
      [](SessionState& s, double v) { s.sectionsFill = static_cast<SectionsFill>(v); }},
+    {"sections_colour_map", SettingKind::Choice, "sections.colour_map", "colour-map",
+     "sections/colourMap", "Sections Colours", "",
+     "The colour map of the sections' fill: automatic (viridis for values, RdBu centred on zero "
+     "for differences, YlGnBu for probabilities), or one of viridis, greys, rdbu, ylgnbu",
+     0, 4, 0, 1, kSectionsColourMaps,
+     [](const SessionState& s) { return static_cast<double>(s.sectionsColours.map); },
+     [](SessionState& s, double v) { s.sectionsColours.map = static_cast<SectionsColourMap>(v); }},
+    // A fixed range belongs to one variable: projects keep it, the remembered settings do not.
+    {"sections_fixed_range",
+     SettingKind::Flag,
+     "sections.fixed_range",
+     "",
+     "",
+     "Fixed colour range",
+     "",
+     "Colour the sections' fill over the range from sections_range_min to sections_range_max "
+     "instead of the shown section's own values",
+     0,
+     1,
+     0,
+     1,
+     {},
+     [](const SessionState& s) { return s.sectionsColours.fixedRange ? 1.0 : 0.0; },
+     [](SessionState& s, double v) { s.sectionsColours.fixedRange = v != 0.0; }},
+    {"sections_range_min",
+     SettingKind::Number,
+     "sections.range_min",
+     "range-min",
+     "",
+     "From",
+     "",
+     "The fixed colour range's lower end, in the variable's units",
+     -1e12,
+     1e12,
+     3,
+     1,
+     {},
+     [](const SessionState& s) { return s.sectionsColours.minimum; },
+     [](SessionState& s, double v) { s.sectionsColours.minimum = v; }},
+    {"sections_range_max",
+     SettingKind::Number,
+     "sections.range_max",
+     "range-max",
+     "",
+     "To",
+     "",
+     "The fixed colour range's upper end, in the variable's units",
+     -1e12,
+     1e12,
+     3,
+     1,
+     {},
+     [](const SessionState& s) { return s.sectionsColours.maximum; },
+     [](SessionState& s, double v) { s.sectionsColours.maximum = v; }},
 }};
 
 std::string number(double v) {

@@ -20,6 +20,7 @@
 #include "engine/ensemble_section.h"
 #include "workbench/background_job.h"
 
+class QAction;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -62,6 +63,10 @@ public:
     [[nodiscard]] QComboBox* crossKindBox() const { return m_crossKind; }
     [[nodiscard]] QLineEdit* crossEdit() const { return m_cross; }
     [[nodiscard]] QComboBox* fillBox() const { return m_fill; }
+    [[nodiscard]] QToolButton* coloursButton() const { return m_colours; }
+    // The fill's colour range, fixed to [minimum, maximum] or (nullopt) the shown section's own
+    // (the Colours menu's Fixed Range): a session edit, one undo step.
+    void setFixedRange(std::optional<std::pair<double, double>> range);
     [[nodiscard]] SectionCanvas* mapCanvas() const { return m_mapCanvas; }
     [[nodiscard]] SectionCanvas* crossCanvas() const { return m_crossCanvas; }
     // A section (or the default places) is being made: its result has not reached the screen.
@@ -96,6 +101,8 @@ private:
     void placePath(glm::dvec2 from, glm::dvec2 to);
     void recolour();
     void exportWithDialog(bool map);
+    void askFixedRange();
+    void showColours();
 
     session::SessionModel* m_model;
     workbench::MemberSelection* m_selection;
@@ -112,6 +119,8 @@ private:
     QComboBox* m_crossKind;
     QLineEdit* m_cross;
     QComboBox* m_fill;
+    QToolButton* m_colours;
+    QAction* m_fixedRange;
     QToolButton* m_export;
     QLabel* m_hint;
     QSplitter* m_splitter;

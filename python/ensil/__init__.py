@@ -174,7 +174,8 @@ def render(target, iso=None, size=(1600, 1000), mode=None, view=None, cache=True
 
 
 def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mean", iso=None,
-                      clusters=None, linkage="average", cache=True):
+                      clusters=None, linkage="average", cache=True, colour_map="automatic",
+                      range=None):
     """A map or a cross-section of the ensemble, as ``ensil section`` draws it: the members'
     values and their contours of the isovalue, each member in its cluster's colour (the
     clusters of ``preprocess(iso, clusters, linkage)``, from the mesh cache when it has them).
@@ -183,13 +184,17 @@ def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mea
     lat, lon    a cross-section along a latitude or a longitude: 45, "45N", "10W"
     path        a cross-section along the great circle: ((lon, lat), (lon, lat))
     fill        mean, spread, probability, member:N, anomaly:N (N from 1) or none
+    colour_map  automatic (viridis for values, rdbu centred on 0 for anomalies, ylgnbu for
+                probabilities), viridis, greys, rdbu or ylgnbu
+    range       (lower, upper): a fixed colour bar; by default the section's own values
 
     Returns an ensil.Section: .values (members x rows x columns), .fill, .contours,
     .mean_contour, .save("figure.svg"). Raises ensil.ArgumentError for a malformed place and
     ensil.Error for one outside the data, with the command line's messages.
     """
     result = self.preprocess(iso=iso, clusters=clusters, linkage=linkage, cache=cache)
-    return result.section(level=level, lat=lat, lon=lon, path=path, fill=fill)
+    return result.section(level=level, lat=lat, lon=lon, path=path, fill=fill,
+                          colour_map=colour_map, range=range)
 
 
 Ensemble.section = _ensemble_section

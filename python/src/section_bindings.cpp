@@ -21,6 +21,7 @@
 #include "python/src/gui_application.h"
 #include "python/src/numpy_arrays.h"
 #include "python/src/py_preprocess.h"
+#include "session/setting_table.h"
 
 namespace py = pybind11;
 
@@ -99,14 +100,45 @@ py::array_t<float> latticeArray(const engine::SectionView& view, const std::vect
     return out;
 }
 
+// colour_map= and range=, checked as the setting table checks them.
+session::SectionsColours coloursOf(const std::string& colourMap,
+                                   const std::optional<std::pair<double, double>>& range) {
+    session::SectionsColours colours;
+    const session::Setting& maps = session::setting("sections_colour_map");
+    const auto found = std::find(maps.choices.begin(), maps.choices.end(), colourMap);
+    if (found == maps.choices.end()) {
+        throw ArgumentError("colour_map '" + colourMap + "' is refused: it must be one of " +
+                            maps.allowed());
+    }
+    colours.map =
+        static_cast<session::SectionsColourMap>(std::distance(maps.choices.begin(), found));
+    if (range) {
+        for (const auto& [id, value] : {std::pair{"sections_range_min", range->first},
+                                        std::pair{"sections_range_max", range->second}}) {
+            const std::string why = session::setting(id).problemWith(value);
+            if (!why.empty()) throw ArgumentError("range is refused: each end " + why);
+        }
+        if (!(range->first < range->second)) {
+            throw ArgumentError("range is refused: its lower end must lie below its upper end");
+        }
+        colours.fixedRange = true;
+        colours.minimum = range->first;
+        colours.maximum = range->second;
+    }
+    return colours;
+}
+
 PySection section(const PyPreprocessResult& self, const py::object& level, const py::object& lat,
-                  const py::object& lon, const py::object& path, const std::string& fill) {
+                  const py::object& lon, const py::object& path, const std::string& fill,
+                  const std::string& colourMap,
+                  const std::optional<std::pair<double, double>>& range) {
     const engine::SectionPlace place = placeOf(level, lat, lon, path);
     std::string problem;
     const auto chosen = engine::parseSectionFill(fill, problem);
     if (!chosen) throw ArgumentError("fill is refused: " + problem);
-    const engine::SectionRequest request =
+    engine::SectionRequest request =
         engine::sectionRequestFor(*self.result, place, chosen->first, chosen->second);
+    engine::applySectionColours(request, coloursOf(colourMap, range));
     engine::SectionView view;
     {
         const py::gil_scoped_release release;
@@ -150,6 +182,10 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
             "The filled field, rows x columns; None for fill='none'.")
         .def_property_readonly("fill_caption",
                                [](const PySection& s) { return s.view->fillCaption; })
+        .def_property_readonly(
+            "colour_map",
+            [](const PySection& s) { return engine::sectionColourMapName(s.view->colourMap); },
+            "The fill's colour map: viridis, greys, rdbu or ylgnbu.")
         .def_property_readonly("fill_range",
                                [](const PySection& s) {
                                    return std::pair{s.view->fillMinimum, s.view->fillMaximum};
@@ -203,13 +239,16 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
         py::reinterpret_borrow<py::class_<PyPreprocessResult>>(module.attr("PreprocessResult"));
     result.def("section", &section, py::arg("level") = py::none(), py::arg("lat") = py::none(),
                py::arg("lon") = py::none(), py::arg("path") = py::none(), py::arg("fill") = "mean",
+               py::arg("colour_map") = "automatic", py::arg("range") = py::none(),
                R"doc(
 A map or a cross-section at this result's isovalue, members in their clusters' colours:
 level= a map ("500hPa", "5km", "index:3", or a number in the vertical axis's units); lat= or
 lon= a cross-section along a latitude or longitude (45, "45N", "10W"); path= one along the
 great circle between two points, ((lon, lat), (lon, lat)) or "LON,LAT:LON,LAT". fill= mean,
-spread, probability, member:N, anomaly:N (N from 1) or none. Raises ensil.ArgumentError for a
-malformed place and ensil.Error for one outside the data.)doc");
+spread, probability, member:N, anomaly:N (N from 1) or none. colour_map= automatic (by the
+fill), viridis, greys, rdbu or ylgnbu; range=(lower, upper) fixes the colour bar (by default the
+section's own values). Raises ensil.ArgumentError for a malformed place, colour map or range and
+ensil.Error for a place outside the data.)doc");
 }
 
 }  // namespace ensil::python

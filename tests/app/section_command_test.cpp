@@ -34,6 +34,7 @@ TEST(SectionCommand, DrawsAMapOfEveryMembersContourAsAPng) {
     // The fill's scale is the section's own values, not the volume's (225.8 to 305 K).
     EXPECT_GT(o["fill"]["minimum"].toDouble(), 225.8);
     EXPECT_LT(o["fill"]["maximum"].toDouble(), 280.0);
+    EXPECT_EQ(o["fill"]["colour_map"].toString(), QStringLiteral("viridis"));
     const QImage image(png);
     ASSERT_FALSE(image.isNull());
     EXPECT_EQ(image.width(), 1400);  // by default 1400 wide, as high as the map needs
@@ -84,8 +85,14 @@ TEST(SectionCommand, PdfAndPathsAcrossTheMap) {
     const QString pdf = QString::fromStdString(dir.file("path.pdf"));
     const test::EnsilRun r =
         test::runEnsil({"section", test::kEra5, "--var", "t", "--path=-30,60:40,30", "--fill",
-                        "anomaly:2", "--out", pdf, "--no-cache", "--quiet"});
+                        "anomaly:2", "--out", pdf, "--no-cache", "--quiet", "--colour-map", "greys",
+                        "--range-min", "-4", "--range-max", "6", "--json"});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    // The colour map and fixed range asked for, not the anomaly's own (RdBu, symmetric).
+    const QJsonObject fill = test::jsonOf(r)["fill"].toObject();
+    EXPECT_EQ(fill["colour_map"].toString(), QStringLiteral("greys"));
+    EXPECT_EQ(fill["minimum"].toDouble(), -4.0);
+    EXPECT_EQ(fill["maximum"].toDouble(), 6.0);
     QFile file(pdf);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     EXPECT_TRUE(file.read(5).startsWith("%PDF-"));
@@ -105,12 +112,19 @@ TEST(SectionCommand, RefusesWhatItCannotDrawSayingWhy) {
           QStringList{"--lat", "91", "--out", png},
           QStringList{"--level", "500hPa", "--fill", "member:0", "--out", png},
           QStringList{"--level", "500hPa", "--out", QString::fromStdString(dir.file("x.jpg"))},
-          QStringList{"--level", "500hPa"}}) {
+          QStringList{"--level", "500hPa"},
+          QStringList{"--level", "500hPa", "--colour-map", "jet", "--out", png},
+          QStringList{"--level", "500hPa", "--range-min", "250", "--out", png},
+          QStringList{"--level", "500hPa", "--range-min", "260", "--range-max", "250", "--out",
+                      png}}) {
         const test::EnsilRun r = run(bad);
         EXPECT_EQ(r.code, 2) << bad.join(' ').toStdString() << ": " << r.err.toStdString();
         EXPECT_TRUE(r.err.startsWith(QStringLiteral("ensil section: "))) << r.err.toStdString();
     }
     EXPECT_FALSE(QFile::exists(png));
+    const test::EnsilRun half = run({"--level", "500hPa", "--range-max", "250", "--out", png});
+    EXPECT_TRUE(half.err.contains(QStringLiteral("--range-max needs --range-min too")))
+        << half.err.toStdString();
     // Places and members the data do not have: exit status 1, naming the range.
     const test::EnsilRun low = run({"--level", "1000hPa", "--out", png});
     EXPECT_EQ(low.code, 1);

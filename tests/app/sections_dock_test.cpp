@@ -8,9 +8,11 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolButton>
 
 #include "app/main_window.h"
 #include "engine/section_painter.h"
@@ -204,10 +206,29 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     EXPECT_TRUE(error.contains(QStringLiteral(".svg"))) << error.toStdString();
     window.grab().save(test::testOutputDir() + "/sections_dock_era5.png");
 
-    // A project keeps the places and the fill; reopened, the dock shows them.
+    // A project keeps the places, the fill and its colours; reopened, the dock shows them.
     window.memberSelection()->setSelection({3});
     window.sectionsPanel()->fillBox()->setCurrentIndex(4);  // the selected member less the mean
     emit window.sectionsPanel()->fillBox()->activated(4);
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    EXPECT_EQ(panel->mapCanvas()->view()->colourMap, engine::SectionColourMap::RdBu);
+    // Greys from the Colours menu, then a fixed range: each an undoable step.
+    QAction* greys = nullptr;
+    for (QAction* a : panel->coloursButton()->menu()->actions()) {
+        if (a->text() == QStringLiteral("Greys")) greys = a;
+    }
+    ASSERT_NE(greys, nullptr);
+    greys->trigger();
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    EXPECT_EQ(panel->mapCanvas()->view()->colourMap, engine::SectionColourMap::Greys);
+    EXPECT_TRUE(greys->isChecked());
+    panel->setFixedRange(std::pair{-3.0, 3.0});
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    EXPECT_FLOAT_EQ(panel->mapCanvas()->view()->fillMinimum, -3.0F);
+    window.history()->stack()->undo();
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    EXPECT_NE(panel->mapCanvas()->view()->fillMinimum, -3.0F) << "the section's own range again";
+    window.history()->stack()->redo();
     const QString project = QString::fromStdString(dir.file("sections.ensil"));
     ASSERT_TRUE(window.saveProjectTo(project));
     app::MainWindow reopened;
@@ -217,7 +238,9 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     EXPECT_EQ(reopened.sectionsPanel()->levelEdit()->text(), QStringLiteral("850hPa"));
     EXPECT_EQ(reopened.sectionsPanel()->fillBox()->currentIndex(), 4);
     const engine::SectionView& again = *reopened.sectionsPanel()->mapCanvas()->view();
-    EXPECT_EQ(again.scale, engine::ColourScaleKind::Diverging);
+    EXPECT_EQ(again.colourMap, engine::SectionColourMap::Greys);
+    EXPECT_FLOAT_EQ(again.fillMinimum, -3.0F);
+    EXPECT_FLOAT_EQ(again.fillMaximum, 3.0F);
     EXPECT_NE(again.fillCaption.find("minus the mean"), std::string::npos) << again.fillCaption;
 }
 

@@ -199,12 +199,52 @@ TEST(EnsembleSection, AnomalyIsTheMemberLessTheMeanOnAScaleCentredOnZero) {
     request.fill = engine::SectionFill::Anomaly;
     request.member = 0;
     const engine::SectionView view = engine::buildSection(e, request);
-    EXPECT_EQ(view.scale, engine::ColourScaleKind::Diverging);
+    EXPECT_EQ(view.colourMap, engine::SectionColourMap::RdBu);
     EXPECT_FLOAT_EQ(view.fillMinimum, -view.fillMaximum);
     const std::size_t s = 7 + 41 * 12;
     const float mean =
         (e.members[0].values[s] + e.members[1].values[s] + e.members[2].values[s]) / 3;
     EXPECT_NEAR(view.fill[s], e.members[0].values[s] - mean, 1e-4);
+}
+
+// The session's colour settings reach the view: a map chosen over the fill's own, a fixed range
+// over the section's values (ticks inside it), and an empty range refused before any sampling.
+TEST(EnsembleSection, AChosenColourMapAndFixedRangeOverrideTheFillsOwn) {
+    const data::Ensemble e = circles(3);
+    engine::SectionRequest request = mapAt("index:0", 5.0F);
+    request.fill = engine::SectionFill::Probability;
+    EXPECT_EQ(engine::buildSection(e, request).colourMap, engine::SectionColourMap::YlGnBu);
+    session::SectionsColours colours;
+    colours.map = session::SectionsColourMap::Greys;
+    colours.fixedRange = true;
+    colours.minimum = 0.25;
+    colours.maximum = 0.75;
+    engine::applySectionColours(request, colours);
+    const engine::SectionView view = engine::buildSection(e, request);
+    EXPECT_EQ(view.colourMap, engine::SectionColourMap::Greys);
+    EXPECT_FLOAT_EQ(view.fillMinimum, 0.25F);
+    EXPECT_FLOAT_EQ(view.fillMaximum, 0.75F);
+    ASSERT_FALSE(view.colourTicks.empty());
+    for (const double t : view.colourTicks) {
+        EXPECT_GE(t, 0.25);
+        EXPECT_LE(t, 0.75);
+    }
+    // Back to automatic: the probability's own 0 to 1 and map.
+    engine::applySectionColours(request, session::SectionsColours{});
+    const engine::SectionView automatic = engine::buildSection(e, request);
+    EXPECT_EQ(automatic.colourMap, engine::SectionColourMap::YlGnBu);
+    EXPECT_FLOAT_EQ(automatic.fillMinimum, 0.0F);
+    EXPECT_FLOAT_EQ(automatic.fillMaximum, 1.0F);
+
+    request.range = std::pair{3.0, 3.0};
+    try {
+        engine::buildSection(e, request);
+        ADD_FAILURE() << "an empty range was drawn";
+    } catch (const data::Error& error) {
+        EXPECT_NE(std::string(error.what()).find("the fixed colour range 3 to 3 is refused"),
+                  std::string::npos)
+            << error.what();
+    }
 }
 
 TEST(SectionPlace, ReadsPlacesAsTyped) {

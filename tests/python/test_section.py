@@ -64,6 +64,10 @@ def test_probability_and_the_figure_in_each_format(era5_path, tmp_path):
     section = era5.section(level="500hPa", fill="probability", iso=250, cache=False)
     above = (era5.values[:, 0, :, :] > 250).mean(axis=0)
     np.testing.assert_allclose(section.fill, above, atol=1e-6)
+    assert (section.colour_map, section.fill_range) == ("ylgnbu", (0.0, 1.0))
+    fixed = era5.section(level="500hPa", fill="probability", iso=250, cache=False,
+                         colour_map="greys", range=(0.2, 0.8))
+    assert (fixed.colour_map, fixed.fill_range) == ("greys", pytest.approx((0.2, 0.8)))
     for suffix in ("png", "svg", "pdf"):
         path = tmp_path / ("map." + suffix)
         section.save(str(path))
@@ -78,6 +82,10 @@ def test_refusals_say_what_is_wrong(era5_path):
         result.section(level="500hPa", lat=45)
     with pytest.raises(ensil.ArgumentError, match="fill is refused"):
         result.section(level="500hPa", fill="median")
+    with pytest.raises(ensil.ArgumentError, match="colour_map 'jet' is refused"):
+        result.section(level="500hPa", colour_map="jet")
+    with pytest.raises(ensil.ArgumentError, match="lower end must lie below"):
+        result.section(level="500hPa", range=(260, 250))
     with pytest.raises(ensil.Error, match="outside the data"):
         result.section(level="1000hPa")
     with pytest.raises(ensil.Error, match="1 to 10"):
