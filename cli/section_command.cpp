@@ -135,15 +135,26 @@ QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResu
                              {"colour_map",
                               QString::fromUtf8(engine::sectionColourMapName(view.colourMap))}});
     }
+    if (view.medianMember >= 0) {
+        // Members numbered from 1, as the workbench shows them; the band's samples are those
+        // between the band members' union and intersection at the isovalue.
+        QJsonArray outliers;
+        for (const std::size_t m : view.outliers) outliers.append(static_cast<qint64>(m + 1));
+        o.insert("boxplot",
+                 QJsonObject{{"median", view.medianMember + 1},
+                             {"outliers", outliers},
+                             {"band_samples", static_cast<qint64>(engine::bandSampleCount(view))},
+                             {"band_edge_lines", static_cast<qint64>(view.bandEdges.size())}});
+    }
     return o;
 }
 
 }  // namespace
 
-// --colour-map, --range-min and --range-max, as the setting table names them.
-const session::SettingOptions& colourOptions() {
+// --colour-map, --range-min, --range-max and --band, as the setting table names them.
+const session::SettingOptions& sectionOptions() {
     static const session::SettingOptions options{"sections_colour_map", "sections_range_min",
-                                                 "sections_range_max"};
+                                                 "sections_range_max", "band"};
     return options;
 }
 
@@ -161,7 +172,7 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
     parser.addOptions({o.level, o.latitude, o.longitude, o.path, o.fill, o.iso, o.output, o.size,
                        o.noCache, o.demo, o.json, o.quiet});
     clusterOptions().addTo(parser);
-    colourOptions().addTo(parser);
+    sectionOptions().addTo(parser);
     if (auto done = parseSubcommand(parser, args, QStringLiteral("section"), out, err))
         return *done;
 
@@ -181,10 +192,10 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
                                           false, problem);
     }
     const QString path = parser.value(o.output);
-    const QStringList rangeGiven = colourOptions().given(parser).filter(QStringLiteral("range"));
+    const QStringList rangeGiven = sectionOptions().given(parser).filter(QStringLiteral("range"));
     if (!size || (parser.isSet(o.iso) && !iso) ||
         !clusterOptions().applyTo(parser, requested, problem) ||
-        !colourOptions().applyTo(parser, requested, problem)) {
+        !sectionOptions().applyTo(parser, requested, problem)) {
         // said below
     } else if (rangeGiven.size() == 2 &&
                !(requested.sectionsColours.minimum < requested.sectionsColours.maximum)) {
@@ -246,6 +257,14 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
             engine::sectionRequestFor(clusters, *place, fill->first, fill->second);
         requested.sectionsColours.fixedRange = !rangeGiven.isEmpty();
         engine::applySectionColours(section, requested.sectionsColours);
+        if (requested.render.showBand) {
+            section.boxplot = engine::sectionBoxplotOf(clusters);
+            if (!section.boxplot) {
+                progress.endLine();
+                err << "ensil section: note: no contour boxplot: the data were preprocessed in "
+                       "slabs, which makes none\n";
+            }
+        }
         const engine::SectionView view = engine::buildSection(*clusters.ensemble, section);
         const QSize pictureSize = size->second > 0 ? QSize(size->first, size->second)
                                                    : engine::sectionPictureSize(view, size->first);

@@ -118,6 +118,54 @@ void applySectionColours(SectionRequest& request, const session::SectionsColours
     if (colours.fixedRange) request.range = std::pair{colours.minimum, colours.maximum};
 }
 
+namespace {
+
+// The band's bounding fields over the band members, as section 17's band surfaces take them:
+// the lowest value is missing where any band member is (such a point is in no intersection),
+// the highest only where all are.
+void addBoxplot(SectionView& view, const SectionBoxplot& boxplot) {
+    const std::size_t samples = view.columns * view.rows;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    view.bandLowest.assign(samples, std::numeric_limits<float>::infinity());
+    view.bandHighest.assign(samples, nan);
+    for (const std::size_t m : boxplot.bandMembers) {
+        const std::vector<float>& values = view.memberValues[m];
+        for (std::size_t s = 0; s < samples; ++s) {
+            const float v = values[s];
+            view.bandLowest[s] = std::isnan(v) ? nan : std::min(view.bandLowest[s], v);
+            if (!std::isnan(v)) {
+                view.bandHighest[s] =
+                    std::isnan(view.bandHighest[s]) ? v : std::max(view.bandHighest[s], v);
+            }
+        }
+    }
+    for (const std::vector<float>* field : {&view.bandLowest, &view.bandHighest}) {
+        std::vector<SectionLine> edges =
+            toPlot(prep::contourLines(*field, view.columns, view.rows, view.isovalue), view);
+        view.bandEdges.insert(view.bandEdges.end(), edges.begin(), edges.end());
+    }
+    view.medianMember = boxplot.median;
+    view.outliers = boxplot.outliers;
+}
+
+}  // namespace
+
+bool SectionView::isOutlier(std::size_t member) const {
+    return std::find(outliers.begin(), outliers.end(), member) != outliers.end();
+}
+
+std::size_t bandSampleCount(const SectionView& view) {
+    std::size_t count = 0;
+    for (std::size_t s = 0; s < view.bandHighest.size(); ++s) count += view.inBand(s) ? 1 : 0;
+    return count;
+}
+
+std::optional<SectionBoxplot> sectionBoxplotOf(const PreprocessResult& result) {
+    if (result.boxplot.bandMembers.empty()) return std::nullopt;
+    return SectionBoxplot{result.boxplot.bandMembers, static_cast<int>(result.boxplot.median),
+                          result.boxplot.outliers};
+}
+
 SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& request) {
     const std::size_t memberCount = ensemble.members.size();
     if (memberCount == 0) {
@@ -131,6 +179,18 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
                           "member " + std::to_string(request.member + 1) + " is not one of the " +
                               std::to_string(memberCount) + " members (1 to " +
                               std::to_string(memberCount) + ")");
+    }
+    if (request.boxplot) {
+        const SectionBoxplot& b = *request.boxplot;
+        bool inRange = b.median < static_cast<int>(memberCount);
+        for (const auto* list : {&b.bandMembers, &b.outliers}) {
+            for (const std::size_t m : *list) inRange = inRange && m < memberCount;
+        }
+        if (!inRange) {
+            throw data::Error(data::ErrorKind::InvalidArgument,
+                              "the contour boxplot names members beyond the " +
+                                  std::to_string(memberCount) + " the section has");
+        }
     }
     if (request.range &&
         !(std::isfinite(request.range->first) && std::isfinite(request.range->second) &&
@@ -245,6 +305,9 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     colourSection(view, request.memberColours, request.clusterNumbers);
     view.meanContour =
         toPlot(prep::contourLines(moments.mean, view.columns, view.rows, request.isovalue), view);
+    view.isovalue = request.isovalue;
+    if (request.boxplot && !request.boxplot->bandMembers.empty())
+        addBoxplot(view, *request.boxplot);
 
     view.subtitle = "isovalue " + data::readableNumber(request.isovalue) +
                     (ensemble.units.empty() ? "" : " " + data::readableUnits(ensemble.units)) +

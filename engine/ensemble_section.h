@@ -48,6 +48,14 @@ enum class SectionColourMap { Viridis, Greys, RdBu, YlGnBu };
 // "viridis", "greys", "rdbu", "ylgnbu": as the setting table and Python name them.
 const char* sectionColourMapName(SectionColourMap map);
 
+// The contour boxplot drawn on a section (METHODS.md sections 17 and 22), by member index: the
+// 50 % band's members (deepest first, prep::bandMembersOf), the median and the outliers.
+struct SectionBoxplot {
+    std::vector<std::size_t> bandMembers;
+    int median = -1;
+    std::vector<std::size_t> outliers;
+};
+
 struct SectionRequest {
     SectionPlace place;
     SectionFill fill = SectionFill::Mean;
@@ -61,6 +69,8 @@ struct SectionRequest {
     // the mean, YlGnBu for a probability) over the section's own range.
     std::optional<SectionColourMap> colourMap;
     std::optional<std::pair<double, double>> range;  // fixed: lower below upper, both finite
+    // Rendering > Contour boxplot: the band, the median's contour and the outliers dashed.
+    std::optional<SectionBoxplot> boxplot;
 };
 
 struct SectionTick {
@@ -126,6 +136,21 @@ struct SectionView : SectionLayout {
     std::vector<double> colourTicks;  // round numbers inside the range
     std::vector<MemberContour> members;
     std::vector<SectionLine> meanContour;  // of the members' mean
+    float isovalue = 0.0F;
+    // The contour boxplot, when asked for: per sample the band members' lowest and highest
+    // values (the band is where the highest exceeds the isovalue and the lowest does not: the
+    // union less the intersection of their inside sets), the band's edges (both fields'
+    // contours), the median member (-1: none) and the outliers.
+    std::vector<float> bandLowest;
+    std::vector<float> bandHighest;
+    std::vector<SectionLine> bandEdges;
+    int medianMember = -1;
+    std::vector<std::size_t> outliers;
+    [[nodiscard]] bool isOutlier(std::size_t member) const;
+    // Whether sample s lies in the band: the highest value above the isovalue, the lowest not.
+    [[nodiscard]] bool inBand(std::size_t s) const {
+        return bandHighest[s] > isovalue && !(bandLowest[s] > isovalue);
+    }
     // Legend: each cluster number with its colour and member count, ascending.
     struct LegendEntry {
         int cluster = 0;
@@ -170,6 +195,13 @@ float sectionValueAt(const SectionView& view, const std::vector<float>& values, 
 // The same at a fractional lattice index (column, row), for a caller that walks the lattice.
 float sectionValueAtIndex(const SectionView& view, const std::vector<float>& values, double column,
                           double row);
+
+// The boxplot of a preprocessing run (prep::computeContourBoxplot's) as a section draws it;
+// nullopt when none was made (an ensemble preprocessed in slabs).
+struct PreprocessResult;
+std::optional<SectionBoxplot> sectionBoxplotOf(const PreprocessResult& result);
+// The samples of the lattice in the band (0 without a boxplot).
+std::size_t bandSampleCount(const SectionView& view);
 
 // Gives each member's contour its colour and makes the legend (as buildSection does from the
 // request), for new clusters without sampling the section again.

@@ -101,6 +101,31 @@ QImage fillImage(const SectionView& view, int width, int height) {
     return image;
 }
 
+// The contour boxplot's 50 % band as a translucent image over the plot: where the band members'
+// highest value exceeds the isovalue and their lowest does not (bilinear between samples, so its
+// edges are those fields' contours).
+QImage bandImage(const SectionView& view, int width, int height, QColor colour) {
+    QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
+    const QRgb inside = qPremultiply(colour.rgba());
+    std::vector<double> columnAt(static_cast<std::size_t>(width));
+    for (int x = 0; x < width; ++x) {
+        columnAt[static_cast<std::size_t>(x)] =
+            latticeIndexAt(view.columnPositions, (x + 0.5) / width);
+    }
+    for (int y = 0; y < height; ++y) {
+        const double row = latticeIndexAt(view.rowPositions, 1.0 - (y + 0.5) / height);
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < width; ++x) {
+            const double column = columnAt[static_cast<std::size_t>(x)];
+            const float high = sectionValueAtIndex(view, view.bandHighest, column, row);
+            const float low = sectionValueAtIndex(view, view.bandLowest, column, row);
+            // As SectionView::inBand, between samples.
+            line[x] = high > view.isovalue && !(low > view.isovalue) ? inside : 0;
+        }
+    }
+    return image;
+}
+
 // Line by line: QPainter strokes a path by filling its outline, and the outline of many lines
 // in one path (crossing each other) costs several times what the lines do one by one
 // (measured with ensil_section_benchmark: 720 against 260 ms for the demo's map).
@@ -190,6 +215,18 @@ void drawHalo(QPainter& painter, const SectionView& view, const QRectF& plot, in
 }
 
 constexpr double kSelectedWidth = 2.4;
+// The contour boxplot's marks: outliers' contours dashed; the median's a dark line in a light
+// casing, apart from every member's colour, from the dashed mean and from a selection.
+const QList<qreal> kOutlierDashes{3.0, 2.0};
+std::array<QPen, 2> medianPens(const SectionStyle& style) {
+    return {QPen(style.background, 4.4), QPen(style.text, 2.2)};
+}
+// The band: lighter over a fill, a pale shade of the text colour over none.
+QColor bandColour(const SectionView& view, const SectionStyle& style) {
+    QColor c = view.fill.empty() ? style.text : style.background;
+    c.setAlphaF(view.fill.empty() ? 0.16 : 0.45);
+    return c;
+}
 constexpr double kHoveredWidth = 3.0;
 
 struct Layout {
@@ -321,12 +358,39 @@ void drawSide(QPainter& painter, const SectionView& view, const QRectF& side,
     QPen mean(style.text, 1.8, Qt::DashLine);
     mean.setDashPattern({4.0, 2.5});
     entry(mean, QStringLiteral("mean of the members"));
+    if (view.medianMember >= 0) {
+        const QString name =
+            QString::fromStdString(view.memberNames[static_cast<std::size_t>(view.medianMember)]);
+        const std::array<QPen, 2> pens = medianPens(style);
+        painter.setPen(pens[0]);  // the casing, under entry()'s line
+        painter.drawLine(QPointF(side.left(), y + line / 2),
+                         QPointF(side.left() + 22, y + line / 2));
+        entry(pens[1], QStringLiteral("median: %1").arg(name));
+        // The band's swatch: its shade over the fill's middle colour (or the background).
+        const QRectF swatch(side.left(), y + 0.15 * line, 22, 0.7 * line);
+        if (!view.fill.empty()) painter.fillRect(swatch, QColor(colourAt(view.colourMap, 0.5)));
+        painter.fillRect(swatch, bandColour(view, style));
+        entry(QPen(Qt::NoPen), QStringLiteral("50 % band"));
+        if (!view.outliers.empty()) {
+            QPen dashed(style.text, 1.0);
+            dashed.setDashPattern(kOutlierDashes);
+            entry(dashed, QStringLiteral("outliers (%1)").arg(view.outliers.size()));
+        }
+    }
     for (const SectionView::LegendEntry& e : view.legend) {
         entry(QPen(toColour(e.colour), 2.0),
               QStringLiteral("cluster %1 (%2)").arg(e.cluster).arg(e.members));
     }
 }
 
+}  // namespace
+
+namespace {
+// The legend's lines for the contour boxplot: the median, the band, the outliers.
+std::size_t boxplotRows(const SectionView& view) {
+    if (view.medianMember < 0) return 0;
+    return view.outliers.empty() ? 2 : 3;
+}
 }  // namespace
 
 QRectF sectionPlotRect(const SectionView& view, const QRectF& page, const SectionStyle& style) {
@@ -352,7 +416,8 @@ QSize sectionPictureSize(const SectionView& view, int width, const SectionStyle&
     // The side column needs its caption, a colour bar and the legend's lines.
     const double side =
         (view.fill.empty() ? 0.0 : 3.0 + 6.0 + 1.2) * line +
-        (p.legend ? 1.25 * line * static_cast<double>(view.legend.size() + 1) : 0.0);
+        (p.legend ? 1.25 * line * static_cast<double>(view.legend.size() + 1 + boxplotRows(view))
+                  : 0.0);
     const double plotHeight = std::max(wide.width() / view.aspect, side);
     return {width, static_cast<int>(
                        std::ceil(plotHeight + 2 * p.margin + (p.linesAbove + kLinesBelow) * line))};
@@ -414,6 +479,17 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
         painter.setPen(QColor(60, 60, 60));
         painter.drawText(box, Qt::AlignCenter, text);
     }
+    const bool boxplot = !view.bandHighest.empty();
+    if (boxplot && view.columns >= 2 && view.rows >= 2) {
+        const QTransform t = painter.deviceTransform();
+        const double scale = std::max(1.0, std::sqrt(std::abs(t.determinant())));
+        const int w = std::clamp(static_cast<int>(plot.width() * scale), 2, 1200);
+        const int h = std::clamp(static_cast<int>(plot.height() * scale), 2, 1200);
+        painter.drawImage(plot, bandImage(view, w, h, bandColour(view, style)));
+        QColor edge = style.text;
+        edge.setAlphaF(0.55);
+        strokeLines(painter, view.bandEdges, plot, QPen(edge, 0.8));
+    }
     // Members: a dark halo under every line first, then the colours, the selected last.
     const bool anySelected = !emphasis.selected.empty();
     const auto isHidden = [&](std::size_t m) {
@@ -424,17 +500,27 @@ void paintSection(QPainter& painter, const SectionView& view, const QRectF& page
                emphasis.selected.end();
     };
     // Over a fill only: on a plain background the lines read as they are.
-    if (!view.fill.empty()) drawHalo(painter, view, plot, anySelected ? 40 : 100, isHidden);
+    // With the contour boxplot the members step back, as in the 3D view: the band, the median
+    // and the outliers summarise them.
+    const bool stepBack = anySelected || boxplot;
+    if (!view.fill.empty()) drawHalo(painter, view, plot, stepBack ? 40 : 100, isHidden);
     for (const MemberContour& c : view.members) {
         if (isHidden(c.member) || isSelected(c.member) ||
             static_cast<int>(c.member) == emphasis.hovered) {
             continue;
         }
         QColor colour = toColour(c.colour);
-        if (anySelected) colour.setAlphaF(0.35);
+        if (anySelected || (boxplot && !view.isOutlier(c.member))) colour.setAlphaF(0.35);
         QPen thin(colour, 1.0);
         thin.setCosmetic(true);
+        if (view.isOutlier(c.member)) thin.setDashPattern(kOutlierDashes);
         strokeLines(painter, c.lines, plot, thin);
+    }
+    if (view.medianMember >= 0 && !isHidden(static_cast<std::size_t>(view.medianMember))) {
+        for (const QPen& pen : medianPens(style)) {
+            strokeLines(painter, view.members[static_cast<std::size_t>(view.medianMember)].lines,
+                        plot, pen);
+        }
     }
     for (const MemberContour& c : view.members) {
         if (!isHidden(c.member) && isSelected(c.member) &&

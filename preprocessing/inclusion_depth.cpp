@@ -142,13 +142,8 @@ ContourBoxplot computeContourBoxplot(const data::Ensemble& ensemble, float isova
         box.depth[i] = std::min(inOthers, othersIn) / static_cast<double>(n - 1);
     }
 
-    // Deepest first; a stable sort keeps equals in index order.
-    std::vector<std::size_t> order(n);
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return box.depth[a] > box.depth[b]; });
-    box.median = order.front();
-    box.bandMembers.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>((n + 1) / 2));
+    box.bandMembers = bandMembersOf(box.depth);
+    box.median = box.bandMembers.front();
 
     // Sun and Genton's fence, 1.5 interquartile ranges below the first quartile, with numpy's
     // default ("linear") quartiles. Depth measures centrality, so only the low side has outliers.
@@ -162,6 +157,16 @@ ContourBoxplot computeContourBoxplot(const data::Ensemble& ensemble, float isova
     }
     data::report(progress, 1.0);
     return box;
+}
+
+std::vector<std::size_t> bandMembersOf(std::span<const double> depth) {
+    // Deepest first; a stable sort keeps equals in index order.
+    std::vector<std::size_t> order(depth.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return depth[a] > depth[b]; });
+    order.resize((depth.size() + 1) / 2);
+    return order;
 }
 
 }  // namespace ensil::prep

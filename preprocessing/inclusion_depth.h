@@ -39,6 +39,10 @@ struct ContourBoxplot {
     std::vector<std::size_t> outliers;
 };
 
+// The 50 % band's members from the depths: the ceil(N / 2) deepest, deepest first, equals in
+// index order (so the first is the median). Empty for no depths.
+std::vector<std::size_t> bandMembersOf(std::span<const double> depth);
+
 // The q-quantile (0 <= q <= 1) of ascending values by linear interpolation between order
 // statistics: position h = (n - 1) q, value v[floor h] + (h - floor h) (v[floor h + 1] -
 // v[floor h]); numpy's default ("linear") method. Throws data::Error(InvalidArgument) for no

@@ -117,7 +117,8 @@ const std::array<Setting, 36> kSettings{{
      "Contour boxplot band",
      "",
      "The contour boxplot's 50 % band as a translucent envelope between its two bounding "
-     "surfaces, with the outlying members' silhouettes dashed",
+     "surfaces (shaded on the sections, the median's contour drawn thick), with the outlying "
+     "members' silhouettes and contours dashed",
      0,
      1,
      0,

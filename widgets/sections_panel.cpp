@@ -28,6 +28,7 @@
 #include "engine/section_place.h"
 #include "geo/map_projection.h"
 #include "gl/view_overlay.h"
+#include "preprocessing/inclusion_depth.h"
 #include "session/session_model.h"
 #include "session/setting_table.h"
 #include "widgets/section_canvas.h"
@@ -67,6 +68,22 @@ session::SectionPlaces::Cross crossKindOf(const engine::SectionPlace& place) {
     return place.kind == engine::SectionKind::Latitude    ? session::SectionPlaces::Cross::Latitude
            : place.kind == engine::SectionKind::Longitude ? session::SectionPlaces::Cross::Longitude
                                                           : session::SectionPlaces::Cross::Path;
+}
+
+// The contour boxplot of the isovalue on screen, from the members' depths; nullopt until they
+// are known.
+std::optional<engine::SectionBoxplot> boxplotOf(const workbench::MemberSelection& selection) {
+    if (selection.medianMember() < 0) return std::nullopt;
+    std::vector<double> depths;
+    engine::SectionBoxplot boxplot;
+    for (int m = 0; m < selection.memberCount(); ++m) {
+        depths.push_back(selection.depth(m));
+        if (std::isnan(depths.back())) return std::nullopt;
+        if (selection.isOutlier(m)) boxplot.outliers.push_back(static_cast<std::size_t>(m));
+    }
+    boxplot.bandMembers = prep::bandMembersOf(depths);
+    boxplot.median = selection.medianMember();
+    return boxplot;
 }
 
 engine::SectionFill engineFill(session::SectionsFill fill) {
@@ -254,7 +271,11 @@ SectionsPanel::SectionsPanel(session::SessionModel* model, workbench::MemberSele
         emit placesEdited();
     });
     connect(m_model, &session::SessionModel::changed, this, [this](session::SessionParts parts) {
-        if (!parts.testFlag(session::SessionPart::Sections)) return;
+        // Rendering > Contour boxplot draws the boxplot on the sections too.
+        if (!parts.testFlag(session::SessionPart::Sections) &&
+            m_model->state().render.showBand == m_boxplotDrawn) {
+            return;
+        }
         showPlaces();
         rebuild();
     });
@@ -385,6 +406,7 @@ void SectionsPanel::askFixedRange() {
 }
 
 void SectionsPanel::rebuild() {
+    m_boxplotDrawn = m_model->state().render.showBand;
     if (!m_ensemble) return;
     if (!m_shown) {
         m_dirty = true;
@@ -437,6 +459,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
     r.memberColours = memberColours(*m_selection);
     r.clusterNumbers = m_selection->memberClusterNumbers();
     engine::applySectionColours(r, m_model->state().sectionsColours);
+    if (m_model->state().render.showBand) r.boxplot = boxplotOf(*m_selection);
     return r;
 }
 

@@ -6,7 +6,8 @@
 // projects); without any, the sections lie where the members' contours are
 // (engine::defaultSections). The map shows the cross-section's path, the cross-section the map's
 // level; a drag with the right button across the map draws a new path. Selection, visibility, hover
-// and clusters follow the shared workbench::MemberSelection both ways. Sections are built in the
+// and clusters follow the shared workbench::MemberSelection both ways; with Rendering > Contour
+// boxplot on, the boxplot of its depths is drawn too. Sections are built in the
 // background and only while the dock is shown. GUI thread only.
 #pragma once
 
@@ -109,7 +110,8 @@ private:
     std::shared_ptr<const data::Ensemble> m_ensemble;
     float m_isovalue = 0.0F;
     bool m_shown = false;
-    bool m_dirty = false;  // data or places changed while the dock was hidden
+    bool m_dirty = false;         // data or places changed while the dock was hidden
+    bool m_boxplotDrawn = false;  // Rendering > Contour boxplot when last built
     bool m_mapPending = false;
     bool m_crossPending = false;
     bool m_defaultsPending = false;

@@ -131,7 +131,7 @@ session::SectionsColours coloursOf(const std::string& colourMap,
 PySection section(const PyPreprocessResult& self, const py::object& level, const py::object& lat,
                   const py::object& lon, const py::object& path, const std::string& fill,
                   const std::string& colourMap,
-                  const std::optional<std::pair<double, double>>& range) {
+                  const std::optional<std::pair<double, double>>& range, bool band) {
     const engine::SectionPlace place = placeOf(level, lat, lon, path);
     std::string problem;
     const auto chosen = engine::parseSectionFill(fill, problem);
@@ -139,6 +139,14 @@ PySection section(const PyPreprocessResult& self, const py::object& level, const
     engine::SectionRequest request =
         engine::sectionRequestFor(*self.result, place, chosen->first, chosen->second);
     engine::applySectionColours(request, coloursOf(colourMap, range));
+    if (band) {
+        request.boxplot = engine::sectionBoxplotOf(*self.result);
+        if (!request.boxplot) {
+            throw ArgumentError(
+                "band is refused: this result has no contour boxplot (an "
+                "ensemble preprocessed in slabs makes none)");
+        }
+    }
     engine::SectionView view;
     {
         const py::gil_scoped_release release;
@@ -182,6 +190,26 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
             "The filled field, rows x columns; None for fill='none'.")
         .def_property_readonly("fill_caption",
                                [](const PySection& s) { return s.view->fillCaption; })
+        .def_property_readonly(
+            "band",
+            [](const PySection& s) -> py::object {
+                const engine::SectionView& v = *s.view;
+                if (v.bandHighest.empty()) return py::none();
+                py::array_t<bool> out(
+                    {static_cast<py::ssize_t>(v.rows), static_cast<py::ssize_t>(v.columns)});
+                bool* to = out.mutable_data();
+                for (std::size_t i = 0; i < v.bandHighest.size(); ++i) to[i] = v.inBand(i);
+                return out;
+            },
+            "With band=True, rows x columns: True in the contour boxplot's 50 % band (some of "
+            "its members above the isovalue, not all); else None.")
+        .def_property_readonly(
+            "median_member",
+            [](const PySection& s) -> py::object {
+                if (s.view->medianMember < 0) return py::none();
+                return py::int_(s.view->medianMember);
+            },
+            "With band=True, the median member's index (from 0), whose contour is drawn thick.")
         .def_property_readonly(
             "colour_map",
             [](const PySection& s) { return engine::sectionColourMapName(s.view->colourMap); },
@@ -240,6 +268,7 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
     result.def("section", &section, py::arg("level") = py::none(), py::arg("lat") = py::none(),
                py::arg("lon") = py::none(), py::arg("path") = py::none(), py::arg("fill") = "mean",
                py::arg("colour_map") = "automatic", py::arg("range") = py::none(),
+               py::arg("band") = false,
                R"doc(
 A map or a cross-section at this result's isovalue, members in their clusters' colours:
 level= a map ("500hPa", "5km", "index:3", or a number in the vertical axis's units); lat= or
@@ -247,7 +276,8 @@ lon= a cross-section along a latitude or longitude (45, "45N", "10W"); path= one
 great circle between two points, ((lon, lat), (lon, lat)) or "LON,LAT:LON,LAT". fill= mean,
 spread, probability, member:N, anomaly:N (N from 1) or none. colour_map= automatic (by the
 fill), viridis, greys, rdbu or ylgnbu; range=(lower, upper) fixes the colour bar (by default the
-section's own values). Raises ensil.ArgumentError for a malformed place, colour map or range and
+section's own values); band=True draws the contour boxplot: its 50 % band shaded, the median's
+contour thick, the outliers' dashed. Raises ensil.ArgumentError for a malformed place, colour map or range and
 ensil.Error for a place outside the data.)doc");
 }
 

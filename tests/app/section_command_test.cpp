@@ -86,13 +86,18 @@ TEST(SectionCommand, PdfAndPathsAcrossTheMap) {
     const test::EnsilRun r =
         test::runEnsil({"section", test::kEra5, "--var", "t", "--path=-30,60:40,30", "--fill",
                         "anomaly:2", "--out", pdf, "--no-cache", "--quiet", "--colour-map", "greys",
-                        "--range-min", "-4", "--range-max", "6", "--json"});
+                        "--range-min", "-4", "--range-max", "6", "--json", "--band"});
     ASSERT_EQ(r.code, 0) << r.err.toStdString();
     // The colour map and fixed range asked for, not the anomaly's own (RdBu, symmetric).
     const QJsonObject fill = test::jsonOf(r)["fill"].toObject();
     EXPECT_EQ(fill["colour_map"].toString(), QStringLiteral("greys"));
     EXPECT_EQ(fill["minimum"].toDouble(), -4.0);
     EXPECT_EQ(fill["maximum"].toDouble(), 6.0);
+    // --band: the contour boxplot, its median numbered as the workbench numbers members.
+    const QJsonObject boxplot = test::jsonOf(r)["boxplot"].toObject();
+    EXPECT_GE(boxplot["median"].toInt(), 1);
+    EXPECT_LE(boxplot["median"].toInt(), 10);
+    EXPECT_GT(boxplot["band_samples"].toInt(), 0);
     QFile file(pdf);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     EXPECT_TRUE(file.read(5).startsWith("%PDF-"));

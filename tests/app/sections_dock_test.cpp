@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLineEdit>
@@ -20,6 +21,7 @@
 #include "tests/app/workbench_helpers.h"
 #include "tests/support/scoped_cache_home.h"
 #include "tests/support/temp_dir.h"
+#include "widgets/render_panel.h"
 #include "widgets/section_canvas.h"
 #include "widgets/sections_panel.h"
 #include "workbench/isovalue_session.h"
@@ -196,6 +198,18 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
             }
         }
     }
+    // Rendering > Contour boxplot draws it on the sections: the median is the workbench's, the
+    // band the samples between the deepest half's union and intersection.
+    auto* band = window.renderPanel()->findChild<QCheckBox*>("band");
+    ASSERT_NE(band, nullptr);
+    band->setChecked(true);
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    const engine::SectionView& boxplot = *panel->mapCanvas()->view();
+    EXPECT_EQ(boxplot.medianMember, window.memberSelection()->medianMember());
+    EXPECT_GT(engine::bandSampleCount(boxplot), 0U);
+    band->setChecked(false);
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    EXPECT_EQ(panel->mapCanvas()->view()->medianMember, -1);
     // Exported as a figure a journal takes.
     test::TempDir dir;
     QString error;

@@ -57,6 +57,22 @@ def test_spread_along_a_latitude_is_numpys_standard_deviation(era5_path):
     assert section.title == "t along 45°N"
 
 
+def test_the_band_is_between_the_deepest_halfs_union_and_intersection(era5_path, tmp_path):
+    era5 = ensil.open(era5_path, var="t")
+    result = era5.preprocess(iso=250, cache=False)
+    section = result.section(level="500hPa", band=True)
+    assert section.median_member == result.median_member
+    # The band from its definition, NumPy as the oracle: the ceil(N / 2) deepest members
+    # (equals in index order), some above the isovalue at a point but not all.
+    deepest = np.argsort(-result.depth, kind="stable")[:(len(result.depth) + 1) // 2]
+    inside = section.values[deepest] > 250
+    expected = inside.any(axis=0) & ~inside.all(axis=0)
+    assert expected.sum() > 20
+    np.testing.assert_array_equal(section.band, expected)
+    assert result.section(level="500hPa").band is None
+    section.save(str(tmp_path / "band.png"))
+
+
 def test_probability_and_the_figure_in_each_format(era5_path, tmp_path):
     era5 = ensil.open(era5_path, var="t")
     # A bare number is in the axis's own units (Pa here).
