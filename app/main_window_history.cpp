@@ -37,10 +37,7 @@ void MainWindow::createHistory(QMenu* edit) {
     // Recorded after the edit has reached the view (queued: every direct handler ran first).
     const auto record = [this] { m_history->record(); };
     const auto queued = Qt::QueuedConnection;
-    connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, record, queued);
-    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this, record, queued);
-    connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, record, queued);
-    connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, record, queued);
+    connect(m_renderPanel, &ui::RenderPanel::edited, this, record, queued);
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, record, queued);
     connect(m_toolbar, &ui::RenderToolbar::isovalueChanged, this, record, queued);
     connect(m_selection, &workbench::MemberSelection::clustersChanged, this, record, queued);

@@ -44,9 +44,8 @@ std::array<ui::PlaneAxis, 3> planeAxes(const data::Grid& grid, const data::Displ
 }  // namespace
 
 void MainWindow::createRenderDocks() {
-    gl::Renderer& renderer = m_view->renderer();
     m_renderPanel = new ui::RenderPanel;
-    m_renderPanel->setSettings(renderer.settings());
+    m_renderPanel->showSession(m_model->state());
     auto* renderDock = new QDockWidget(tr("Rendering"), this);
     renderDock->setObjectName(QStringLiteral("renderingDock"));
     // Scrolled rather than squeezing the member table that shares the right side: the panel
@@ -80,23 +79,8 @@ void MainWindow::createRenderDocks() {
     }
 
     // Every edit goes into the session; the session's bindings show it (main_window_session.cpp).
-    connect(m_renderPanel, &ui::RenderPanel::settingsEdited, this, [this] {
-        m_model->update(
-            [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
-    });
-    connect(m_renderPanel, &ui::RenderPanel::verticalExaggerationChanged, this, [this](double f) {
-        m_model->update(
-            [f](session::SessionState& s) { s.verticalExaggeration = static_cast<float>(f); });
-    });
-    connect(m_renderPanel, &ui::RenderPanel::projectionChanged, this, [this](bool orthographic) {
-        m_model->update(
-            [orthographic](session::SessionState& s) { s.camera.orthographic = orthographic; });
-    });
-    connect(m_renderPanel, &ui::RenderPanel::backgroundChanged, this, [this](const QColor& c) {
-        m_model->update([&c](session::SessionState& s) {
-            s.background = {static_cast<float>(c.redF()), static_cast<float>(c.greenF()),
-                            static_cast<float>(c.blueF())};
-        });
+    connect(m_renderPanel, &ui::RenderPanel::edited, this, [this] {
+        m_model->update([this](session::SessionState& s) { m_renderPanel->applyTo(s); });
     });
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, [this] {
         m_model->update(
@@ -129,8 +113,7 @@ void MainWindow::showOutlyingnessRange() {
                                 : units + QStringLiteral("\u00b2");
     if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
         // The first band the panel now shows is the one drawn (and saved, and undone).
-        m_model->update(
-            [this](session::SessionState& s) { s.render = m_renderPanel->applyTo(s.render); });
+        m_model->update([this](session::SessionState& s) { m_renderPanel->applyTo(s); });
         if (m_history != nullptr) m_history->absorb();
     }
 }

@@ -81,7 +81,6 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     // First the box, which the plane is placed across: without a new plane, the plane keeps
     // its place across the reshaped box (a change of the session of its own, made here).
     if (parts & SessionPart::Exaggeration) {
-        m_renderPanel->setVerticalExaggeration(m_model->state().verticalExaggeration);
         engine::showSession(renderer, m_model->state(), sceneData(), SessionPart::Exaggeration);
         if (parts & SessionPart::Plane) {
             setPlaneBox();
@@ -95,8 +94,11 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
     engine::showSession(
         renderer, s, sceneData(),
         parts & ~session::SessionParts(SessionPart::Exaggeration | SessionPart::Data));
+    if (parts & (SessionPart::Rendering | SessionPart::Plane | SessionPart::Exaggeration |
+                 SessionPart::Background | SessionPart::Projection)) {
+        m_renderPanel->showSession(s);
+    }
     if (parts & (SessionPart::Rendering | SessionPart::Plane)) {
-        m_renderPanel->setSettings(s.render);
         m_session->setContextSurfacesWanted(s.render.drawsContextSurfaces());
         showSection();
     }
@@ -105,11 +107,6 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         const QSignalBlocker block(m_planeAction);
         m_planeAction->setChecked(s.render.plane.enabled);
     }
-    if (parts & SessionPart::Background) {
-        m_renderPanel->setBackground(
-            QColor::fromRgbF(s.background.r, s.background.g, s.background.b));
-    }
-    if (parts & SessionPart::Projection) m_renderPanel->setOrthographic(s.camera.orthographic);
     if (parts & SessionPart::Linkage) {
         m_clusterPanel->setLinkage(s.linkage);
         m_session->setLinkage(s.linkage);

@@ -1,21 +1,21 @@
-// The rendering panel: how members are drawn (mode, silhouette thickness tau, surface
-// opacity, the mean surface, axis labels and legend), density-based silhouette removal (o*_min,
-// o*_max, group size s_G), vertical exaggeration, projection and background. It edits a
-// gl::RenderSettings value and says when the user changed it; it knows nothing of the renderer. GUI
-// thread only.
+// The rendering panel: how members are drawn (mode, silhouette thickness tau, surface opacity,
+// the context surface, the contour boxplot), density-based silhouette removal (o*_min, o*_max,
+// group size s_G), and the scene (vertical exaggeration, projection, background, axis labels,
+// legend, title, rims, floor, map lines). It is made from a list of the setting table's ids,
+// one SettingControl each (widgets/setting_controls.h), so a new setting shows here by adding
+// its id to that list. It shows a session's values and writes its own into a session; it knows
+// nothing of the renderer. GUI thread only.
 #pragma once
 
-#include <QColor>
 #include <QWidget>
+#include <string_view>
+#include <vector>
 
 #include "gl/render_settings.h"
+#include "session/session_state.h"
+#include "widgets/setting_controls.h"
 
-class QCheckBox;
-class QComboBox;
 class QDoubleSpinBox;
-class QGroupBox;
-class QSpinBox;
-class QToolButton;
 
 namespace ensil::ui {
 
@@ -24,63 +24,33 @@ class RenderPanel : public QWidget {
 public:
     explicit RenderPanel(QWidget* parent = nullptr);
 
-    // Shows these values without emitting anything. The cutting plane is not edited here.
-    void setSettings(const gl::RenderSettings& settings);
-    // `settings` with this panel's values written over it (the plane is left as it is).
-    [[nodiscard]] gl::RenderSettings applyTo(gl::RenderSettings settings) const;
+    // Shows the session's values of the panel's settings without emitting anything.
+    void showSession(const session::SessionState& state);
+    // Writes the panel's values into `state` (every setting it shows; nothing else).
+    void applyTo(session::SessionState& state) const;
 
-    // Switches the mode as the user would (emits settingsEdited).
+    // Switches the mode as the user would (emits edited).
     void setMode(gl::RenderMode mode);
 
     // The largest outlyingness of the meshes on screen, in the variable's units squared: the
     // removal thresholds range over [0, maximum] (wider when they hold larger values). The
-    // first range also sets a first band, the lower half: returns true then (applyTo() holds
-    // thresholds that differ from the settings last given).
+    // first range also sets a first band, the lower half: returns true then (applyTo() writes
+    // thresholds that differ from the session last shown).
     bool setOutlyingnessRange(double maximum, const QString& unitsSquared);
-    void setVerticalExaggeration(double factor);
-    [[nodiscard]] double verticalExaggeration() const;
-    void setOrthographic(bool orthographic);
-    [[nodiscard]] bool orthographic() const;
-    void setBackground(const QColor& colour);
-    [[nodiscard]] QColor background() const { return m_background; }
+
+    // The control of a setting the panel shows; nullptr for one it does not.
+    [[nodiscard]] SettingControl* control(std::string_view id) const;
 
 signals:
-    // Any of the values applyTo() writes changed by the user.
-    void settingsEdited();
-    void verticalExaggerationChanged(double factor);
-    void projectionChanged(bool orthographic);
-    void backgroundChanged(const QColor& colour);
+    void edited();  // the user changed one of the panel's settings
 
 private:
-    void chooseBackground();
-    void showBackground();
+    SettingControl* add(std::string_view id, QWidget* parent, SettingControl::Options options = {});
+    [[nodiscard]] QDoubleSpinBox* numberBox(std::string_view id) const;
+    void keepRemovalBandOrdered(bool minimumMoved);
     void updateEnabled();
 
-    QComboBox* m_mode;
-    QDoubleSpinBox* m_thickness;
-    QDoubleSpinBox* m_opacity;
-    QCheckBox* m_mean;
-    QDoubleSpinBox* m_meanOpacity;
-    QComboBox* m_context;
-    QCheckBox* m_band;
-    QCheckBox* m_contextSpread;
-    QCheckBox* m_axes;
-    QCheckBox* m_legend;
-    QCheckBox* m_rims;
-    QComboBox* m_floor;
-    QSpinBox* m_floorLevel;
-    QGroupBox* m_map;
-    QCheckBox* m_coastlines;
-    QCheckBox* m_borders;
-    QCheckBox* m_graticule;
-    QGroupBox* m_removal;
-    QDoubleSpinBox* m_removalMin;
-    QDoubleSpinBox* m_removalMax;
-    QSpinBox* m_groupSize;
-    QDoubleSpinBox* m_exaggeration;
-    QComboBox* m_projection;
-    QToolButton* m_backgroundButton;
-    QColor m_background;
+    std::vector<SettingControl*> m_controls;
 };
 
 }  // namespace ensil::ui

@@ -39,7 +39,7 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     EXPECT_EQ(renderer.settings().mode, gl::RenderMode::Surfaces);
 
     // The removal range was taken from the meshes: its top is their largest outlyingness.
-    auto* removalMax = window.renderPanel()->findChild<QDoubleSpinBox*>("removalMax");
+    auto* removalMax = window.renderPanel()->findChild<QDoubleSpinBox*>("removal_max");
     ASSERT_NE(removalMax, nullptr);
     EXPECT_GT(removalMax->maximum(), 0.0);
     EXPECT_EQ(removalMax->suffix(), QStringLiteral(" (m s\u207b\u00b9)\u00b2")) << "units squared";
@@ -57,7 +57,7 @@ TEST(MainWindowRenderDocks, PanelsAndKeysChangeWhatTheViewDraws) {
     EXPECT_NEAR(renderer.settings().plane.offset, z500, 0.002F);
 
     // Stretching the vertical keeps the plane at 500 hPa.
-    window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration")->setValue(2.0);
+    window.renderPanel()->findChild<QDoubleSpinBox*>("vertical_exaggeration")->setValue(2.0);
     const float stretched =
         renderer.frame().toDisplay({grid.x().front(), grid.y().front(), 500.0}).z;
     EXPECT_NEAR(stretched, 2.0F * z500, 1e-4F);
@@ -76,8 +76,9 @@ TEST(MainWindowRenderDocks, TheLastRenderingSettingsComeBackNextTime) {
     app::MainWindow again;
     EXPECT_EQ(again.view()->renderer().settings().mode, gl::RenderMode::Spaghetti);
     EXPECT_FLOAT_EQ(again.view()->renderer().settings().thickness, 0.02F);
-    EXPECT_EQ(again.renderPanel()->applyTo({}).mode, gl::RenderMode::Spaghetti)
-        << "the panel shows what is used";
+    session::SessionState shown;
+    again.renderPanel()->applyTo(shown);
+    EXPECT_EQ(shown.render.mode, gl::RenderMode::Spaghetti) << "the panel shows what is used";
     QSettings().remove(QStringLiteral("rendering"));
 }
 

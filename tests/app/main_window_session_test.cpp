@@ -25,7 +25,7 @@ using SessionBindings = test::SmallDemoWorkbench;
 }  // namespace
 
 TEST_F(SessionBindings, EveryControlWritesIntoTheSessionThatIsSaved) {
-    window.renderPanel()->findChild<QDoubleSpinBox*>("opacity")->setValue(0.55);
+    window.renderPanel()->findChild<QDoubleSpinBox*>("surface_opacity")->setValue(0.55);
     window.renderPanel()->setMode(gl::RenderMode::Surfaces);
     window.memberSelection()->setClusterCount(3);  // as the dendrogram's cut line does
     window.memberSelection()->setMemberVisible(1, false);
@@ -48,8 +48,8 @@ TEST_F(SessionBindings, AnExaggerationKeepsThePlaneAcrossTheBoxAndUndoPutsBothBa
     QCoreApplication::processEvents();  // the plane's own undo step is recorded (queued)
     const float offsetBefore = window.view()->renderer().settings().plane.offset;
     QSignalSpy built(window.isovalueSession(), &workbench::IsovalueSession::finished);
-    window.renderPanel()->setVerticalExaggeration(1.0);
-    window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration")->setValue(3.0);
+    window.renderPanel()->control("vertical_exaggeration")->showValue(1.0);
+    window.renderPanel()->findChild<QDoubleSpinBox*>("vertical_exaggeration")->setValue(3.0);
     ASSERT_TRUE(built.wait(60000)) << "a new exaggeration rebuilds the attributes";
     EXPECT_FLOAT_EQ(window.view()->renderer().frame().verticalExaggeration(), 3.0F);
     EXPECT_NEAR(plane->position(), 0.3, 1e-3) << "the plane keeps its place across the box";

@@ -228,7 +228,7 @@ TEST(MainWindow, ShowsSilhouettesAtADefaultIsovalueAndRecoloursByClusters) {
     // Vertical exaggeration stretches the box and rebuilds the display-space attributes.
     const float height = window.view()->renderer().frame().boxMax().z;
     built.clear();
-    auto* exaggeration = window.renderPanel()->findChild<QDoubleSpinBox*>("exaggeration");
+    auto* exaggeration = window.renderPanel()->findChild<QDoubleSpinBox*>("vertical_exaggeration");
     exaggeration->setValue(3.0);
     EXPECT_FLOAT_EQ(window.view()->renderer().frame().boxMax().z, 3.0F * height);
     ASSERT_TRUE(built.wait(60000)) << "attributes were not rebuilt";
