@@ -78,10 +78,12 @@ QRgb colourAt(SectionColourMap map, double t) {
     return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();
 }
 
-// The filled field drawn into an image of `width` x `height` pixels covering the plot.
-QImage fillImage(const SectionView& view, int width, int height) {
-    QImage image(width, height, QImage::Format_RGB32);
-    const double range = static_cast<double>(view.fillMaximum) - view.fillMinimum;
+// An image of `width` x `height` pixels covering the plot, each pixel `colourOf(column, row)` at
+// its centre's fractional lattice index.
+template <typename ColourOf>
+QImage latticeImage(const SectionView& view, int width, int height, QImage::Format format,
+                    ColourOf colourOf) {
+    QImage image(width, height, format);
     // Each pixel column's lattice column, found once (not per pixel).
     std::vector<double> columnAt(static_cast<std::size_t>(width));
     for (int x = 0; x < width; ++x) {
@@ -91,39 +93,33 @@ QImage fillImage(const SectionView& view, int width, int height) {
     for (int y = 0; y < height; ++y) {
         const double row = latticeIndexAt(view.rowPositions, 1.0 - (y + 0.5) / height);
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
-        for (int x = 0; x < width; ++x) {
-            const float v =
-                sectionValueAtIndex(view, view.fill, columnAt[static_cast<std::size_t>(x)], row);
-            line[x] = std::isnan(v) ? kMissing.rgb()
-                                    : colourAt(view.colourMap, (v - view.fillMinimum) / range);
-        }
+        for (int x = 0; x < width; ++x)
+            line[x] = colourOf(columnAt[static_cast<std::size_t>(x)], row);
     }
     return image;
 }
 
-// The contour boxplot's 50 % band as a translucent image over the plot: where the band members'
-// highest value exceeds the isovalue and their lowest does not (bilinear between samples, so its
-// edges are those fields' contours).
+// The filled field.
+QImage fillImage(const SectionView& view, int width, int height) {
+    const double range = static_cast<double>(view.fillMaximum) - view.fillMinimum;
+    return latticeImage(view, width, height, QImage::Format_RGB32, [&](double column, double row) {
+        const float v = sectionValueAtIndex(view, view.fill, column, row);
+        return std::isnan(v) ? kMissing.rgb()
+                             : colourAt(view.colourMap, (v - view.fillMinimum) / range);
+    });
+}
+
+// The contour boxplot's 50 % band, translucent over the plot: where the band members' highest
+// value exceeds the isovalue and their lowest does not (as SectionView::inBand, bilinear between
+// samples, so its edges are those fields' contours).
 QImage bandImage(const SectionView& view, int width, int height, QColor colour) {
-    QImage image(width, height, QImage::Format_ARGB32_Premultiplied);
     const QRgb inside = qPremultiply(colour.rgba());
-    std::vector<double> columnAt(static_cast<std::size_t>(width));
-    for (int x = 0; x < width; ++x) {
-        columnAt[static_cast<std::size_t>(x)] =
-            latticeIndexAt(view.columnPositions, (x + 0.5) / width);
-    }
-    for (int y = 0; y < height; ++y) {
-        const double row = latticeIndexAt(view.rowPositions, 1.0 - (y + 0.5) / height);
-        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
-        for (int x = 0; x < width; ++x) {
-            const double column = columnAt[static_cast<std::size_t>(x)];
+    return latticeImage(
+        view, width, height, QImage::Format_ARGB32_Premultiplied, [&](double column, double row) {
             const float high = sectionValueAtIndex(view, view.bandHighest, column, row);
             const float low = sectionValueAtIndex(view, view.bandLowest, column, row);
-            // As SectionView::inBand, between samples.
-            line[x] = high > view.isovalue && !(low > view.isovalue) ? inside : 0;
-        }
-    }
-    return image;
+            return high > view.isovalue && !(low > view.isovalue) ? inside : QRgb{0};
+        });
 }
 
 // Line by line: QPainter strokes a path by filling its outline, and the outline of many lines
