@@ -11,9 +11,9 @@
 
 #include "app/main_window.h"
 #include "cli/command_line.h"
+#include "data/platform.h"
 #include "data/working_memory.h"
 #include "gl/offscreen_context.h"
-#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 #include "session/version.h"
 #include "workbench/workbench_surface_format.h"
@@ -28,7 +28,7 @@ void setApplicationIdentity() {
 
 int main(int argc, char* argv[]) {
     ensil::data::keepWorkingMemoryForReuse();
-    ensil::gl::ensureRuntimeDirectory();
+    ensil::data::ensurePrivateRuntimeDirectory();
     QStringList args;
     for (int i = 0; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
     QTextStream out(stdout);

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "app/main_window.h"
+#include "data/platform.h"
 #include "engine/ensemble_facts.h"
 #include "engine/picture_title.h"
 #include "session/session_model.h"

@@ -1,9 +1,9 @@
 #include "cli/command_progress.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
+
+#include "data/platform.h"
 
 namespace ensil::cli {
 namespace {
@@ -26,7 +26,7 @@ QCommandLineOption CommandProgress::quietOption() {
 }
 
 bool CommandProgress::shownOnThisTerminal(bool quiet) {
-    return !quiet && ::isatty(STDERR_FILENO) == 1;
+    return !quiet && data::standardErrorIsTerminal();
 }
 
 void CommandProgress::report(const QString& stage, double fraction) {

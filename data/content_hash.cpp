@@ -1,6 +1,5 @@
 #include "data/content_hash.h"
 
-#include <sys/stat.h>
 #include <xxhash.h>
 
 #include <atomic>
@@ -13,39 +12,22 @@
 #include <vector>
 
 #include "data/error.h"
+#include "data/platform.h"
 
 namespace ensil::data {
 namespace {
 
-// What says whether a file may have changed since it was hashed (content_hash.h).
-struct FileState {
-    dev_t device = 0;
-    ino_t inode = 0;
-    off_t size = 0;
-    std::int64_t modifiedNs = 0, changedNs = 0;
-    bool operator==(const FileState&) const = default;
-};
-
-std::int64_t nanoseconds(const timespec& t) {
-    return static_cast<std::int64_t>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
-}
-
-std::optional<FileState> stateOf(const std::string& path) {
-    struct stat s {};
-    if (::stat(path.c_str(), &s) != 0) return std::nullopt;
-    return FileState{s.st_dev, s.st_ino, s.st_size, nanoseconds(s.st_mtim), nanoseconds(s.st_ctim)};
-}
-
 // Whether the file's change time is old enough that no later write can share it.
-bool settled(const FileState& state) {
+bool settled(const FileStamp& stamp) {
     constexpr std::int64_t kSettledNs = 1'000'000'000;
     timespec now{};
     std::timespec_get(&now, TIME_UTC);
-    return state.changedNs < nanoseconds(now) - kSettledNs;
+    return stamp.changedNs <
+           static_cast<std::int64_t>(now.tv_sec) * 1'000'000'000 + now.tv_nsec - kSettledNs;
 }
 
 struct Remembered {
-    FileState state;
+    FileStamp state;
     std::uint64_t hash = 0;
 };
 
@@ -77,7 +59,7 @@ std::uint64_t hashFile(const std::string& path) {
 }  // namespace
 
 std::uint64_t contentHash(const std::string& path) {
-    const std::optional<FileState> before = stateOf(path);
+    const std::optional<FileStamp> before = fileStamp(path);
     if (before) {
         const std::lock_guard lock(g_mutex);
         const auto known = g_remembered.find(path);
@@ -87,7 +69,7 @@ std::uint64_t contentHash(const std::string& path) {
     }
     const std::uint64_t hash = hashFile(path);
     // Remembered only when nothing moved while it was read.
-    if (const std::optional<FileState> after = stateOf(path);
+    if (const std::optional<FileStamp> after = fileStamp(path);
         before && after && *after == *before && settled(*after)) {
         const std::lock_guard lock(g_mutex);
         if (g_remembered.size() >= kMostRemembered) g_remembered.clear();

@@ -1,7 +1,5 @@
 #include "data/ensemble_reader.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,6 +16,7 @@
 #include "data/grib_reader.h"
 #include "data/hdf5_reader.h"
 #include "data/netcdf_reader.h"
+#include "data/platform.h"
 #include "data/reader_support.h"
 #include "data/vtk_reader.h"
 
@@ -110,21 +109,6 @@ std::string sourceIdentity(const DataSelection& selection) {
     }
     return id + "var=" + selection.variable + " member-dim=" + selection.memberDimension +
            " time-index=" + std::to_string(selection.timeIndex);
-}
-
-std::size_t availableMemoryBytes() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    std::size_t kib = 0;
-    std::string unit;
-    while (meminfo >> key >> kib >> unit) {
-        if (key == "MemAvailable:") return kib * 1024;
-    }
-    const long pages = sysconf(_SC_AVPHYS_PAGES);
-    const long pageSize = sysconf(_SC_PAGESIZE);
-    return pages > 0 && pageSize > 0
-               ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
-               : 0;
 }
 
 void checkMemoryFor(std::size_t bytes, const std::string& what) {

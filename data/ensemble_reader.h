@@ -146,9 +146,6 @@ std::string membersWithoutDataKey(const std::vector<std::string>& names);
 // that changes changes the identity.
 std::string sourceIdentity(const DataSelection& selection);
 
-// Memory the system can give now without swapping (MemAvailable); 0 when unknown.
-std::size_t availableMemoryBytes();
-
 // Throws Error(OutOfMemory) when `bytes` will not fit in the memory available now.
 void checkMemoryFor(std::size_t bytes, const std::string& what);
 

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "data/error.h"
+#include "data/platform.h"
 #include "data/reader_support.h"
 #include "preprocessing/clustering.h"
 #include "preprocessing/member_summaries.h"

@@ -26,6 +26,8 @@ stage "check formatting" packaging/check-format.sh
 # Every #include between rooms points down the layer graph (ARCHITECTURE.md); the links are
 # checked when CMake configures (cmake/forbid_link.cmake).
 stage "check layers" packaging/check-layers.py
+# Calls that exist on one operating system only stay in data/platform.* (one branch per system).
+stage "check platform calls" packaging/check-platform-calls.py
 stage "configure (ci)" cmake --preset ci
 stage "build (ci)" cmake --build --preset ci
 # On a virtual display (Mesa llvmpipe); each OpenGL, widget and workbench test process gets a

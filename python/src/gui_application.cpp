@@ -6,15 +6,16 @@
 #include <QThread>
 #include <stdexcept>
 
+#include "data/platform.h"
 #include "gl/offscreen_context.h"
-#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 
 namespace ensil::python {
 
 void ensureGuiApplication(const std::string& caller) {
     if (QCoreApplication::instance() == nullptr) {
-        gl::ensureRuntimeDirectory();  // as ensil does: no stray Qt line on the notebook's stderr
+        data::ensurePrivateRuntimeDirectory();  // as ensil does: no stray Qt line on the notebook's
+                                                // stderr
         if (const auto problem = gl::prepareOffscreenPlatform()) {
             throw std::runtime_error("no display server: " + *problem);
         }

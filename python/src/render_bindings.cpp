@@ -14,7 +14,6 @@
 
 #include "engine/session_renderer.h"
 #include "gl/offscreen_context.h"
-#include "gl/runtime_directory.h"
 #include "gl/surface_format.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"

@@ -12,7 +12,7 @@
 #include <filesystem>
 #include <string>
 
-#include "gl/runtime_directory.h"
+#include "data/platform.h"
 #include "gl/surface_format.h"
 #include "tests/support/private_user_folders.h"
 
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
                      "virtual one: xvfb-run -a ctest --preset ci\n");
         return 1;
     }
-    ensil::gl::ensureRuntimeDirectory();  // as ensil does: Qt would warn at every start
+    ensil::data::ensurePrivateRuntimeDirectory();  // as ensil does: Qt would warn at every start
     ensureShaderCacheDir();
     const ensil::test::PrivateUserFolders userFolders;
     QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
