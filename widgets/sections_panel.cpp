@@ -1,37 +1,29 @@
 #include "widgets/sections_panel.h"
 
-#include <QActionGroup>
 #include <QComboBox>
-#include <QDialog>
-#include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
-#include <QPushButton>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSplitter>
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <cmath>
-#include <tuple>
 
 #include "data/error.h"
-#include "data/number_text.h"
 #include "engine/section_painter.h"
 #include "engine/section_place.h"
 #include "geo/map_projection.h"
 #include "gl/view_overlay.h"
 #include "preprocessing/inclusion_depth.h"
 #include "session/session_model.h"
-#include "session/setting_table.h"
 #include "widgets/section_canvas.h"
+#include "widgets/section_colours_button.h"
 #include "workbench/member_selection.h"
 
 namespace ensil::ui {
@@ -143,39 +135,21 @@ SectionsPanel::SectionsPanel(session::SessionModel* model, workbench::MemberSele
     m_fill->addItems({tr("Mean"), tr("Spread (standard deviation)"),
                       tr("Probability above the isovalue"), tr("Selected member"),
                       tr("Selected member minus the mean"), tr("None")});
-    // The fill's colour map and range (the setting table's sections_colour_map and fixed range).
-    m_colours = new QToolButton(this);
-    m_colours->setObjectName(QStringLiteral("sectionColours"));
-    m_colours->setText(tr("Colours"));
-    m_colours->setToolTip(QString::fromUtf8(session::setting("sections_colour_map").help.data()));
-    m_colours->setPopupMode(QToolButton::InstantPopup);
-    auto* coloursMenu = new QMenu(m_colours);
-    auto* maps = new QActionGroup(coloursMenu);
-    // In session::SectionsColourMap's order.
-    const QStringList mapNames{tr("Automatic (by the Fill)"), tr("Viridis"), tr("Greys"),
-                               tr("RdBu (Diverging)"), tr("YlGnBu")};
-    for (int i = 0; i < mapNames.size(); ++i) {
-        QAction* a = coloursMenu->addAction(mapNames[i]);
-        a->setCheckable(true);
-        a->setData(i);
-        maps->addAction(a);
-        connect(a, &QAction::triggered, this, [this, i] {
-            m_model->update([i](session::SessionState& st) {
-                st.sectionsColours.map = static_cast<session::SectionsColourMap>(i);
-            });
-            emit placesEdited();
-        });
-    }
-    coloursMenu->addSeparator();
-    m_fixedRange = coloursMenu->addAction(tr("Fixed Range..."), this, [this] {
-        if (m_model->state().sectionsColours.fixedRange) {
-            setFixedRange(std::nullopt);
-        } else {
-            askFixedRange();
-        }
-    });
-    m_fixedRange->setCheckable(true);
-    m_colours->setMenu(coloursMenu);
+    // The fill's colour map and range, started from the range the map (or the cross-section)
+    // shows.
+    m_colours = new SectionColoursButton(
+        model,
+        [this]() -> std::optional<SectionColoursButton::ShownRange> {
+            for (const SectionCanvas* canvas : {m_mapCanvas, m_crossCanvas}) {
+                const engine::SectionView* view = canvas->view();
+                if (view == nullptr || view->fill.empty()) continue;
+                return SectionColoursButton::ShownRange{view->fillMinimum, view->fillMaximum,
+                                                        QString::fromStdString(view->units)};
+            }
+            return std::nullopt;
+        },
+        this);
+    connect(m_colours, &SectionColoursButton::edited, this, &SectionsPanel::placesEdited);
     m_export = new QToolButton(this);
     m_export->setText(tr("Export"));
     m_export->setPopupMode(QToolButton::InstantPopup);
@@ -332,77 +306,7 @@ void SectionsPanel::showPlaces() {
     m_crossKind->setCurrentIndex(kind);
     m_cross->setText(QString::fromStdString(cross));
     m_fill->setCurrentIndex(static_cast<int>(m_model->state().sectionsFill));
-    showColours();
-}
-
-void SectionsPanel::showColours() {
-    const session::SectionsColours& colours = m_model->state().sectionsColours;
-    for (QAction* a : m_colours->menu()->actions()) {
-        if (a->isCheckable() && a != m_fixedRange) {
-            a->setChecked(a->data().toInt() == static_cast<int>(colours.map));
-        }
-    }
-    m_fixedRange->setChecked(colours.fixedRange);
-    m_fixedRange->setText(
-        colours.fixedRange
-            ? tr("Fixed Range %1 to %2 (Click for Automatic)")
-                  .arg(QString::fromStdString(data::readableNumber(colours.minimum, 6)),
-                       QString::fromStdString(data::readableNumber(colours.maximum, 6)))
-            : tr("Fixed Range..."));
-}
-
-void SectionsPanel::setFixedRange(std::optional<std::pair<double, double>> range) {
-    m_model->update([&range](session::SessionState& st) {
-        st.sectionsColours.fixedRange = range.has_value();
-        if (range) std::tie(st.sectionsColours.minimum, st.sectionsColours.maximum) = *range;
-    });
-    emit placesEdited();
-}
-
-// Asks for the range, starting from the one the map shows now.
-void SectionsPanel::askFixedRange() {
-    const engine::SectionView* shown = m_mapCanvas->view();
-    if (shown == nullptr || shown->fill.empty()) shown = m_crossCanvas->view();
-    const session::SectionsColours& colours = m_model->state().sectionsColours;
-    double lower = colours.minimum, upper = colours.maximum;
-    if (shown != nullptr && !shown->fill.empty()) {
-        lower = shown->fillMinimum;
-        upper = shown->fillMaximum;
-    }
-    QDialog dialog(this);
-    dialog.setWindowTitle(tr("Fixed Colour Range"));
-    auto* form = new QFormLayout(&dialog);
-    const auto spin = [&](const char* id, double value) {
-        const session::Setting& s = session::setting(id);
-        auto* box = new QDoubleSpinBox(&dialog);
-        box->setRange(s.minimum, s.maximum);
-        box->setDecimals(s.decimals);
-        box->setValue(value);
-        box->setToolTip(QString::fromUtf8(s.help.data(), static_cast<qsizetype>(s.help.size())));
-        if (shown != nullptr && !shown->units.empty()) {
-            box->setSuffix(QStringLiteral(" ") + QString::fromStdString(shown->units));
-        }
-        form->addRow(QString::fromUtf8(s.label.data(), static_cast<qsizetype>(s.label.size())),
-                     box);
-        return box;
-    };
-    QDoubleSpinBox* from = spin("sections_range_min", lower);
-    QDoubleSpinBox* to = spin("sections_range_max", upper);
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, &dialog);
-    form->addRow(buttons);
-    const auto checkOrder = [&] {
-        buttons->button(QDialogButtonBox::Ok)->setEnabled(from->value() < to->value());
-    };
-    connect(from, &QDoubleSpinBox::valueChanged, &dialog, checkOrder);
-    connect(to, &QDoubleSpinBox::valueChanged, &dialog, checkOrder);
-    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-    checkOrder();
-    if (dialog.exec() == QDialog::Accepted) {
-        setFixedRange(std::pair{from->value(), to->value()});
-    } else {
-        showColours();  // the action's check mark back as the session has it
-    }
+    m_colours->showSession();
 }
 
 void SectionsPanel::rebuild() {

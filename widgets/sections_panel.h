@@ -39,6 +39,7 @@ class SessionModel;
 namespace ensil::ui {
 
 class SectionCanvas;
+class SectionColoursButton;
 
 class SectionsPanel : public QWidget {
     Q_OBJECT
@@ -64,10 +65,7 @@ public:
     [[nodiscard]] QComboBox* crossKindBox() const { return m_crossKind; }
     [[nodiscard]] QLineEdit* crossEdit() const { return m_cross; }
     [[nodiscard]] QComboBox* fillBox() const { return m_fill; }
-    [[nodiscard]] QToolButton* coloursButton() const { return m_colours; }
-    // The fill's colour range, fixed to [minimum, maximum] or (nullopt) the shown section's own
-    // (the Colours menu's Fixed Range): a session edit, one undo step.
-    void setFixedRange(std::optional<std::pair<double, double>> range);
+    [[nodiscard]] SectionColoursButton* coloursButton() const { return m_colours; }
     [[nodiscard]] SectionCanvas* mapCanvas() const { return m_mapCanvas; }
     [[nodiscard]] SectionCanvas* crossCanvas() const { return m_crossCanvas; }
     // A section (or the default places) is being made: its result has not reached the screen.
@@ -102,8 +100,6 @@ private:
     void placePath(glm::dvec2 from, glm::dvec2 to);
     void recolour();
     void exportWithDialog(bool map);
-    void askFixedRange();
-    void showColours();
 
     session::SessionModel* m_model;
     workbench::MemberSelection* m_selection;
@@ -121,8 +117,7 @@ private:
     QComboBox* m_crossKind;
     QLineEdit* m_cross;
     QComboBox* m_fill;
-    QToolButton* m_colours;
-    QAction* m_fixedRange;
+    SectionColoursButton* m_colours;
     QToolButton* m_export;
     QLabel* m_hint;
     QSplitter* m_splitter;

@@ -23,6 +23,7 @@
 #include "tests/support/temp_dir.h"
 #include "widgets/render_panel.h"
 #include "widgets/section_canvas.h"
+#include "widgets/section_colours_button.h"
 #include "widgets/sections_panel.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
@@ -236,7 +237,7 @@ TEST(SectionsDock, FollowsTheIsovalueAndTakesPlacesAsTyped) {
     while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
     EXPECT_EQ(panel->mapCanvas()->view()->colourMap, engine::SectionColourMap::Greys);
     EXPECT_TRUE(greys->isChecked());
-    panel->setFixedRange(std::pair{-3.0, 3.0});
+    panel->coloursButton()->setFixedRange(std::pair{-3.0, 3.0});
     while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
     EXPECT_FLOAT_EQ(panel->mapCanvas()->view()->fillMinimum, -3.0F);
     window.history()->stack()->undo();
