@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <regex>
 #include <string_view>
 
 #include "data/ascii_case.h"
+#include "data/cf_calendar.h"
 #include "data/grid.h"
 
 namespace ensil::data {
@@ -126,12 +127,10 @@ MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariabl
 
 std::optional<std::string> formatCfTime(double value, const std::string& units,
                                         const std::string& calendar) {
-    const std::string cal = asciiLower(calendar);
-    if (!cal.empty() && cal != "standard" && cal != "gregorian" && cal != "proleptic_gregorian") {
-        return std::nullopt;
-    }
+    const std::optional<CfCalendar> cal = cfCalendar(calendar);
+    if (!cal) return std::nullopt;
     static const std::regex pattern(
-        R"(^\s*(seconds?|minutes?|hours?|days?)\s+since\s+(\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ T](\d{1,2}):(\d{1,2})(?::(\d{1,2})(?:\.\d*)?)?)?.*$)",
+        R"(^\s*(seconds?|minutes?|hours?|days?)\s+since\s+(-?\d{1,4})-(\d{1,2})-(\d{1,2})(?:[ T](\d{1,2}):(\d{1,2})(?::(\d{1,2})(?:\.\d*)?)?)?.*$)",
         std::regex::icase);
     std::smatch m;
     if (!std::regex_match(units, m, pattern) || !std::isfinite(value)) return std::nullopt;
@@ -140,27 +139,26 @@ std::optional<std::string> formatCfTime(double value, const std::string& units,
                                   : unit.starts_with("minute") ? 60.0
                                   : unit.starts_with("hour")   ? 3600.0
                                                                : 86400.0;
-    using namespace std::chrono;
-    const year_month_day epochDate{year{std::stoi(m[2].str())},
-                                   month{static_cast<unsigned>(std::stoi(m[3].str()))},
-                                   day{static_cast<unsigned>(std::stoi(m[4].str()))}};
-    if (!epochDate.ok()) return std::nullopt;
-    const auto epoch = sys_days{epochDate} + hours{m[5].matched ? std::stoi(m[5].str()) : 0} +
-                       minutes{m[6].matched ? std::stoi(m[6].str()) : 0} +
-                       seconds{m[7].matched ? std::stoi(m[7].str()) : 0};
+    const std::optional<std::int64_t> epochDay =
+        cfDayNumber(*cal, {std::stoi(m[2].str()), std::stoi(m[3].str()), std::stoi(m[4].str())});
+    if (!epochDay) return std::nullopt;
     // A file can give any double: beyond some 19,000 years of the epoch there is no date to
-    // print (std::chrono::year ends at 32767) and the sum below would overflow.
+    // print, and the sums below would overflow.
     const double offset = value * secondsPerUnit;
     if (std::abs(offset) > 6e11) return std::nullopt;
-    const auto t = epoch + seconds{static_cast<long long>(std::llround(offset))};
-    const auto dayPoint = floor<days>(t);
-    const year_month_day ymd{dayPoint};
-    const hh_mm_ss hms{t - dayPoint};
-    std::array<char, 96> text{};  // room for any int the format could print
-    std::snprintf(text.data(), text.size(), "%04d-%02u-%02uT%02ld:%02ld",
-                  static_cast<int>(ymd.year()), static_cast<unsigned>(ymd.month()),
-                  static_cast<unsigned>(ymd.day()), static_cast<long>(hms.hours().count()),
-                  static_cast<long>(hms.minutes().count()));
+    constexpr std::int64_t kDay = 86'400;
+    const std::int64_t seconds = (m[5].matched ? std::stoll(m[5].str()) * 3600 : 0) +
+                                 (m[6].matched ? std::stoll(m[6].str()) * 60 : 0) +
+                                 (m[7].matched ? std::stoll(m[7].str()) : 0) + std::llround(offset);
+    const std::int64_t dayShift = seconds >= 0 ? seconds / kDay : -((-seconds + kDay - 1) / kDay);
+    const std::int64_t ofDay = seconds - dayShift * kDay;
+    const CfDate date = cfDateOf(*cal, *epochDay + dayShift);
+    // Years before 1 are numbered differently by different tools (with or without a year 0).
+    if (date.year < 1 || date.year > 9999) return std::nullopt;
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), "%04d-%02d-%02dT%02d:%02d", static_cast<int>(date.year),
+                  date.month, date.day, static_cast<int>(ofDay / 3600),
+                  static_cast<int>(ofDay % 3600 / 60));
     return std::string(text.data());
 }
 

@@ -27,8 +27,11 @@ struct MemberDimensionGuess {
 // number, member, members, realization, ens, ens0 or ensemble. Only dimensions of `var` count.
 MemberDimensionGuess findMemberDimension(const NetcdfFile& file, const NcVariable& var);
 
-// "2017-01-01T06:00" for value 6 with units "hours since 2017-1-1 00:00:00" (standard,
-// gregorian and proleptic_gregorian calendars); nullopt when the units are not a CF time.
+// "2017-01-01T06:00" for value 6 with units "hours since 2017-1-1 00:00:00", in any CF calendar
+// (data/cf_calendar.h: standard, gregorian, proleptic_gregorian, julian, noleap, 365_day,
+// all_leap, 366_day, 360_day); nullopt when the units are not a CF time in seconds, minutes,
+// hours or days, the calendar is not CF's, the epoch is not a date of the calendar, or the date
+// falls outside the years 1 to 9999.
 std::optional<std::string> formatCfTime(double value, const std::string& units,
                                         const std::string& calendar = "standard");
 

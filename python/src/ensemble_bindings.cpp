@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "data/cf_conventions.h"
 #include "engine/ensemble_info.h"
 #include "engine/session_renderer.h"
 #include "python/src/bindings.h"
@@ -348,6 +349,13 @@ range and mean, missing values, the file's variables.)doc")
                py::arg("time_index"), py::arg("progress"));
     module.def("_from_numpy", &fromArray, py::arg("values"), py::arg("axes"), py::arg("variable"),
                py::arg("units"), py::arg("names"), py::arg("member_dim"));
+    // For the tests only: the date ensil names a time step with, against python3-cftime.
+    module.def(
+        "_format_cf_time",
+        [](double value, const std::string& units, const std::string& calendar) {
+            return data::formatCfTime(value, units, calendar);
+        },
+        py::arg("value"), py::arg("units"), py::arg("calendar"));
     module.def("demo", &demoEnsemble, py::arg("members") = 50, py::arg("seed") = 1,
                py::arg("progress") = py::none(), R"doc(
 The workbench's built-in demo ensemble: `members` members (1 to 1000) of a wind-speed-like

@@ -12,10 +12,25 @@ TEST(CfTime, DecodesUnitsSinceAnEpoch) {
     EXPECT_EQ(formatCfTime(1, "days since 2000-02-28", "proleptic_gregorian"), "2000-02-29T00:00");
 }
 
+// Every CF calendar (python3-cftime is the oracle on 10,000 random cases: tests/python).
+TEST(CfTime, CountsInEveryCalendar) {
+    EXPECT_EQ(formatCfTime(1, "days since 1582-10-04", "standard"), "1582-10-15T00:00");
+    EXPECT_EQ(formatCfTime(1, "days since 1582-10-04", "proleptic_gregorian"), "1582-10-05T00:00");
+    EXPECT_EQ(formatCfTime(1, "days since 1900-02-28", "julian"), "1900-02-29T00:00");
+    EXPECT_EQ(formatCfTime(1, "days since 1900-02-28", "standard"), "1900-03-01T00:00");
+    EXPECT_EQ(formatCfTime(1, "days since 2000-02-28", "noleap"), "2000-03-01T00:00");
+    EXPECT_EQ(formatCfTime(1, "days since 2001-02-28", "all_leap"), "2001-02-29T00:00");
+    EXPECT_EQ(formatCfTime(2, "days since 2001-02-28", "360_day"), "2001-02-30T00:00");
+    EXPECT_EQ(formatCfTime(360, "days since 2001-01-01", "360_day"), "2002-01-01T00:00");
+    EXPECT_EQ(formatCfTime(-1, "hours since 2000-01-01", "365_day"), "1999-12-31T23:00");
+}
+
 TEST(CfTime, RefusesWhatIsNotACfTime) {
     EXPECT_FALSE(formatCfTime(3, "hours"));
     EXPECT_FALSE(formatCfTime(3, "m s-1"));
-    EXPECT_FALSE(formatCfTime(3, "days since 2000-01-01", "360_day"));
+    EXPECT_FALSE(formatCfTime(3, "days since 2000-01-01", "none"));
+    EXPECT_FALSE(formatCfTime(3, "days since 2001-02-29", "standard"));
+    EXPECT_FALSE(formatCfTime(3, "days since 1582-10-10", "standard")) << "a day that never was";
     EXPECT_FALSE(formatCfTime(3, "days since 2000-13-01"));
 }
 
