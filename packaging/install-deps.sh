@@ -21,8 +21,8 @@ packages=(
     # GRIB 1 and 2 (ECMWF's and NCEP's native format) and its command-line tools
     libeccodes-dev libeccodes-tools
     # the Python module (pybind11) and its tests (pytest, NumPy; VTK's Python readers check the
-    # surfaces it exports)
-    pybind11-dev python3-dev python3-pytest python3-numpy python3-vtk9
+    # surfaces it exports; cftime is the oracle for the dates of every CF calendar)
+    pybind11-dev python3-dev python3-pytest python3-numpy python3-vtk9 python3-cftime
     # `mpirun -np K ensil preprocess` (the mpi/ front end, ENSIL_WITH_MPI; the ci preset needs it)
     libopenmpi-dev openmpi-bin
     # the tests (the benchmarks are plain programs that print figures; they need nothing more)
