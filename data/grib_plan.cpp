@@ -321,20 +321,27 @@ GribPlan planGribVariable(const GribInventory& inventory, const std::string& pat
     plan.derived = v.derived;
 
     const std::string& dim = selection.memberDimension;
-    if (!dim.empty() && dim != "number" && dim != "time") {
+    // cfgrib (xarray's GRIB engine) names the forecast's lead time `step` and the time it is
+    // valid at `valid_time`: ensil's time axis is the validity time (reference plus step), and
+    // a file it reads has one field per validity, so both name that axis.
+    const bool cfgribTime = dim == "step" || dim == "valid_time";
+    if (!dim.empty() && dim != "number" && dim != "time" && !cfgribTime) {
         throw Error(ErrorKind::MemberDimensionNotFound,
                     "'" + path +
                         "' is a GRIB file, whose members come from the key 'number' "
                         "(the perturbation number); --member-dim " +
-                        dim + " names no dimension of it. Name 'number', or 'time' to make its " +
-                        std::to_string(v.times.size()) + " times the members",
+                        dim + " names no dimension of it. Name 'number', or 'time' (cfgrib's " +
+                        "'step' or 'valid_time') to make its " + std::to_string(v.times.size()) +
+                        " times the members",
                     {"number", "time"});
     }
-    const bool byTime = dim == "time";
+    const bool byTime = dim == "time" || cfgribTime;
     plan.memberDimension = byTime ? "time" : "number";
-    plan.memberReason = byTime ? "chosen by the user"
-                               : "GRIB key 'number', the perturbation number; 0 is the control "
-                                 "forecast";
+    plan.memberReason = cfgribTime ? "chosen by the user as cfgrib's '" + dim +
+                                         "': the times the fields are valid at"
+                        : byTime ? "chosen by the user"
+                                 : "GRIB key 'number', the perturbation number; 0 is the "
+                                   "control forecast";
     const std::vector<long>& memberValues = byTime ? v.times : v.members;
     const std::vector<long>& fixedValues = byTime ? v.members : v.times;
     const std::string fixedName = byTime ? "number" : "time";

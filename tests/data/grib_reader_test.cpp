@@ -778,6 +778,15 @@ TEST(GribReader, ForecastStepsAreTimesThatCanStandInForMembers) {
     EXPECT_EQ(d.memberNames, (std::vector<std::string>{"2024-01-15T06:00", "2024-01-15T12:00",
                                                        "2024-01-16T06:00"}));
     EXPECT_EQ(d.fixedDimensions, std::vector<std::string>{"number = 0 of 1 (member 0)"});
+    // cfgrib's names for the same axis (xarray users type them) take the same members.
+    for (const char* cfgrib : {"step", "valid_time"}) {
+        data::DataSelection asCfgrib = select(path);
+        asCfgrib.memberDimension = cfgrib;
+        data::EnsembleDescription named;
+        data::openEnsemble(asCfgrib, {}, {}, &named);
+        EXPECT_EQ(named.memberNames, d.memberNames) << cfgrib;
+        EXPECT_EQ(named.memberDimension, "time") << cfgrib;
+    }
     const std::vector<double> steps{6, 12, 30};
     expectValues(
         e, [&](std::size_t m, double lat, double lon, double) { return lat + lon + steps[m]; },
