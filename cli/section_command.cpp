@@ -129,11 +129,13 @@ QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResu
                   {"mean_contour_lines", static_cast<qint64>(view.meanContour.size())}};
     if (!view.fill.empty()) {
         o.insert("fill",
-                 QJsonObject{{"caption", QString::fromStdString(view.fillCaption)},
-                             {"minimum", static_cast<double>(view.fillMinimum)},
-                             {"maximum", static_cast<double>(view.fillMaximum)},
-                             {"colour_map",
-                              QString::fromUtf8(engine::sectionColourMapName(view.colourMap))}});
+                 QJsonObject{
+                     {"caption", QString::fromStdString(view.fillCaption)},
+                     {"minimum", static_cast<double>(view.fillMinimum)},
+                     {"maximum", static_cast<double>(view.fillMaximum)},
+                     {"colour_map",
+                      QString::fromStdString(session::setting("sections_colour_map")
+                                                 .format(static_cast<double>(view.colourMap)))}});
     }
     if (view.medianMember >= 0) {
         // Members numbered from 1, as the workbench shows them; the band's samples are those

@@ -81,39 +81,8 @@ SampleMoments momentsOf(const std::vector<std::vector<float>>& members, std::siz
 
 }  // namespace
 
-const char* sectionColourMapName(SectionColourMap map) {
-    switch (map) {
-        case SectionColourMap::Greys:
-            return "greys";
-        case SectionColourMap::RdBu:
-            return "rdbu";
-        case SectionColourMap::YlGnBu:
-            return "ylgnbu";
-        case SectionColourMap::Viridis:
-            break;
-    }
-    return "viridis";
-}
-
 void applySectionColours(SectionRequest& request, const session::SectionsColours& colours) {
-    using session::SectionsColourMap;
-    switch (colours.map) {
-        case SectionsColourMap::Automatic:
-            request.colourMap.reset();
-            break;
-        case SectionsColourMap::Viridis:
-            request.colourMap = SectionColourMap::Viridis;
-            break;
-        case SectionsColourMap::Greys:
-            request.colourMap = SectionColourMap::Greys;
-            break;
-        case SectionsColourMap::RdBu:
-            request.colourMap = SectionColourMap::RdBu;
-            break;
-        case SectionsColourMap::YlGnBu:
-            request.colourMap = SectionColourMap::YlGnBu;
-            break;
-    }
+    request.colourMap = colours.map;
     request.range.reset();
     if (colours.fixedRange) request.range = std::pair{colours.minimum, colours.maximum};
 }
@@ -261,7 +230,7 @@ SectionView buildSection(const data::Ensemble& ensemble, const SectionRequest& r
     // The colour bar spans the section's own values (a difference: symmetric about 0; a
     // probability: 0 to 1; a spread: from 0), so the map has the contrast its values allow,
     // unless the user fixed it (to compare sections, or times, on one scale).
-    if (request.colourMap) view.colourMap = *request.colourMap;
+    if (request.colourMap != SectionColourMap::Automatic) view.colourMap = request.colourMap;
     if (!view.fill.empty() && request.range) {
         view.fillMinimum = static_cast<float>(request.range->first);
         view.fillMaximum = static_cast<float>(request.range->second);

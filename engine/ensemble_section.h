@@ -42,11 +42,11 @@ struct SectionPlace {
 
 enum class SectionFill { None, Member, Mean, Spread, Probability, Anomaly };
 
-// The fill's colour maps: matplotlib's viridis, ColorBrewer's Greys, RdBu (diverging: blue below
-// the middle, red above) and YlGnBu (pale at 0, for probabilities).
-enum class SectionColourMap { Viridis, Greys, RdBu, YlGnBu };
-// "viridis", "greys", "rdbu", "ylgnbu": as the setting table and Python name them.
-const char* sectionColourMapName(SectionColourMap map);
+// The fill's colour maps, the session's (the setting "sections_colour_map", whose names the
+// command line, JSON and Python use): matplotlib's viridis, ColorBrewer's Greys, RdBu
+// (diverging: blue below the middle, red above) and YlGnBu (pale at 0, for probabilities), or
+// Automatic: chosen by the fill. A view's map is never Automatic.
+using SectionColourMap = session::SectionsColourMap;
 
 // The contour boxplot drawn on a section (METHODS.md sections 17 and 22), by member index: the
 // 50 % band's members (deepest first, prep::bandMembersOf), the median and the outliers.
@@ -67,7 +67,7 @@ struct SectionRequest {
     std::vector<int> clusterNumbers;  // as the legend numbers them, per member; may be empty
     // The fill's colours: by default chosen by the fill (viridis, RdBu for a difference from
     // the mean, YlGnBu for a probability) over the section's own range.
-    std::optional<SectionColourMap> colourMap;
+    SectionColourMap colourMap = SectionColourMap::Automatic;
     std::optional<std::pair<double, double>> range;  // fixed: lower below upper, both finite
     // Rendering > Contour boxplot: the band, the median's contour and the outliers dashed.
     std::optional<SectionBoxplot> boxplot;

@@ -73,6 +73,7 @@ QRgb colourAt(SectionColourMap map, double t) {
         case SectionColourMap::Greys:
             return fromAnchors(kGreys, t);
         case SectionColourMap::Viridis:
+        case SectionColourMap::Automatic:  // resolved by buildSection; never in a view
             break;
     }
     return toColour(gl::viridis(static_cast<float>(std::clamp(t, 0.0, 1.0)))).rgb();

@@ -212,7 +212,10 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
             "With band=True, the median member's index (from 0), whose contour is drawn thick.")
         .def_property_readonly(
             "colour_map",
-            [](const PySection& s) { return engine::sectionColourMapName(s.view->colourMap); },
+            [](const PySection& s) {
+                return session::setting("sections_colour_map")
+                    .format(static_cast<double>(s.view->colourMap));
+            },
             "The fill's colour map: viridis, greys, rdbu or ylgnbu.")
         .def_property_readonly("fill_range",
                                [](const PySection& s) {
