@@ -46,6 +46,7 @@
 #include "workbench/isovalue_session.h"
 #include "workbench/point_description.h"
 #include "workbench/recent_selections.h"
+#include "workbench/time_steps.h"
 
 namespace ensil::app {
 namespace {
@@ -81,6 +82,7 @@ std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_view(new ui::SilhouetteView),
+      m_timeSteps(new workbench::TimeSteps(this)),
       m_model(new session::SessionModel(this)) {
     setWindowTitle(QStringLiteral("ensil"));
     setCentralWidget(m_view);
@@ -485,7 +487,7 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
         // The session of this data: a project's, or the default isovalue (the toolbar shows
         // it, rounded to its precision: what gets built) and clusters; one rebuild below.
         const QScopedValueRollback showing(m_showingNewData, true);
-        const float shownIsovalue = static_cast<float>(m_toolbar->isovalue());
+        const auto shownIsovalue = static_cast<float>(m_toolbar->isovalue());
         m_model->update([&](session::SessionState& s) {
             if (m_pendingProject) {
                 s = *m_pendingProject;

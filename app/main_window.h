@@ -9,7 +9,6 @@
 #include <QMainWindow>
 #include <QStringList>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <stop_token>
@@ -34,6 +33,7 @@ class QAction;
 namespace ensil::workbench {
 class IsovalueSession;
 class MemberSelection;
+class TimeSteps;
 }  // namespace ensil::workbench
 
 namespace ensil::ui {
@@ -206,6 +206,8 @@ private:
     // read and its surfaces built in the background while this one is looked at, so that
     // stepping on shows it at once; a guess, dropped when the user goes elsewhere.
     void readAhead();
+    // A step read ahead: shown if it was asked for meanwhile, else its surfaces built ahead.
+    void showOrBuildStepRead(std::size_t step);
     // That step's surfaces, figures and clusters built ahead and kept by the session.
     void buildAhead(const engine::EnsembleOverview& step);
     void forgetTimeSteps();
@@ -310,14 +312,8 @@ private:
     void fillStepClusters();
     workbench::BackgroundJob<engine::StepClusters> m_stepFill{this};
     bool m_fillStopped = false;
-    // Time steps read (ahead, or visited before) and not on screen, by time index.
-    std::map<std::size_t, std::unique_ptr<engine::EnsembleOverview>> m_timeSteps;
-    workbench::BackgroundJob<engine::EnsembleOverview> m_readAhead{this};
-    // The step m_readAhead reads, from its start (queued behind other work, a job does not
-    // count as running yet) to its end; kNoStep when none.
-    static constexpr std::size_t kNoStep = static_cast<std::size_t>(-1);
-    std::size_t m_readingAhead = kNoStep;
-    int m_stepDirection = 1;        // of the last move between steps: +1 later, -1 earlier
+    // Time steps read (ahead, or visited before) and not on screen (workbench/time_steps.h).
+    workbench::TimeSteps* m_timeSteps;
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     workbench::IsovalueSession* m_session = nullptr;

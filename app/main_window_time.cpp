@@ -7,11 +7,9 @@
 // memory budget, so going back to one costs only its surfaces (from the cache).
 #include <QStatusBar>
 #include <QTimer>
-#include <algorithm>
 #include <utility>
 
 #include "app/main_window.h"
-#include "data/platform.h"
 #include "engine/ensemble_facts.h"
 #include "engine/picture_title.h"
 #include "session/session_model.h"
@@ -24,15 +22,18 @@
 #include "widgets/time_bar.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/time_steps.h"
 
 namespace ensil::app {
 namespace {
 
-// The ensembles of the steps kept besides the one shown: a quarter of the memory available now,
-// at most 2 GiB, and always the next step (reading ahead is what makes playing smooth).
-std::size_t timeStepBudget() {
-    constexpr std::size_t kMost = std::size_t{2} << 30;
-    return std::min(kMost, data::availableMemoryBytes() / 4);
+// The members shown, by name: the steps' clusters are matched to them by name.
+std::vector<std::string> namesOf(const workbench::MemberSelection& selection) {
+    std::vector<std::string> names;
+    names.reserve(static_cast<std::size_t>(selection.memberCount()));
+    for (int m = 0; m < selection.memberCount(); ++m)
+        names.push_back(selection.name(m).toStdString());
+    return names;
 }
 
 }  // namespace
@@ -87,6 +88,7 @@ void MainWindow::createTimeBar() {
     // The strip's filling waits while the next step is built ahead.
     connect(m_session, &workbench::IsovalueSession::preparationEnded, this,
             &MainWindow::fillStepClusters);
+    connect(m_timeSteps, &workbench::TimeSteps::stepRead, this, &MainWindow::showOrBuildStepRead);
     connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, this, [this] {
         m_fillStopped = true;
         m_stepFill.cancel();
@@ -149,7 +151,7 @@ void MainWindow::fillStepClusters() {
     }
     // What the user asked for goes first: the next step waits while one is read or built
     // (and one under way is cancelled when a step is asked for, goToTimeStep).
-    if (m_stepFill.isRunning() || m_loader.isRunning() || m_readingAhead != kNoStep ||
+    if (m_stepFill.isRunning() || m_loader.isRunning() || m_timeSteps->isReadingAny() ||
         m_session->isRunning() || m_session->isPreparing()) {
         return;
     }
@@ -157,28 +159,17 @@ void MainWindow::fillStepClusters() {
     int done = 0;
     for (int s = 0; s < n; ++s) done += clustered(s) ? 1 : 0;
     m_timeline->setFilling(done, n);
-    // The nearest step not clustered next to one that is, later steps first: each is matched
-    // to the neighbour between it and the step shown, so identities follow groups outward.
-    const int current = static_cast<int>(m_requested->timeIndex);
-    int step = -1, neighbour = -1;
-    for (int d = 1; d < n && step < 0; ++d) {
-        if (current + d < n && !clustered(current + d) && clustered(current + d - 1)) {
-            step = current + d;
-            neighbour = step - 1;
-        } else if (current - d >= 0 && !clustered(current - d) && clustered(current - d + 1)) {
-            step = current - d;
-            neighbour = step + 1;
-        }
-    }
-    if (step < 0) return;
+    const std::optional<workbench::StepToCluster> next =
+        workbench::nextStepToCluster(static_cast<int>(m_requested->timeIndex), n, clustered);
+    if (!next) return;
+    const int step = next->step;
+    const int neighbour = next->neighbour;
     engine::StepClusteringRequest request;
     request.selection = timeStepSelection(static_cast<std::size_t>(step));
     request.isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
     request.k = m_selection->clusterCount();
     request.linkage = m_session->linkage();
-    for (int m = 0; m < m_selection->memberCount(); ++m) {
-        request.previousMembers.push_back(m_selection->name(m).toStdString());
-    }
+    request.previousMembers = namesOf(*m_selection);
     request.previousIdentities = m_timeline->stepClusters(neighbour);
     if (m_overview->streamed) request.memoryLimit = m_overview->streamed->memoryLimit;
     const QString key = m_stripKey;
@@ -188,13 +179,9 @@ void MainWindow::fillStepClusters() {
         },
         [this, step, key](const engine::StepClusters& clusters) {
             if (key == m_stripKey) {
-                // Onto the members shown, by name (a member without data there has none).
-                std::vector<std::string> shown;
-                for (int m = 0; m < m_selection->memberCount(); ++m) {
-                    shown.push_back(m_selection->name(m).toStdString());
-                }
+                // Onto the members shown (a member without data there has none).
                 std::vector<int> identities = engine::previousIdentitiesByName(
-                    clusters.members, clusters.memberIdentities, shown);
+                    clusters.members, clusters.memberIdentities, namesOf(*m_selection));
                 m_memberTable->model()->setStepClusters(step, identities);
                 m_timeline->setStepClusters(step, std::move(identities));
             }
@@ -220,15 +207,13 @@ data::DataSelection MainWindow::timeStepSelection(std::size_t step) const {
 
 void MainWindow::goToTimeStep(std::size_t step) {
     if (!m_overview || !m_requested || step == m_requested->timeIndex) return;
-    m_stepDirection = step > m_requested->timeIndex ? 1 : -1;
+    m_timeSteps->moved(m_requested->timeIndex, step);
     m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
-    if (const auto kept = m_timeSteps.find(step); kept != m_timeSteps.end()) {
-        std::unique_ptr<engine::EnsembleOverview> overview = std::move(kept->second);
-        m_timeSteps.erase(kept);
-        showTimeStep(std::move(overview), step);
+    if (std::unique_ptr<engine::EnsembleOverview> kept = m_timeSteps->take(step)) {
+        showTimeStep(std::move(kept), step);
         return;
     }
-    if (m_readingAhead == step) return;  // on its way: shown when read
+    if (m_timeSteps->isReading(step)) return;  // on its way: shown when read
     setBusy(tr("Reading time step %1...").arg(step + 1));
     const data::DataSelection selection = timeStepSelection(step);
     m_loader.start(
@@ -259,27 +244,11 @@ void MainWindow::goToTimeStep(std::size_t step) {
 void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview,
                               std::size_t step) {
     // The step left is kept (it may be visited again), within the budget.
-    const std::size_t left = m_requested->timeIndex;
-    m_timeSteps[left] = std::move(m_overview);
+    m_timeSteps->keep(m_requested->timeIndex, std::move(m_overview), step);
     m_overview = std::move(overview);
     m_requested->timeIndex = step;
     m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     m_stepChanging = true;
-    std::size_t bytes = 0;
-    for (const auto& [index, kept] : m_timeSteps)
-        bytes += kept->ensemble->bytes();  // copies' bytes when streamed
-    // The steps farthest from the one shown go first.
-    while (bytes > timeStepBudget() && m_timeSteps.size() > 1) {
-        auto farthest = std::max_element(m_timeSteps.begin(), m_timeSteps.end(),
-                                         [step](const auto& a, const auto& b) {
-                                             const auto distance = [step](std::size_t s) {
-                                                 return s > step ? s - step : step - s;
-                                             };
-                                             return distance(a.first) < distance(b.first);
-                                         });
-        bytes -= farthest->second->ensemble->bytes();
-        m_timeSteps.erase(farthest);
-    }
     const data::Ensemble& e = *m_overview->ensemble;
     const session::SessionState& s = m_model->state();
     showFloor(s.render);
@@ -315,45 +284,26 @@ void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
 }
 
 void MainWindow::readAhead() {
-    if (!m_requested || !m_overview || m_timeBar->stepCount() < 2) return;
-    const auto n = static_cast<std::size_t>(m_timeBar->stepCount());
-    const std::size_t current = m_requested->timeIndex;
-    std::size_t next = 0;
-    if (m_timeBar->isPlaying()) {
-        next = (current + 1) % n;
-    } else if (m_stepDirection > 0) {
-        if (current + 1 >= n) return;
-        next = current + 1;
-    } else {
-        if (current == 0) return;
-        next = current - 1;
-    }
-    if (m_readingAhead == next) return;
-    if (const auto kept = m_timeSteps.find(next); kept != m_timeSteps.end()) {
-        buildAhead(*kept->second);
+    if (!m_requested || !m_overview) return;
+    const std::optional<std::size_t> next = m_timeSteps->nextToRead(
+        m_requested->timeIndex, static_cast<std::size_t>(std::max(0, m_timeBar->stepCount())),
+        m_timeBar->isPlaying());
+    if (!next || m_timeSteps->isReading(*next)) return;
+    if (const engine::EnsembleOverview* kept = m_timeSteps->kept(*next)) {
+        buildAhead(*kept);
         return;
     }
-    m_readingAhead = next;
-    const data::DataSelection selection = timeStepSelection(next);
-    m_readAhead.start(
-        readingStep(selection),
-        [this, next](engine::EnsembleOverview overview) {
-            m_readingAhead = kNoStep;
-            auto read = std::make_unique<engine::EnsembleOverview>(std::move(overview));
-            // Asked for while it was being read: shown now.
-            if (m_model->state().data.timeIndex == next && m_requested &&
-                m_requested->timeIndex != next) {
-                showTimeStep(std::move(read), next);
-                return;
-            }
-            buildAhead(*read);
-            m_timeSteps[next] = std::move(read);
-            fillStepClusters();
-        },
-        // Reading ahead is a guess: a failure is said when the step is asked for.
-        [this, next](const std::exception_ptr&, bool) {
-            if (m_readingAhead == next) m_readingAhead = kNoStep;
-        });
+    m_timeSteps->readAhead(*next, readingStep(timeStepSelection(*next)));
+}
+
+void MainWindow::showOrBuildStepRead(std::size_t step) {
+    // Asked for while it was being read: shown now.
+    if (m_model->state().data.timeIndex == step && m_requested && m_requested->timeIndex != step) {
+        showTimeStep(m_timeSteps->take(step), step);
+        return;
+    }
+    if (const engine::EnsembleOverview* read = m_timeSteps->kept(step)) buildAhead(*read);
+    fillStepClusters();
 }
 
 void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
@@ -367,11 +317,9 @@ void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
 void MainWindow::forgetTimeSteps() {
     m_clusteredStep = -1;  // other data: its clusters come with its first surfaces
     m_stepChanging = false;
-    m_readAhead.cancel();
-    m_readingAhead = kNoStep;
+    m_timeSteps->forget();
     m_stepFill.cancel();
     m_fillStopped = false;  // other data: its strip fills again
-    m_timeSteps.clear();
 }
 
 }  // namespace ensil::app

@@ -30,6 +30,9 @@ stage "check layers" packaging/check-layers.py
 stage "check platform calls" packaging/check-platform-calls.py
 stage "configure (ci)" cmake --preset ci
 stage "build (ci)" cmake --build --preset ci
+# clang-tidy (.clang-tidy's checks, every layer) on each C++ file changed since its last clean
+# check (packaging/tidy-checked.txt holds their hashes; the whole tree would take ~20 minutes).
+stage "check tidy" packaging/check-tidy.py build/ci
 # On a virtual display (Mesa llvmpipe); each OpenGL, widget and workbench test process gets a
 # display of its own besides (tests/support/with-private-display.sh says why). No test is ever
 # run twice to make it pass: a test that fails now and then is a bug, in the code or the test.

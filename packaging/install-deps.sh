@@ -31,6 +31,8 @@ packages=(
     clang-14 libfuzzer-14-dev
     # packaging/check-format.sh: the C++ layout of .clang-format, checked before any build
     clang-format-14
+    # packaging/check-tidy.py: .clang-tidy's checks on the files changed since their last check
+    clang-tidy-14
     # the manual pages, made from ensil's --help at build time (packaging/make-command-help.sh)
     help2man
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
