@@ -3,11 +3,9 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -18,8 +16,6 @@
 #include <QStatusBar>
 #include <QToolButton>
 #include <chrono>
-#include <cmath>
-#include <limits>
 #include <map>
 
 #include "app/open_data_flow.h"
@@ -28,7 +24,6 @@
 #include "engine/floor_map.h"
 #include "engine/picture_title.h"
 #include "engine/session_renderer.h"
-#include "engine/streaming_run.h"
 #include "geo/map_projection.h"
 #include "session/session_model.h"
 #include "session/version.h"
@@ -55,28 +50,6 @@ constexpr int kProgressSteps = 1000;
 // with (ui::FramePacedRepaints): ten repaints a second at the least.
 constexpr std::chrono::milliseconds kLongestScrubRepaintWait{100};
 
-QString messageOf(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);  // unwrapped by BackgroundJob
-    } catch (const std::bad_alloc&) {
-        return QObject::tr("not enough memory to load the ensemble");
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    } catch (...) {
-        return QStringLiteral("unknown error");
-    }
-}
-
-// The reader's typed error, if that is what the worker threw.
-std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);  // unwrapped by BackgroundJob
-    } catch (const data::Error& e) {
-        return e;
-    } catch (...) {
-        return std::nullopt;
-    }
-}
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -271,84 +244,6 @@ void MainWindow::setIdle(const QString& message) {
     m_cancel->setVisible(false);
 }
 
-void MainWindow::loadDemo(const data::DemoEnsembleParams& params) {
-    m_requested.reset();
-    m_requestedDemo = params;
-
-    startLoading(
-        tr("Generating the demo ensemble (%1 members, %2 x %3 x %4)...")
-            .arg(params.members)
-            .arg(params.nx)
-            .arg(params.ny)
-            .arg(params.nz),
-        [params] { return engine::demoSourceKey(params); },
-        [params](const std::stop_token& stop, const data::Progress& progress) {
-            return engine::WorkbenchEnsemble{
-                data::makeDemoEnsemble(params, stop, progress).ensemble, {}, {}};
-        });
-}
-
-void MainWindow::openFiles(const data::DataSelection& selection) {
-    const QString name = selection.paths.size() == 1
-                             ? QFileInfo(QString::fromStdString(selection.paths.front())).fileName()
-                             : tr("%1 files").arg(selection.paths.size());
-    rememberRecent(selection);
-    m_requested = selection;
-    m_requestedDemo.reset();
-    startLoading(
-        tr("Reading %1...").arg(name), [selection] { return data::sourceIdentity(selection); },
-        [selection, limit = memoryLimit()](const std::stop_token& stop,
-                                           const data::Progress& progress) {
-            return engine::readForWorkbench(selection, limit, stop, progress);
-        });
-}
-
-std::size_t MainWindow::memoryLimit() const {
-    return m_memoryLimit != 0 ? m_memoryLimit : engine::defaultMemoryLimit();
-}
-
-engine::EnsembleOverview MainWindow::loadOverview(const EnsembleSource& source,
-                                                  const std::function<std::string()>& identify,
-                                                  const std::stop_token& stop,
-                                                  const data::Progress& progress,
-                                                  const engine::SameDataParts* sameData) {
-    engine::WorkbenchEnsemble loaded =
-        source(stop, [&](double f) { data::report(progress, 0.6 * f); });
-    // As the command line does: no NaN distance of theirs may reach the clustering.
-    std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
-    engine::EnsembleOverview overview = engine::buildEnsembleOverview(
-        std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
-        [&](double f) { data::report(progress, 0.6 + 0.4 * f); }, sameData);
-    overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
-    overview.membersWithoutData = std::move(withoutData);
-    overview.variables = std::move(loaded.variables);
-    if (loaded.streamed) {
-        overview.streamed =
-            std::make_shared<const engine::StreamedSource>(std::move(*loaded.streamed));
-    }
-    return overview;
-}
-
-void MainWindow::startLoading(const QString& what, std::function<std::string()> identify,
-                              EnsembleSource source) {
-    setBusy(what);
-    if (!m_overview) {
-        m_info->showMessage(tr("Loading..."));
-        m_view->setPlaceholderText(what);
-    }
-    forgetTimeSteps();  // other data: the steps read ahead are not its
-    m_loader.start(
-        [source = std::move(source), identify = std::move(identify)](
-            const std::stop_token& stop, const data::Progress& progress) {
-            return loadOverview(source, identify, stop, progress);
-        },
-        [this](engine::EnsembleOverview overview) {
-            showOverview(std::make_unique<engine::EnsembleOverview>(std::move(overview)));
-        },
-        [this](const std::exception_ptr& error, bool cancelled) { onLoadFailed(error, cancelled); },
-        [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
-}
-
 void MainWindow::chooseFiles() {
     QSettings settings;
     const QStringList files = QFileDialog::getOpenFileNames(
@@ -380,71 +275,6 @@ void MainWindow::rebuildRecentMenu() {
                                 [this, selection = entry.selection] { openFiles(selection); });
     }
     m_recentMenu->setEnabled(!recent.empty());
-}
-
-void MainWindow::cancelLoading() {
-    m_loader.cancel();
-    m_surfaceExport.cancel();
-    if (m_session != nullptr) m_session->cancel();
-}
-
-void MainWindow::onLoadFailed(const std::exception_ptr& error, bool cancelled) {
-    const bool retrying = !cancelled && error && m_requested;  // see askForMemberDimension
-    if (!retrying) m_pendingProject.reset();  // a project whose data did not load is not applied
-    if (cancelled || !error) {
-        setIdle(tr("Loading cancelled"));
-        if (!m_overview) {
-            m_info->showMessage(tr("No ensemble loaded (loading was cancelled)."));
-            m_view->setPlaceholderText({});
-        }
-        return;
-    }
-    const auto dataError = dataErrorOf(error);
-    if (dataError && dataError->kind() == data::ErrorKind::MemberDimensionNotFound &&
-        !dataError->choices().empty() && m_requested) {
-        askForMemberDimension(*dataError);
-        return;
-    }
-    const QString message = messageOf(error);
-    setIdle(tr("Loading failed: %1").arg(message));
-    if (!m_overview) {
-        m_view->setPlaceholderText(tr("Could not open the ensemble: %1\n\n").arg(message) +
-                                   ui::SilhouetteView::defaultPlaceholder());
-    }
-    if (!m_overview) m_info->showMessage(tr("Loading failed: %1").arg(message));
-    // Not modal: the window stays usable, and scripted sessions are not blocked.
-    auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open the ensemble"), message,
-                                QMessageBox::Ok, this);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
-    emit loadingFailed(message);
-}
-
-void MainWindow::askForMemberDimension(const data::Error& error) {
-    // Many files hold one run over time or months: let the user say which dimension stands in
-    // for members instead of failing. Not modal, so scripted sessions can answer it too.
-    QStringList choices;
-    for (const auto& c : error.choices()) choices << QString::fromStdString(c);
-    const QString file = QFileInfo(QString::fromStdString(m_requested->paths.front())).fileName();
-    setIdle(tr("%1 has no member dimension: choose one").arg(file));
-    if (!m_overview) m_info->showMessage(tr("Waiting for the choice of member dimension."));
-    auto* dialog = new QInputDialog(this);
-    dialog->setObjectName(QStringLiteral("memberDimensionDialog"));
-    dialog->setAttribute(Qt::WA_DeleteOnClose);
-    dialog->setWindowTitle(tr("Which dimension holds the members?"));
-    dialog->setLabelText(
-        tr("ensil found no ensemble member dimension in %1.\n\nIf one of its other dimensions "
-           "(such as forecast times or months) stands in for members, choose it:")
-            .arg(file));
-    dialog->setComboBoxItems(choices);
-    dialog->setComboBoxEditable(false);
-    const data::DataSelection retry = *m_requested;
-    connect(dialog, &QInputDialog::textValueSelected, this, [this, retry](const QString& dim) {
-        data::DataSelection chosen = retry;
-        chosen.memberDimension = dim.toStdString();
-        openFiles(chosen);
-    });
-    dialog->open();
 }
 
 void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview) {
@@ -520,71 +350,6 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
     emit ensembleLoaded();
     const session::SessionState& s = m_model->state();
     m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
-}
-
-QString MainWindow::defaultScreenshotPath(const QString& lastPath) const {
-    // In the folder of the last screenshot, named after what the picture shows.
-    const QString folder = lastPath.isEmpty() ? QString() : QFileInfo(lastPath).absolutePath();
-    QString name = QStringLiteral("ensil.png");
-    if (m_overview && m_model->state().isovalue) {
-        name = QString::fromStdString(
-                   engine::pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
-               QStringLiteral(".png");
-    }
-    return folder.isEmpty() ? name : QDir(folder).filePath(name);
-}
-
-void MainWindow::chooseScreenshot() {
-    QSettings settings;
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Save Screenshot"),
-        defaultScreenshotPath(settings.value(QStringLiteral("screenshot/path")).toString()),
-        tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    // Any resolution: the view's own by default, or e.g. 3840x2400 for print.
-    const qreal ratio = m_view->devicePixelRatioF();
-    const QString viewSize = QStringLiteral("%1x%2")
-                                 .arg(std::lround(m_view->width() * ratio))
-                                 .arg(std::lround(m_view->height() * ratio));
-    bool ok = false;
-    const QString answer = QInputDialog::getText(
-        this, tr("Screenshot Size"), tr("Width x height in pixels:"), QLineEdit::Normal,
-        settings.value(QStringLiteral("screenshot/size"), viewSize).toString(), &ok);
-    if (!ok) return;
-    const QStringList parts = answer.toLower().split(QLatin1Char('x'));
-    const int width = parts.size() == 2 ? parts[0].trimmed().toInt() : 0;
-    const int height = parts.size() == 2 ? parts[1].trimmed().toInt() : 0;
-    if (width < 16 || height < 16 || width > 16384 || height > 16384) {
-        QMessageBox::warning(this, tr("Screenshot not saved"),
-                             tr("'%1' is not a size such as 1920x1200 (16 to 16384 pixels a "
-                                "side).")
-                                 .arg(answer));
-        return;
-    }
-    settings.setValue(QStringLiteral("screenshot/path"), path);
-    settings.setValue(QStringLiteral("screenshot/size"), answer);
-    QString error;
-    if (!saveScreenshot(path, &error, QSize(width, height))) {
-        QMessageBox::warning(this, tr("Screenshot not saved"), error);
-    }
-}
-
-bool MainWindow::saveScreenshot(const QString& path, QString* error, QSize size) {
-    const QImage image = size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
-    if (image.isNull()) {
-        if (error != nullptr) {
-            *error = tr("The view could not be drawn at %1 x %2 pixels; the graphics driver may "
-                        "not allow images that large.")
-                         .arg(size.width())
-                         .arg(size.height());
-        }
-        return false;
-    }
-    if (!image.save(path)) {
-        if (error != nullptr) *error = tr("Could not write '%1'.").arg(path);
-        return false;
-    }
-    return true;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -174,17 +174,6 @@ private:
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.
     void lookFrom(const session::ViewPreset& preset);
-    using EnsembleSource =
-        std::function<engine::WorkbenchEnsemble(const std::stop_token&, const data::Progress&)>;
-    // Reads an ensemble and builds its overview (on a worker). `identify` gives the data's
-    // identity for the mesh cache; it runs on the worker, since it reads the files (a content
-    // hash).
-    // `sameData`: another time step's parts that this one shares (buildEnsembleOverview).
-    static engine::EnsembleOverview loadOverview(const EnsembleSource& source,
-                                                 const std::function<std::string()>& identify,
-                                                 const std::stop_token& stop,
-                                                 const data::Progress& progress,
-                                                 const engine::SameDataParts* sameData = nullptr);
     // Time as an axis of the session (main_window_time.cpp): the time bar, a step asked for
     // (read in the background, the last step kept on screen until this one is built), the
     // step shown, and the steps read ahead or visited, kept within a memory budget.
@@ -212,8 +201,10 @@ private:
     void buildAhead(const engine::EnsembleOverview& step);
     void forgetTimeSteps();
     [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
+    // Opening data (main_window_loading.cpp): `read` on a worker, as
+    // engine::readEnsembleOverview; `identify` gives the data's identity for the mesh cache.
     void startLoading(const QString& what, std::function<std::string()> identify,
-                      EnsembleSource source);
+                      engine::WorkbenchRead read);
     void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);

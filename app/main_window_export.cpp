@@ -1,18 +1,25 @@
 // File > Export: the surfaces for ParaView, MeshLab or Blender (engine/surface_export.h, in the
-// background with progress and cancel), the dendrogram as SVG and the member table as CSV.
-// Part of MainWindow.
+// background with progress and cancel), the dendrogram as SVG, the member table as CSV, and the
+// view as a screenshot at any size. Part of MainWindow.
 #include <QAction>
+#include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QImage>
+#include <QInputDialog>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QSettings>
 #include <QStatusBar>
+#include <cmath>
 
 #include "app/main_window.h"
+#include "engine/picture_title.h"
 #include "widgets/csv_export.h"
 #include "widgets/dendrogram_export.h"
+#include "widgets/silhouette_view.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
 
@@ -168,6 +175,71 @@ void MainWindow::exportMemberTable() {
         return;
     }
     statusBar()->showMessage(tr("Member table written to %1").arg(path), 5000);
+}
+
+QString MainWindow::defaultScreenshotPath(const QString& lastPath) const {
+    // In the folder of the last screenshot, named after what the picture shows.
+    const QString folder = lastPath.isEmpty() ? QString() : QFileInfo(lastPath).absolutePath();
+    QString name = QStringLiteral("ensil.png");
+    if (m_overview && m_model->state().isovalue) {
+        name = QString::fromStdString(
+                   engine::pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
+               QStringLiteral(".png");
+    }
+    return folder.isEmpty() ? name : QDir(folder).filePath(name);
+}
+
+void MainWindow::chooseScreenshot() {
+    QSettings settings;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Save Screenshot"),
+        defaultScreenshotPath(settings.value(QStringLiteral("screenshot/path")).toString()),
+        tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    // Any resolution: the view's own by default, or e.g. 3840x2400 for print.
+    const qreal ratio = m_view->devicePixelRatioF();
+    const QString viewSize = QStringLiteral("%1x%2")
+                                 .arg(std::lround(m_view->width() * ratio))
+                                 .arg(std::lround(m_view->height() * ratio));
+    bool ok = false;
+    const QString answer = QInputDialog::getText(
+        this, tr("Screenshot Size"), tr("Width x height in pixels:"), QLineEdit::Normal,
+        settings.value(QStringLiteral("screenshot/size"), viewSize).toString(), &ok);
+    if (!ok) return;
+    const QStringList parts = answer.toLower().split(QLatin1Char('x'));
+    const int width = parts.size() == 2 ? parts[0].trimmed().toInt() : 0;
+    const int height = parts.size() == 2 ? parts[1].trimmed().toInt() : 0;
+    if (width < 16 || height < 16 || width > 16384 || height > 16384) {
+        QMessageBox::warning(this, tr("Screenshot not saved"),
+                             tr("'%1' is not a size such as 1920x1200 (16 to 16384 pixels a "
+                                "side).")
+                                 .arg(answer));
+        return;
+    }
+    settings.setValue(QStringLiteral("screenshot/path"), path);
+    settings.setValue(QStringLiteral("screenshot/size"), answer);
+    QString error;
+    if (!saveScreenshot(path, &error, QSize(width, height))) {
+        QMessageBox::warning(this, tr("Screenshot not saved"), error);
+    }
+}
+
+bool MainWindow::saveScreenshot(const QString& path, QString* error, QSize size) {
+    const QImage image = size.isEmpty() ? m_view->grabFramebuffer() : m_view->renderImage(size);
+    if (image.isNull()) {
+        if (error != nullptr) {
+            *error = tr("The view could not be drawn at %1 x %2 pixels; the graphics driver may "
+                        "not allow images that large.")
+                         .arg(size.width())
+                         .arg(size.height());
+        }
+        return false;
+    }
+    if (!image.save(path)) {
+        if (error != nullptr) *error = tr("Could not write '%1'.").arg(path);
+        return false;
+    }
+    return true;
 }
 
 }  // namespace ensil::app

@@ -42,7 +42,7 @@ workbench::BackgroundJob<engine::EnsembleOverview>::Work MainWindow::readingStep
     const data::DataSelection& selection) const {
     return [selection, memoryLimit = memoryLimit(), sameData = engine::sameDataParts(*m_overview)](
                const std::stop_token& stop, const data::Progress& progress) {
-        return loadOverview(
+        return engine::readEnsembleOverview(
             [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
                 return engine::readForWorkbench(selection, memoryLimit, s, p);
             },

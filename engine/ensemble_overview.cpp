@@ -39,4 +39,22 @@ EnsembleOverview buildEnsembleOverview(std::shared_ptr<const data::Ensemble> ens
     return overview;
 }
 
+EnsembleOverview readEnsembleOverview(const WorkbenchRead& read,
+                                      const std::function<std::string()>& identify,
+                                      const std::stop_token& stop, const data::Progress& progress,
+                                      const SameDataParts* sameData) {
+    WorkbenchEnsemble loaded = read(stop, [&](double f) { data::report(progress, 0.6 * f); });
+    std::vector<std::string> withoutData = data::leaveOutMembersWithoutData(loaded.ensemble);
+    EnsembleOverview overview = buildEnsembleOverview(
+        std::make_shared<const data::Ensemble>(std::move(loaded.ensemble)), stop,
+        [&](double f) { data::report(progress, 0.6 + 0.4 * f); }, sameData);
+    overview.sourceKey = identify() + data::membersWithoutDataKey(withoutData);
+    overview.membersWithoutData = std::move(withoutData);
+    overview.variables = std::move(loaded.variables);
+    if (loaded.streamed) {
+        overview.streamed = std::make_shared<const StreamedSource>(std::move(*loaded.streamed));
+    }
+    return overview;
+}
+
 }  // namespace ensil::engine

@@ -4,6 +4,7 @@
 // Computed off the GUI thread by a pure function. Immutable once built.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <stop_token>
 #include <string>
@@ -49,6 +50,21 @@ struct SameDataParts {
     data::GridMapping gridMapping;
 };
 SameDataParts sameDataParts(const EnsembleOverview& overview);
+
+// How the workbench reads data it opens (engine::readForWorkbench, or the demo generated).
+using WorkbenchRead =
+    std::function<WorkbenchEnsemble(const std::stop_token&, const data::Progress&)>;
+
+// What the workbench shows of data it opens, on a worker: the ensemble `read` gives (the first
+// 60 % of the progress), its members without any valid value left out as the command line
+// leaves them out (no NaN distance of theirs may reach the clustering), and its overview built.
+// `identify` gives the data's identity for the mesh cache; it reads the files (a content hash),
+// so it runs here too. `sameData` as for buildEnsembleOverview. Throws as `read` and
+// buildEnsembleOverview do.
+EnsembleOverview readEnsembleOverview(const WorkbenchRead& read,
+                                      const std::function<std::string()>& identify,
+                                      const std::stop_token& stop, const data::Progress& progress,
+                                      const SameDataParts* sameData = nullptr);
 
 // Throws data::Cancelled, data::Error. With `sameData` from another time step of the same data
 // on the same grid and mapping, its isovalue and map lines are taken instead of computed.

@@ -1,21 +1,23 @@
 #!/usr/bin/env python3
-"""Runs clang-tidy (14, Debian 12's; the checks are .clang-tidy's) on every C++ file that changed
-since its last clean check, and fails on any finding in those files.
+"""Runs clang-tidy (14, Debian 12's; the checks are .clang-tidy's, every layer) on every C++ file
+that changed since the tree that last landed, and fails on any finding in those files.
 
 Why not the whole tree in CI: clang-tidy parses each translation unit with Qt's and VTK's headers
 (about 11 s a file here), so the ~330 files of every layer would take about 20 minutes on two
 cores, half of CI's budget. Instead packaging/tidy-checked.txt holds each C++ file's git blob hash
-as last checked: a file whose content differs (or that is new) is checked, and must be free of
-findings; one unchanged since is not parsed again. A header is checked through its own .cpp, or
-else through a translation unit that includes it, and only findings in the changed files count
-(an unchanged header's old findings are its own debt, not the change's).
+in the tree that last landed (CI had checked every file changed before it): a file whose content
+differs, or that is new, is checked and must be free of findings, old ones included; one unchanged
+is not parsed again. A header is checked through its own .cpp, or else through a translation unit
+that includes it, and only findings in the changed files count (an unchanged header's findings
+are its own debt, not the change's).
 
-The hashes were first taken of the tree as it stood when the check began (session 27): findings
-in files nobody has touched since are the debt of before, and go as their files are changed.
+The hashes were first taken when the check began (the tree of 1a08487, session 27): findings in
+files nobody has changed since are the debt of before, and go as their files are changed.
 
 Usage:
-  packaging/check-tidy.py BUILD_DIR           check the changed files (CI: build/ci)
-  packaging/check-tidy.py BUILD_DIR --record  check them, and when clean record their hashes
+  packaging/check-tidy.py BUILD_DIR   check the files changed since the record (CI: build/ci)
+  packaging/check-tidy.py --record    record every file's hash: run it on a tree that landed
+                                      (CI passed on it), at the start of new work, and commit it
 The build directory needs compile_commands.json and the generated headers (a configured and
 built tree: CI runs this after the optimised build).
 """
@@ -60,8 +62,8 @@ def recorded_hashes() -> dict:
 
 
 def write_record(hashes: dict) -> None:
-    lines = ["# Each C++ file's git blob hash when clang-tidy last found nothing new in it",
-             "# (packaging/check-tidy.py --record writes this; CI checks the files that differ)."]
+    lines = ["# Each C++ file's git blob hash in the tree that last landed (packaging/check-tidy.py",
+             "# --record writes this; CI runs clang-tidy on the files that differ from it)."]
     lines += [f"{blob} {path}" for path, blob in sorted(hashes.items())]
     RECORD.write_text("\n".join(lines) + "\n", encoding="utf-8")
 
@@ -108,8 +110,12 @@ def tidy(unit: pathlib.Path, build: pathlib.Path) -> str:
 
 def main() -> int:
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    record = "--record" in sys.argv[1:]
-    if len(args) != 1:
+    if sys.argv[1:] == ["--record"]:
+        write_record(current_hashes())
+        print(f"check-tidy.py: recorded {len(current_hashes())} files' hashes in "
+              f"{RECORD.relative_to(ROOT)}")
+        return 0
+    if len(args) != 1 or len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)
         return 2
     build = pathlib.Path(args[0]).resolve()
@@ -162,16 +168,10 @@ def main() -> int:
     if findings:
         print(f"check-tidy.py: {len(findings)} findings in the changed files:", file=sys.stderr)
         print("\n".join(findings), file=sys.stderr)
-        print(f"fix them (or, for a false finding, a NOLINT(check) with the reason), then run "
-              f"packaging/check-tidy.py {args[0]} --record", file=sys.stderr)
+        print("fix them (or, for a false finding, add NOLINT(check-name) with the reason)",
+              file=sys.stderr)
         return 1
     print("check-tidy.py: no finding in the changed files")
-    if record:
-        kept = {p: b for p, b in recorded.items() if p in hashes}
-        kept.update({p: hashes[p] for p in changed if p not in unchecked})
-        write_record(kept)
-        print(f"check-tidy.py: recorded {len(kept)} files' hashes in "
-              f"{RECORD.relative_to(ROOT)}")
     return 0
 
 
