@@ -229,9 +229,10 @@ void Renderer::frameTheBox() {
     // leaves the box larger.
     const glm::ivec2 size = m_scene.viewSize;
     if (m_scene.hasGrid && size.x > 0 && size.y > 0) {
-        const QSizeF logical(size.x / m_lineScale, size.y / m_lineScale);
+        const QSizeF logical(static_cast<double>(size.x) / m_lineScale,
+                             static_cast<double>(size.y) / m_lineScale);
         const ViewOverlay shown = overlay(size.x, size.y);
-        const PanelRoom room = panelRoom(shown);
+        const PanelRoom room = panelRoom(shown, logical.width());
         const auto covered = [&] {
             const QRectF box(shown.box.topLeft() / m_lineScale, shown.box.size() / m_lineScale);
             const PanelPlaces places = placePanels(shown, logical, box);

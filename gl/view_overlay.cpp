@@ -368,13 +368,39 @@ QFont overlayFont(const QPaintDevice* device) {
     return font;
 }
 
-QFontMetricsF headingMetrics(const QPaintDevice* device) {
+QFont headingFont(const QPaintDevice* device) {
     QFont heading = overlayFont(device);
     heading.setPointSizeF(kHeadingPoints);
     heading.setBold(true);
-    return QFontMetricsF(heading);
+    return heading;
+}
+
+QFontMetricsF headingMetrics(const QPaintDevice* device) {
+    return QFontMetricsF(headingFont(device));
+}
+
+// The title's strip: its lines' height at this width.
+double titleHeight(const QString& title, const QPaintDevice* device, double width) {
+    const QFontMetricsF metrics = headingMetrics(device);
+    const auto lines = static_cast<double>(titleLines(title, metrics, width).size());
+    return metrics.height() + (lines - 1.0) * metrics.lineSpacing();
 }
 }  // namespace
+
+QStringList titleLines(const QString& title, const QFontMetricsF& metrics, double width) {
+    if (metrics.horizontalAdvance(title) <= width) return {title};
+    const QString separator = QStringLiteral(" \u00b7 ");
+    // The longest first line of whole facts that fits; the first fact alone if none does.
+    qsizetype cut = title.indexOf(separator);
+    if (cut < 0) return {metrics.elidedText(title, Qt::ElideMiddle, width)};
+    for (qsizetype next = title.indexOf(separator, cut + 1);
+         next >= 0 && metrics.horizontalAdvance(title.left(next)) <= width;
+         next = title.indexOf(separator, next + 1)) {
+        cut = next;
+    }
+    return {metrics.elidedText(title.left(cut), Qt::ElideMiddle, width),
+            metrics.elidedText(title.mid(cut + separator.size()), Qt::ElideMiddle, width)};
+}
 
 PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QRectF& dataBox,
                         const QPaintDevice* device) {
@@ -385,8 +411,8 @@ PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QR
     const QFontMetricsF metrics(overlayFont(device));
     double panelTop = kMargin;
     if (!overlay.title.isEmpty()) {
-        places.title = QRectF(kMargin, 6.0, logicalSize.width() - 2 * kMargin,
-                              headingMetrics(device).height());
+        const double width = logicalSize.width() - 2 * kMargin;
+        places.title = QRectF(kMargin, 6.0, width, titleHeight(overlay.title, device, width));
         panelTop = places.title.bottom() + 6.0;
     }
     if (!overlay.legend.empty()) {
@@ -409,10 +435,12 @@ PanelPlaces placePanels(const ViewOverlay& overlay, QSizeF logicalSize, const QR
     return places;
 }
 
-PanelRoom panelRoom(const ViewOverlay& overlay) {
+PanelRoom panelRoom(const ViewOverlay& overlay, double logicalWidth) {
     const QFontMetricsF metrics(overlayFont(nullptr));
     PanelRoom room;
-    if (!overlay.title.isEmpty()) room.top = 6.0 + headingMetrics(nullptr).height() + 6.0;
+    if (!overlay.title.isEmpty()) {
+        room.top = 6.0 + titleHeight(overlay.title, nullptr, logicalWidth - 2 * kMargin) + 6.0;
+    }
     if (!overlay.legend.empty()) room.legend = legendSize(overlay.legend, metrics);
     if (!overlay.colourScales.empty()) {
         room.colourBar = colourScalesSize(overlay.colourScales, metrics);
@@ -444,17 +472,21 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     const PanelPlaces panels = placePanels(overlay, logicalSize, dataBox, painter.device());
     std::vector<QRectF> placed;
     if (!panels.title.isEmpty()) {
-        QFont heading = font;
-        heading.setPointSizeF(kHeadingPoints);
-        heading.setBold(true);
+        const QFont heading = headingFont(painter.device());
         painter.setFont(heading);
         const QFontMetricsF headingMetrics(heading);
-        const QString text =
-            headingMetrics.elidedText(overlay.title, Qt::ElideMiddle, panels.title.width());
+        const QStringList lines = titleLines(overlay.title, headingMetrics, panels.title.width());
         painter.setPen(overlay.text);
-        painter.drawText(panels.title, Qt::AlignHCenter | Qt::AlignTop, text);
-        record(QRectF(panels.title.center().x() - 0.5 * headingMetrics.horizontalAdvance(text),
-                      panels.title.top(), headingMetrics.horizontalAdvance(text),
+        double widest = 0.0;
+        for (qsizetype i = 0; i < lines.size(); ++i) {
+            const QRectF line(
+                panels.title.left(),
+                panels.title.top() + static_cast<double>(i) * headingMetrics.lineSpacing(),
+                panels.title.width(), headingMetrics.height());
+            painter.drawText(line, Qt::AlignHCenter | Qt::AlignTop, lines[i]);
+            widest = std::max(widest, headingMetrics.horizontalAdvance(lines[i]));
+        }
+        record(QRectF(panels.title.center().x() - 0.5 * widest, panels.title.top(), widest,
                       panels.title.height()),
                QStringLiteral("title"));
         placed.push_back(panels.title);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QColor>
+#include <QFontMetricsF>
 #include <QRectF>
 #include <QSizeF>
 #include <QString>
@@ -133,7 +134,13 @@ struct PanelRoom {
     QSizeF colourBar;
     double margin = 0.0;
 };
-PanelRoom panelRoom(const ViewOverlay& overlay);
+// `logicalWidth`: the picture's, which decides whether the title takes one line or two.
+PanelRoom panelRoom(const ViewOverlay& overlay, double logicalWidth);
+
+// The title's lines within `width`: one when it fits; else two, broken after the last of its
+// facts (separated by middle dots) that fits on the first, so that no fact, a date least of all,
+// is cut; only a line still too wide is elided, in the middle. Measured with `metrics`.
+QStringList titleLines(const QString& title, const QFontMetricsF& metrics, double width);
 
 // The text scale for a picture of this height drawn with no window to compare it with: 1 up
 // to kReferenceHeight pixels, then in proportion.

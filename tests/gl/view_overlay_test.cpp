@@ -74,7 +74,8 @@ struct Scene {
         gl::OverlayInput in;
         in.grid = &grid;
         in.frame = &frame;
-        in.viewProjection = camera.viewProjection(float(width) / height);
+        in.viewProjection =
+            camera.viewProjection(static_cast<float>(width) / static_cast<float>(height));
         in.eye = camera.eye();
         in.width = width;
         in.height = height;
@@ -194,18 +195,20 @@ TEST(ViewOverlay, PaintsTheLegendSwatchesAndTextIntoTheImage) {
     // The legend's first swatch, in the top-left corner, has cluster 1's colour.
     const glm::vec3 c = gl::clusterColor(0);
     bool swatch = false;
-    for (int y = 10; y < 40 && !swatch; ++y)
+    for (int y = 10; y < 40 && !swatch; ++y) {
         for (int x = 10; x < 40 && !swatch; ++x) {
             const QColor p = image.pixelColor(x, y);
             swatch = std::abs(p.red() - int(c.r * 255)) < 3 &&
                      std::abs(p.green() - int(c.g * 255)) < 3 &&
                      std::abs(p.blue() - int(c.b * 255)) < 3;
         }
+    }
     EXPECT_TRUE(swatch);
     // Text was drawn somewhere below the legend (tick labels): light pixels exist there.
     int light = 0;
-    for (int y = 150; y < 600; ++y)
+    for (int y = 150; y < 600; ++y) {
         for (int x = 0; x < 800; ++x) light += image.pixelColor(x, y).lightness() > 150 ? 1 : 0;
+    }
     EXPECT_GT(light, 200);
 }
 
@@ -379,4 +382,35 @@ TEST(ViewOverlay, ADashedSwatchIsPaintedAsDashesAndTheBandTranslucent) {
     EXPECT_LT(dashed, filled / 2) << "and thinner than a square, with gaps";
     EXPECT_LT(band, filled) << "only the band's outline is in full colour";
     EXPECT_GT(bandBlend, filledBlend + filled / 3) << "its inside is translucent over the panel";
+}
+
+// A title wider than the picture goes on two lines, broken between its facts, so a date is never
+// cut (issue 40: at 640 x 400 the title was elided in the middle of the date); one that fits
+// stays one line, and the strip the panels leave the box grows by the second line.
+TEST(ViewOverlay, ATitleTooWideForThePictureBreaksBetweenItsFactsNotInADate) {
+    const QString title = QStringLiteral(
+        "t (Temperature) [K] \u00b7 isovalue 269.4 K \u00b7 time 2016-10-06T03:00 \u00b7 "
+        "10 members along number");
+    QFont font;
+    font.setPointSizeF(10.5);
+    font.setBold(true);
+    const QFontMetricsF metrics(font);
+    const double wide = metrics.horizontalAdvance(title) + 10.0;
+    EXPECT_EQ(gl::titleLines(title, metrics, wide), QStringList{title});
+
+    const double narrow = metrics.horizontalAdvance(title) * 0.6;
+    const QStringList lines = gl::titleLines(title, metrics, narrow);
+    ASSERT_EQ(lines.size(), 2);
+    EXPECT_EQ(lines.join(QStringLiteral(" \u00b7 ")), title) << "nothing left out or cut";
+    for (const QString& line : lines) EXPECT_LE(metrics.horizontalAdvance(line), narrow);
+    EXPECT_TRUE(lines[0].contains(QStringLiteral("2016-10-06T03:00")) ||
+                lines[1].contains(QStringLiteral("2016-10-06T03:00")));
+
+    gl::ViewOverlay o;
+    o.title = title;
+    const double oneLine = gl::panelRoom(o, 4000.0).top;
+    const double twoLines = gl::panelRoom(o, 640.0 * 0.5).top;
+    EXPECT_GT(twoLines, oneLine + 0.8 * metrics.height());
+    const gl::PanelPlaces places = gl::placePanels(o, QSizeF(320.0, 200.0), QRectF());
+    EXPECT_NEAR(places.title.height(), twoLines - 12.0, 1e-6);
 }
