@@ -64,6 +64,7 @@ QString topLevelHelp() {
         "                    dimensions and the most vertical levels).\n"
         "  --member-dim D    Dimension that holds the members, when ensil finds none.\n"
         "  --time-index I    Index along other dimensions such as time (default 0).\n"
+        "  --levels A:B      Keep the vertical levels from A to B (e.g. 1000:100hPa).\n"
         "  --memory-limit S  Memory the workbench may hold for the data (default: three\n"
         "                    quarters of what is available now). NetCDF data that would\n"
         "                    take more (1.5 times its values) are opened as a copy at every\n"

@@ -1,5 +1,8 @@
 #include "cli/data_selection_options.h"
 
+#include "data/error.h"
+#include "data/level_range.h"
+
 namespace ensil::cli {
 
 DataSelectionOptions::DataSelectionOptions()
@@ -15,10 +18,16 @@ DataSelectionOptions::DataSelectionOptions()
       m_timeIndex(QStringList{QStringLiteral("time-index")},
                   QStringLiteral("Index taken along every other non-spatial dimension, such as "
                                  "time (default 0)."),
-                  QStringLiteral("I"), QStringLiteral("0")) {}
+                  QStringLiteral("I"), QStringLiteral("0")),
+      m_levels(QStringList{QStringLiteral("levels")},
+               QStringLiteral("Keep only the vertical levels from FROM to TO, ends included, in "
+                              "any units UDUNITS-2 converts to the vertical axis's (e.g. "
+                              "1000:100hPa, 0:12km), or in the axis's own without units "
+                              "(default: every level)."),
+               QStringLiteral("FROM:TO")) {}
 
 void DataSelectionOptions::addTo(QCommandLineParser& parser) const {
-    parser.addOptions({m_variable, m_memberDim, m_timeIndex});
+    parser.addOptions({m_variable, m_memberDim, m_timeIndex, m_levels});
     parser.addPositionalArgument(
         QStringLiteral("PATH"),
         QStringLiteral(
@@ -41,6 +50,14 @@ std::optional<data::DataSelection> DataSelectionOptions::selection(const QComman
         return std::nullopt;
     }
     s.timeIndex = index;
+    if (parser.isSet(m_levels)) {
+        try {
+            s.levels = data::parseLevelRange(parser.value(m_levels).toStdString());
+        } catch (const data::Error& e) {
+            error = QStringLiteral("--levels: %1").arg(QString::fromUtf8(e.what()));
+            return std::nullopt;
+        }
+    }
     return s;
 }
 

@@ -1,5 +1,5 @@
 // The data-selection options every command that reads files shares (info, preprocess, render,
-// and the workbench itself): PATH..., --var, --member-dim, --time-index. Main thread.
+// and the workbench itself): PATH..., --var, --member-dim, --time-index, --levels. Main thread.
 #pragma once
 
 #include <QCommandLineOption>
@@ -24,6 +24,7 @@ private:
     QCommandLineOption m_variable;
     QCommandLineOption m_memberDim;
     QCommandLineOption m_timeIndex;
+    QCommandLineOption m_levels;
 };
 
 }  // namespace ensil::cli

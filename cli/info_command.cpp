@@ -77,6 +77,11 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
         out << "  "
             << "xyz"[a] << "  " << engine::describeAxis(d.grid.axis(a)) << "\n";
     }
+    if (d.keptLevels) {  // --levels
+        out << "            levels " << d.keptLevels->first + 1 << " to "
+            << d.keptLevels->first + d.grid.nz() << " of the file's " << d.keptLevels->fileZ.size()
+            << " kept (--levels)\n";
+    }
     if (!d.gridMapping.empty()) out << "Mapping:    " << qs(d.gridMapping.name) << "\n";
     const engine::Geography geography = engine::geographyOf(d);
     if (geography.bounds) {

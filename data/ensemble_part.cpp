@@ -55,7 +55,11 @@ Ensemble openEnsemblePart(const DataSelection& selection, const EnsembleDescript
                           const Progress& progress) {
     const EnsembleReader& reader = readerFor(selection);
     checkEnsemblePart(description, part, sourceOf(selection.paths));
-    Ensemble ensemble = reader.readPart(selection, description, part, stop, progress);
+    // A part of the levels the selection keeps is a part of the file's levels further up.
+    EnsemblePart filePart = part;
+    if (description.keptLevels) filePart.firstLayer += description.keptLevels->first;
+    Ensemble ensemble =
+        reader.readPart(selection, fileDescription(description), filePart, stop, progress);
     makeInfinitiesMissing(ensemble);
     return ensemble;
 }

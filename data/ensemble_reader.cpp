@@ -12,6 +12,7 @@
 #include <string>
 
 #include "data/content_hash.h"
+#include "data/ensemble_part.h"
 #include "data/error.h"
 #include "data/grib_reader.h"
 #include "data/hdf5_reader.h"
@@ -21,6 +22,22 @@
 #include "data/vtk_reader.h"
 
 namespace ensil::data {
+namespace {
+
+// Cuts every member to the layers [first, first + grid.nz()) and gives the ensemble `grid`, the
+// file's grid cut to them. A member's values run x fastest and z slowest, so a layer range is
+// one contiguous block.
+void keepLayers(Ensemble& ensemble, std::size_t first, const Grid& grid) {
+    const std::size_t layer = grid.nx() * grid.ny();
+    for (Member& member : ensemble.members) {
+        const auto begin = member.values.begin() + static_cast<std::ptrdiff_t>(first * layer);
+        FieldValues kept(begin, begin + static_cast<std::ptrdiff_t>(grid.nz() * layer));
+        member.values = std::move(kept);
+    }
+    ensemble.grid = grid;
+}
+
+}  // namespace
 namespace {
 
 // Asked in this order: NetCDF-4 files are HDF5 files too, so NetCDF goes first.
@@ -86,7 +103,26 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
 }
 
 EnsembleDescription describeEnsemble(const DataSelection& selection) {
-    return readerFor(selection).describe(selection);
+    return keepLevels(readerFor(selection).describe(selection), selection);
+}
+
+EnsembleDescription keepLevels(EnsembleDescription description, const DataSelection& selection) {
+    if (!selection.levels) return description;
+    const LayerSpan span =
+        layersWithin(description.grid.z(), *selection.levels,
+                     "'" + description.variable + "' in " + sourceOf(selection.paths));
+    description.keptLevels = EnsembleDescription::KeptLevels{span.first, description.grid.z()};
+    description.grid = gridLayers(description.grid, span.first, span.count);
+    return description;
+}
+
+EnsembleDescription fileDescription(const EnsembleDescription& description) {
+    EnsembleDescription file = description;
+    if (description.keptLevels) {
+        file.grid = Grid(description.grid.x(), description.grid.y(), description.keptLevels->fileZ);
+        file.keptLevels.reset();
+    }
+    return file;
 }
 
 std::string sourceIdentity(const DataSelection& selection) {
@@ -108,7 +144,8 @@ std::string sourceIdentity(const DataSelection& selection) {
               " mtime=" + std::to_string(time) + " xxh3=" + hash + "; ";
     }
     return id + "var=" + selection.variable + " member-dim=" + selection.memberDimension +
-           " time-index=" + std::to_string(selection.timeIndex);
+           " time-index=" + std::to_string(selection.timeIndex) +
+           (selection.levels ? " levels=" + levelRangeText(*selection.levels) : "");
 }
 
 void checkMemoryFor(std::size_t bytes, const std::string& what) {
@@ -144,13 +181,29 @@ void makeInfinitiesMissing(Ensemble& ensemble) {
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
                       const Progress& progress, EnsembleDescription* describedAs) {
     const EnsembleReader& reader = readerFor(selection);
-    EnsembleDescription description = reader.describe(selection);
-    checkMemoryFor(description.bytes(), "'" + description.variable + "' (" +
-                                            std::to_string(description.members) + " members of " +
-                                            std::to_string(description.grid.nx()) + " x " +
-                                            std::to_string(description.grid.ny()) + " x " +
-                                            std::to_string(description.grid.nz()) + " points)");
-    Ensemble ensemble = reader.read(selection, stop, progress);
+    EnsembleDescription description = keepLevels(reader.describe(selection), selection);
+    const auto checkMemory = [](const EnsembleDescription& d) {
+        checkMemoryFor(d.bytes(), "'" + d.variable + "' (" + std::to_string(d.members) +
+                                      " members of " + std::to_string(d.grid.nx()) + " x " +
+                                      std::to_string(d.grid.ny()) + " x " +
+                                      std::to_string(d.grid.nz()) + " points)");
+    };
+    checkMemory(description);
+    Ensemble ensemble;
+    if (!description.keptLevels) {
+        ensemble = reader.read(selection, stop, progress);
+    } else if (reader.readsParts()) {
+        // Only the levels kept are read.
+        ensemble = reader.readPart(
+            selection, fileDescription(description),
+            {0, description.members, description.keptLevels->first, description.grid.nz()}, stop,
+            progress);
+    } else {
+        // A format read whole (GRIB, VTK, HDF5): read, then the levels kept copied out.
+        checkMemory(fileDescription(description));
+        ensemble = reader.read(selection, stop, progress);
+        keepLayers(ensemble, description.keptLevels->first, description.grid);
+    }
     if (describedAs != nullptr) *describedAs = std::move(description);
     makeInfinitiesMissing(ensemble);
     if (membersWithoutData(ensemble).size() == ensemble.members.size()) {

@@ -18,6 +18,7 @@
 
 #include "data/ensemble.h"
 #include "data/job.h"
+#include "data/level_range.h"
 
 namespace ensil::data {
 
@@ -27,6 +28,8 @@ struct DataSelection {
     std::string variable{};            // variable / dataset / point-data array name
     std::string memberDimension{};     // override of the detected member dimension (NetCDF)
     std::size_t timeIndex = 0;         // index for every other non-spatial dimension
+    // The vertical levels kept (data/level_range.h); none: all of them.
+    std::optional<LevelRange> levels{};
 
     bool operator==(const DataSelection&) const = default;
 };
@@ -64,6 +67,13 @@ struct EnsembleDescription {
     Grid grid;
     GridMapping gridMapping;            // see data/grid_mapping.h
     std::vector<std::string> warnings;  // as Ensemble::warnings, from the headers alone
+    // Set when the selection keeps only some levels (DataSelection::levels): `grid` is cut to
+    // the file's layers [first, first + grid.nz()) along `fileZ`, all of the file's levels.
+    struct KeptLevels {
+        std::size_t first = 0;
+        Axis fileZ;
+    };
+    std::optional<KeptLevels> keptLevels;
     [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
 };
 
@@ -106,7 +116,15 @@ public:
 // or Error(UnsupportedFormat) listing the formats ensil reads.
 const EnsembleReader& readerFor(const DataSelection& selection);
 
+// What the headers say of the selection, its grid cut to the levels it keeps.
 EnsembleDescription describeEnsemble(const DataSelection& selection);
+// The description the selection's reader gave, cut to the levels the selection keeps (a
+// description of the file's every level when it keeps them all). Throws Error(InvalidArgument)
+// when the levels cannot be kept (layersWithin).
+EnsembleDescription keepLevels(EnsembleDescription description, const DataSelection& selection);
+// The reader's own description of what `description` keeps: its grid with all of the file's
+// levels again (what EnsembleReader::readPart expects).
+EnsembleDescription fileDescription(const EnsembleDescription& description);
 
 // Checks the memory the ensemble needs against what the machine has (Error(OutOfMemory) with
 // both figures), then reads it. Infinite values become NaN (missing), counted in

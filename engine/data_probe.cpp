@@ -47,6 +47,12 @@ void fill(DataProbe& probe, const data::EnsembleDescription& d) {
     probe.memberDimensionReason = qs(d.memberDimensionReason);
     probe.members = static_cast<int>(d.members);
     probe.grid = QStringLiteral("%1 x %2 x %3").arg(d.grid.nx()).arg(d.grid.ny()).arg(d.grid.nz());
+    probe.levels = describeAxis(d.grid.z());
+    if (d.keptLevels) {
+        probe.levels += QObject::tr(" (%1 of the file's %2 levels)")
+                            .arg(d.grid.nz())
+                            .arg(d.keptLevels->fileZ.size());
+    }
     for (const std::string& f : d.fixedDimensions) probe.fixedDimensions << qs(f);
     fillChoices(probe, d);
 }

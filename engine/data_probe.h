@@ -34,8 +34,11 @@ struct DataProbe {
     int timeSteps = 0;            // indices along the fixed dimensions; 0 when none
     QStringList fixedDimensions;  // "time = 0 of 4 (2017-01-01T00:00)"
     QString grid;                 // "120 x 61 x 2"
-    QString size;                 // "21 MiB of values", and how they open; empty: not said
-    QString error;                // plain words; non-empty: the files cannot be read so
+    // The vertical axis kept, as ensil info says it: "plev: 1000 .. 100 hPa, 7 points, uneven
+    // spacing" (what a level range is typed against).
+    QString levels;
+    QString size;   // "21 MiB of values", and how they open; empty: not said
+    QString error;  // plain words; non-empty: the files cannot be read so
 };
 
 // With a memoryLimit (the workbench's), the probe also says how the data would open within it

@@ -39,6 +39,13 @@ QJsonObject ensembleInfoJson(const data::EnsembleDescription& d, const prep::Fie
                                 {QStringLiteral("uniform"), axis.isUniform()}});
     }
     o[QStringLiteral("axes")] = axes;
+    // The file's levels that --levels keeps, from 0; absent when it keeps all.
+    if (d.keptLevels) {
+        o[QStringLiteral("kept_levels")] =
+            QJsonObject{{QStringLiteral("first"), static_cast<qint64>(d.keptLevels->first)},
+                        {QStringLiteral("count"), static_cast<qint64>(d.grid.nz())},
+                        {QStringLiteral("of"), static_cast<qint64>(d.keptLevels->fileZ.size())}};
+    }
     QJsonArray fixed;
     for (const auto& f : d.fixedDimensions) fixed.append(qs(f));
     o[QStringLiteral("fixed_dimensions")] = fixed;

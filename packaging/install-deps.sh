@@ -20,6 +20,8 @@ packages=(
     libproj-dev
     # GRIB 1 and 2 (ECMWF's and NCEP's native format) and its command-line tools
     libeccodes-dev libeccodes-tools
+    # unit conversion (UDUNITS-2 and its unit database): level ranges in hPa, km...
+    libudunits2-dev
     # the Python module (pybind11) and its tests (pytest, NumPy; VTK's Python readers check the
     # surfaces it exports; cftime is the oracle for the dates of every CF calendar)
     pybind11-dev python3-dev python3-pytest python3-numpy python3-vtk9 python3-cftime

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "data/error.h"
+#include "data/level_range.h"
 #include "session/setting_table.h"
 #include "session/version.h"
 
@@ -260,6 +262,13 @@ void readData(const Fields& root, const QDir& projectDir, SessionState& p) {
     p.data.memberDimension = data.text(QStringLiteral("member_dimension"), {}).toStdString();
     p.data.timeIndex =
         static_cast<std::size_t>(data.integer(QStringLiteral("time_index"), 0, 0, 1 << 30));
+    if (const QString levels = data.text(QStringLiteral("levels"), {}); !levels.isEmpty()) {
+        try {
+            p.data.levels = data::parseLevelRange(levels.toStdString());
+        } catch (const data::Error& e) {
+            data.fail(QStringLiteral("levels"), e.what());
+        }
+    }
 }
 
 QJsonObject dataJson(const SessionState& p, const QDir& projectDir) {
@@ -283,6 +292,10 @@ QJsonObject dataJson(const SessionState& p, const QDir& projectDir) {
     data[QStringLiteral("variable")] = QString::fromStdString(p.data.variable);
     data[QStringLiteral("member_dimension")] = QString::fromStdString(p.data.memberDimension);
     data[QStringLiteral("time_index")] = static_cast<qint64>(p.data.timeIndex);
+    if (p.data.levels) {
+        data[QStringLiteral("levels")] =
+            QString::fromStdString(data::levelRangeText(*p.data.levels));
+    }
     return data;
 }
 }  // namespace

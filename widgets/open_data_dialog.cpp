@@ -6,12 +6,16 @@
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 #include <algorithm>
+
+#include "data/error.h"
+#include "data/level_range.h"
 
 namespace ensil::ui {
 namespace {
@@ -31,6 +35,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
       m_variables(new QTreeWidget(this)),
       m_memberDimension(new QComboBox(this)),
       m_timeIndex(new QSpinBox(this)),
+      m_levels(new QLineEdit(this)),
       m_details(new QLabel(this)),
       m_error(new QLabel(this)),
       m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
@@ -51,6 +56,13 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     m_timeIndex->setKeyboardTracking(false);
     m_timeIndex->setToolTip(
         tr("Index taken along every other non-spatial dimension, such as time"));
+    m_levels->setObjectName(QStringLiteral("openDataLevels"));
+    m_levels->setPlaceholderText(tr("every level; or e.g. 1000:100hPa, 0:12km"));
+    m_levels->setClearButtonEnabled(true);
+    m_levels->setToolTip(
+        tr("Keep only the vertical levels between two values, ends included, in any units "
+           "that convert to the vertical axis's (hPa, Pa, millibars, km, m), or in its own "
+           "units without any: the troposphere of a box reaching 10 hPa, say."));
     m_details->setObjectName(QStringLiteral("openDataDetails"));
     m_details->setWordWrap(true);
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -63,6 +75,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     auto* form = new QFormLayout;
     form->addRow(tr("Member dimension:"), m_memberDimension);
     form->addRow(tr("Time index:"), m_timeIndex);
+    form->addRow(tr("&Levels:"), m_levels);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(new QLabel(filesText(m_paths), this));
     layout->addWidget(m_variables, 1);
@@ -80,6 +93,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     });
     connect(m_memberDimension, &QComboBox::currentIndexChanged, this, [this] { requestProbe(); });
     connect(m_timeIndex, &QSpinBox::valueChanged, this, [this] { requestProbe(); });
+    connect(m_levels, &QLineEdit::editingFinished, this, [this] { requestProbe(); });
     setProbing(false);
 }
 
@@ -89,10 +103,36 @@ data::DataSelection OpenDataDialog::selection() const {
     s.variable = m_variable.toStdString();
     s.memberDimension = m_memberDimension->currentData().toString().toStdString();
     s.timeIndex = static_cast<std::size_t>(std::max(0, m_timeIndex->value()));
+    if (const QString levels = m_levels->text().trimmed(); !levels.isEmpty()) {
+        try {
+            s.levels = data::parseLevelRange(levels.toStdString());
+        } catch (const data::Error&) {
+            // levelsError() says why; the dialog cannot be accepted meanwhile.
+        }
+    }
     return s;
 }
 
+QString OpenDataDialog::levelsError() const {
+    const QString levels = m_levels->text().trimmed();
+    if (levels.isEmpty()) return {};
+    try {
+        (void)data::parseLevelRange(levels.toStdString());
+    } catch (const data::Error& e) {
+        return QString::fromUtf8(e.what());
+    }
+    return {};
+}
+
 void OpenDataDialog::requestProbe() {
+    // A level range that does not parse is said at once; the headers are read for the rest.
+    if (const QString why = levelsError(); !why.isEmpty()) {
+        ++m_request;  // an answer on its way is for other choices
+        m_error->setText(why);
+        m_error->setVisible(true);
+        setProbing(false);
+        return;
+    }
     setProbing(true);
     emit probeRequested(selection(), ++m_request);
 }
@@ -169,6 +209,7 @@ void OpenDataDialog::fillDetails(const engine::DataProbe& probe) {
                  .arg(probe.format)
                  .arg(probe.members)
                  .arg(probe.variable, probe.grid);
+    if (!probe.levels.isEmpty()) lines << tr("Levels: %1").arg(probe.levels);
     for (const QString& fixed : probe.fixedDimensions) lines << tr("Fixed: %1").arg(fixed);
     if (!probe.size.isEmpty()) lines << tr("Size: %1").arg(probe.size);
     m_details->setText(lines.join(QLatin1Char('\n')));
@@ -183,7 +224,7 @@ void OpenDataDialog::setProbing(bool probing) {
 QString OpenDataDialog::errorText() const { return m_error->text(); }
 
 bool OpenDataDialog::canAccept() const {
-    return !m_probing && m_error->text().isEmpty() && m_usableVariable;
+    return !m_probing && m_error->text().isEmpty() && m_usableVariable && levelsError().isEmpty();
 }
 
 }  // namespace ensil::ui

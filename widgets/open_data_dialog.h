@@ -18,6 +18,7 @@ class QComboBox;
 class QDialogButtonBox;
 class QLabel;
 class QSpinBox;
+class QLineEdit;
 class QTreeWidget;
 
 namespace ensil::ui {
@@ -32,14 +33,18 @@ public:
     // Shows the answer to the latest request; answers to older requests are ignored.
     void showProbe(const engine::DataProbe& probe, int request);
 
-    // The choices, ready for MainWindow::openFiles.
+    // The choices, ready for MainWindow::openFiles (a level range that does not parse is left
+    // out; levelsError says why).
     [[nodiscard]] data::DataSelection selection() const;
     [[nodiscard]] bool isProbing() const { return m_probing; }
     [[nodiscard]] QString errorText() const;
+    // Why the Levels text is not a level range; empty when it is one, or empty.
+    [[nodiscard]] QString levelsError() const;
     [[nodiscard]] bool canAccept() const;
     [[nodiscard]] QTreeWidget* variableList() const { return m_variables; }
     [[nodiscard]] QComboBox* memberDimensionBox() const { return m_memberDimension; }
     [[nodiscard]] QSpinBox* timeIndexBox() const { return m_timeIndex; }
+    [[nodiscard]] QLineEdit* levelsEdit() const { return m_levels; }
 
 signals:
     // `request` numbers the requests, so that a late answer cannot overwrite a newer one.
@@ -56,6 +61,7 @@ private:
     QTreeWidget* m_variables;
     QComboBox* m_memberDimension;
     QSpinBox* m_timeIndex;
+    QLineEdit* m_levels;  // the level range kept (data/level_range.h); empty: every level
     QLabel* m_details;
     QLabel* m_error;
     QDialogButtonBox* m_buttons;

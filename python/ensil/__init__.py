@@ -51,7 +51,7 @@ def _paths(paths):
     return [_os.fsdecode(_os.fspath(p)) for p in paths]
 
 
-def open(paths, var=None, member_dim=None, time_index=0, progress=None):  # noqa: A001
+def open(paths, var=None, member_dim=None, time_index=0, levels=None, progress=None):  # noqa: A001
     """Reads an ensemble from NetCDF, HDF5, VTK (or GRIB) files, as ``ensil info`` and the
     workbench read it: one file with a member dimension, or one file per member.
 
@@ -60,12 +60,16 @@ def open(paths, var=None, member_dim=None, time_index=0, progress=None):  # noqa
                 vertical levels)
     member_dim  the dimension holding the members, when ensil cannot find one
     time_index  the index taken along every other non-spatial dimension, such as time
+    levels      the vertical levels kept, 'FROM:TO' with ends included, in any units UDUNITS-2
+                converts to the vertical axis's ('1000:100hPa', '0:12km'), or in the axis's own
+                (default: every level)
     progress    called with the fraction read; raising from it, or Ctrl+C, stops reading
 
     Raises ensil.Error with the command line's message (a missing file, an unknown variable,
     with ``.choices`` listing the usable ones).
     """
-    return _ensil._open(_paths(paths), var or "", member_dim or "", int(time_index), progress)
+    return _ensil._open(_paths(paths), var or "", member_dim or "", int(time_index),
+                        levels or "", progress)
 
 
 def _is_data_array(values):

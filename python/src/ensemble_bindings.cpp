@@ -4,6 +4,8 @@
 #include <cstring>
 
 #include "data/cf_conventions.h"
+#include "data/error.h"
+#include "data/level_range.h"
 #include "engine/ensemble_info.h"
 #include "engine/session_renderer.h"
 #include "python/src/bindings.h"
@@ -68,7 +70,7 @@ void warnAboutValues(const data::Ensemble& e) {
 }
 
 PyEnsemble openFiles(const std::vector<std::string>& paths, const std::string& variable,
-                     const std::string& memberDim, long long timeIndex,
+                     const std::string& memberDim, long long timeIndex, const std::string& levels,
                      const py::object& progress) {
     if (paths.empty()) throw ArgumentError("name at least one file, e.g. ensil.open('data.nc')");
     if (timeIndex < 0) {
@@ -78,6 +80,13 @@ PyEnsemble openFiles(const std::vector<std::string>& paths, const std::string& v
     PyEnsemble result;
     result.selection =
         data::DataSelection{paths, variable, memberDim, static_cast<std::size_t>(timeIndex)};
+    if (!levels.empty()) {
+        try {
+            result.selection->levels = data::parseLevelRange(levels);
+        } catch (const data::Error& e) {
+            throw ArgumentError(std::string("levels: ") + e.what());
+        }
+    }
     data::EnsembleDescription description;
     data::Ensemble ensemble;
     runInterruptible(
@@ -346,7 +355,7 @@ range and mean, missing values, the file's variables.)doc")
         });
 
     module.def("_open", &openFiles, py::arg("paths"), py::arg("var"), py::arg("member_dim"),
-               py::arg("time_index"), py::arg("progress"));
+               py::arg("time_index"), py::arg("levels"), py::arg("progress"));
     module.def("_from_numpy", &fromArray, py::arg("values"), py::arg("axes"), py::arg("variable"),
                py::arg("units"), py::arg("names"), py::arg("member_dim"));
     // For the tests only: the date ensil names a time step with, against python3-cftime.

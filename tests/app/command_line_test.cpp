@@ -225,3 +225,39 @@ TEST(InfoCommand, JsonReportsTheGridMappingAndTheTrueLongitudeLatitudeBounds) {
     EXPECT_TRUE(json(volume)["grid_mapping"].isNull());
     EXPECT_TRUE(json(volume)["lon_lat_bounds"].isNull());
 }
+
+// --levels keeps the vertical levels between its ends, in units UDUNITS-2 converts to the
+// axis's (ERA-Interim's levels are in millibars; the range in hPa), for info as for every
+// command that reads; a malformed range is a usage error (2), one that keeps fewer than two
+// levels a data error (1), each saying why.
+TEST(InfoCommand, LevelsKeepTheVerticalLevelsBetweenTheirEndsInAnyPressureUnits) {
+    const QString file = QStringLiteral(ENSIL_SHARED_DATA_DIR "/eraint_uvz.nc");
+    const auto json = [](const CliRun& r) {
+        return QJsonDocument::fromJson(r.out.toUtf8()).object();
+    };
+    const CliRun all = run({"info", file, "--member-dim", "month", "--json"});
+    ASSERT_EQ(all.code, 0) << all.err.toStdString();
+    EXPECT_EQ(json(all)["grid"].toArray()[2].toInt(), 3);
+    EXPECT_FALSE(json(all).contains("kept_levels"));
+
+    const CliRun upper =
+        run({"info", file, "--member-dim", "month", "--levels", "500:200hPa", "--json"});
+    ASSERT_EQ(upper.code, 0) << upper.err.toStdString();
+    EXPECT_EQ(json(upper)["grid"].toArray()[2].toInt(), 2);
+    const QJsonObject z = json(upper)["axes"].toArray()[2].toObject();
+    EXPECT_DOUBLE_EQ(z["first"].toDouble(), 200.0);
+    EXPECT_DOUBLE_EQ(z["last"].toDouble(), 500.0);
+    EXPECT_EQ(json(upper)["kept_levels"].toObject(),
+              (QJsonObject{{"first", 0}, {"count", 2}, {"of", 3}}));
+    const CliRun text = run({"info", file, "--member-dim", "month", "--levels", "50000:20000 Pa"});
+    EXPECT_TRUE(text.out.contains("levels 1 to 2 of the file's 3 kept")) << text.out.toStdString();
+
+    const CliRun malformed = run({"info", file, "--member-dim", "month", "--levels", "500-200"});
+    EXPECT_EQ(malformed.code, 2);
+    EXPECT_TRUE(malformed.err.contains("--levels: the level range '500-200'"))
+        << malformed.err.toStdString();
+    const CliRun one = run({"info", file, "--member-dim", "month", "--levels", "600:400hPa"});
+    EXPECT_EQ(one.code, 1);
+    EXPECT_TRUE(one.err.contains("hold 1 level of the vertical axis 'level'"))
+        << one.err.toStdString();
+}

@@ -196,3 +196,23 @@ def test_a_star_import_leaves_the_builtin_open_alone():
     names = {}
     exec("from ensil import *", names)
     assert "open" not in names and "from_numpy" in names and "render" in names
+
+
+def test_levels_keep_the_vertical_levels_between_their_ends_in_any_units(era5_path):
+    # ERA-Interim's levels are in millibars (200, 500, 850); the range is given in Pa and hPa.
+    path = os.path.join(os.path.dirname(era5_path), "eraint_uvz.nc")
+    whole = ensil.open(path, var="u", member_dim="month")
+    z_name = list(whole.axes)[0]
+    z_values = whole.axes[z_name]
+    kept_by_numpy = (np.asarray(z_values) >= 200.0) & (np.asarray(z_values) <= 500.0)
+    assert kept_by_numpy.sum() == 2
+    for levels in ("50000:20000 Pa", "200:500hPa", "500:200 millibars"):
+        part = ensil.open(path, var="u", member_dim="month", levels=levels)
+        assert part.shape == (2, 2, 241, 480), levels
+        assert list(part.axes)[0] == z_name
+        np.testing.assert_array_equal(part.axes[z_name], np.asarray(z_values)[kept_by_numpy])
+        np.testing.assert_array_equal(part.values, whole.values[:, kept_by_numpy])
+    with pytest.raises(ensil.ArgumentError, match="'500-200'"):
+        ensil.open(path, var="u", member_dim="month", levels="500-200")
+    with pytest.raises(ensil.Error, match="hold 1 level"):
+        ensil.open(path, var="u", member_dim="month", levels="600:400hPa")

@@ -26,6 +26,7 @@ session::SessionState sample(const QString& dataFile) {
     p.data.variable = "t";
     p.data.memberDimension = "number";
     p.data.timeIndex = 2;
+    p.data.levels = data::LevelRange{1000, 100, "hPa"};
     p.isovalue = 261.5F;
     p.camera.azimuth = -40.0F;
     p.camera.elevation = 55.0F;
@@ -59,7 +60,7 @@ session::SessionState sample(const QString& dataFile) {
 }
 
 QString writeText(const test::TempDir& dir, const char* name, const QByteArray& text) {
-    const QString path = QString::fromStdString(dir.file(name));
+    QString path = QString::fromStdString(dir.file(name));
     QFile f(path);
     EXPECT_TRUE(f.open(QIODevice::WriteOnly));
     f.write(text);
@@ -78,6 +79,7 @@ TEST(Project, EverythingSavedComesBack) {
     EXPECT_EQ(p.data.variable, "t");
     EXPECT_EQ(p.data.memberDimension, "number");
     EXPECT_EQ(p.data.timeIndex, 2u);
+    EXPECT_EQ(p.data.levels, (data::LevelRange{1000, 100, "hPa"}));
     ASSERT_TRUE(p.isovalue);
     EXPECT_FLOAT_EQ(*p.isovalue, 261.5F);
     EXPECT_FLOAT_EQ(p.camera.azimuth, -40.0F);
@@ -241,6 +243,10 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
     EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 3, "data": {"demo": {}},
             "sections": {"fill": "median"}})")
                   .first.find("sections.fill must be"),
+              0U);
+    EXPECT_EQ(error(R"({"format": "ensil project", "schema_version": 3,
+            "data": {"files": [{"path": "t.nc"}], "levels": "1000 to 100"}})")
+                  .first.find("data.levels "),
               0U);
 }
 

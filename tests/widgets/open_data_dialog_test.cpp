@@ -5,6 +5,7 @@
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -188,4 +189,40 @@ TEST(OpenDataDialog, SeveralFilesOfferOneMemberPerFile) {
     EXPECT_FALSE(dialog.timeIndexBox()->isEnabled()) << "no time dimension to choose along";
     EXPECT_TRUE(okButton(dialog)->isEnabled());
     EXPECT_EQ(dialog.selection().paths.size(), 2u);
+}
+
+// The Levels field: a range that parses goes into the selection and is probed (the probe of
+// the real ERA-Interim file then says the levels kept); one that does not is said at once,
+// without reading the headers, and OK waits until it is mended.
+TEST(OpenDataDialog, ALevelRangeIsProbedWithTheChoicesAndAMalformedOneIsSaidAtOnce) {
+    const QString file = QStringLiteral(ENSIL_SHARED_DATA_DIR "/eraint_uvz.nc");
+    OpenDataDialog dialog({file});
+    answerFirstProbe(dialog, era5Probe());
+    ASSERT_TRUE(okButton(dialog)->isEnabled());
+
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    dialog.levelsEdit()->setText(QStringLiteral("500-200"));
+    dialog.requestProbe();
+    EXPECT_EQ(requested.count(), 0) << "nothing to read for a malformed range";
+    EXPECT_TRUE(dialog.errorText().contains(QStringLiteral("'500-200'")));
+    EXPECT_FALSE(okButton(dialog)->isEnabled());
+    EXPECT_FALSE(dialog.selection().levels.has_value());
+
+    dialog.levelsEdit()->setText(QStringLiteral("500:200 hPa"));
+    dialog.requestProbe();
+    ASSERT_EQ(requested.count(), 1);
+    auto selection = requested.front().front().value<data::DataSelection>();
+    EXPECT_EQ(selection.levels, (data::LevelRange{500, 200, "hPa"}));
+    // The engine's answer for the real file (its wind speed, months standing in for members).
+    selection.memberDimension = "month";
+    selection.variable = "wind_speed";
+    const engine::DataProbe probe = engine::probeData(selection);
+    EXPECT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
+    EXPECT_EQ(probe.grid, QStringLiteral("480 x 241 x 2"));
+    EXPECT_TRUE(probe.levels.contains(QStringLiteral("level: 200 .. 500 millibars")))
+        << probe.levels.toStdString();
+    EXPECT_TRUE(probe.levels.contains(QStringLiteral("2 of the file's 3 levels")));
+    dialog.showProbe(probe, requested.front().at(1).toInt());
+    EXPECT_TRUE(okButton(dialog)->isEnabled());
+    EXPECT_TRUE(dialog.findChild<QLabel*>("openDataDetails")->text().contains("Levels: level"));
 }
