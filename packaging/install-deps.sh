@@ -25,6 +25,9 @@ packages=(
     # the Python module (pybind11) and its tests (pytest, NumPy; VTK's Python readers check the
     # surfaces it exports; cftime is the oracle for the dates of every CF calendar)
     pybind11-dev python3-dev python3-pytest python3-numpy python3-vtk9 python3-cftime
+    # xarray in and out (python/ensil/_xarray.py): xarray and its NetCDF engine open the real
+    # files as an independent reader; SciPy's linkage is the oracle of the merge tree
+    python3-xarray python3-netcdf4 python3-scipy
     # `mpirun -np K ensil preprocess` (the mpi/ front end, ENSIL_WITH_MPI; the ci preset needs it)
     libopenmpi-dev openmpi-bin
     # the tests (the benchmarks are plain programs that print figures; they need nothing more)

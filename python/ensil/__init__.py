@@ -33,15 +33,24 @@ from ._ensil import (  # noqa: F401  (re-exported)
     demo,
 )
 from . import _ensil
+from . import _xarray
 
 # help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
 for _type in (Ensemble, Mesh, PreprocessResult, Section, Session, Settings, demo):
     _type.__module__ = __name__
 
+# xarray in and out (python/ensil/_xarray.py); xarray itself is imported only when used.
+from_xarray = _xarray.from_xarray
+Ensemble.to_xarray = _xarray.ensemble_to_xarray
+PreprocessResult.to_xarray = _xarray.result_to_xarray
+# da.ensil / ds.ensil, where xarray is already imported (else from the first from_xarray call).
+if "xarray" in __import__("sys").modules:
+    _xarray.register_accessors()
+
 # Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
-    "Section", "Session", "Settings", "demo", "from_numpy", "render",
+    "Section", "Session", "Settings", "demo", "from_numpy", "from_xarray", "render",
 ]
 
 

@@ -25,11 +25,13 @@ PathLike = Union[str, os.PathLike[str]]
 Axis = Union[npt.ArrayLike, tuple[npt.ArrayLike, str]]
 
 def open(paths: Union[PathLike, Sequence[PathLike]], var: Optional[str] = None,
-         member_dim: Optional[str] = None, time_index: int = 0,
+         member_dim: Optional[str] = None, time_index: int = 0, levels: Optional[str] = None,
          progress: ProgressCallback = None) -> Ensemble: ...
 def from_numpy(values: Any, axes: Union[Mapping[str, Axis], Sequence[npt.ArrayLike], None] = None,
                units: Optional[str] = None, names: Optional[Sequence[str]] = None,
                variable: Optional[str] = None) -> Ensemble: ...
+def from_xarray(data: Any, var: Optional[str] = None, member_dim: Optional[str] = None,
+                time_index: int = 0) -> Ensemble: ...
 
 class Image(np.ndarray[Any, np.dtype[np.uint8]]):
     session: Optional[Session]
