@@ -141,6 +141,25 @@ std::string projStringWith(const GridMapping& m, double x0, double y0) {
                " +k_0=" + number(optional("scale_factor_at_central_meridian", 1.0)) + offsets +
                earthShape(m);
     }
+    if (m.name == "lambert_azimuthal_equal_area") {
+        // The Met Office's UK grids and IMPROVER's, and EU-wide ones (ETRS89-LAEA).
+        return "+proj=laea +lat_0=" + number(need("latitude_of_projection_origin")) +
+               " +lon_0=" + number(need("longitude_of_projection_origin")) + offsets +
+               earthShape(m);
+    }
+    if (m.name == "albers_conical_equal_area") {
+        const double first = need("standard_parallel");
+        const double second = m.parameter("standard_parallel", 1).value_or(first);
+        return "+proj=aea +lat_1=" + number(first) + " +lat_2=" + number(second) +
+               " +lat_0=" + number(optional("latitude_of_projection_origin", 0.0)) +
+               " +lon_0=" + number(need("longitude_of_central_meridian")) + offsets + earthShape(m);
+    }
+    if (m.name == "stereographic") {
+        return "+proj=stere +lat_0=" + number(need("latitude_of_projection_origin")) +
+               " +lon_0=" + number(need("longitude_of_projection_origin")) +
+               " +k_0=" + number(optional("scale_factor_at_projection_origin", 1.0)) + offsets +
+               earthShape(m);
+    }
     if (m.parameter("wrf_unplaced")) {
         // A WRF grid its own XLAT/XLONG contradict: the name says why (data/wrf_conventions.h).
         throw Error(ErrorKind::UnsupportedFormat, m.name);
@@ -157,7 +176,8 @@ std::string projStringWith(const GridMapping& m, double x0, double y0) {
                 "grid mapping '" + m.name +
                     "' is not one ensil reads (it reads latitude_longitude, "
                     "rotated_latitude_longitude, lambert_conformal_conic, "
-                    "polar_stereographic, mercator and transverse_mercator)");
+                    "lambert_azimuthal_equal_area, albers_conical_equal_area, "
+                    "polar_stereographic, stereographic, mercator and transverse_mercator)");
 }
 
 }  // namespace

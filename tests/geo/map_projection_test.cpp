@@ -159,3 +159,61 @@ TEST(MapProjection, SaysWhyAGridHasNoGeography) {
     EXPECT_EQ(incomplete.kind(), MapProjection::Kind::None);
     EXPECT_THAT(incomplete.reason(), testing::HasSubstr("'grid_north_pole_longitude'"));
 }
+
+// Lambert azimuthal equal-area (the Met Office's UK and IMPROVER grids): on a sphere, PROJ's
+// result equals Snyder's formulas (24-2 to 24-4, p. 185) written out here; on an ellipsoid it
+// round-trips. Albers equal-area matches Snyder's worked example (p. 292).
+TEST(MapProjection, LambertAzimuthalEqualAreaMatchesSnydersSphereFormulas) {
+    constexpr double kRadius = 6371229.0;  // the Met Office's sphere
+    constexpr double kLat0 = 54.9, kLon0 = -2.5, kDegree = 3.14159265358979323846 / 180.0;
+    const MapProjection laea = MapProjection::forGrid(
+        projectedGrid("m"),
+        mapping("lambert_azimuthal_equal_area", {{"latitude_of_projection_origin", {kLat0}},
+                                                 {"longitude_of_projection_origin", {kLon0}},
+                                                 {"false_easting", {0.0}},
+                                                 {"false_northing", {0.0}},
+                                                 {"earth_radius", {kRadius}}}));
+    ASSERT_EQ(laea.kind(), MapProjection::Kind::Projected) << laea.reason();
+    for (const glm::dvec2 lonLat : {glm::dvec2{-10.0, 50.0}, glm::dvec2{1.7, 60.2},
+                                    glm::dvec2{-2.5, 54.9}, glm::dvec2{5.0, 49.0}}) {
+        const double phi = lonLat.y * kDegree, lambda = (lonLat.x - kLon0) * kDegree;
+        const double phi0 = kLat0 * kDegree;
+        const double k = std::sqrt(2.0 / (1.0 + std::sin(phi0) * std::sin(phi) +
+                                          std::cos(phi0) * std::cos(phi) * std::cos(lambda)));
+        const double x = kRadius * k * std::cos(phi) * std::sin(lambda);
+        const double y =
+            kRadius * k *
+            (std::cos(phi0) * std::sin(phi) - std::sin(phi0) * std::cos(phi) * std::cos(lambda));
+        const glm::dvec2 xy = toGrid(laea, lonLat);
+        EXPECT_NEAR(xy.x, x, 1e-3) << lonLat.x << " " << lonLat.y;
+        EXPECT_NEAR(xy.y, y, 1e-3) << lonLat.x << " " << lonLat.y;
+        const glm::dvec2 back = toLonLat(laea, xy);
+        EXPECT_NEAR(back.x, lonLat.x, 1e-8);
+        EXPECT_NEAR(back.y, lonLat.y, 1e-8);
+    }
+    // ETRS89-LAEA (EPSG:3035) on GRS 80 with its false origin: a round trip.
+    const MapProjection etrs = MapProjection::forGrid(
+        projectedGrid("m"),
+        mapping("lambert_azimuthal_equal_area", {{"latitude_of_projection_origin", {52.0}},
+                                                 {"longitude_of_projection_origin", {10.0}},
+                                                 {"false_easting", {4321000.0}},
+                                                 {"false_northing", {3210000.0}},
+                                                 {"semi_major_axis", {6378137.0}},
+                                                 {"inverse_flattening", {298.257222101}}}));
+    ASSERT_EQ(etrs.kind(), MapProjection::Kind::Projected) << etrs.reason();
+    const glm::dvec2 centre = toGrid(etrs, {10.0, 52.0});
+    EXPECT_NEAR(centre.x, 4321000.0, 1e-6);
+    EXPECT_NEAR(centre.y, 3210000.0, 1e-6);
+
+    const MapProjection albers = MapProjection::forGrid(
+        projectedGrid("m"),
+        mapping("albers_conical_equal_area", {{"standard_parallel", {29.5, 45.5}},
+                                              {"latitude_of_projection_origin", {23.0}},
+                                              {"longitude_of_central_meridian", {-96.0}},
+                                              {"semi_major_axis", {6378206.4}},
+                                              {"inverse_flattening", {294.9786982}}}));
+    ASSERT_EQ(albers.kind(), MapProjection::Kind::Projected) << albers.reason();
+    const glm::dvec2 xy = toGrid(albers, {-75.0, 35.0});
+    EXPECT_NEAR(xy.x, 1885472.7, 0.5);
+    EXPECT_NEAR(xy.y, 1535925.0, 0.5);
+}
