@@ -42,6 +42,7 @@ for _type in (Ensemble, Mesh, PreprocessResult, Section, Session, Settings, demo
 # xarray in and out (python/ensil/_xarray.py); xarray itself is imported only when used.
 from_xarray = _xarray.from_xarray
 Ensemble.to_xarray = _xarray.ensemble_to_xarray
+Ensemble.stats_dataset = _xarray.ensemble_stats_dataset
 PreprocessResult.to_xarray = _xarray.result_to_xarray
 # da.ensil / ds.ensil, where xarray is already imported (else from the first from_xarray call).
 if "xarray" in __import__("sys").modules:

@@ -120,6 +120,8 @@ class Section:
 
 class Ensemble:
     def to_xarray(self) -> Any: ...  # an xarray.DataArray (member, z, y, x)
+    def stats_dataset(self, iso: float, members: Optional[Sequence[int]] = None,
+                      progress: ProgressCallback = None) -> Any: ...  # an xarray.Dataset
     @property
     def values(self) -> npt.NDArray[np.float32]: ...
     def member_values(self, index: int) -> npt.NDArray[np.float32]: ...

@@ -187,6 +187,50 @@ def result_to_xarray(result):
                "clusters": int(result.k)})
 
 
+def ensemble_stats_dataset(ensemble, iso, members=None, progress=None):
+    """Ensemble.stats as an xarray Dataset shaped as the NetCDF file ``ensil stats`` writes:
+    mean, stddev (n - 1), min, max, range, exceedance_probability and member_count on the grid
+    points, level_crossing_probability on the cells (coordinates named <axis>_cell, at the
+    cells' midpoints), with the file's units and cell_methods; the variable, isovalue and
+    members as attributes. (The file's long names are the command line's; not repeated here.)"""
+    import xarray as xr
+
+    stats = ensemble.stats(iso, members=members, progress=progress)
+    z, y, x = list(ensemble.axes)
+    units = ensemble.axis_units
+    coords = {}
+    for name in (z, y, x):
+        values = _np.asarray(ensemble.axes[name], dtype=float)
+        attrs = {"units": units[name]} if units[name] else {}
+        coords[name] = xr.Variable(name, values, attrs=attrs)
+        coords[name + "_cell"] = xr.Variable(name + "_cell", 0.5 * (values[:-1] + values[1:]),
+                                             attrs=attrs)
+    value_units = {"units": ensemble.units} if ensemble.units else {}
+    fraction = {"units": "1"}
+
+    def on_points(key, attrs, method=None):
+        if method:
+            attrs = dict(attrs, cell_methods="realization: " + method)
+        return xr.Variable((z, y, x), _np.array(stats[key]), attrs=attrs)
+
+    data = {
+        "mean": on_points("mean", value_units, "mean"),
+        "stddev": on_points("stddev", value_units, "standard_deviation"),
+        "min": on_points("minimum", value_units, "minimum"),
+        "max": on_points("maximum", value_units, "maximum"),
+        "range": on_points("range", value_units, "range"),
+        "exceedance_probability": on_points("exceedance_probability", fraction),
+        "member_count": on_points("count", fraction),
+        "level_crossing_probability": xr.Variable(
+            (z + "_cell", y + "_cell", x + "_cell"),
+            _np.array(stats["level_crossing_probability"]), attrs=fraction),
+    }
+    member_names = [ensemble.members[i] for i in _np.asarray(stats["members"], dtype=int)]
+    return xr.Dataset(data, coords=coords,
+                      attrs={"variable": ensemble.variable, "isovalue": float(stats["isovalue"]),
+                             "members": ", ".join(member_names)})
+
+
 def register_accessors():
     """``da.ensil.ensemble()`` and ``ds.ensil.ensemble(var=...)``, when xarray is importable."""
     try:

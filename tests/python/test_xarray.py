@@ -3,6 +3,7 @@ with its own NetCDF engine and ensil must see the same ensemble; the merge tree 
 linkage of ensil's distances."""
 
 import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -101,3 +102,24 @@ def test_a_result_goes_out_as_a_dataset_whose_tree_is_scipys(era5_path):
     cut = scipy.cluster.hierarchy.fcluster(scipys, t=3, criterion="maxclust")
     pairs = set(zip(cut.tolist(), ds["cluster"].values.tolist()))
     assert len(pairs) == 3
+
+
+def test_the_statistics_dataset_is_what_ensil_stats_writes(era5_path, tmp_path):
+    executable = os.environ.get("ENSIL_EXECUTABLE", "")
+    assert os.path.exists(executable), "CTest names the command line built beside the module"
+    out = str(tmp_path / "stats.nc")
+    subprocess.run([executable, "stats", era5_path, "--var", "t", "--iso", "260", "--members",
+                    "1,3,6", "--out", out], check=True, capture_output=True)  # numbers from 1
+    ens = ensil.open(era5_path, var="t")
+    ours = ens.stats_dataset(260, members=[0, 2, 5])
+    with xr.open_dataset(out) as written:
+        assert set(ours.data_vars) == set(written.data_vars)
+        for name in written.data_vars:
+            assert ours[name].dims == written[name].dims, name
+            np.testing.assert_array_equal(ours[name].values, written[name].values)
+            for key in ("units", "cell_methods"):
+                assert ours[name].attrs.get(key) == written[name].attrs.get(key), (name, key)
+        for name in written.coords:
+            np.testing.assert_allclose(ours[name].values, written[name].values, rtol=1e-12)
+        assert ours.attrs["members"] == written.attrs["members"]
+        assert ours.attrs["isovalue"] == written.attrs["isovalue"]
