@@ -84,7 +84,7 @@ const session::SettingOptions& sceneOptions() {
         "axis_labels", "legend",          "plane_thickness", "coastlines",
         "borders",     "graticule",       "mean_opacity",    "title",
         "floor",       "floor_level",     "rims",            "context",
-        "band",        "section",         "context_spread"};
+        "band",        "section",         "context_spread",  "vertical_axis"};
     // clang-format on
     return options;
 }

@@ -4,33 +4,67 @@
 #include <cmath>
 #include <glm/vec3.hpp>
 
+#include "data/vertical_scale.h"
+
 namespace ensil::data {
 namespace {
 constexpr float kAtmosphereThickness = 0.2F;
 
 }  // namespace
 
-DisplayFrame::DisplayFrame(const Grid& grid, float verticalExaggeration)
-    : m_grid(grid), m_exaggeration(verticalExaggeration) {
+DisplayFrame::DisplayFrame(const Grid& grid, float verticalExaggeration, VerticalAxis verticalAxis)
+    : m_grid(grid), m_exaggeration(verticalExaggeration), m_vertical(verticalAxis) {
     const double sx = grid.x().maxValue() - grid.x().minValue();
     const double sy = grid.y().maxValue() - grid.y().minValue();
     const double longest = std::max(sx, sy);
     m_size.x = static_cast<float>(sx / longest);
     m_size.y = static_cast<float>(sy / longest);
-    m_logPressure = isPressureUnit(grid.z().units) && grid.z().minValue() > 0.0;
+    m_pressureAxis = isPressureUnit(grid.z().units) && grid.z().minValue() > 0.0;
+    if (m_pressureAxis) m_hectopascals = hectopascalsPer(grid.z().units);
     const bool sameUnits = grid.z().units == grid.x().units && grid.x().units == grid.y().units;
     const double sz = grid.z().maxValue() - grid.z().minValue();
     const float natural =
-        sameUnits && !m_logPressure ? static_cast<float>(sz / longest) : kAtmosphereThickness;
+        sameUnits && !m_pressureAxis ? static_cast<float>(sz / longest) : kAtmosphereThickness;
     m_size.z = natural * verticalExaggeration;
+}
+
+double DisplayFrame::drawnPressure(double p) const {
+    switch (m_vertical) {
+        case VerticalAxis::Pressure:
+            return -p;
+        case VerticalAxis::StandardHeight:
+            return standardAtmosphereHeight(p * m_hectopascals);
+        case VerticalAxis::LogPressure:
+            break;
+    }
+    return -std::log(p);
+}
+
+double DisplayFrame::pressureAt(double fraction) const {
+    const Axis& axis = m_grid.z();
+    const double bottom = axis.maxValue(), top = axis.minValue();
+    if (m_vertical == VerticalAxis::LogPressure) {
+        return std::exp(std::log(bottom) - fraction * (std::log(bottom) - std::log(top)));
+    }
+    if (m_vertical == VerticalAxis::Pressure) return bottom - fraction * (bottom - top);
+    // The standard atmosphere's height has no closed inverse over its layers: bisection, to a
+    // millionth of the box (heights rise as pressure falls).
+    const double low = drawnPressure(bottom), high = drawnPressure(top);
+    const double wanted = low + fraction * (high - low);
+    double below = top, above = bottom;  // pressures bracketing it
+    for (int i = 0; i < 60; ++i) {
+        const double middle = 0.5 * (below + above);
+        (drawnPressure(middle) > wanted ? below : above) = middle;
+    }
+    return 0.5 * (below + above);
 }
 
 double DisplayFrame::verticalFraction(double z) const {
     const Axis& axis = m_grid.z();
     double t = 0.0;
-    if (m_logPressure) {
-        const double bottom = std::log(axis.maxValue());
-        t = (bottom - std::log(z)) / (bottom - std::log(axis.minValue()));
+    if (m_pressureAxis) {
+        const double bottom = drawnPressure(axis.maxValue());
+        t = (drawnPressure(z) - bottom) / (drawnPressure(axis.minValue()) - bottom);
     } else {
         t = (z - axis.minValue()) / (axis.maxValue() - axis.minValue());
         if (!axis.positiveUp) t = 1.0 - t;
@@ -71,9 +105,8 @@ glm::dvec3 DisplayFrame::displayToIndex(const glm::vec3& display) const {
         const double t = std::clamp(double(display[a]) / double(m_size[a]), 0.0, 1.0);
         // The coordinate that toDisplay puts there: the inverse of its per-axis mapping.
         double coordinate = axis.minValue() + t * (axis.maxValue() - axis.minValue());
-        if (a == 2 && m_logPressure) {
-            const double bottom = std::log(axis.maxValue());
-            coordinate = std::exp(bottom - t * (bottom - std::log(axis.minValue())));
+        if (a == 2 && m_pressureAxis) {
+            coordinate = pressureAt(t);
         } else if (a == 2 && !axis.positiveUp) {
             coordinate = axis.maxValue() - t * (axis.maxValue() - axis.minValue());
         }

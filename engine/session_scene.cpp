@@ -59,6 +59,9 @@ void showSession(gl::Renderer& renderer, const session::SessionState& state, con
             state.render.floorLevel != drawn.floorLevel) {
             renderer.setFloorMap(sceneFloor(data, state.render));
         }
+        if (state.render.verticalAxis != drawn.verticalAxis) {
+            renderer.setVerticalAxis(state.render.verticalAxis);
+        }
         renderer.settings() = state.render;
     }
     if (parts & SessionPart::Background) renderer.setBackground({state.background, 1.0F});

@@ -7,6 +7,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "data/display_frame.h"
+
 namespace ensil::gl {
 
 // OpaqueSurfaces draws every member as a solid lit isosurface (a reference; occludes).
@@ -100,6 +102,9 @@ struct RenderSettings {
     // Silhouette modes skip, in a geometry shader, the triangles that cannot hold a silhouette:
     // the same picture, drawn faster. Off only to measure what it saves.
     bool silhouetteCulling = true;
+    // How a pressure axis is drawn (data::VerticalAxis): applied by Renderer::setVerticalAxis,
+    // since the box's frame follows it.
+    data::VerticalAxis verticalAxis = data::VerticalAxis::LogPressure;
 
     // Whether the picture shows a context surface of the ensemble's own (the band's two, or
     // P = 0.5), which the workbench then has made (workbench/isovalue_session.h).

@@ -204,7 +204,8 @@ ViewOverlay Renderer::overlay(int width, int height) const {
 void Renderer::setGrid(const data::Grid& grid) {
     m_scene.grid = grid;
     m_scene.hasGrid = true;
-    m_scene.frame = data::DisplayFrame(grid, m_scene.frame.verticalExaggeration());
+    m_scene.frame = data::DisplayFrame(grid, m_scene.frame.verticalExaggeration(),
+                                       m_scene.settings.verticalAxis);
     m_axisTablesDirty = true;
     m_mapLinesDirty = true;
     m_meshesDirty = true;  // the rims lie on the box's faces
@@ -214,9 +215,21 @@ void Renderer::setGrid(const data::Grid& grid) {
 
 void Renderer::setVerticalExaggeration(float exaggeration) {
     if (m_scene.hasGrid) {
-        m_scene.frame = data::DisplayFrame(m_scene.grid, exaggeration);
+        m_scene.frame =
+            data::DisplayFrame(m_scene.grid, exaggeration, m_scene.settings.verticalAxis);
         m_axisTablesDirty = true;
         frameTheBox();
+    }
+}
+
+void Renderer::setVerticalAxis(data::VerticalAxis axis) {
+    m_scene.settings.verticalAxis = axis;
+    if (m_scene.hasGrid) {
+        m_scene.frame =
+            data::DisplayFrame(m_scene.grid, m_scene.frame.verticalExaggeration(), axis);
+        m_axisTablesDirty = true;
+        m_meshesDirty = true;  // the rims, and the floor map at a level, follow the levels
+        m_motionMeshesDirty = true;
     }
 }
 

@@ -206,6 +206,10 @@ public:
     // How a coastline is drawn, for tests that look for it: a light core over a dark casing.
     static constexpr glm::vec4 kCoastlineColor{0.97F, 0.97F, 0.97F, 1.0F};
     void setVerticalExaggeration(float exaggeration);
+    // Draws a pressure axis through log-pressure, linearly or at standard-atmosphere heights
+    // (settings().verticalAxis): the meshes stay (their vertices are grid indices, mapped to
+    // the box by the axis tables), the box's levels move.
+    void setVerticalAxis(data::VerticalAxis axis);
     // The meshes of the current isovalue (uploaded at the next frame); null clears them, and
     // their motion meshes too.
     void setMeshes(std::shared_ptr<const data::MeshSet> meshes);

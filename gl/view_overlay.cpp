@@ -41,8 +41,16 @@ QString axisTitle(const data::Axis& axis, const std::string& units) {
 
 // The vertical axis's title says how much the box stretches heights (data/vertical_scale.h):
 // "plev (hPa), vertical ×480", the factor to two significant digits (for pressure levels through
-// the standard atmosphere's heights, which METHODS.md and --json say).
-QString verticalAxisTitle(const QString& title, const OverlayInput& in) {
+// the standard atmosphere's heights, which METHODS.md and --json say). A pressure axis drawn
+// other than through log-pressure says how: "plev (hPa), linear in pressure, vertical ×480".
+QString verticalAxisTitle(const QString& given, const OverlayInput& in) {
+    QString title = given;
+    if (in.frame->pressureAxis() && in.frame->verticalAxis() == data::VerticalAxis::Pressure) {
+        title += QStringLiteral(", linear in pressure");
+    } else if (in.frame->pressureAxis() &&
+               in.frame->verticalAxis() == data::VerticalAxis::StandardHeight) {
+        title += QStringLiteral(", at standard-atmosphere heights");
+    }
     const auto scale = data::verticalScaleOf(*in.grid, *in.frame);
     if (!scale) return title;
     const double f = scale->factor;

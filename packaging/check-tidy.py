@@ -87,18 +87,27 @@ def translation_units(build: pathlib.Path) -> dict:
     return units
 
 
-def unit_for(path: str, units: dict) -> pathlib.Path | None:
-    """The file clang-tidy parses to check `path`."""
+def unit_for(path: str, units: dict, seen: set | None = None) -> pathlib.Path | None:
+    """The file clang-tidy parses to check `path` (`seen`: headers already followed)."""
+    seen = set() if seen is None else seen
+    seen.add(path)
     if path in units:
         return units[path]
     if path.endswith(".h"):
         own = path[:-2] + ".cpp"
         if own in units:
             return units[own]
+        # A source that includes it, or else one that includes a header that does (a header
+        # of settings included only through another header, say).
         include = f'#include "{path}"'
         for source in sorted(units):
             if include in (ROOT / source).read_text(encoding="utf-8", errors="replace"):
                 return units[source]
+        for header in sorted(ROOT.glob("*/*.h")):
+            if include in header.read_text(encoding="utf-8", errors="replace"):
+                relative = header.relative_to(ROOT).as_posix()
+                if relative not in seen and (unit := unit_for(relative, units, seen)) is not None:
+                    return unit
     return None
 
 

@@ -26,6 +26,8 @@ constexpr std::array<std::string_view, 6> kSectionsFills{"mean",   "spread",  "p
 // In SectionsColourMap's order; the names matplotlib and ColorBrewer give them.
 constexpr std::array<std::string_view, 5> kSectionsColourMaps{"automatic", "viridis", "greys",
                                                               "rdbu", "ylgnbu"};
+// In data::VerticalAxis's order.
+constexpr std::array<std::string_view, 3> kVerticalAxes{"log-pressure", "pressure", "height"};
 // In prep::Linkage's order.
 constexpr std::array<std::string_view, 4> kLinkages{"average", "single", "complete", "ward"};
 
@@ -33,7 +35,7 @@ float asFloat(double v) { return static_cast<float>(v); }
 
 // The table. Ranges are what the method allows and a user could want, not what one widget
 // happened to hold: the panels, projects and the command line all take them from here.
-const std::array<Setting, 36> kSettings{{
+const std::array<Setting, 37> kSettings{{
     {"mode", SettingKind::Choice, "rendering.mode", "mode", "rendering/mode", "Mode", "",
      "How members are drawn: shaded silhouettes, 3D spaghetti plot, semi-transparent or opaque "
      "surfaces",
@@ -349,6 +351,13 @@ const std::array<Setting, 36> kSettings{{
      {},
      [](const SessionState& s) { return double(s.verticalExaggeration); },
      [](SessionState& s, double v) { s.verticalExaggeration = asFloat(v); }},
+    {"vertical_axis", SettingKind::Choice, "rendering.vertical_axis", "vertical-axis",
+     "rendering/verticalAxis", "Vertical axis", "",
+     "How a pressure axis is drawn: through log-pressure (about height), linearly in pressure, or "
+     "at the heights of the standard atmosphere; other vertical axes are drawn as they are",
+     0, 2, 0, 1, kVerticalAxes,
+     [](const SessionState& s) { return static_cast<double>(s.render.verticalAxis); },
+     [](SessionState& s, double v) { s.render.verticalAxis = static_cast<data::VerticalAxis>(v); }},
     {"background",
      SettingKind::Colour,
      "rendering.background",

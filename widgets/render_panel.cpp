@@ -65,6 +65,8 @@ RenderPanel::RenderPanel(QWidget* parent) : QWidget(parent) {
     auto* sceneForm = new QFormLayout;
     addRow(*sceneForm, *add("vertical_exaggeration", this));
     numberBox("vertical_exaggeration")->setKeyboardTracking(false);  // re-meshes: once typed
+    addRow(*sceneForm, *add("vertical_axis", this,
+                            {{tr("Log-pressure"), tr("Pressure"), tr("Standard height")}}));
     addRow(*sceneForm, *add("projection", this, {{tr("Perspective"), tr("Orthographic")}}));
     for (const char* id : {"background", "axis_labels", "legend", "title", "rims"}) {
         addRow(*sceneForm, *add(id, this));
@@ -128,7 +130,8 @@ void RenderPanel::applyTo(session::SessionState& state) const {
     for (const SettingControl* c : m_controls) c->applyTo(state);
 }
 
-void RenderPanel::setMode(gl::RenderMode mode) {
+// Not const though it could be: it changes what the panel shows (through its controls).
+void RenderPanel::setMode(gl::RenderMode mode) {  // NOLINT(readability-make-member-function-const)
     qobject_cast<QComboBox*>(control("mode")->widget())->setCurrentIndex(static_cast<int>(mode));
 }
 
@@ -169,7 +172,7 @@ bool RenderPanel::setOutlyingnessRange(double maximum, const QString& unitsSquar
     return firstRange;
 }
 
-void RenderPanel::updateEnabled() {
+void RenderPanel::updateEnabled() {  // NOLINT(readability-make-member-function-const): as setMode
     const auto mode = static_cast<gl::RenderMode>(control("mode")->value());
     const bool silhouettes =
         mode == gl::RenderMode::ShadedSilhouettes || mode == gl::RenderMode::Spaghetti;

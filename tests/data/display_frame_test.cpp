@@ -78,3 +78,39 @@ TEST(DisplayFrame, DisplayToIndexUndoesIndexToDisplayOnLogPressure) {
     // Outside the box clamps to the grid.
     EXPECT_DOUBLE_EQ(frame.displayToIndex({-1.0F, 0.0F, 0.0F}).x, 0.0);
 }
+
+// The vertical axis as chosen (issue 40): 500 hPa in a box from 1000 to 100 hPa lies at
+// log(1000/500)/log(10) of its height through log-pressure, at 500/900 linearly in pressure, and
+// at the standard atmosphere's heights (ICAO table: 1000 hPa 111 m, 500 hPa 5574 m, 100 hPa
+// 16,180 m) at (5574 - 111) / (16180 - 111). Each maps back to its level.
+TEST(DisplayFrame, APressureAxisIsDrawnThroughLogPressureLinearlyOrAtStandardHeights) {
+    data::Axis p;
+    p.name = "plev";
+    p.units = "Pa";
+    p.positiveUp = false;
+    p.values = {100000, 85000, 70000, 50000, 25000, 10000};
+    const data::Grid grid(data::makeUniformAxis("lon", "degrees_east", 0, 90, 10),
+                          data::makeUniformAxis("lat", "degrees_north", 0, 45, 6), p);
+    const auto fraction = [&](data::VerticalAxis axis) {
+        const data::DisplayFrame frame(grid, 1.0F, axis);
+        return frame.toDisplay({0.0, 0.0, 50000.0}).z / frame.boxMax().z;
+    };
+    EXPECT_NEAR(fraction(data::VerticalAxis::LogPressure), std::log(2.0) / std::log(10.0), 1e-6);
+    EXPECT_NEAR(fraction(data::VerticalAxis::Pressure), 500.0 / 900.0, 1e-6);
+    EXPECT_NEAR(fraction(data::VerticalAxis::StandardHeight), (5574.0 - 111.0) / (16180.0 - 111.0),
+                2e-4);
+    for (const auto axis : {data::VerticalAxis::LogPressure, data::VerticalAxis::Pressure,
+                            data::VerticalAxis::StandardHeight}) {
+        const data::DisplayFrame frame(grid, 2.0F, axis);
+        EXPECT_EQ(frame.verticalAxis(), axis);
+        for (double k = 0.0; k <= 5.0; k += 0.5) {
+            const glm::vec3 shown = frame.indexToDisplay({1.0F, 1.0F, static_cast<float>(k)});
+            EXPECT_NEAR(frame.displayToIndex(shown).z, k, 1e-4) << static_cast<int>(axis);
+        }
+    }
+    // Another vertical axis is drawn as it is, whatever the choice.
+    const data::Grid heights(grid.x(), grid.y(), data::makeUniformAxis("z", "m", 0, 5000, 6));
+    const data::DisplayFrame linear(heights, 1.0F, data::VerticalAxis::StandardHeight);
+    EXPECT_FALSE(linear.pressureAxis());
+    EXPECT_NEAR(linear.toDisplay({0.0, 0.0, 1000.0}).z / linear.boxMax().z, 0.2, 1e-6);
+}

@@ -37,7 +37,7 @@ TEST(EnsembleGeography, ALambertAzimuthalEqualAreaGridLiesOverTheBritishIsles) {
         const int t = f.variable("air_temperature", NC_FLOAT, {realization, height, y, x});
         f.text(t, "units", "K");
         f.text(t, "grid_mapping", "lambert_azimuthal_equal_area");
-        f.write(t, 3 * 3 * 7 * 7,
+        f.write(t, std::size_t{3} * 3 * 7 * 7,
                 [](std::size_t i) { return 280.0 + static_cast<double>(i % 17); });
     }
     data::DataSelection selection;

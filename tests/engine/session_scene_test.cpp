@@ -49,6 +49,7 @@ TEST(SessionScene, TheRendererTakesTheSessionsPartsGivenAndOnlyThose) {
     state.camera.orthographic = true;
     state.render.thickness = 0.01F;
     state.render.plane.enabled = true;
+    state.render.verticalAxis = data::VerticalAxis::StandardHeight;
 
     // Only the background: the exaggeration, settings and projection stay as they were.
     engine::showSession(renderer, state, dataOf(scene), SessionPart::Background);
@@ -63,6 +64,9 @@ TEST(SessionScene, TheRendererTakesTheSessionsPartsGivenAndOnlyThose) {
     EXPECT_FLOAT_EQ(renderer.settings().thickness, 0.01F);
     EXPECT_TRUE(renderer.settings().plane.enabled);
     EXPECT_EQ(renderer.camera().projection(), gl::Camera::Projection::Orthographic);
+    // The box's frame follows the vertical axis chosen, keeping the exaggeration.
+    EXPECT_EQ(renderer.frame().verticalAxis(), data::VerticalAxis::StandardHeight);
+    EXPECT_FLOAT_EQ(renderer.frame().verticalExaggeration(), 3.0F);
 }
 
 TEST(SessionScene, TheProbabilityFloorIsTheIsovalueDrawnsAndAGivenRangeReplacesItsOwn) {

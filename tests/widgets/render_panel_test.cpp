@@ -34,6 +34,7 @@ session::SessionState unusual() {
     s.render.floor = gl::FloorContent::MeanAtLevel;
     s.render.floorLevel = 3;
     s.verticalExaggeration = 2.5F;
+    s.render.verticalAxis = data::VerticalAxis::StandardHeight;
     s.camera.orthographic = true;
     s.background = {1.0F, 1.0F, 1.0F};
     return s;
@@ -58,7 +59,7 @@ TEST(RenderPanel, ShowsTheSessionWithoutSignallingAndWritesEverySettingBack) {
         // Named as projects and the command line name it.
         EXPECT_EQ(panel.control(s.id)->widget()->objectName().toStdString(), s.id);
     }
-    EXPECT_EQ(shownSettings, 24);
+    EXPECT_EQ(shownSettings, 25);
     EXPECT_TRUE(back.render.plane.enabled);
     EXPECT_FALSE(panel.findChild<QDoubleSpinBox*>("thickness")->isEnabled())
         << "surfaces draw no silhouettes";
