@@ -37,9 +37,6 @@ void keepLayers(Ensemble& ensemble, std::size_t first, const Grid& grid) {
     ensemble.grid = grid;
 }
 
-}  // namespace
-namespace {
-
 // Asked in this order: NetCDF-4 files are HDF5 files too, so NetCDF goes first.
 const std::vector<std::unique_ptr<EnsembleReader>>& readers() {
     static const auto list = [] {
