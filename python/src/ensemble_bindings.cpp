@@ -80,13 +80,7 @@ PyEnsemble openFiles(const std::vector<std::string>& paths, const std::string& v
     PyEnsemble result;
     result.selection =
         data::DataSelection{paths, variable, memberDim, static_cast<std::size_t>(timeIndex)};
-    if (!levels.empty()) {
-        try {
-            result.selection->levels = data::parseLevelRange(levels);
-        } catch (const data::Error& e) {
-            throw ArgumentError(std::string("levels: ") + e.what());
-        }
-    }
+    result.selection->levels = levelsArgument(levels);
     data::EnsembleDescription description;
     data::Ensemble ensemble;
     runInterruptible(

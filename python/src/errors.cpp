@@ -3,6 +3,7 @@
 #include <array>
 #include <new>
 #include <string_view>
+#include <utility>
 
 #include "data/error.h"
 #include "data/job.h"
@@ -12,6 +13,16 @@
 namespace py = pybind11;
 
 namespace ensil::python {
+
+std::optional<data::LevelRange> levelsArgument(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    try {
+        return data::parseLevelRange(text);
+    } catch (const data::Error& e) {
+        throw ArgumentError(std::string("levels: ") + e.what());
+    }
+}
+
 namespace {
 
 PyObject* g_error = nullptr;          // ensil.Error
@@ -35,7 +46,7 @@ void raise(PyObject* type, const char* message, const char* kind = nullptr,
 
 void translate(std::exception_ptr failure) {
     try {
-        std::rethrow_exception(failure);
+        std::rethrow_exception(std::move(failure));
     } catch (const ArgumentError& e) {
         raise(g_argumentError, e.what(), "invalid_argument");
     } catch (const engine::PreprocessRefused& e) {

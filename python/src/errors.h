@@ -14,8 +14,11 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+
+#include "data/level_range.h"
 
 namespace ensil::python {
 
@@ -24,6 +27,10 @@ class ArgumentError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// The level range a `levels=` argument gives ("1000:100hPa"; data/level_range.h), none for "";
+// a malformed one raises ensil.ArgumentError naming the argument.
+std::optional<data::LevelRange> levelsArgument(const std::string& text);
 
 // Creates the exception types in `m` and translates ensil's C++ exceptions into them.
 void bindErrors(pybind11::module_& m);

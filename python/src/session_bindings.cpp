@@ -54,19 +54,21 @@ std::vector<std::string> pathList(const py::object& given) {
 }
 
 PySession newSession(const py::object& given, const std::string& variable,
-                     const std::string& memberDim, long long timeIndex) {
+                     const std::string& memberDim, long long timeIndex, const std::string& levels) {
     PySession s;
     const std::vector<std::string> paths = pathList(given);
     if (timeIndex < 0) {
         throw ArgumentError("time_index must be a whole number from 0, not '" +
                             std::to_string(timeIndex) + "'");
     }
+    const std::optional<data::LevelRange> kept = levelsArgument(levels);
     if (paths.empty()) {
         s.state->demo = true;
         return s;
     }
     s.state->data =
         data::DataSelection{paths, variable, memberDim, static_cast<std::size_t>(timeIndex)};
+    s.state->data.levels = kept;
     return s;
 }
 
@@ -130,9 +132,10 @@ camera and which members are hidden or selected, as a project file (.ensil) save
 Session.load() reads a project (validated whole, as the workbench and `ensil render` do);
 save() writes one atomically; ensil.render(session) draws it as the workbench shows it.)doc")
         .def(py::init(&newSession), py::arg("paths") = py::none(), py::arg("var") = "",
-             py::arg("member_dim") = "", py::arg("time_index") = 0, R"doc(
+             py::arg("member_dim") = "", py::arg("time_index") = 0, py::arg("levels") = "",
+             R"doc(
 A new session with the default settings over data files (the selection as ensil.open takes
-it), or over the built-in demo when no paths are given.)doc")
+it, levels='1000:100hPa' included), or over the built-in demo when no paths are given.)doc")
         .def_static(
             "load",
             [](const std::string& path) {

@@ -2,6 +2,7 @@
 under their ids with the command line's ranges and refusals."""
 
 import json
+import os
 
 import pytest
 
@@ -98,3 +99,16 @@ def test_a_bad_project_is_refused_whole(tmp_path):
     assert refused.value.kind == "project"
     with pytest.raises(ensil.Error, match="say where to save"):
         ensil.Session().save()
+
+
+def test_a_session_keeps_the_levels_it_was_given_in_its_project(era5_path, tmp_path):
+    path = os.path.join(os.path.dirname(era5_path), "eraint_uvz.nc")
+    project = str(tmp_path / "upper.ensil")
+    ensil.Session(path, var="u", member_dim="month", levels="500:200hPa").save(project)
+    with open(project) as f:
+        assert json.load(f)["data"]["levels"] == "500:200 hPa"
+    ensil.Session.load(project).save(project)  # read back and written again, the same
+    with open(project) as f:
+        assert json.load(f)["data"]["levels"] == "500:200 hPa"
+    with pytest.raises(ensil.ArgumentError, match="levels: the level range '500-200'"):
+        ensil.Session(path, levels="500-200")
