@@ -68,10 +68,13 @@ std::string levelRangeText(const LevelRange& range) {
 }
 
 LayerSpan layersWithin(const Axis& z, const LevelRange& range, const std::string& source) {
-    const std::string axisUnits = z.units.empty() ? "" : " " + z.units;
-    const std::string axis = "the vertical axis '" + z.name + "' of " + source + " (from " +
-                             readableNumber(z.front(), 9) + " to " + readableNumber(z.back(), 9) +
-                             axisUnits + ", " + std::to_string(z.size()) + " levels)";
+    // What a refusal names (only then written out).
+    const auto axis = [&] {
+        return "the vertical axis '" + z.name + "' of " + source + " (from " +
+               readableNumber(z.front(), 9) + " to " + readableNumber(z.back(), 9) +
+               (z.units.empty() ? "" : " " + z.units) + ", " + std::to_string(z.size()) +
+               " levels)";
+    };
     double from = range.from;
     double to = range.to;
     if (!range.units.empty() && range.units != z.units) {
@@ -79,7 +82,7 @@ LayerSpan layersWithin(const Axis& z, const LevelRange& range, const std::string
         const std::optional<double> t = convertUnits(range.to, range.units, z.units);
         if (!f || !t) {
             throw Error(ErrorKind::InvalidArgument,
-                        "levels " + levelRangeText(range) + " cannot be compared with " + axis +
+                        "levels " + levelRangeText(range) + " cannot be compared with " + axis() +
                             (z.units.empty() || !isKnownUnit(z.units)
                                  ? ", whose units UDUNITS-2 does not know: give the range in its "
                                    "own values, without units"
@@ -105,7 +108,7 @@ LayerSpan layersWithin(const Axis& z, const LevelRange& range, const std::string
         throw Error(ErrorKind::InvalidArgument, "levels " + levelRangeText(range) + " hold " +
                                                     std::to_string(count) +
                                                     (count == 1 ? " level" : " levels") + " of " +
-                                                    axis + "; a volume needs at least 2");
+                                                    axis() + "; a volume needs at least 2");
     }
     return {*first, count};  // the axis is monotonic, so the levels within are contiguous
 }

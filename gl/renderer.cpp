@@ -227,9 +227,7 @@ void Renderer::setVerticalAxis(data::VerticalAxis axis) {
     if (m_scene.hasGrid) {
         m_scene.frame =
             data::DisplayFrame(m_scene.grid, m_scene.frame.verticalExaggeration(), axis);
-        m_axisTablesDirty = true;
-        m_meshesDirty = true;  // the rims, and the floor map at a level, follow the levels
-        m_motionMeshesDirty = true;
+        m_axisTablesDirty = true;  // all that moves: meshes and rims are in grid indices
     }
 }
 

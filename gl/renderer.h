@@ -207,8 +207,8 @@ public:
     static constexpr glm::vec4 kCoastlineColor{0.97F, 0.97F, 0.97F, 1.0F};
     void setVerticalExaggeration(float exaggeration);
     // Draws a pressure axis through log-pressure, linearly or at standard-atmosphere heights
-    // (settings().verticalAxis): the meshes stay (their vertices are grid indices, mapped to
-    // the box by the axis tables), the box's levels move.
+    // (settings().verticalAxis): only the axis tables change; the meshes and their rims stay
+    // uploaded (their vertices are grid indices, which the tables map into the box).
     void setVerticalAxis(data::VerticalAxis axis);
     // The meshes of the current isovalue (uploaded at the next frame); null clears them, and
     // their motion meshes too.

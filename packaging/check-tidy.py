@@ -23,6 +23,7 @@ built tree: CI runs this after the optimised build).
 """
 
 import concurrent.futures
+import functools
 import json
 import os
 import pathlib
@@ -87,6 +88,12 @@ def translation_units(build: pathlib.Path) -> dict:
     return units
 
 
+@functools.lru_cache(maxsize=None)
+def text_of(path: pathlib.Path) -> str:
+    """A file's text, read once however many headers are looked up in it."""
+    return path.read_text(encoding="utf-8", errors="replace")
+
+
 def unit_for(path: str, units: dict, seen: set | None = None) -> pathlib.Path | None:
     """The file clang-tidy parses to check `path` (`seen`: headers already followed)."""
     seen = set() if seen is None else seen
@@ -101,10 +108,10 @@ def unit_for(path: str, units: dict, seen: set | None = None) -> pathlib.Path | 
         # of settings included only through another header, say).
         include = f'#include "{path}"'
         for source in sorted(units):
-            if include in (ROOT / source).read_text(encoding="utf-8", errors="replace"):
+            if include in text_of(ROOT / source):
                 return units[source]
         for header in sorted(ROOT.glob("*/*.h")):
-            if include in header.read_text(encoding="utf-8", errors="replace"):
+            if include in text_of(header):
                 relative = header.relative_to(ROOT).as_posix()
                 if relative not in seen and (unit := unit_for(relative, units, seen)) is not None:
                     return unit
@@ -120,9 +127,9 @@ def tidy(unit: pathlib.Path, build: pathlib.Path) -> str:
 def main() -> int:
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     if sys.argv[1:] == ["--record"]:
-        write_record(current_hashes())
-        print(f"check-tidy.py: recorded {len(current_hashes())} files' hashes in "
-              f"{RECORD.relative_to(ROOT)}")
+        hashes = current_hashes()
+        write_record(hashes)
+        print(f"check-tidy.py: recorded {len(hashes)} files' hashes in {RECORD.relative_to(ROOT)}")
         return 0
     if len(args) != 1 or len(sys.argv) != 2:
         print(__doc__, file=sys.stderr)

@@ -30,7 +30,6 @@ public:
     // 2 GiB (the step read ahead is always kept: reading ahead is what makes playing smooth).
     [[nodiscard]] static std::size_t defaultBudget();
     void setBudget(std::size_t bytes) { m_budget = bytes; }
-    [[nodiscard]] std::size_t budget() const { return m_budget; }
 
     // A move between steps: reading ahead follows its direction.
     void moved(std::size_t from, std::size_t to);

@@ -16,6 +16,7 @@ command line's messages; warnings are ensil.DataWarning.
 
 import builtins as _builtins
 import os as _os
+import sys as _sys
 
 import numpy as _np
 
@@ -45,7 +46,7 @@ Ensemble.to_xarray = _xarray.ensemble_to_xarray
 Ensemble.stats_dataset = _xarray.ensemble_stats_dataset
 PreprocessResult.to_xarray = _xarray.result_to_xarray
 # da.ensil / ds.ensil, where xarray is already imported (else from the first from_xarray call).
-if "xarray" in __import__("sys").modules:
+if "xarray" in _sys.modules:
     _xarray.register_accessors()
 
 # Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.

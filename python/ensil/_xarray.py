@@ -231,12 +231,20 @@ def ensemble_stats_dataset(ensemble, iso, members=None, progress=None):
                              "members": ", ".join(member_names)})
 
 
+_accessors_registered = False
+
+
 def register_accessors():
-    """``da.ensil.ensemble()`` and ``ds.ensil.ensemble(var=...)``, when xarray is importable."""
+    """``da.ensil.ensemble()`` and ``ds.ensil.ensemble(var=...)``, once, when xarray is
+    importable."""
+    global _accessors_registered
+    if _accessors_registered:
+        return
     try:
         import xarray as xr
     except ImportError:
         return
+    _accessors_registered = True
 
     class _Accessor:
         def __init__(self, obj):
@@ -248,7 +256,7 @@ def register_accessors():
 
     import warnings
 
-    with warnings.catch_warnings():  # a second registration (a reload) only warns
+    with warnings.catch_warnings():  # a registration after a reload of ensil only warns
         warnings.simplefilter("ignore")
         xr.register_dataarray_accessor("ensil")(_Accessor)
         xr.register_dataset_accessor("ensil")(_Accessor)

@@ -129,3 +129,28 @@ TEST_F(RimsTest, ATwoLevelSheetShowsAndPicksEveryMemberByItsRimFromAbove) {
         EXPECT_GT(near, 0) << "no pixel in the member's colour on its rim";
     }
 }
+
+// Another vertical axis for a pressure grid moves only the axis tables: what is drawn after the
+// change, with the meshes and rims uploaded before it, is what the same meshes uploaded again
+// draw, and not what was drawn through log-pressure.
+TEST_F(RimsTest, AnotherVerticalAxisMovesTheSurfacesWithoutUploadingThemAgain) {
+    data::Ensemble e = test::spheres({{16.0F, 16.0F, 12.0F}});
+    data::Axis pressure;
+    pressure.name = "plev";
+    pressure.units = "Pa";
+    pressure.positiveUp = false;
+    for (int k = 0; k < 32; ++k) pressure.values.push_back(100000.0 - 2800.0 * k);
+    e.grid = data::Grid(e.grid.x(), e.grid.y(), pressure);
+    const std::shared_ptr<data::MeshSet> meshes = test::meshesOf(e);
+    m_renderer.setGrid(e.grid);
+    m_renderer.setMeshes(meshes);
+    m_renderer.setAppearance({{gl::clusterColor(0), true, false}});
+    m_renderer.lookFrom(-90.0F, 0.0F);  // from the south, level
+    const QImage logPressure = draw();
+    m_renderer.setVerticalAxis(data::VerticalAxis::Pressure);
+    const QImage switched = draw();
+    m_renderer.setMeshes(meshes);  // uploaded again
+    const QImage uploaded = draw();
+    EXPECT_EQ(switched, uploaded);
+    EXPECT_NE(switched, logPressure);
+}
