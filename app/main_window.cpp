@@ -42,6 +42,7 @@
 #include "workbench/point_description.h"
 #include "workbench/recent_selections.h"
 #include "workbench/time_steps.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 namespace {
@@ -55,8 +56,13 @@ constexpr std::chrono::milliseconds kLongestScrubRepaintWait{100};
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent),
       m_view(new ui::SilhouetteView),
-      m_timeSteps(new workbench::TimeSteps(this)),
-      m_model(new session::SessionModel(this)) {
+      // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
+      m_workbench(new workbench::Workbench(
+          m_view, QString::fromStdString(engine::defaultMeshCacheDirectory()), this)),
+      m_model(m_workbench->model()),
+      m_selection(m_workbench->selection()),
+      m_session(m_workbench->isovalue()),
+      m_timeSteps(m_workbench->timeSteps()) {
     setWindowTitle(QStringLiteral("ensil"));
     setCentralWidget(m_view);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
@@ -69,6 +75,7 @@ MainWindow::MainWindow(QWidget* parent)
     createTimeBar();
     createMenus();
     linkPanels();
+    bindOpening();
     // Last: everything the bindings show the session in exists now.
     bindSession();
     restoreRenderSettings();
@@ -96,9 +103,10 @@ MainWindow::~MainWindow() {
     const auto sections = findChild<QDockWidget*>(QStringLiteral("sectionsDock"));
     if (sections != nullptr) disconnect(sections, nullptr, this, nullptr);
     disconnect(m_sections, nullptr, this, nullptr);
-    // A worker must not outlive the window it reports to.
-    m_loader.cancel();
-    m_loader.wait();
+    // The workbench outlives this destructor (a child, deleted after it): what it says now
+    // must not reach this window half destroyed, and its workers must not outlive the window.
+    disconnect(m_workbench, nullptr, this, nullptr);
+    m_workbench->cancel();
 }
 
 void MainWindow::createDocks() {
@@ -196,10 +204,6 @@ void MainWindow::createToolbar() {
     m_toolbar = new ui::RenderToolbar(this);
     addToolBar(Qt::TopToolBarArea, m_toolbar);
     m_scrubRepaints = new ui::FramePacedRepaints(m_toolbar, m_view, kLongestScrubRepaintWait, this);
-    // The cache the command line uses too (a mesh built by `ensil preprocess` is found here).
-    m_session = new workbench::IsovalueSession(
-        m_view, m_selection, QString::fromStdString(engine::defaultMeshCacheDirectory()), this);
-    m_session->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
     connect(m_session, &workbench::IsovalueSession::started, this, &MainWindow::setBusy);
     connect(m_session, &workbench::IsovalueSession::progressed, this,
             [this](double f) { m_progress->setValue(static_cast<int>(f * kProgressSteps)); });
@@ -277,11 +281,10 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!recent.empty());
 }
 
-void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview) {
-    m_overview = std::move(overview);
+void MainWindow::showOverview() {
+    const engine::EnsembleOverview& overview = *m_workbench->overview();
     m_historyStartsAfresh = true;
-    if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
-    const data::Ensemble& e = *m_overview->ensemble;
+    const data::Ensemble& e = *overview.ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);
     titleTheView(e);
@@ -290,16 +293,17 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
     m_lastHoveredMember = -1;
     showSection();
     showSpread();
-    renderer.setMapLines(m_overview->mapLines);
+    renderer.setMapLines(overview.mapLines);
     m_mapProjection =
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
-    m_info->showFacts(engine::ensembleFacts(*m_overview));
+    m_info->showFacts(engine::ensembleFacts(overview));
     offerVariables();
-    m_session->setEnsemble(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
-                           m_overview->streamed);
+    m_session->setEnsemble(overview.ensemble, overview.moments, overview.sourceKey,
+                           overview.streamed);
     QStringList times;
     for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
-    m_timeBar->setSteps(times, m_requested ? static_cast<int>(m_requested->timeIndex) : 0);
+    const auto& files = m_workbench->files();
+    m_timeBar->setSteps(times, files ? static_cast<int>(files->timeIndex) : 0);
     resetStepClusters(times);
     // Time controls only for data with time steps.
     m_timeBar->setVisible(times.size() > 1);
@@ -307,36 +311,21 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
         dock->setVisible(times.size() > 1);
     }
     m_view->setMemberNames(memberNames());
-    const prep::FieldStatistics& stats = m_overview->statistics;
+    const prep::FieldStatistics& stats = overview.statistics;
     const int members = static_cast<int>(e.memberCount());
     m_toolbar->setMemberCount(members, session::defaultClusters(members));
-    showIsovalueRange(m_overview->defaultIsovalue);
+    showIsovalueRange(overview.defaultIsovalue);
     m_toolbar->setIsovalueHistogram(stats.histogram);
     updatePlaneBox();
     {
         // The session of this data: a project's, or the default isovalue (the toolbar shows
         // it, rounded to its precision: what gets built) and clusters; one rebuild below.
         const QScopedValueRollback showing(m_showingNewData, true);
-        const auto shownIsovalue = static_cast<float>(m_toolbar->isovalue());
-        m_model->update([&](session::SessionState& s) {
-            if (m_pendingProject) {
-                s = *m_pendingProject;
-                // Its members are shown once their surfaces are built (applyPendingProject).
-                s.hiddenMembers.clear();
-                s.hiddenClusters.clear();
-                s.selection.clear();
-            }
-            s.demo = m_requestedDemo.has_value();
-            s.demoParams = m_requestedDemo.value_or(data::DemoEnsembleParams{});
-            s.data = m_requested.value_or(data::DataSelection{});
-            if (!m_pendingProject || !s.isovalue) s.isovalue = shownIsovalue;
-            s.clusters = m_pendingProject ? std::clamp(s.clusters, 1, members)
-                                          : session::defaultClusters(members);
-        });
-        if (m_pendingProject) applyPendingProjectCamera();
+        m_workbench->startSessionOfNewData(static_cast<float>(m_toolbar->isovalue()));
+        if (m_workbench->pendingProject() != nullptr) applyPendingProjectCamera();
     }
     updateWindowTitle();
-    const data::Grid& grid = m_overview->streamed ? m_overview->streamed->description.grid : e.grid;
+    const data::Grid& grid = overview.streamed ? overview.streamed->description.grid : e.grid;
     setIdle(tr("%1: %2 members of %3 on %4 x %5 x %6%7")
                 .arg(QString::fromStdString(e.source))
                 .arg(e.memberCount())
@@ -344,12 +333,11 @@ void MainWindow::showOverview(std::unique_ptr<engine::EnsembleOverview> overview
                 .arg(grid.nx())
                 .arg(grid.ny())
                 .arg(grid.nz())
-                .arg(m_overview->streamed
+                .arg(overview.streamed
                          ? tr(", larger than the memory budget: read in slabs (see Ensemble)")
                          : QString()));
     emit ensembleLoaded();
-    const session::SessionState& s = m_model->state();
-    m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
+    m_workbench->buildFirstSurfaces();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -367,7 +355,7 @@ void MainWindow::lookFrom(const session::ViewPreset& preset) {
 }
 
 void MainWindow::showFloor(const gl::RenderSettings& settings) {
-    if (!m_overview) return;
+    if (overview() == nullptr) return;
     m_view->renderer().setFloorMap(engine::sceneFloor(sceneData(), settings));
 }
 

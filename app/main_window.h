@@ -34,6 +34,7 @@ namespace ensil::workbench {
 class IsovalueSession;
 class MemberSelection;
 class TimeSteps;
+class Workbench;
 }  // namespace ensil::workbench
 
 namespace ensil::ui {
@@ -88,7 +89,7 @@ public:
     // engine::defaultMemoryLimit()): data whose in-memory peak is larger are opened as a thinned
     // copy with their surfaces built from the whole data in slabs (engine/
     // workbench_reading.h), saying so. Applies to what is opened next.
-    void setMemoryLimit(std::size_t bytes) { m_memoryLimit = bytes; }
+    void setMemoryLimit(std::size_t bytes);
     [[nodiscard]] std::size_t memoryLimit() const;
 
     [[nodiscard]] ui::SilhouetteView* view() const { return m_view; }
@@ -99,8 +100,10 @@ public:
     [[nodiscard]] ui::AnimationBar* animationBar() const { return m_animation; }
     [[nodiscard]] ui::TimeBar* timeBar() const { return m_timeBar; }
     [[nodiscard]] workbench::IsovalueSession* isovalueSession() const { return m_session; }
-    [[nodiscard]] const engine::EnsembleOverview* overview() const { return m_overview.get(); }
-    [[nodiscard]] bool isLoading() const { return m_loader.isRunning(); }
+    [[nodiscard]] const engine::EnsembleOverview* overview() const;
+    [[nodiscard]] bool isLoading() const;
+    // The document and its controllers (workbench/workbench.h), which this window shows.
+    [[nodiscard]] workbench::Workbench* workbench() const { return m_workbench; }
     // Loading or building isosurfaces.
     [[nodiscard]] bool isBusy() const;
 
@@ -132,7 +135,7 @@ public:
     void applySession(const session::SessionState& state);
     // Edit > Undo and Redo, whose names say the step ("Undo Isovalue 35.6 -> 30").
     [[nodiscard]] session::SessionHistory* history() const { return m_history; }
-    [[nodiscard]] QString projectPath() const { return m_projectPath; }
+    [[nodiscard]] QString projectPath() const;
     // Who is asked where a project's missing data file went (a file dialog by default);
     // an empty answer cancels opening.
     void setMissingFileLocator(std::function<QString(const QString&)> locate) {
@@ -178,17 +181,17 @@ private:
     // (read in the background, the last step kept on screen until this one is built), the
     // step shown, and the steps read ahead or visited, kept within a memory budget.
     void createTimeBar();
-    // A step's ensemble read and its overview built, on a worker; what it shares with the step
-    // shown (the opening isovalue, the map lines) is taken from that one.
-    workbench::BackgroundJob<engine::EnsembleOverview>::Work readingStep(
-        const data::DataSelection& selection) const;
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     // What follows each isovalue's surfaces, in order (main_window_results.cpp).
     void showBuiltSurfaces(const QString& summary);
     void showOutlyingnessRange();  // main_window_render_docks.cpp
     void showBuiltTimeStep();      // main_window_time.cpp
     void goToTimeStep(std::size_t step);
-    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
+    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead, std::size_t step);
+    // What the window shows of the workbench's opening (main_window_loading.cpp).
+    void bindOpening();
+    void showOpeningFailed(const QString& message);
+    void askForMemberDimension(const QString& file, const QStringList& choices);
     // The step's surfaces: kept from a visit before, shown at once; else built.
     void showStepSurfaces(float isovalue, float exaggeration);
     // The next step in the direction of the last move (forward while playing, round the end),
@@ -200,11 +203,6 @@ private:
     // That step's surfaces, figures and clusters built ahead and kept by the session.
     void buildAhead(const engine::EnsembleOverview& step);
     void forgetTimeSteps();
-    [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
-    // Opening data (main_window_loading.cpp): `read` on a worker, as
-    // engine::readEnsembleOverview; `identify` gives the data's identity for the mesh cache.
-    void startLoading(const QString& what, std::function<std::string()> identify,
-                      engine::WorkbenchRead read);
     void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);
@@ -236,9 +234,7 @@ private:
     void chooseSurfaceExport();  // main_window_export.cpp, with the two below
     void exportDendrogram();
     void exportMemberTable();
-    void onLoadFailed(const std::exception_ptr& error, bool cancelled);
-    void askForMemberDimension(const data::Error& error);
-    void showOverview(std::unique_ptr<engine::EnsembleOverview> overview);
+    void showOverview();
     void setBusy(const QString& what);
     void setIdle(const QString& message);
     void createProjectActions(QMenu* file);
@@ -262,7 +258,7 @@ private:
     void applyPendingProjectCamera();
     // Width over height of the 3D view, for fitting the camera.
     [[nodiscard]] float viewAspect() const;
-    void applyPendingProjectMembers();
+    void showOpenedProject(const QString& path);
     void rememberRecentProject(const QString& path);
     void rebuildRecentProjectsMenu();
     void updateWindowTitle();
@@ -303,37 +299,30 @@ private:
     void fillStepClusters();
     workbench::BackgroundJob<engine::StepClusters> m_stepFill{this};
     bool m_fillStopped = false;
-    // Time steps read (ahead, or visited before) and not on screen (workbench/time_steps.h).
-    workbench::TimeSteps* m_timeSteps;
+    workbench::Workbench* m_workbench;
+    // The workbench's parts, named here for brevity: the session on screen (every control writes
+    // into it, and its bindings show it), the shared member selection, the isovalue controller
+    // and the time steps read (ahead, or visited before) and not on screen.
+    session::SessionModel* const m_model;
+    workbench::MemberSelection* const m_selection;
+    workbench::IsovalueSession* const m_session;
+    workbench::TimeSteps* const m_timeSteps;
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
-    workbench::IsovalueSession* m_session = nullptr;
-    // The session on screen: every control writes into it, and its bindings show it.
-    session::SessionModel* m_model;
     bool m_showingNewData = false;  // showOverview: one rebuild at its end, not one per part
     session::SessionHistory* m_history = nullptr;
     QAction* m_resetCameraAction = nullptr;
     QList<QAction*> m_viewPresetActions;  // map view, views from the sides
     // New data is on screen: its first surfaces start the undo history afresh.
     bool m_historyStartsAfresh = false;
-    workbench::MemberSelection* m_selection = nullptr;
     ui::MemberTablePanel* m_memberTable = nullptr;
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;
     ui::SectionsPanel* m_sections = nullptr;
     bool m_hasSavedLayout = false;
-    workbench::BackgroundJob<engine::EnsembleOverview> m_loader{this};
     workbench::BackgroundJob<engine::ExportedSurfaces> m_surfaceExport{this};
-    std::unique_ptr<engine::EnsembleOverview> m_overview;
-    std::size_t m_memoryLimit = 0;  // 0: engine::defaultMemoryLimit() when data are opened
     // The open grid's map projection, for the places under the cursor (none before data).
     std::unique_ptr<geo::MapProjection> m_mapProjection;
-    std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
-    std::optional<data::DemoEnsembleParams> m_requestedDemo;
-    // A project being opened: applied when its data has loaded and its surfaces are built.
-    std::unique_ptr<session::SessionState> m_pendingProject;
-    QString m_pendingProjectPath;
-    QString m_projectPath;
     QMenu* m_recentProjectsMenu = nullptr;
     std::function<QString(const QString&)> m_locateMissingFile;
     // What the cut face shows now, so that it is rebuilt only when that changes.

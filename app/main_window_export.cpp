@@ -53,7 +53,7 @@ void MainWindow::addExportActions(QMenu* file) {
 }
 
 void MainWindow::chooseSurfaceExport() {
-    if (m_session == nullptr || m_session->result() == nullptr || !m_overview) {
+    if (m_session == nullptr || m_session->result() == nullptr || overview() == nullptr) {
         QMessageBox::information(this, tr("No surfaces yet"),
                                  tr("Surfaces can be exported once an isovalue's have been made."));
         return;
@@ -66,7 +66,7 @@ void MainWindow::chooseSurfaceExport() {
     const QString suggested =
         QFileInfo(settings.value(QStringLiteral("export/surfaceFolder")).toString(),
                   QStringLiteral("%1_iso%2.vtm")
-                      .arg(QString::fromStdString(m_overview->ensemble->variable))
+                      .arg(QString::fromStdString(overview()->ensemble->variable))
                       .arg(static_cast<double>(m_session->result()->meshes->isovalue)))
             .filePath();
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Surfaces"), suggested,
@@ -81,7 +81,7 @@ void MainWindow::exportSurfaces(const QString& path) {
     const QFileInfo file(path);
     const auto format = engine::surfaceFormatOfFile(path.toStdString());
     const workbench::IsovalueResult* result = m_session != nullptr ? m_session->result() : nullptr;
-    if (!format || result == nullptr || !m_overview) {
+    if (!format || result == nullptr || overview() == nullptr) {
         QMessageBox::warning(
             this, tr("Surfaces not exported"),
             !format ? tr("%1: name a file ending in .vtm, .ply, .obj or .stl.").arg(path)
@@ -97,7 +97,7 @@ void MainWindow::exportSurfaces(const QString& path) {
         }
     }
     set.members.assign(members.begin(), members.end());
-    const data::Ensemble& ensemble = *m_overview->ensemble;
+    const data::Ensemble& ensemble = *overview()->ensemble;
     set.variable = ensemble.variable;
     set.units = ensemble.units;
     for (const data::Member& m : ensemble.members) set.memberNames.push_back(m.name);
@@ -106,7 +106,7 @@ void MainWindow::exportSurfaces(const QString& path) {
     set.stem = file.completeBaseName().toStdString();
     // The job keeps what it writes alive: the meshes and the grid, shared.
     auto meshes = result->meshes;
-    auto ensembleKept = m_overview->ensemble;
+    auto ensembleKept = overview()->ensemble;
     const std::filesystem::path directory = file.absolutePath().toStdString();
     setBusy(tr("Writing the surfaces to %1...").arg(file.absolutePath()));
     m_surfaceExport.start(
@@ -181,9 +181,9 @@ QString MainWindow::defaultScreenshotPath(const QString& lastPath) const {
     // In the folder of the last screenshot, named after what the picture shows.
     const QString folder = lastPath.isEmpty() ? QString() : QFileInfo(lastPath).absolutePath();
     QString name = QStringLiteral("ensil.png");
-    if (m_overview && m_model->state().isovalue) {
+    if (overview() != nullptr && m_model->state().isovalue) {
         name = QString::fromStdString(
-                   engine::pictureFileStem(*m_overview->ensemble, *m_model->state().isovalue)) +
+                   engine::pictureFileStem(*overview()->ensemble, *m_model->state().isovalue)) +
                QStringLiteral(".png");
     }
     return folder.isEmpty() ? name : QDir(folder).filePath(name);

@@ -59,7 +59,7 @@ void MainWindow::createHistory(QMenu* edit) {
 }
 
 void MainWindow::applySession(const session::SessionState& s) {
-    if (!m_overview) return;
+    if (overview() == nullptr) return;
     m_model->replace(s);  // the bindings show it (main_window_session.cpp)
     session::placeCamera(s.camera, m_view->renderer());
     m_view->update();

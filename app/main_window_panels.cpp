@@ -23,6 +23,7 @@
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
 #include "workbench/point_description.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 namespace {
@@ -42,7 +43,6 @@ QDockWidget* makeDock(QMainWindow* window, const QString& title, const char* nam
 }  // namespace
 
 void MainWindow::createPanels() {
-    m_selection = new workbench::MemberSelection(m_model, this);
     m_clusterPanel = new ui::ClusterPanel(m_selection);
     m_memberTable = new ui::MemberTablePanel(m_selection);
     m_dendrogram = new ui::DendrogramView(m_selection);
@@ -125,10 +125,10 @@ void MainWindow::linkPanels() {
     connect(m_view, &ui::SilhouetteView::membersBrushed, this, &MainWindow::onMembersBrushed);
     // The place, level and values under the cursor, in the tooltip and the status bar.
     m_view->setHoverDescriber([this](const gl::PickResult& hit) {
-        if (!m_overview) return QString();
+        if (overview() == nullptr) return QString();
         const gl::Renderer& renderer = m_view->renderer();
         const workbench::PointContext context{
-            m_overview->ensemble.get(), &m_overview->moments->mean, m_mapProjection.get(),
+            overview()->ensemble.get(), &overview()->moments->mean, m_mapProjection.get(),
             &renderer.frame(), renderer.sectionShown() ? &renderer.sectionVolume() : nullptr};
         return workbench::describePoint(context, hit);
     });
@@ -163,7 +163,7 @@ void MainWindow::createEditMenu() {
 }
 
 bool MainWindow::isBusy() const {
-    return m_loader.isRunning() || m_surfaceExport.isRunning() ||
+    return m_workbench->isOpening() || m_surfaceExport.isRunning() ||
            (m_session != nullptr && m_session->isRunning());
 }
 

@@ -10,8 +10,6 @@
 #include <algorithm>
 
 #include "app/main_window.h"
-#include "preprocessing/clustering.h"
-#include "session/member_appearance.h"
 #include "session/project_file.h"
 #include "session/session_camera.h"
 #include "session/session_model.h"
@@ -23,6 +21,7 @@
 #include "workbench/dialog_paths.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 namespace {
@@ -32,9 +31,6 @@ const QString kFilter = QStringLiteral("ensil projects (*.ensil)");
 }  // namespace
 
 void MainWindow::createProjectActions(QMenu* file) {
-    // A project being opened is dropped when its surfaces cannot be built.
-    connect(m_session, &workbench::IsovalueSession::failed, this,
-            [this] { m_pendingProject.reset(); });
     file->addAction(tr("Open &Project..."), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O), this,
                     [this] {
                         const QString path = QFileDialog::getOpenFileName(
@@ -45,10 +41,10 @@ void MainWindow::createProjectActions(QMenu* file) {
     m_recentProjectsMenu = file->addMenu(tr("Recent Projects"));
     rebuildRecentProjectsMenu();
     file->addAction(tr("&Save Project"), QKeySequence::Save, this, [this] {
-        if (m_projectPath.isEmpty()) {
+        if (projectPath().isEmpty()) {
             chooseProjectPathAndSave();
         } else {
-            saveProjectReporting(m_projectPath);
+            saveProjectReporting(projectPath());
         }
     });
     file->addAction(tr("Save Project &As..."), QKeySequence::SaveAs, this,
@@ -62,7 +58,7 @@ void MainWindow::chooseProjectPathAndSave() {
     QString path = QFileDialog::getSaveFileName(
         this, tr("Save Project"),
         workbench::suggestedProjectPath(
-            m_projectPath, QSettings().value("project/lastFolder").toString(), dataFile),
+            projectPath(), QSettings().value("project/lastFolder").toString(), dataFile),
         kFilter);
     if (path.isEmpty()) return;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".ensil");
@@ -89,7 +85,7 @@ session::SessionState MainWindow::captureSession() const {
 }
 
 bool MainWindow::saveProjectTo(const QString& path, QString* error) {
-    if (!m_overview) {
+    if (overview() == nullptr) {
         if (error != nullptr) *error = tr("There is nothing to save yet: load an ensemble first.");
         return false;
     }
@@ -99,7 +95,7 @@ bool MainWindow::saveProjectTo(const QString& path, QString* error) {
         if (error != nullptr) *error = QString::fromStdString(e.what());
         return false;
     }
-    m_projectPath = path;
+    m_workbench->setProjectPath(path);
     rememberRecentProject(path);
     statusBar()->showMessage(tr("Saved the project to %1").arg(path), 4000);
     updateWindowTitle();
@@ -173,13 +169,8 @@ bool MainWindow::openReadProject(session::SessionState project, const QString& p
         file = found.toStdString();
     }
     QSettings().setValue("project/lastFolder", QFileInfo(path).absolutePath());
-    m_pendingProject = std::make_unique<session::SessionState>(project);
-    m_pendingProjectPath = path;
-    if (project.demo) {
-        loadDemo(project.demoParams);
-    } else {
-        openFiles(project.data);
-    }
+    if (!project.demo) rememberRecent(project.data);
+    m_workbench->openProject(std::move(project), path);
     return true;
 }
 
@@ -197,29 +188,13 @@ float MainWindow::viewAspect() const {
 }
 
 void MainWindow::applyPendingProjectCamera() {
-    session::placeCamera(m_pendingProject->camera, m_view->renderer());
+    session::placeCamera(m_workbench->pendingProject()->camera, m_view->renderer());
 }
 
-void MainWindow::applyPendingProjectMembers() {
-    if (!m_pendingProject) return;
-    const session::SessionState p = *m_pendingProject;
-    m_pendingProject.reset();
-    // The clusters numbered and coloured as they were saved (hidden clusters below are by
-    // label of the saved cut, which the same data and k give again).
-    m_selection->numberClustersAs(p.memberClusters);
-    // Hidden clusters are hidden by their members, now that the clusters are known.
-    const session::MemberFlags flags =
-        session::memberFlags(p, m_selection->labels(), m_selection->memberCount());
-    m_model->update([&flags, &p](session::SessionState& s) {
-        s.hiddenMembers.clear();
-        for (std::size_t m = 0; m < flags.visible.size(); ++m) {
-            if (!flags.visible[m]) s.hiddenMembers.push_back(static_cast<int>(m));
-        }
-        s.hiddenClusters.clear();
-        s.selection = p.selection;
-    });
-    m_projectPath = m_pendingProjectPath;
-    rememberRecentProject(m_projectPath);
+QString MainWindow::projectPath() const { return m_workbench->projectPath(); }
+
+void MainWindow::showOpenedProject(const QString& path) {
+    rememberRecentProject(path);
     updateWindowTitle();
     emit projectOpened();
 }
@@ -248,11 +223,11 @@ void MainWindow::rebuildRecentProjectsMenu() {
 }
 
 void MainWindow::updateWindowTitle() {
-    if (!m_overview) return;
-    const data::Ensemble& e = *m_overview->ensemble;
+    if (overview() == nullptr) return;
+    const data::Ensemble& e = *overview()->ensemble;
     QString title = QStringLiteral("%1 - %2").arg(QString::fromStdString(e.variable),
                                                   QString::fromStdString(e.source));
-    if (!m_projectPath.isEmpty()) title = QFileInfo(m_projectPath).fileName() + " - " + title;
+    if (!projectPath().isEmpty()) title = QFileInfo(projectPath()).fileName() + " - " + title;
     setWindowTitle(title + QStringLiteral(" - ensil"));
 }
 

@@ -104,8 +104,8 @@ void MainWindow::createRenderDocks() {
 
 void MainWindow::showOutlyingnessRange() {
     const auto& meshes = m_view->renderer().meshes();
-    if (!meshes || !m_overview) return;
-    const QString units = QString::fromStdString(data::readableUnits(m_overview->ensemble->units));
+    if (!meshes || overview() == nullptr) return;
+    const QString units = QString::fromStdString(data::readableUnits(overview()->ensemble->units));
     // "K" squared is "K²", "m s⁻¹" squared is "(m s⁻¹)²".
     const QString squared = units.isEmpty() ? QString()
                             : units.contains(QRegularExpression(QStringLiteral("[ ./*-]")))
@@ -132,14 +132,14 @@ void MainWindow::rememberRenderSettings() const {
 }
 
 void MainWindow::setPlaneBox() {
-    if (!m_overview) return;
+    if (overview() == nullptr) return;
     const data::DisplayFrame& frame = m_view->renderer().frame();
     m_planePanel->setBox(frame.boxMin(), frame.boxMax(),
-                         planeAxes(m_overview->ensemble->grid, frame));
+                         planeAxes(overview()->ensemble->grid, frame));
 }
 
 void MainWindow::updatePlaneBox() {
-    if (!m_overview) return;
+    if (overview() == nullptr) return;
     // The plane keeps its place across the box when the box changes shape.
     const double position = m_planePanel->position();
     setPlaneBox();

@@ -12,6 +12,7 @@
 #include "widgets/animation_bar.h"
 #include "widgets/sections_panel.h"
 #include "workbench/isovalue_session.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 
@@ -20,8 +21,9 @@ void MainWindow::showBuiltSurfaces(const QString& summary) {
     showFloor(m_model->state().render);
     showSection();
     // The Sections dock's maps and cross-sections, at this isovalue (of this time step).
-    if (const workbench::IsovalueResult* result = m_session->result(); result && m_overview) {
-        m_sections->showData(m_overview->ensemble, result->meshes->isovalue);
+    if (const workbench::IsovalueResult* result = m_session->result();
+        result && overview() != nullptr) {
+        m_sections->showData(overview()->ensemble, result->meshes->isovalue);
     }
     // The removal thresholds range over the outlyingness of the meshes on screen.
     showOutlyingnessRange();
@@ -29,7 +31,7 @@ void MainWindow::showBuiltSurfaces(const QString& summary) {
     m_animation->setSequence({});
     showBuiltTimeStep();
     // A project's visibility and selection apply to its members once their clusters are known.
-    applyPendingProjectMembers();
+    m_workbench->applyPendingProjectMembers();
     // New data: what was done to the old data cannot be undone on it.
     if (std::exchange(m_historyStartsAfresh, false)) m_history->reset();
 }

@@ -12,12 +12,12 @@ namespace ensil::app {
 
 engine::SceneData MainWindow::sceneData() const {
     engine::SceneData scene;
-    if (!m_overview) return scene;
-    scene.ensemble = m_overview->ensemble.get();
-    scene.mean = &m_overview->moments->mean;
-    scene.columnMaxima = &m_overview->columnMaxima;
-    scene.valueMinimum = m_overview->statistics.minimum;
-    scene.valueMaximum = m_overview->statistics.maximum;
+    if (overview() == nullptr) return scene;
+    scene.ensemble = overview()->ensemble.get();
+    scene.mean = &overview()->moments->mean;
+    scene.columnMaxima = &overview()->columnMaxima;
+    scene.valueMinimum = overview()->statistics.minimum;
+    scene.valueMaximum = overview()->statistics.maximum;
     // The isovalue whose surfaces are drawn (none before the first).
     if (const workbench::IsovalueResult* shown = m_session->result(); shown && shown->meshes) {
         scene.isovalue = shown->meshes->isovalue;
@@ -28,7 +28,7 @@ engine::SceneData MainWindow::sceneData() const {
 }
 
 void MainWindow::showSpread() {
-    if (!m_overview) return;
+    if (overview() == nullptr) return;
     m_view->renderer().setSpreadVolume(
         engine::sceneSection(sceneData(), gl::SectionField::StandardDeviation, -1));
 }
@@ -37,7 +37,7 @@ void MainWindow::showSection() {
     gl::Renderer& renderer = m_view->renderer();
     const gl::SectionField field = m_model->state().render.plane.fill;
     if (m_selection->hovered() >= 0) m_lastHoveredMember = m_selection->hovered();
-    if (!m_overview || field == gl::SectionField::None) {
+    if (overview() == nullptr || field == gl::SectionField::None) {
         if (m_shownSection != ShownSection{}) renderer.setSectionVolume({});
         m_shownSection = {};
         return;
@@ -46,7 +46,7 @@ void MainWindow::showSection() {
     const engine::SceneData scene = sceneData();
     const ShownSection wanted{field, field == gl::SectionField::Member ? member : -1,
                               field == gl::SectionField::Probability ? scene.exceedance : nullptr,
-                              m_overview.get()};
+                              overview()};
     if (wanted == m_shownSection) return;
     m_shownSection = wanted;
     renderer.setSectionVolume(engine::sceneSection(scene, field, member));

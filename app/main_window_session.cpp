@@ -18,6 +18,7 @@
 #include "widgets/silhouette_view.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 
@@ -38,7 +39,7 @@ void MainWindow::bindSession() {
     // Scrubbing previews without touching the session: only the released value is a change
     // (saved, undoable); the preview is the view following the pointer.
     connect(m_toolbar, &ui::RenderToolbar::isovalueScrubbed, this, [this](double v) {
-        if (!m_overview) return;
+        if (overview() == nullptr) return;
         m_scrubRepaints->begin();
         m_scrubRepaints->changed();
         m_session->previewIsovalue(static_cast<float>(v), m_model->state().verticalExaggeration);
@@ -65,18 +66,20 @@ void MainWindow::titleTheView(const data::Ensemble& ensemble) {
 }
 
 void MainWindow::showIsovalueRange(float isovalue) {
-    const prep::FieldStatistics& stats = m_overview->statistics;
+    const prep::FieldStatistics& stats = overview()->statistics;
     m_toolbar->setIsovalueRange(
         stats.minimum, stats.maximum, isovalue,
-        QString::fromStdString(data::readableUnits(m_overview->ensemble->units)));
+        QString::fromStdString(data::readableUnits(overview()->ensemble->units)));
 }
 
 void MainWindow::showSessionParts(session::SessionParts parts) {
     gl::Renderer& renderer = m_view->renderer();
     // Another time step of the data shown (the time bar, undo): read in the background.
-    if ((parts & SessionPart::Data) && m_overview && m_requested && !m_showingNewData) {
+    if ((parts & SessionPart::Data) && overview() != nullptr && m_workbench->files() &&
+        !m_showingNewData) {
         const data::DataSelection& wanted = m_model->state().data;
-        if (timeStepSelection(wanted.timeIndex) == wanted) goToTimeStep(wanted.timeIndex);
+        if (m_workbench->timeStepSelection(wanted.timeIndex) == wanted)
+            goToTimeStep(wanted.timeIndex);
     }
     // First the box, which the plane is placed across: without a new plane, the plane keeps
     // its place across the reshaped box (a change of the session of its own, made here).
@@ -112,14 +115,14 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         m_session->setLinkage(s.linkage);
     }
     if (parts & SessionPart::Clusters) m_selection->setClusterCount(s.clusters);
-    if ((parts & SessionPart::Isovalue) && s.isovalue && m_overview &&
+    if ((parts & SessionPart::Isovalue) && s.isovalue && overview() != nullptr &&
         static_cast<float>(m_toolbar->isovalue()) != *s.isovalue) {
         showIsovalueRange(*s.isovalue);
     }
     // Normals and curvatures live in display space: a new exaggeration rebuilds them (the
     // meshes come from the cache when this isovalue and exaggeration were seen before).
-    if ((parts & (SessionPart::Isovalue | SessionPart::Exaggeration)) && s.isovalue && m_overview &&
-        !m_showingNewData) {
+    if ((parts & (SessionPart::Isovalue | SessionPart::Exaggeration)) && s.isovalue &&
+        overview() != nullptr && !m_showingNewData) {
         m_session->setIsovalue(*s.isovalue, s.verticalExaggeration);
     }
     // (Visibility and selection: the shared selection shows the session's, MemberSelection.)

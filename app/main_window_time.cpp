@@ -23,6 +23,7 @@
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
 #include "workbench/time_steps.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 namespace {
@@ -38,26 +39,14 @@ std::vector<std::string> namesOf(const workbench::MemberSelection& selection) {
 
 }  // namespace
 
-workbench::BackgroundJob<engine::EnsembleOverview>::Work MainWindow::readingStep(
-    const data::DataSelection& selection) const {
-    return [selection, memoryLimit = memoryLimit(), sameData = engine::sameDataParts(*m_overview)](
-               const std::stop_token& stop, const data::Progress& progress) {
-        return engine::readEnsembleOverview(
-            [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
-                return engine::readForWorkbench(selection, memoryLimit, s, p);
-            },
-            [selection] { return data::sourceIdentity(selection); }, stop, progress, &sameData);
-    };
-}
-
 // A step is on screen once its surfaces are: then the bar may go on, and the next is read.
 void MainWindow::showBuiltTimeStep() {
-    if (!m_overview || !m_requested) return;
+    if (overview() == nullptr || !m_workbench->files()) return;
     // Another step's surfaces: a motion frame first (a software-OpenGL frame of every member
     // at full resolution takes longer than a step may), the full one once steps pause.
     if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
-    m_clusteredStep = static_cast<int>(m_requested->timeIndex);
-    m_timeBar->setShownStep(static_cast<int>(m_requested->timeIndex));
+    m_clusteredStep = static_cast<int>(m_workbench->shownStep());
+    m_timeBar->setShownStep(static_cast<int>(m_workbench->shownStep()));
     // The next step read ahead (and built) first: the strip's filling (started when the
     // clusters are recorded) waits for it rather than taking a worker it needs. A step
     // shown at once (built ahead, or kept) has its first frame still to draw, whose cores
@@ -99,15 +88,15 @@ void MainWindow::createTimeBar() {
 void MainWindow::recordStepClusters() {
     // Only the clusters of the step they belong to: while a step is built, the last step's
     // are still shown (and may change, a new k).
-    if (!m_overview || !m_requested || !m_selection->isClustered() || m_session->isRunning() ||
-        m_clusteredStep != static_cast<int>(m_requested->timeIndex)) {
+    if (overview() == nullptr || !m_workbench->files() || !m_selection->isClustered() ||
+        m_session->isRunning() || m_clusteredStep != static_cast<int>(m_workbench->shownStep())) {
         return;
     }
     // Steps clustered at another cluster count, isovalue or linkage are not comparable: they
     // are clustered again.
     if (const QString key = stripKey(); key != m_stripKey) {
         QStringList labels;
-        for (const std::string& l : m_overview->ensemble->timeSteps.labels) {
+        for (const std::string& l : overview()->ensemble->timeSteps.labels) {
             labels << QString::fromStdString(l);
         }
         resetStepClusters(labels);
@@ -118,7 +107,7 @@ void MainWindow::recordStepClusters() {
         identities[static_cast<std::size_t>(m)] =
             m_selection->identityOf(m_selection->clusterOf(m));
     }
-    const int step = static_cast<int>(m_requested->timeIndex);
+    const int step = static_cast<int>(m_workbench->shownStep());
     m_memberTable->model()->setStepClusters(step, identities);
     m_memberTable->model()->setCurrentStep(step);
     m_timeline->setStepClusters(step, std::move(identities));
@@ -136,7 +125,7 @@ void MainWindow::resetStepClusters(const QStringList& labels) {
 }
 
 QString MainWindow::stripKey() const {
-    const float isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
+    const float isovalue = m_model->state().isovalue.value_or(overview()->defaultIsovalue);
     return QStringLiteral("%1 clusters at %2, linkage %3")
         .arg(m_selection->clusterCount())
         .arg(static_cast<double>(isovalue), 0, 'g', 9)
@@ -145,13 +134,14 @@ QString MainWindow::stripKey() const {
 
 void MainWindow::fillStepClusters() {
     const int n = m_timeBar->stepCount();
-    if (!m_overview || !m_requested || n < 2 || m_fillStopped || m_stripKey.isEmpty()) {
+    if (overview() == nullptr || !m_workbench->files() || n < 2 || m_fillStopped ||
+        m_stripKey.isEmpty()) {
         m_timeline->setFilling(0, 0);
         return;
     }
     // What the user asked for goes first: the next step waits while one is read or built
     // (and one under way is cancelled when a step is asked for, goToTimeStep).
-    if (m_stepFill.isRunning() || m_loader.isRunning() || m_timeSteps->isReadingAny() ||
+    if (m_stepFill.isRunning() || m_workbench->isOpening() || m_timeSteps->isReadingAny() ||
         m_session->isRunning() || m_session->isPreparing()) {
         return;
     }
@@ -160,18 +150,18 @@ void MainWindow::fillStepClusters() {
     for (int s = 0; s < n; ++s) done += clustered(s) ? 1 : 0;
     m_timeline->setFilling(done, n);
     const std::optional<workbench::StepToCluster> next =
-        workbench::nextStepToCluster(static_cast<int>(m_requested->timeIndex), n, clustered);
+        workbench::nextStepToCluster(static_cast<int>(m_workbench->shownStep()), n, clustered);
     if (!next) return;
     const int step = next->step;
     const int neighbour = next->neighbour;
     engine::StepClusteringRequest request;
-    request.selection = timeStepSelection(static_cast<std::size_t>(step));
-    request.isovalue = m_model->state().isovalue.value_or(m_overview->defaultIsovalue);
+    request.selection = m_workbench->timeStepSelection(static_cast<std::size_t>(step));
+    request.isovalue = m_model->state().isovalue.value_or(overview()->defaultIsovalue);
     request.k = m_selection->clusterCount();
     request.linkage = m_session->linkage();
     request.previousMembers = namesOf(*m_selection);
     request.previousIdentities = m_timeline->stepClusters(neighbour);
-    if (m_overview->streamed) request.memoryLimit = m_overview->streamed->memoryLimit;
+    if (overview()->streamed) request.memoryLimit = overview()->streamed->memoryLimit;
     const QString key = m_stripKey;
     m_stepFill.start(
         [request](const std::stop_token& stop, const data::Progress& progress) {
@@ -199,15 +189,9 @@ void MainWindow::fillStepClusters() {
         });
 }
 
-data::DataSelection MainWindow::timeStepSelection(std::size_t step) const {
-    data::DataSelection selection = m_requested.value_or(data::DataSelection{});
-    selection.timeIndex = step;
-    return selection;
-}
-
 void MainWindow::goToTimeStep(std::size_t step) {
-    if (!m_overview || !m_requested || step == m_requested->timeIndex) return;
-    m_timeSteps->moved(m_requested->timeIndex, step);
+    if (overview() == nullptr || !m_workbench->files() || step == m_workbench->shownStep()) return;
+    m_timeSteps->moved(m_workbench->shownStep(), step);
     m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
     if (std::unique_ptr<engine::EnsembleOverview> kept = m_timeSteps->take(step)) {
         showTimeStep(std::move(kept), step);
@@ -215,52 +199,38 @@ void MainWindow::goToTimeStep(std::size_t step) {
     }
     if (m_timeSteps->isReading(step)) return;  // on its way: shown when read
     setBusy(tr("Reading time step %1...").arg(step + 1));
-    const data::DataSelection selection = timeStepSelection(step);
-    m_loader.start(
-        readingStep(selection),
-        [this, step](engine::EnsembleOverview overview) {
-            if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
-            showTimeStep(std::make_unique<engine::EnsembleOverview>(std::move(overview)), step);
+    m_workbench->readTimeStep(
+        step,
+        [this, step](std::unique_ptr<engine::EnsembleOverview> read) {
+            showTimeStep(std::move(read), step);
         },
-        [this](const std::exception_ptr& error, bool cancelled) {
+        [this](const QString& message) {
             // The step shown stays; the session's step goes back to it.
-            const std::size_t shown = m_requested ? m_requested->timeIndex : 0;
+            const std::size_t shown = m_workbench->shownStep();
             m_timeBar->pause();
             m_timeBar->setShownStep(static_cast<int>(shown));
             m_model->update([shown](session::SessionState& s) { s.data.timeIndex = shown; });
-            if (cancelled || !error) {
-                setIdle(tr("Reading the time step was cancelled"));
-                return;
-            }
-            try {
-                std::rethrow_exception(error);
-            } catch (const std::exception& e) {
-                setIdle(tr("Could not read the time step: %1").arg(QString::fromUtf8(e.what())));
-            }
-        },
-        [this](double f) { showProgress(f); });
+            setIdle(message.isEmpty() ? tr("Reading the time step was cancelled")
+                                      : tr("Could not read the time step: %1").arg(message));
+        });
 }
 
-void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview,
+void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead,
                               std::size_t step) {
-    // The step left is kept (it may be visited again), within the budget.
-    m_timeSteps->keep(m_requested->timeIndex, std::move(m_overview), step);
-    m_overview = std::move(overview);
-    m_requested->timeIndex = step;
+    // The step left is kept (it may be visited again), within the budget; the last step's
+    // surfaces, figures and clusters stay until this step's are built.
+    m_workbench->showTimeStep(std::move(stepRead), step);
     m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     m_stepChanging = true;
-    const data::Ensemble& e = *m_overview->ensemble;
+    const data::Ensemble& e = *overview()->ensemble;
     const session::SessionState& s = m_model->state();
     showFloor(s.render);
     m_shownSection = {};  // the field is this step's
     showSection();
     showSpread();
-    m_info->showFacts(engine::ensembleFacts(*m_overview));
-    // The last step's surfaces, figures and clusters stay until this step's are built.
-    m_session->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
-                           m_overview->streamed);
-    const float isovalue = s.isovalue.value_or(m_overview->defaultIsovalue);
-    const prep::FieldStatistics& stats = m_overview->statistics;
+    m_info->showFacts(engine::ensembleFacts(*overview()));
+    const float isovalue = s.isovalue.value_or(overview()->defaultIsovalue);
+    const prep::FieldStatistics& stats = overview()->statistics;
     {
         const QSignalBlocker block(m_toolbar);
         showIsovalueRange(isovalue);
@@ -284,21 +254,22 @@ void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
 }
 
 void MainWindow::readAhead() {
-    if (!m_requested || !m_overview) return;
+    if (!m_workbench->files() || overview() == nullptr) return;
     const std::optional<std::size_t> next = m_timeSteps->nextToRead(
-        m_requested->timeIndex, static_cast<std::size_t>(std::max(0, m_timeBar->stepCount())),
+        m_workbench->shownStep(), static_cast<std::size_t>(std::max(0, m_timeBar->stepCount())),
         m_timeBar->isPlaying());
     if (!next || m_timeSteps->isReading(*next)) return;
     if (const engine::EnsembleOverview* kept = m_timeSteps->kept(*next)) {
         buildAhead(*kept);
         return;
     }
-    m_timeSteps->readAhead(*next, readingStep(timeStepSelection(*next)));
+    m_timeSteps->readAhead(*next, m_workbench->readingStep(*next));
 }
 
 void MainWindow::showOrBuildStepRead(std::size_t step) {
     // Asked for while it was being read: shown now.
-    if (m_model->state().data.timeIndex == step && m_requested && m_requested->timeIndex != step) {
+    if (m_model->state().data.timeIndex == step && m_workbench->files() &&
+        m_workbench->shownStep() != step) {
         showTimeStep(m_timeSteps->take(step), step);
         return;
     }

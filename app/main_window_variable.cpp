@@ -5,13 +5,14 @@
 // would, and the session's settings stay.
 #include "app/main_window.h"
 #include "widgets/ensemble_info_panel.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 
 void MainWindow::createVariableChoice() {
     connect(m_info, &ui::EnsembleInfoPanel::variableChosen, this, [this](const QString& name) {
-        if (!m_requested) return;
-        data::DataSelection selection = *m_requested;
+        if (!m_workbench->files()) return;
+        data::DataSelection selection = *m_workbench->files();
         selection.variable = name.toStdString();
         openFiles(selection);
     });
@@ -19,7 +20,7 @@ void MainWindow::createVariableChoice() {
 
 void MainWindow::offerVariables() {
     QStringList names;
-    for (const std::string& name : m_overview->variables) names << QString::fromStdString(name);
+    for (const std::string& name : overview()->variables) names << QString::fromStdString(name);
     m_info->setVariableChoices(names);
 }
 

@@ -1,0 +1,137 @@
+// The workbench's document and its controllers, without a widget: the session model (what is on
+// screen: every control writes into it), the shared member selection, the isovalue controller,
+// the time steps read and kept, the data being opened (in the background, with progress and
+// cancel, the data on screen kept until the new data are ready and kept when opening fails) and
+// the project they belong to. The window (app/main_window.h) shows what its signals say and
+// writes the user's edits into the session; the command line and Python share the engine
+// beneath. Tested on a QCoreApplication (tests/workbench/workbench_test.cpp). GUI thread only.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "data/demo_ensemble.h"
+#include "data/ensemble_reader.h"
+#include "engine/ensemble_overview.h"
+#include "session/session_state.h"
+#include "workbench/background_job.h"
+
+namespace ensil::session {
+class SessionModel;
+}  // namespace ensil::session
+
+namespace ensil::workbench {
+
+class IsovalueSession;
+class MemberSelection;
+class SurfaceDisplay;
+class TimeSteps;
+
+class Workbench : public QObject {
+    Q_OBJECT
+public:
+    // `display` (the 3D view) outlives the workbench; surfaces are cached in `cacheDirectory`.
+    Workbench(SurfaceDisplay* display, const QString& cacheDirectory, QObject* parent = nullptr);
+    ~Workbench() override;
+
+    [[nodiscard]] session::SessionModel* model() const { return m_model; }
+    [[nodiscard]] MemberSelection* selection() const { return m_selection; }
+    [[nodiscard]] IsovalueSession* isovalue() const { return m_isovalue; }
+    [[nodiscard]] TimeSteps* timeSteps() const { return m_timeSteps; }
+
+    // The data on screen (null before any), and the files they were read from with the time
+    // step shown (none for the demo); while other data are opened, the files being opened.
+    [[nodiscard]] const engine::EnsembleOverview* overview() const { return m_overview.get(); }
+    [[nodiscard]] const std::optional<data::DataSelection>& files() const { return m_requested; }
+    // The time step shown (0 for the demo, which has none).
+    [[nodiscard]] std::size_t shownStep() const { return m_requested ? m_requested->timeIndex : 0; }
+
+    // Opening data in the background: dataArrived() follows, or openingCancelled(),
+    // openingFailed() or memberDimensionAsked().
+    void loadDemo(const data::DemoEnsembleParams& params = {});
+    void openFiles(const data::DataSelection& selection);
+    [[nodiscard]] bool isOpening() const { return m_loader.isRunning(); }
+    // Stops opening, a time step's reading and the surfaces being built.
+    void cancel();
+    // The memory an ensemble may take (`ensil --memory-limit`; 0: engine::defaultMemoryLimit()):
+    // larger data are opened as a thinned copy with their surfaces built from the whole data in
+    // slabs (engine/workbench_reading.h). Applies to what is opened next.
+    void setMemoryLimit(std::size_t bytes) { m_memoryLimit = bytes; }
+    [[nodiscard]] std::size_t memoryLimit() const;
+
+    // The session of the data that just arrived (after dataArrived, once the window has shown
+    // them): a project's being opened, else the opening isovalue (as shown, rounded to the
+    // isovalue control's precision) and the default cluster count. Its surfaces are built by
+    // buildFirstSurfaces, after the window has said the data are loaded.
+    void startSessionOfNewData(float shownIsovalue);
+    void buildFirstSurfaces();
+
+    // Another time step of the files on screen, read in the background while the step shown
+    // stays: `read` gets it (unless the step was shown meanwhile), `failed` says why not (an
+    // empty message: cancelled); progress as progressed().
+    void readTimeStep(std::size_t step,
+                      std::function<void(std::unique_ptr<engine::EnsembleOverview>)> read,
+                      std::function<void(const QString& message)> failed);
+    // The reading of a step of the files on screen, for reading ahead (TimeSteps::readAhead).
+    [[nodiscard]] BackgroundJob<engine::EnsembleOverview>::Work readingStep(std::size_t step) const;
+    // The files on screen at another time step.
+    [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
+    // That step's data are now the data on screen; the step left is kept (TimeSteps, within
+    // its memory budget) and its surfaces stay until the new step's are built.
+    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
+
+    // Projects. A project whose data files were found (session::loadProject validated it):
+    // its data are opened, and the project applied in two steps, its session when the data
+    // arrive (startSessionOfNewData) and its members' visibility and selection once their
+    // clusters are known (applyPendingProjectMembers, after the first surfaces); then
+    // projectOpened(). A project whose data fail to open or whose surfaces fail is dropped.
+    void openProject(session::SessionState project, const QString& path);
+    [[nodiscard]] const session::SessionState* pendingProject() const {
+        return m_pendingProject.get();
+    }
+    void applyPendingProjectMembers();
+    // The project the session on screen was opened from or saved to (empty: none).
+    [[nodiscard]] QString projectPath() const { return m_projectPath; }
+    void setProjectPath(const QString& path) { m_projectPath = path; }
+
+signals:
+    void openingStarted(const QString& what);
+    void progressed(double fraction);  // 0 to 1, of opening or of reading a time step
+    // overview() holds the new data (the old data's time steps are forgotten).
+    void dataArrived();
+    void openingCancelled();
+    void openingFailed(const QString& message);
+    // The file has no member dimension: one of `choices` may stand in for members
+    // (openFiles again with DataSelection::memberDimension).
+    void memberDimensionAsked(const QString& file, const QStringList& choices);
+    void projectOpened(const QString& path);
+
+private:
+    // `read` on a worker, as engine::readEnsembleOverview; `identify` gives the data's
+    // identity for the mesh cache.
+    void startOpening(const QString& what, std::function<std::string()> identify,
+                      engine::WorkbenchRead read);
+    void openingEnded(const std::exception_ptr& error, bool cancelled);
+
+    session::SessionModel* m_model;
+    MemberSelection* m_selection;
+    IsovalueSession* m_isovalue;
+    TimeSteps* m_timeSteps;
+    BackgroundJob<engine::EnsembleOverview> m_loader{this};
+    std::unique_ptr<engine::EnsembleOverview> m_overview;
+    std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices
+    std::optional<data::DemoEnsembleParams> m_requestedDemo;
+    std::size_t m_memoryLimit = 0;
+    // A project being opened: applied when its data has loaded and its surfaces are built.
+    std::unique_ptr<session::SessionState> m_pendingProject;
+    QString m_pendingProjectPath;
+    QString m_projectPath;
+};
+
+}  // namespace ensil::workbench
