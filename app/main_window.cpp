@@ -298,8 +298,6 @@ void MainWindow::showOverview() {
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(engine::ensembleFacts(overview));
     offerVariables();
-    m_session->setEnsemble(overview.ensemble, overview.moments, overview.sourceKey,
-                           overview.streamed);
     QStringList times;
     for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
     const auto& files = m_workbench->files();

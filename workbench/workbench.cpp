@@ -108,6 +108,9 @@ void Workbench::startOpening(const QString& what, std::function<std::string()> i
         [this](engine::EnsembleOverview overview) {
             m_overview = std::make_unique<engine::EnsembleOverview>(std::move(overview));
             if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
+            // The old data's surfaces, figures and clusters go; the new members are known.
+            m_isovalue->setEnsemble(m_overview->ensemble, m_overview->moments,
+                                    m_overview->sourceKey, m_overview->streamed);
             emit dataArrived();
         },
         [this](const std::exception_ptr& error, bool cancelled) { openingEnded(error, cancelled); },

@@ -103,7 +103,8 @@ public:
 signals:
     void openingStarted(const QString& what);
     void progressed(double fraction);  // 0 to 1, of opening or of reading a time step
-    // overview() holds the new data (the old data's time steps are forgotten).
+    // overview() holds the new data, which the isovalue controller and the member selection
+    // have (the old data's surfaces, clusters and time steps are forgotten).
     void dataArrived();
     void openingCancelled();
     void openingFailed(const QString& message);

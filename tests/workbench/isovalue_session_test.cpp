@@ -18,53 +18,12 @@
 #include "preprocessing/ensemble_moments.h"
 #include "session/session_state.h"
 #include "tests/support/temp_dir.h"
+#include "tests/workbench/recording_display.h"
 #include "workbench/member_selection.h"
-#include "workbench/surface_display.h"
 
 using namespace ensil;
 
 namespace {
-// What the controller asked the display to do, in order.
-class RecordingDisplay : public workbench::SurfaceDisplay {
-public:
-    void setSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
-        m_surfaces = std::move(meshes);
-        if (!m_surfaces) m_motion.reset();
-        calls.emplace_back(m_surfaces ? "surfaces" : "clear");
-    }
-    void setMotionSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
-        m_motion = std::move(meshes);
-        calls.emplace_back("motion");
-        if (m_motion && motionArrived) motionArrived();
-    }
-    [[nodiscard]] std::shared_ptr<const data::MeshSet> surfaces() const override {
-        return m_surfaces;
-    }
-    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& motion() const { return m_motion; }
-    void requestRepaint() override { calls.emplace_back("repaint"); }
-    void beginInteraction() override {
-        ++interactions;
-        calls.emplace_back("begin");
-    }
-    void endInteraction() override {
-        --interactions;
-        calls.emplace_back("end");
-    }
-    void showPassingChange() override { calls.emplace_back("passing"); }
-    // As a view does after its next frame: here at once, through the event loop.
-    void afterNextFrame(QObject* context, std::function<void()> work) override {
-        QMetaObject::invokeMethod(context, std::move(work), Qt::QueuedConnection);
-    }
-
-    std::vector<std::string> calls;
-    int interactions = 0;
-    std::function<void()> motionArrived;
-
-private:
-    std::shared_ptr<const data::MeshSet> m_surfaces;
-    std::shared_ptr<const data::MeshSet> m_motion;
-};
-
 struct SmallDemo {
     std::shared_ptr<const data::Ensemble> ensemble;
     std::shared_ptr<const prep::EnsembleMoments> moments;
@@ -91,7 +50,7 @@ protected:
     }
 
     const test::TempDir cache;
-    RecordingDisplay display;
+    test::RecordingDisplay display;
     workbench::MemberSelection selection;
     workbench::IsovalueSession session{&display, &selection, QString::fromStdString(cache.path())};
 };
