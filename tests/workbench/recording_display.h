@@ -15,22 +15,22 @@
 namespace ensil::test {
 
 // What the controller asked the display to do, in order.
-class RecordingDisplay : public ensil::workbench::SurfaceDisplay {
+class RecordingDisplay : public workbench::SurfaceDisplay {
 public:
-    void setSurfaces(std::shared_ptr<const ensil::data::MeshSet> meshes) override {
+    void setSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
         m_surfaces = std::move(meshes);
         if (!m_surfaces) m_motion.reset();
         calls.emplace_back(m_surfaces ? "surfaces" : "clear");
     }
-    void setMotionSurfaces(std::shared_ptr<const ensil::data::MeshSet> meshes) override {
+    void setMotionSurfaces(std::shared_ptr<const data::MeshSet> meshes) override {
         m_motion = std::move(meshes);
         calls.emplace_back("motion");
         if (m_motion && motionArrived) motionArrived();
     }
-    [[nodiscard]] std::shared_ptr<const ensil::data::MeshSet> surfaces() const override {
+    [[nodiscard]] std::shared_ptr<const data::MeshSet> surfaces() const override {
         return m_surfaces;
     }
-    [[nodiscard]] const std::shared_ptr<const ensil::data::MeshSet>& motion() const { return m_motion; }
+    [[nodiscard]] const std::shared_ptr<const data::MeshSet>& motion() const { return m_motion; }
     void requestRepaint() override { calls.emplace_back("repaint"); }
     void beginInteraction() override {
         ++interactions;
@@ -51,8 +51,8 @@ public:
     std::function<void()> motionArrived;
 
 private:
-    std::shared_ptr<const ensil::data::MeshSet> m_surfaces;
-    std::shared_ptr<const ensil::data::MeshSet> m_motion;
+    std::shared_ptr<const data::MeshSet> m_surfaces;
+    std::shared_ptr<const data::MeshSet> m_motion;
 };
 
 }  // namespace ensil::test
