@@ -28,6 +28,10 @@ packages=(
     # xarray in and out (python/ensil/_xarray.py): xarray and its NetCDF engine open the real
     # files as an independent reader; SciPy's linkage is the oracle of the merge tree
     python3-xarray python3-netcdf4 python3-scipy
+    # `pip install .` into a virtual environment (pyproject.toml, setup.py) and its test
+    # (python.venv_install): venv with pip, the setuptools backend and wheel, and
+    # `python3 -m build --wheel`
+    python3-venv python3-setuptools python3-wheel python3-build
     # `mpirun -np K ensil preprocess` (the mpi/ front end, ENSIL_WITH_MPI; the ci preset needs it)
     libopenmpi-dev openmpi-bin
     # the tests (the benchmarks are plain programs that print figures; they need nothing more)
