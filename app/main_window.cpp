@@ -283,7 +283,6 @@ void MainWindow::rebuildRecentMenu() {
 
 void MainWindow::showOverview() {
     const engine::EnsembleOverview& overview = *m_workbench->overview();
-    m_historyStartsAfresh = true;
     const data::Ensemble& e = *overview.ensemble;
     gl::Renderer& renderer = m_view->renderer();
     renderer.setGrid(e.grid);

@@ -134,7 +134,7 @@ public:
     // linkage and visibility (undo and redo; main_window_history.cpp).
     void applySession(const session::SessionState& state);
     // Edit > Undo and Redo, whose names say the step ("Undo Isovalue 35.6 -> 30").
-    [[nodiscard]] session::SessionHistory* history() const { return m_history; }
+    [[nodiscard]] session::SessionHistory* history() const;
     [[nodiscard]] QString projectPath() const;
     // Who is asked where a project's missing data file went (a file dialog by default);
     // an empty answer cancels opening.
@@ -310,11 +310,8 @@ private:
     QList<QAction*> m_modeActions;  // keys 1 to 4
     QAction* m_planeAction = nullptr;
     bool m_showingNewData = false;  // showOverview: one rebuild at its end, not one per part
-    session::SessionHistory* m_history = nullptr;
     QAction* m_resetCameraAction = nullptr;
     QList<QAction*> m_viewPresetActions;  // map view, views from the sides
-    // New data is on screen: its first surfaces start the undo history afresh.
-    bool m_historyStartsAfresh = false;
     ui::MemberTablePanel* m_memberTable = nullptr;
     ui::ClusterPanel* m_clusterPanel = nullptr;
     ui::DendrogramView* m_dendrogram = nullptr;

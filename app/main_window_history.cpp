@@ -17,25 +17,39 @@
 #include "widgets/time_bar.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 
 void MainWindow::createHistory(QMenu* edit) {
-    m_history = new session::SessionHistory(
-        [this] { return captureSession(); },
-        [this](const session::SessionState& s) { applySession(s); }, this);
-    QAction* undo = m_history->stack()->createUndoAction(this, tr("&Undo"));
+    session::SessionHistory* history = m_workbench->history();
+    QAction* undo = history->stack()->createUndoAction(this, tr("&Undo"));
     undo->setObjectName(QStringLiteral("undoAction"));
     undo->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Z));
-    QAction* redo = m_history->stack()->createRedoAction(this, tr("&Redo"));
+    QAction* redo = history->stack()->createRedoAction(this, tr("&Redo"));
     redo->setObjectName(QStringLiteral("redoAction"));
     redo->setShortcuts(
         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
     edit->addAction(undo);
     edit->addAction(redo);
+    // A session is taken with the camera as it stands and the window's layout, and a step
+    // undone or redone puts the camera back.
+    m_workbench->setViewCapture([this](session::SessionState& s) {
+        const gl::Camera& camera = m_view->renderer().camera();
+        s.camera.azimuth = camera.azimuth();
+        s.camera.elevation = camera.elevation();
+        s.camera.placement = session::CameraState::Placement{camera.distance(), camera.target()};
+        s.windowGeometry = saveGeometry();
+        s.windowState = saveState();
+    });
+    connect(m_workbench, &workbench::Workbench::sessionApplied, this,
+            [this](const session::SessionState& s) {
+                session::placeCamera(s.camera, m_view->renderer());
+                m_view->update();
+            });
 
     // Recorded after the edit has reached the view (queued: every direct handler ran first).
-    const auto record = [this] { m_history->record(); };
+    const auto record = [history] { history->record(); };
     const auto queued = Qt::QueuedConnection;
     connect(m_renderPanel, &ui::RenderPanel::edited, this, record, queued);
     connect(m_planePanel, &ui::CuttingPlanePanel::planeChanged, this, record, queued);
@@ -47,22 +61,21 @@ void MainWindow::createHistory(QMenu* edit) {
     connect(m_sections, &ui::SectionsPanel::placesEdited, this, record, queued);
     connect(
         m_resetCameraAction, &QAction::triggered, this,
-        [this] { m_history->record(/*cameraStep=*/true); }, queued);
+        [history] { history->record(/*cameraStep=*/true); }, queued);
     for (QAction* preset : m_viewPresetActions) {
         connect(
             preset, &QAction::triggered, this,
-            [this, preset] {
-                m_history->record(/*cameraStep=*/true, preset->text().remove(QLatin1Char('&')));
+            [history, preset] {
+                history->record(/*cameraStep=*/true, preset->text().remove(QLatin1Char('&')));
             },
             queued);
     }
 }
 
-void MainWindow::applySession(const session::SessionState& s) {
-    if (overview() == nullptr) return;
-    m_model->replace(s);  // the bindings show it (main_window_session.cpp)
-    session::placeCamera(s.camera, m_view->renderer());
-    m_view->update();
-}
+session::SessionHistory* MainWindow::history() const { return m_workbench->history(); }
+
+session::SessionState MainWindow::captureSession() const { return m_workbench->captureSession(); }
+
+void MainWindow::applySession(const session::SessionState& s) { m_workbench->applySession(s); }
 
 }  // namespace ensil::app

@@ -70,20 +70,6 @@ void MainWindow::saveProjectReporting(const QString& path) {
     if (!saveProjectTo(path, &error)) QMessageBox::warning(this, tr("Project not saved"), error);
 }
 
-session::SessionState MainWindow::captureSession() const {
-    session::SessionState p = m_model->state();
-    if (m_session->result() == nullptr) p.isovalue.reset();  // nothing built yet
-    // The camera moves in the view; the session takes it as it stands.
-    const gl::Camera& camera = m_view->renderer().camera();
-    p.camera.azimuth = camera.azimuth();
-    p.camera.elevation = camera.elevation();
-    p.camera.placement = session::CameraState::Placement{camera.distance(), camera.target()};
-    p.memberClusters = m_selection->memberClusterNumbers();
-    p.windowGeometry = saveGeometry();
-    p.windowState = saveState();
-    return p;
-}
-
 bool MainWindow::saveProjectTo(const QString& path, QString* error) {
     if (overview() == nullptr) {
         if (error != nullptr) *error = tr("There is nothing to save yet: load an ensemble first.");

@@ -22,6 +22,7 @@
 #include "widgets/render_toolbar.h"
 #include "widgets/silhouette_view.h"
 #include "workbench/isovalue_session.h"
+#include "workbench/workbench.h"
 
 namespace ensil::app {
 namespace {
@@ -114,7 +115,7 @@ void MainWindow::showOutlyingnessRange() {
     if (m_renderPanel->setOutlyingnessRange(prep::maximumOutlyingness(*meshes), squared)) {
         // The first band the panel now shows is the one drawn (and saved, and undone).
         m_model->update([this](session::SessionState& s) { m_renderPanel->applyTo(s); });
-        if (m_history != nullptr) m_history->absorb();
+        m_workbench->history()->absorb();
     }
 }
 

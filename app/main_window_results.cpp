@@ -30,10 +30,9 @@ void MainWindow::showBuiltSurfaces(const QString& summary) {
     // A new isovalue changes the animation's order: the next play computes it again.
     m_animation->setSequence({});
     showBuiltTimeStep();
-    // A project's visibility and selection apply to its members once their clusters are known.
-    m_workbench->applyPendingProjectMembers();
-    // New data: what was done to the old data cannot be undone on it.
-    if (std::exchange(m_historyStartsAfresh, false)) m_history->reset();
+    // A project's visibility and selection apply to its members once their clusters are known;
+    // new data: what was done to the old data cannot be undone on it.
+    m_workbench->surfacesShown();
 }
 
 }  // namespace ensil::app

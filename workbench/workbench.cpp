@@ -12,6 +12,7 @@
 #include "engine/streaming_run.h"
 #include "engine/workbench_reading.h"
 #include "session/member_appearance.h"
+#include "session/session_history.h"
 #include "session/session_model.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
@@ -50,7 +51,10 @@ Workbench::Workbench(SurfaceDisplay* display, const QString& cacheDirectory, QOb
       m_model(new session::SessionModel(this)),
       m_selection(new MemberSelection(m_model, this)),
       m_isovalue(new IsovalueSession(display, m_selection, cacheDirectory, this)),
-      m_timeSteps(new TimeSteps(this)) {
+      m_timeSteps(new TimeSteps(this)),
+      m_history(new session::SessionHistory(
+          [this] { return captureSession(); },
+          [this](const session::SessionState& s) { applySession(s); }, this)) {
     m_isovalue->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
     // A project being opened is dropped when its surfaces cannot be built.
     connect(m_isovalue, &IsovalueSession::failed, this, [this] { m_pendingProject.reset(); });
@@ -107,6 +111,7 @@ void Workbench::startOpening(const QString& what, std::function<std::string()> i
         },
         [this](engine::EnsembleOverview overview) {
             m_overview = std::make_unique<engine::EnsembleOverview>(std::move(overview));
+            m_historyStartsAfresh = true;
             if (!m_pendingProject) m_projectPath.clear();  // other data: no longer that project
             // The old data's surfaces, figures and clusters go; the new members are known.
             m_isovalue->setEnsemble(m_overview->ensemble, m_overview->moments,
@@ -217,6 +222,25 @@ void Workbench::openProject(session::SessionState project, const QString& path) 
     } else {
         openFiles(m_pendingProject->data);
     }
+}
+
+session::SessionState Workbench::captureSession() const {
+    session::SessionState p = m_model->state();
+    if (m_isovalue->result() == nullptr) p.isovalue.reset();  // nothing built yet
+    p.memberClusters = m_selection->memberClusterNumbers();
+    if (m_viewCapture) m_viewCapture(p);
+    return p;
+}
+
+void Workbench::applySession(const session::SessionState& state) {
+    if (!m_overview) return;
+    m_model->replace(state);  // the bindings show it
+    emit sessionApplied(state);
+}
+
+void Workbench::surfacesShown() {
+    applyPendingProjectMembers();
+    if (std::exchange(m_historyStartsAfresh, false)) m_history->reset();
 }
 
 void Workbench::applyPendingProjectMembers() {

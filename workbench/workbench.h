@@ -23,6 +23,7 @@
 #include "workbench/background_job.h"
 
 namespace ensil::session {
+class SessionHistory;
 class SessionModel;
 }  // namespace ensil::session
 
@@ -44,6 +45,19 @@ public:
     [[nodiscard]] MemberSelection* selection() const { return m_selection; }
     [[nodiscard]] IsovalueSession* isovalue() const { return m_isovalue; }
     [[nodiscard]] TimeSteps* timeSteps() const { return m_timeSteps; }
+    // Undo and redo (session/session_history.h) of the session on screen.
+    [[nodiscard]] session::SessionHistory* history() const { return m_history; }
+
+    // The session as a project saves it and undo records it: the model's, the members'
+    // cluster numbers, no isovalue before any surface is built, and what only the window knows
+    // (the camera as it stands, the window's layout), added by `viewCapture`.
+    void setViewCapture(std::function<void(session::SessionState&)> viewCapture) {
+        m_viewCapture = std::move(viewCapture);
+    }
+    [[nodiscard]] session::SessionState captureSession() const;
+    // Shows a session of the data on screen (undo, redo): the bindings show the model's parts,
+    // and sessionApplied() lets the window place the camera.
+    void applySession(const session::SessionState& state);
 
     // The data on screen (null before any), and the files they were read from with the time
     // step shown (none for the demo); while other data are opened, the files being opened.
@@ -95,7 +109,10 @@ public:
     [[nodiscard]] const session::SessionState* pendingProject() const {
         return m_pendingProject.get();
     }
-    void applyPendingProjectMembers();
+    // What follows each isovalue's surfaces reaching the screen, after the window's part: a
+    // project's members applied once their clusters are known, and new data's first surfaces
+    // start the undo history afresh (what was done to the old data cannot be undone on them).
+    void surfacesShown();
     // The project the session on screen was opened from or saved to (empty: none).
     [[nodiscard]] QString projectPath() const { return m_projectPath; }
     void setProjectPath(const QString& path) { m_projectPath = path; }
@@ -112,6 +129,7 @@ signals:
     // (openFiles again with DataSelection::memberDimension).
     void memberDimensionAsked(const QString& file, const QStringList& choices);
     void projectOpened(const QString& path);
+    void sessionApplied(const session::SessionState& state);
 
 private:
     // `read` on a worker, as engine::readEnsembleOverview; `identify` gives the data's
@@ -119,11 +137,15 @@ private:
     void startOpening(const QString& what, std::function<std::string()> identify,
                       engine::WorkbenchRead read);
     void openingEnded(const std::exception_ptr& error, bool cancelled);
+    void applyPendingProjectMembers();
 
     session::SessionModel* m_model;
     MemberSelection* m_selection;
     IsovalueSession* m_isovalue;
     TimeSteps* m_timeSteps;
+    session::SessionHistory* m_history;
+    std::function<void(session::SessionState&)> m_viewCapture;
+    bool m_historyStartsAfresh = false;  // new data: their first surfaces reset the history
     BackgroundJob<engine::EnsembleOverview> m_loader{this};
     std::unique_ptr<engine::EnsembleOverview> m_overview;
     std::optional<data::DataSelection> m_requested;  // files being opened, to retry with choices

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <QSignalSpy>
+#include <QUndoStack>
 #include <QString>
 #include <vector>
 
 #include "data/demo_ensemble.h"
+#include "session/session_history.h"
 #include "session/session_model.h"
 #include "session/session_state.h"
 #include "tests/support/temp_dir.h"
@@ -50,6 +52,38 @@ TEST_F(WorkbenchTest, NewDataGetTheShownIsovalueAndTheDefaultClusters) {
     ASSERT_TRUE(s.isovalue.has_value());
     EXPECT_FLOAT_EQ(*s.isovalue, 12.5F);
     EXPECT_EQ(s.clusters, session::defaultClusters(static_cast<int>(kSmallDemo.members)));
+}
+
+// Undo takes back the user's edits of these data, and the window is asked to place the camera
+// of the step; new data's first surfaces start the history afresh.
+TEST_F(WorkbenchTest, UndoAppliesTheSessionBeforeAndNewDataStartTheHistoryAfresh) {
+    const auto showNewData = [this] {
+        bench.startSessionOfNewData(bench.overview()->defaultIsovalue);
+        QSignalSpy built(bench.isovalue(), &workbench::IsovalueSession::finished);
+        bench.buildFirstSurfaces();
+        ASSERT_TRUE(built.wait(kOpeningWaitMs));
+        bench.surfacesShown();
+    };
+    openDemo();
+    showNewData();
+    QUndoStack& steps = *bench.history()->stack();
+    EXPECT_FALSE(steps.canUndo());
+    const int clusters = bench.model()->state().clusters;
+    bench.model()->update([](session::SessionState& s) { s.clusters = 4; });
+    bench.history()->record();
+    ASSERT_TRUE(steps.canUndo());
+
+    QSignalSpy applied(&bench, &workbench::Workbench::sessionApplied);
+    steps.undo();
+    EXPECT_EQ(bench.model()->state().clusters, clusters);
+    ASSERT_EQ(applied.size(), 1) << "the window places the step's camera";
+    steps.redo();
+    EXPECT_EQ(bench.model()->state().clusters, 4);
+
+    openDemo();
+    EXPECT_TRUE(steps.canUndo()) << "until the new data's surfaces are shown";
+    showNewData();
+    EXPECT_FALSE(steps.canUndo()) << "the old data's edits cannot be undone on the new data";
 }
 
 TEST_F(WorkbenchTest, AFileThatCannotBeReadIsNamedAndTheDataOnScreenStay) {
@@ -125,7 +159,7 @@ TEST_F(WorkbenchTest, AProjectIsAppliedWhenItsDataArriveAndItsMembersOnceCluster
     bench.buildFirstSurfaces();
     ASSERT_TRUE(built.wait(kOpeningWaitMs));
     ASSERT_TRUE(bench.selection()->isClustered());
-    bench.applyPendingProjectMembers();
+    bench.surfacesShown();
     EXPECT_EQ(s.hiddenMembers, (std::vector<int>{1, 4}));
     EXPECT_EQ(s.selection, (std::vector<int>{2}));
     ASSERT_EQ(opened.size(), 1);
