@@ -301,7 +301,6 @@ void MainWindow::showOverview() {
     for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
     const auto& files = m_workbench->files();
     m_timeBar->setSteps(times, files ? static_cast<int>(files->timeIndex) : 0);
-    resetStepClusters(times);
     // Time controls only for data with time steps.
     m_timeBar->setVisible(times.size() > 1);
     if (auto* dock = findChild<QDockWidget*>(QStringLiteral("clusterTimelineDock"))) {

@@ -202,7 +202,6 @@ private:
     void showOrBuildStepRead(std::size_t step);
     // That step's surfaces, figures and clusters built ahead and kept by the session.
     void buildAhead(const engine::EnsembleOverview& step);
-    void forgetTimeSteps();
     void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);
@@ -278,27 +277,8 @@ private:
     ui::AnimationBar* m_animation = nullptr;
     ui::TimeBar* m_timeBar = nullptr;
     ui::ClusterTimeline* m_timeline = nullptr;
-    // The clusters, isovalue and linkage the strip's steps were clustered at: steps clustered
-    // otherwise are not comparable, and are clustered again.
-    QString m_stripKey;
-    // The time step whose clusters the selection shows: -1 from a step's request until its
-    // surfaces are built (the last step's clusters stay on screen meanwhile).
-    int m_clusteredStep = -1;
     // Another time step is on its way to the screen (its first frame is a motion frame).
     bool m_stepChanging = false;
-    [[nodiscard]] QString stripKey() const;
-    // The clusters of the step on screen go into the timeline (main_window_time.cpp).
-    void recordStepClusters();
-    // New steps (new data, or another cluster count): the strip and the member table's
-    // columns per step forget the steps' clusters.
-    void resetStepClusters(const QStringList& labels);
-    // The strip's steps not visited, clustered in the background one at a time (reading the
-    // step, its distances and clusters; no surfaces), nearest to the step shown first, each
-    // matched to its neighbour's identities; paused while a step the user asked for is read
-    // or built; stopped from the strip's button until other data is opened.
-    void fillStepClusters();
-    workbench::BackgroundJob<engine::StepClusters> m_stepFill{this};
-    bool m_fillStopped = false;
     workbench::Workbench* m_workbench;
     // The workbench's parts, named here for brevity: the session on screen (every control writes
     // into it, and its bindings show it), the shared member selection, the isovalue controller

@@ -20,7 +20,7 @@ void MainWindow::bindOpening() {
             m_info->showMessage(tr("Loading..."));
             m_view->setPlaceholderText(what);
         }
-        forgetTimeSteps();  // other data: the strip's clusters are not its
+        m_stepChanging = false;  // other data: no step of the last data is on its way
     });
     connect(m_workbench, &workbench::Workbench::progressed, this, &MainWindow::showProgress);
     connect(m_workbench, &workbench::Workbench::dataArrived, this, &MainWindow::showOverview);

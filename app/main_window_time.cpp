@@ -6,7 +6,6 @@
 // step to step. While playing, the next step is read ahead; steps read are kept within a
 // memory budget, so going back to one costs only its surfaces (from the cache).
 #include <QStatusBar>
-#include <QTimer>
 #include <utility>
 
 #include "app/main_window.h"
@@ -22,22 +21,11 @@
 #include "widgets/time_bar.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/step_cluster_strip.h"
 #include "workbench/time_steps.h"
 #include "workbench/workbench.h"
 
 namespace ensil::app {
-namespace {
-
-// The members shown, by name: the steps' clusters are matched to them by name.
-std::vector<std::string> namesOf(const workbench::MemberSelection& selection) {
-    std::vector<std::string> names;
-    names.reserve(static_cast<std::size_t>(selection.memberCount()));
-    for (int m = 0; m < selection.memberCount(); ++m)
-        names.push_back(selection.name(m).toStdString());
-    return names;
-}
-
-}  // namespace
 
 // A step is on screen once its surfaces are: then the bar may go on, and the next is read.
 void MainWindow::showBuiltTimeStep() {
@@ -45,7 +33,7 @@ void MainWindow::showBuiltTimeStep() {
     // Another step's surfaces: a motion frame first (a software-OpenGL frame of every member
     // at full resolution takes longer than a step may), the full one once steps pause.
     if (std::exchange(m_stepChanging, false)) m_view->showPassingChange();
-    m_clusteredStep = static_cast<int>(m_workbench->shownStep());
+    m_workbench->strip()->stepBuilt();
     m_timeBar->setShownStep(static_cast<int>(m_workbench->shownStep()));
     // The next step read ahead (and built) first: the strip's filling (started when the
     // clusters are recorded) waits for it rather than taking a worker it needs. A step
@@ -58,7 +46,7 @@ void MainWindow::showBuiltTimeStep() {
     } else {
         m_view->afterNextFrame(this, [this] { readAhead(); });
     }
-    recordStepClusters();
+    m_workbench->strip()->recordShown();
 }
 
 void MainWindow::createTimeBar() {
@@ -70,129 +58,35 @@ void MainWindow::createTimeBar() {
             s.data.timeIndex = static_cast<std::size_t>(step);
         });
     });
-    connect(m_selection, &workbench::MemberSelection::clustersChanged, this,
-            &MainWindow::recordStepClusters);
     connect(m_timeline, &ui::ClusterTimeline::membersClicked, m_selection,
             &workbench::MemberSelection::click);
-    // The strip's filling waits while the next step is built ahead.
-    connect(m_session, &workbench::IsovalueSession::preparationEnded, this,
-            &MainWindow::fillStepClusters);
     connect(m_timeSteps, &workbench::TimeSteps::stepRead, this, &MainWindow::showOrBuildStepRead);
-    connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, this, [this] {
-        m_fillStopped = true;
-        m_stepFill.cancel();
-        m_timeline->setFilling(0, 0);
-    });
-}
-
-void MainWindow::recordStepClusters() {
-    // Only the clusters of the step they belong to: while a step is built, the last step's
-    // are still shown (and may change, a new k).
-    if (overview() == nullptr || !m_workbench->files() || !m_selection->isClustered() ||
-        m_session->isRunning() || m_clusteredStep != static_cast<int>(m_workbench->shownStep())) {
-        return;
-    }
-    // Steps clustered at another cluster count, isovalue or linkage are not comparable: they
-    // are clustered again.
-    if (const QString key = stripKey(); key != m_stripKey) {
-        QStringList labels;
-        for (const std::string& l : overview()->ensemble->timeSteps.labels) {
-            labels << QString::fromStdString(l);
-        }
-        resetStepClusters(labels);
-        m_stripKey = key;
-    }
-    std::vector<int> identities(static_cast<std::size_t>(m_selection->memberCount()));
-    for (int m = 0; m < m_selection->memberCount(); ++m) {
-        identities[static_cast<std::size_t>(m)] =
-            m_selection->identityOf(m_selection->clusterOf(m));
-    }
-    const int step = static_cast<int>(m_workbench->shownStep());
-    m_memberTable->model()->setStepClusters(step, identities);
-    m_memberTable->model()->setCurrentStep(step);
-    m_timeline->setStepClusters(step, std::move(identities));
-    m_timeline->setCurrentStep(step);
-    fillStepClusters();
-}
-
-void MainWindow::resetStepClusters(const QStringList& labels) {
-    // The strip and the member table's columns per step show the same steps' clusters.
-    m_stepFill.cancel();  // clustered as the strip was
-    m_timeline->setSteps(labels);
-    m_timeline->setFilling(0, 0);
-    m_memberTable->model()->setSteps(labels);
-    m_stripKey.clear();
-}
-
-QString MainWindow::stripKey() const {
-    const float isovalue = m_model->state().isovalue.value_or(overview()->defaultIsovalue);
-    return QStringLiteral("%1 clusters at %2, linkage %3")
-        .arg(m_selection->clusterCount())
-        .arg(static_cast<double>(isovalue), 0, 'g', 9)
-        .arg(static_cast<int>(m_session->linkage()));
-}
-
-void MainWindow::fillStepClusters() {
-    const int n = m_timeBar->stepCount();
-    if (overview() == nullptr || !m_workbench->files() || n < 2 || m_fillStopped ||
-        m_stripKey.isEmpty()) {
-        m_timeline->setFilling(0, 0);
-        return;
-    }
-    // What the user asked for goes first: the next step waits while one is read or built
-    // (and one under way is cancelled when a step is asked for, goToTimeStep).
-    if (m_stepFill.isRunning() || m_workbench->isOpening() || m_timeSteps->isReadingAny() ||
-        m_session->isRunning() || m_session->isPreparing()) {
-        return;
-    }
-    const auto clustered = [this](int s) { return !m_timeline->stepClusters(s).empty(); };
-    int done = 0;
-    for (int s = 0; s < n; ++s) done += clustered(s) ? 1 : 0;
-    m_timeline->setFilling(done, n);
-    const std::optional<workbench::StepToCluster> next =
-        workbench::nextStepToCluster(static_cast<int>(m_workbench->shownStep()), n, clustered);
-    if (!next) return;
-    const int step = next->step;
-    const int neighbour = next->neighbour;
-    engine::StepClusteringRequest request;
-    request.selection = m_workbench->timeStepSelection(static_cast<std::size_t>(step));
-    request.isovalue = m_model->state().isovalue.value_or(overview()->defaultIsovalue);
-    request.k = m_selection->clusterCount();
-    request.linkage = m_session->linkage();
-    request.previousMembers = namesOf(*m_selection);
-    request.previousIdentities = m_timeline->stepClusters(neighbour);
-    if (overview()->streamed) request.memoryLimit = overview()->streamed->memoryLimit;
-    const QString key = m_stripKey;
-    m_stepFill.start(
-        [request](const std::stop_token& stop, const data::Progress& progress) {
-            return engine::clusterTimeStep(request, stop, progress);
-        },
-        [this, step, key](const engine::StepClusters& clusters) {
-            if (key == m_stripKey) {
-                // Onto the members shown (a member without data there has none).
-                std::vector<int> identities = engine::previousIdentitiesByName(
-                    clusters.members, clusters.memberIdentities, namesOf(*m_selection));
+    // The strip and the member table's columns per step show every step's clusters.
+    workbench::StepClusterStrip* strip = m_workbench->strip();
+    connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, strip,
+            &workbench::StepClusterStrip::stopFilling);
+    connect(strip, &workbench::StepClusterStrip::stepsChanged, this,
+            [this](const QStringList& labels) {
+                m_timeline->setSteps(labels);
+                m_memberTable->model()->setSteps(labels);
+            });
+    connect(strip, &workbench::StepClusterStrip::stepClustered, this,
+            [this](int step, const std::vector<int>& identities) {
                 m_memberTable->model()->setStepClusters(step, identities);
-                m_timeline->setStepClusters(step, std::move(identities));
-            }
-            // The next one after the events waiting (a step asked for goes first).
-            QTimer::singleShot(0, this, &MainWindow::fillStepClusters);
-        },
-        [this](const std::exception_ptr& error, bool cancelled) {
-            if (error && !cancelled) {
-                // A step that cannot be read is said when it is visited; the strip stays as is.
-                m_fillStopped = true;
-                m_timeline->setFilling(0, 0);
-                return;
-            }
-            QTimer::singleShot(0, this, &MainWindow::fillStepClusters);
-        });
+                m_timeline->setStepClusters(step, identities);
+            });
+    connect(strip, &workbench::StepClusterStrip::currentStepChanged, this, [this](int step) {
+        m_memberTable->model()->setCurrentStep(step);
+        m_timeline->setCurrentStep(step);
+    });
+    connect(strip, &workbench::StepClusterStrip::fillingChanged, m_timeline,
+            &ui::ClusterTimeline::setFilling);
 }
 
 void MainWindow::goToTimeStep(std::size_t step) {
     if (overview() == nullptr || !m_workbench->files() || step == m_workbench->shownStep()) return;
     m_timeSteps->moved(m_workbench->shownStep(), step);
-    m_stepFill.cancel();  // the step asked for goes first; the strip's filling resumes after
+    m_workbench->strip()->pauseFilling();  // the step asked for goes first; filling resumes after
     if (std::unique_ptr<engine::EnsembleOverview> kept = m_timeSteps->take(step)) {
         showTimeStep(std::move(kept), step);
         return;
@@ -220,7 +114,6 @@ void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead
     // The step left is kept (it may be visited again), within the budget; the last step's
     // surfaces, figures and clusters stay until this step's are built.
     m_workbench->showTimeStep(std::move(stepRead), step);
-    m_clusteredStep = -1;  // until this step's surfaces and clusters are built
     m_stepChanging = true;
     const data::Ensemble& e = *overview()->ensemble;
     const session::SessionState& s = m_model->state();
@@ -274,7 +167,7 @@ void MainWindow::showOrBuildStepRead(std::size_t step) {
         return;
     }
     if (const engine::EnsembleOverview* read = m_timeSteps->kept(step)) buildAhead(*read);
-    fillStepClusters();
+    m_workbench->strip()->fill();
 }
 
 void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
@@ -283,14 +176,6 @@ void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
     const session::SessionState& s = m_model->state();
     m_session->prepareTimeStep(step.ensemble, step.moments, step.sourceKey,
                                s.isovalue.value_or(step.defaultIsovalue), s.verticalExaggeration);
-}
-
-void MainWindow::forgetTimeSteps() {
-    m_clusteredStep = -1;  // other data: its clusters come with its first surfaces
-    m_stepChanging = false;
-    m_timeSteps->forget();
-    m_stepFill.cancel();
-    m_fillStopped = false;  // other data: its strip fills again
 }
 
 }  // namespace ensil::app

@@ -16,6 +16,7 @@
 #include "session/session_model.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
+#include "workbench/step_cluster_strip.h"
 #include "workbench/time_steps.h"
 
 namespace ensil::workbench {
@@ -52,12 +53,18 @@ Workbench::Workbench(SurfaceDisplay* display, const QString& cacheDirectory, QOb
       m_selection(new MemberSelection(m_model, this)),
       m_isovalue(new IsovalueSession(display, m_selection, cacheDirectory, this)),
       m_timeSteps(new TimeSteps(this)),
+      m_strip(new StepClusterStrip(this)),
       m_history(new session::SessionHistory(
           [this] { return captureSession(); },
           [this](const session::SessionState& s) { applySession(s); }, this)) {
     m_isovalue->setContextSurfacesWanted(m_model->state().render.drawsContextSurfaces());
     // A project being opened is dropped when its surfaces cannot be built.
     connect(m_isovalue, &IsovalueSession::failed, this, [this] { m_pendingProject.reset(); });
+    // The step shown gives the strip its clusters; the strip's filling waits while the next
+    // step is built ahead.
+    connect(m_selection, &MemberSelection::clustersChanged, m_strip,
+            &StepClusterStrip::recordShown);
+    connect(m_isovalue, &IsovalueSession::preparationEnded, m_strip, &StepClusterStrip::fill);
 }
 
 Workbench::~Workbench() {
@@ -103,6 +110,7 @@ std::size_t Workbench::memoryLimit() const {
 void Workbench::startOpening(const QString& what, std::function<std::string()> identify,
                              engine::WorkbenchRead read) {
     m_timeSteps->forget();  // other data: the steps read ahead are not its
+    m_strip->forget();
     emit openingStarted(what);
     m_loader.start(
         [read = std::move(read), identify = std::move(identify)](const std::stop_token& stop,
@@ -116,6 +124,11 @@ void Workbench::startOpening(const QString& what, std::function<std::string()> i
             // The old data's surfaces, figures and clusters go; the new members are known.
             m_isovalue->setEnsemble(m_overview->ensemble, m_overview->moments,
                                     m_overview->sourceKey, m_overview->streamed);
+            QStringList steps;
+            for (const std::string& label : m_overview->ensemble->timeSteps.labels) {
+                steps << QString::fromStdString(label);
+            }
+            m_strip->setSteps(steps);
             emit dataArrived();
         },
         [this](const std::exception_ptr& error, bool cancelled) { openingEnded(error, cancelled); },
@@ -209,6 +222,7 @@ void Workbench::showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview,
     m_timeSteps->keep(m_requested->timeIndex, std::move(m_overview), step);
     m_overview = std::move(overview);
     m_requested->timeIndex = step;
+    m_strip->stepChanging();  // until this step's surfaces and clusters are built
     // The last step's surfaces, figures and clusters stay until this step's are built.
     m_isovalue->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
                             m_overview->streamed);

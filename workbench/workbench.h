@@ -31,6 +31,7 @@ namespace ensil::workbench {
 
 class IsovalueSession;
 class MemberSelection;
+class StepClusterStrip;
 class SurfaceDisplay;
 class TimeSteps;
 
@@ -45,6 +46,8 @@ public:
     [[nodiscard]] MemberSelection* selection() const { return m_selection; }
     [[nodiscard]] IsovalueSession* isovalue() const { return m_isovalue; }
     [[nodiscard]] TimeSteps* timeSteps() const { return m_timeSteps; }
+    // Every time step's clusters (workbench/step_cluster_strip.h).
+    [[nodiscard]] StepClusterStrip* strip() const { return m_strip; }
     // Undo and redo (session/session_history.h) of the session on screen.
     [[nodiscard]] session::SessionHistory* history() const { return m_history; }
 
@@ -120,8 +123,8 @@ public:
 signals:
     void openingStarted(const QString& what);
     void progressed(double fraction);  // 0 to 1, of opening or of reading a time step
-    // overview() holds the new data, which the isovalue controller and the member selection
-    // have (the old data's surfaces, clusters and time steps are forgotten).
+    // overview() holds the new data, which the isovalue controller, the member selection and
+    // the strip have (the old data's surfaces, clusters and time steps are forgotten).
     void dataArrived();
     void openingCancelled();
     void openingFailed(const QString& message);
@@ -143,6 +146,7 @@ private:
     MemberSelection* m_selection;
     IsovalueSession* m_isovalue;
     TimeSteps* m_timeSteps;
+    StepClusterStrip* m_strip;
     session::SessionHistory* m_history;
     std::function<void(session::SessionState&)> m_viewCapture;
     bool m_historyStartsAfresh = false;  // new data: their first surfaces reset the history

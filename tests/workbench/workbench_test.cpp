@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <QSignalSpy>
-#include <QUndoStack>
 #include <QString>
+#include <QUndoStack>
 #include <vector>
 
 #include "data/demo_ensemble.h"
