@@ -177,31 +177,18 @@ private:
     [[nodiscard]] QString defaultScreenshotPath(const QString& lastPath) const;
     // Looks from a named view (the View menu), as a session change that undo can take back.
     void lookFrom(const session::ViewPreset& preset);
-    // Time as an axis of the session (main_window_time.cpp): the time bar, a step asked for
-    // (read in the background, the last step kept on screen until this one is built), the
-    // step shown, and the steps read ahead or visited, kept within a memory budget.
+    // Time (main_window_time.cpp): the time bar and the strip, and a step that arrived shown.
     void createTimeBar();
+    void showArrivedStep();
     void showProgress(double fraction);  // the status bar's progress bar, 0 to 1
     // What follows each isovalue's surfaces, in order (main_window_results.cpp).
     void showBuiltSurfaces(const QString& summary);
     void showOutlyingnessRange();  // main_window_render_docks.cpp
     void showBuiltTimeStep();      // main_window_time.cpp
-    void goToTimeStep(std::size_t step);
-    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead, std::size_t step);
     // What the window shows of the workbench's opening (main_window_loading.cpp).
     void bindOpening();
     void showOpeningFailed(const QString& message);
     void askForMemberDimension(const QString& file, const QStringList& choices);
-    // The step's surfaces: kept from a visit before, shown at once; else built.
-    void showStepSurfaces(float isovalue, float exaggeration);
-    // The next step in the direction of the last move (forward while playing, round the end),
-    // read and its surfaces built in the background while this one is looked at, so that
-    // stepping on shows it at once; a guess, dropped when the user goes elsewhere.
-    void readAhead();
-    // A step read ahead: shown if it was asked for meanwhile, else its surfaces built ahead.
-    void showOrBuildStepRead(std::size_t step);
-    // That step's surfaces, figures and clusters built ahead and kept by the session.
-    void buildAhead(const engine::EnsembleOverview& step);
     void createToolbar();
     void chooseFiles();
     void rememberRecent(const data::DataSelection& selection);

@@ -79,7 +79,7 @@ void MainWindow::showSessionParts(session::SessionParts parts) {
         !m_showingNewData) {
         const data::DataSelection& wanted = m_model->state().data;
         if (m_workbench->timeStepSelection(wanted.timeIndex) == wanted)
-            goToTimeStep(wanted.timeIndex);
+            m_workbench->goToStep(wanted.timeIndex);
     }
     // First the box, which the plane is placed across: without a new plane, the plane keeps
     // its place across the reshaped box (a change of the session of its own, made here).

@@ -1,10 +1,8 @@
-// Time as an axis of the session (issue 17). The time bar steps the session's time index (so
-// undo and projects know the step); each step's ensemble is read in the background while the
-// last step stays on screen, its surfaces come through the mesh cache (the time index is part
-// of the data's identity), and its clusters keep their colours: the member selection matches
-// each new merge tree to the last one (METHODS.md section 8), so a colour follows a group from
-// step to step. While playing, the next step is read ahead; steps read are kept within a
-// memory budget, so going back to one costs only its surfaces (from the cache).
+// What the window shows of time (workbench/workbench_time.cpp steps through it): the time bar,
+// which steps the session's time index (so undo and projects know the step), the status bar
+// while a step is read, the floor, section, facts and title of a step that arrived, the next
+// step read ahead once a step's surfaces are on screen, and every step's clusters in the strip
+// and the member table (workbench/step_cluster_strip.h).
 #include <QStatusBar>
 #include <utility>
 
@@ -42,9 +40,9 @@ void MainWindow::showBuiltTimeStep() {
     // here has been on screen in reduced detail; its next is read at once.
     const workbench::IsovalueResult* shown = m_session->result();
     if (m_timeBar->isPlaying() || shown == nullptr || !shown->keptInMemory) {
-        readAhead();
+        m_workbench->readAhead(m_timeBar->isPlaying());
     } else {
-        m_view->afterNextFrame(this, [this] { readAhead(); });
+        m_view->afterNextFrame(this, [this] { m_workbench->readAhead(m_timeBar->isPlaying()); });
     }
     m_workbench->strip()->recordShown();
 }
@@ -60,7 +58,17 @@ void MainWindow::createTimeBar() {
     });
     connect(m_timeline, &ui::ClusterTimeline::membersClicked, m_selection,
             &workbench::MemberSelection::click);
-    connect(m_timeSteps, &workbench::TimeSteps::stepRead, this, &MainWindow::showOrBuildStepRead);
+    // Another step: read (said in the status bar), then shown with its surfaces, or the step
+    // shown stays.
+    connect(m_workbench, &workbench::Workbench::stepReading, this,
+            [this](std::size_t step) { setBusy(tr("Reading time step %1...").arg(step + 1)); });
+    connect(m_workbench, &workbench::Workbench::stepArrived, this, &MainWindow::showArrivedStep);
+    connect(m_workbench, &workbench::Workbench::stepFailed, this, [this](const QString& message) {
+        m_timeBar->pause();
+        m_timeBar->setShownStep(static_cast<int>(m_workbench->shownStep()));
+        setIdle(message.isEmpty() ? tr("Reading the time step was cancelled")
+                                  : tr("Could not read the time step: %1").arg(message));
+    });
     // The strip and the member table's columns per step show every step's clusters.
     workbench::StepClusterStrip* strip = m_workbench->strip();
     connect(m_timeline, &ui::ClusterTimeline::stopFillingRequested, strip,
@@ -83,37 +91,7 @@ void MainWindow::createTimeBar() {
             &ui::ClusterTimeline::setFilling);
 }
 
-void MainWindow::goToTimeStep(std::size_t step) {
-    if (overview() == nullptr || !m_workbench->files() || step == m_workbench->shownStep()) return;
-    m_timeSteps->moved(m_workbench->shownStep(), step);
-    m_workbench->strip()->pauseFilling();  // the step asked for goes first; filling resumes after
-    if (std::unique_ptr<engine::EnsembleOverview> kept = m_timeSteps->take(step)) {
-        showTimeStep(std::move(kept), step);
-        return;
-    }
-    if (m_timeSteps->isReading(step)) return;  // on its way: shown when read
-    setBusy(tr("Reading time step %1...").arg(step + 1));
-    m_workbench->readTimeStep(
-        step,
-        [this, step](std::unique_ptr<engine::EnsembleOverview> read) {
-            showTimeStep(std::move(read), step);
-        },
-        [this](const QString& message) {
-            // The step shown stays; the session's step goes back to it.
-            const std::size_t shown = m_workbench->shownStep();
-            m_timeBar->pause();
-            m_timeBar->setShownStep(static_cast<int>(shown));
-            m_model->update([shown](session::SessionState& s) { s.data.timeIndex = shown; });
-            setIdle(message.isEmpty() ? tr("Reading the time step was cancelled")
-                                      : tr("Could not read the time step: %1").arg(message));
-        });
-}
-
-void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead,
-                              std::size_t step) {
-    // The step left is kept (it may be visited again), within the budget; the last step's
-    // surfaces, figures and clusters stay until this step's are built.
-    m_workbench->showTimeStep(std::move(stepRead), step);
+void MainWindow::showArrivedStep() {
     m_stepChanging = true;
     const data::Ensemble& e = *overview()->ensemble;
     const session::SessionState& s = m_model->state();
@@ -122,60 +100,13 @@ void MainWindow::showTimeStep(std::unique_ptr<engine::EnsembleOverview> stepRead
     showSection();
     showSpread();
     m_info->showFacts(engine::ensembleFacts(*overview()));
-    const float isovalue = s.isovalue.value_or(overview()->defaultIsovalue);
-    const prep::FieldStatistics& stats = overview()->statistics;
     {
         const QSignalBlocker block(m_toolbar);
-        showIsovalueRange(isovalue);
-        m_toolbar->setIsovalueHistogram(stats.histogram);
+        showIsovalueRange(s.isovalue.value_or(overview()->defaultIsovalue));
+        m_toolbar->setIsovalueHistogram(overview()->statistics.histogram);
     }
     titleTheView(e);
     updateWindowTitle();
-    showStepSurfaces(isovalue, s.verticalExaggeration);
-}
-
-void MainWindow::showStepSurfaces(float isovalue, float exaggeration) {
-    // Kept from a visit before: shown at once, in this event, so the step's surfaces, clusters
-    // and panels come together with its floor and title, with no frame of the last step in
-    // between and no wait for a worker (a job runs at low priority and may wait for a core
-    // while the window draws). Otherwise built (or taken from the mesh cache) by a job.
-    if (m_session->showKept(isovalue, exaggeration)) return;
-    m_session->setIsovalue(isovalue, exaggeration);
-    // A step never seen is on screen sooner in reduced detail (not one built ahead, nearly
-    // done, whose cores the preview would take).
-    m_session->previewTimeStep(isovalue, exaggeration);
-}
-
-void MainWindow::readAhead() {
-    if (!m_workbench->files() || overview() == nullptr) return;
-    const std::optional<std::size_t> next = m_timeSteps->nextToRead(
-        m_workbench->shownStep(), static_cast<std::size_t>(std::max(0, m_timeBar->stepCount())),
-        m_timeBar->isPlaying());
-    if (!next || m_timeSteps->isReading(*next)) return;
-    if (const engine::EnsembleOverview* kept = m_timeSteps->kept(*next)) {
-        buildAhead(*kept);
-        return;
-    }
-    m_timeSteps->readAhead(*next, m_workbench->readingStep(*next));
-}
-
-void MainWindow::showOrBuildStepRead(std::size_t step) {
-    // Asked for while it was being read: shown now.
-    if (m_model->state().data.timeIndex == step && m_workbench->files() &&
-        m_workbench->shownStep() != step) {
-        showTimeStep(m_timeSteps->take(step), step);
-        return;
-    }
-    if (const engine::EnsembleOverview* read = m_timeSteps->kept(step)) buildAhead(*read);
-    m_workbench->strip()->fill();
-}
-
-void MainWindow::buildAhead(const engine::EnsembleOverview& step) {
-    // Data larger than memory would be read whole again in slabs for a guess: not built ahead.
-    if (step.streamed) return;
-    const session::SessionState& s = m_model->state();
-    m_session->prepareTimeStep(step.ensemble, step.moments, step.sourceKey,
-                               s.isovalue.value_or(step.defaultIsovalue), s.verticalExaggeration);
 }
 
 }  // namespace ensil::app

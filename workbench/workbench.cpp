@@ -22,18 +22,6 @@
 namespace ensil::workbench {
 namespace {
 
-QString messageOf(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);  // unwrapped by BackgroundJob
-    } catch (const std::bad_alloc&) {
-        return QObject::tr("not enough memory to load the ensemble");
-    } catch (const std::exception& e) {
-        return QString::fromStdString(e.what());
-    } catch (...) {
-        return QStringLiteral("unknown error");
-    }
-}
-
 // The reader's typed error, if that is what the worker threw.
 std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
     try {
@@ -46,6 +34,18 @@ std::optional<data::Error> dataErrorOf(const std::exception_ptr& error) {
 }
 
 }  // namespace
+
+QString Workbench::messageOf(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);  // unwrapped by BackgroundJob
+    } catch (const std::bad_alloc&) {
+        return tr("not enough memory to load the ensemble");
+    } catch (const std::exception& e) {
+        return QString::fromStdString(e.what());
+    } catch (...) {
+        return QStringLiteral("unknown error");
+    }
+}
 
 Workbench::Workbench(SurfaceDisplay* display, const QString& cacheDirectory, QObject* parent)
     : QObject(parent),
@@ -65,6 +65,7 @@ Workbench::Workbench(SurfaceDisplay* display, const QString& cacheDirectory, QOb
     connect(m_selection, &MemberSelection::clustersChanged, m_strip,
             &StepClusterStrip::recordShown);
     connect(m_isovalue, &IsovalueSession::preparationEnded, m_strip, &StepClusterStrip::fill);
+    connect(m_timeSteps, &TimeSteps::stepRead, this, &Workbench::showOrBuildStepRead);
 }
 
 Workbench::~Workbench() {
@@ -183,49 +184,6 @@ void Workbench::startSessionOfNewData(float shownIsovalue) {
 void Workbench::buildFirstSurfaces() {
     const session::SessionState& s = m_model->state();
     m_isovalue->setIsovalue(*s.isovalue, s.verticalExaggeration);
-}
-
-data::DataSelection Workbench::timeStepSelection(std::size_t step) const {
-    data::DataSelection selection = m_requested.value_or(data::DataSelection{});
-    selection.timeIndex = step;
-    return selection;
-}
-
-BackgroundJob<engine::EnsembleOverview>::Work Workbench::readingStep(std::size_t step) const {
-    return [selection = timeStepSelection(step), memoryLimit = memoryLimit(),
-            sameData = engine::sameDataParts(*m_overview)](const std::stop_token& stop,
-                                                           const data::Progress& progress) {
-        return engine::readEnsembleOverview(
-            [selection, memoryLimit](const std::stop_token& s, const data::Progress& p) {
-                return engine::readForWorkbench(selection, memoryLimit, s, p);
-            },
-            [selection] { return data::sourceIdentity(selection); }, stop, progress, &sameData);
-    };
-}
-
-void Workbench::readTimeStep(std::size_t step,
-                             std::function<void(std::unique_ptr<engine::EnsembleOverview>)> read,
-                             std::function<void(const QString& message)> failed) {
-    m_loader.start(
-        readingStep(step),
-        [this, step, read = std::move(read)](engine::EnsembleOverview overview) {
-            if (m_requested && m_requested->timeIndex == step) return;  // shown meanwhile
-            read(std::make_unique<engine::EnsembleOverview>(std::move(overview)));
-        },
-        [failed = std::move(failed)](const std::exception_ptr& error, bool cancelled) {
-            failed(cancelled || !error ? QString() : messageOf(error));
-        },
-        [this](double f) { emit progressed(f); });
-}
-
-void Workbench::showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step) {
-    m_timeSteps->keep(m_requested->timeIndex, std::move(m_overview), step);
-    m_overview = std::move(overview);
-    m_requested->timeIndex = step;
-    m_strip->stepChanging();  // until this step's surfaces and clusters are built
-    // The last step's surfaces, figures and clusters stay until this step's are built.
-    m_isovalue->setTimeStep(m_overview->ensemble, m_overview->moments, m_overview->sourceKey,
-                            m_overview->streamed);
 }
 
 void Workbench::openProject(session::SessionState project, const QString& path) {

@@ -89,19 +89,19 @@ public:
     void startSessionOfNewData(float shownIsovalue);
     void buildFirstSurfaces();
 
-    // Another time step of the files on screen, read in the background while the step shown
-    // stays: `read` gets it (unless the step was shown meanwhile), `failed` says why not (an
-    // empty message: cancelled); progress as progressed().
-    void readTimeStep(std::size_t step,
-                      std::function<void(std::unique_ptr<engine::EnsembleOverview>)> read,
-                      std::function<void(const QString& message)> failed);
-    // The reading of a step of the files on screen, for reading ahead (TimeSteps::readAhead).
-    [[nodiscard]] BackgroundJob<engine::EnsembleOverview>::Work readingStep(std::size_t step) const;
+    // Time steps (workbench_time.cpp). Another step of the files on screen: shown at once
+    // when kept (read ahead, or visited before), else read in the background while the step
+    // shown stays (stepReading, then stepArrived or stepFailed, which puts the session's step
+    // back). An arrived step's data are on screen (the step left is kept within the memory
+    // budget, its surfaces and clusters stay until the new step's are built); its surfaces are
+    // built, or shown at once when built before, right after stepArrived.
+    void goToStep(std::size_t step);
+    // The next step in the direction of the last move (forward while playing, round the end),
+    // read and its surfaces built in the background while this one is looked at, so that
+    // stepping on shows it at once; a guess, dropped when the user goes elsewhere.
+    void readAhead(bool playing);
     // The files on screen at another time step.
     [[nodiscard]] data::DataSelection timeStepSelection(std::size_t step) const;
-    // That step's data are now the data on screen; the step left is kept (TimeSteps, within
-    // its memory budget) and its surfaces stay until the new step's are built.
-    void showTimeStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
 
     // Projects. A project whose data files were found (session::loadProject validated it):
     // its data are opened, and the project applied in two steps, its session when the data
@@ -132,6 +132,9 @@ signals:
     // (openFiles again with DataSelection::memberDimension).
     void memberDimensionAsked(const QString& file, const QStringList& choices);
     void projectOpened(const QString& path);
+    void stepReading(std::size_t step);
+    void stepArrived();
+    void stepFailed(const QString& message);  // empty: cancelled
     void sessionApplied(const session::SessionState& state);
 
 private:
@@ -140,7 +143,19 @@ private:
     void startOpening(const QString& what, std::function<std::string()> identify,
                       engine::WorkbenchRead read);
     void openingEnded(const std::exception_ptr& error, bool cancelled);
+    // What a worker's error says to the user.
+    [[nodiscard]] static QString messageOf(const std::exception_ptr& error);
     void applyPendingProjectMembers();
+    // A step's ensemble read and its overview built, on a worker; what it shares with the step
+    // shown (the opening isovalue, the map lines) is taken from that one.
+    [[nodiscard]] BackgroundJob<engine::EnsembleOverview>::Work readingStep(std::size_t step) const;
+    void arriveAtStep(std::unique_ptr<engine::EnsembleOverview> overview, std::size_t step);
+    // The step's surfaces: kept from a visit before, shown at once; else built.
+    void showStepSurfaces(float isovalue, float exaggeration);
+    // A step read ahead: shown if it was asked for meanwhile, else its surfaces built ahead.
+    void showOrBuildStepRead(std::size_t step);
+    // That step's surfaces, figures and clusters built ahead and kept by the isovalue session.
+    void buildAhead(const engine::EnsembleOverview& step);
 
     session::SessionModel* m_model;
     MemberSelection* m_selection;

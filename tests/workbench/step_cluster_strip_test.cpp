@@ -10,11 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "data/demo_ensemble.h"
-#include "data/netcdf_writer.h"
 #include "engine/time_series.h"
 #include "session/session_model.h"
 #include "tests/support/temp_dir.h"
+#include "tests/workbench/opened_steps.h"
 #include "tests/workbench/recording_display.h"
 #include "workbench/isovalue_session.h"
 #include "workbench/member_selection.h"
@@ -24,29 +23,11 @@ using namespace ensil;
 
 namespace {
 
-constexpr int kStripWaitMs = 60000;  // an upper bound for a loaded CI machine, not a pace
-constexpr std::size_t kSteps = 3;
-const data::DemoEnsembleParams kStepDemo{.members = 6, .nx = 32, .ny = 16, .nz = 6, .seed = 9};
-
 class StepClusterStripTest : public ::testing::Test {
 protected:
     // Opens the demo over three steps and shows step 0's surfaces, as the window does.
     void openSteps() {
-        data::writeNetcdfSteps(
-            [](std::size_t step) {
-                return data::makeDemoEnsembleAt(kStepDemo, step, kSteps).ensemble;
-            },
-            {data::kDemoTimeUnits, {0.0, 6.0, 12.0}}, path);
-        QSignalSpy arrived(&bench, &workbench::Workbench::dataArrived);
-        data::DataSelection selection;
-        selection.paths = {path};
-        bench.openFiles(selection);
-        ASSERT_TRUE(arrived.wait(kStripWaitMs));
-        bench.startSessionOfNewData(bench.overview()->defaultIsovalue);
-        QSignalSpy built(bench.isovalue(), &workbench::IsovalueSession::finished);
-        bench.buildFirstSurfaces();
-        ASSERT_TRUE(built.wait(kStripWaitMs));
-        bench.surfacesShown();
+        ASSERT_NO_FATAL_FAILURE(test::openDemoSteps(bench, path));
         strip.stepBuilt();
         strip.recordShown();
     }
@@ -58,7 +39,7 @@ protected:
                 }
                 return !strip.stepClusters(0).empty();
             },
-            kStripWaitMs);
+            test::kStepWaitMs);
     }
     // The step's clusters as the command line gives them, matched to step 0's.
     [[nodiscard]] std::vector<int> commandLineClusters(int step) const {
@@ -85,16 +66,16 @@ protected:
 };
 
 TEST_F(StepClusterStripTest, TheStepsNotVisitedAreClusteredAsTheCommandLineClustersThem) {
-    openSteps();
-    ASSERT_EQ(strip.stepCount(), static_cast<int>(kSteps));
+    ASSERT_NO_FATAL_FAILURE(openSteps());
+    ASSERT_EQ(strip.stepCount(), static_cast<int>(test::kDemoSteps));
     ASSERT_TRUE(everyStepClustered());
-    for (int step = 1; step < static_cast<int>(kSteps); ++step) {
+    for (int step = 1; step < static_cast<int>(test::kDemoSteps); ++step) {
         EXPECT_EQ(strip.stepClusters(step), commandLineClusters(step)) << "step " << step;
     }
 }
 
 TEST_F(StepClusterStripTest, AnotherClusterCountStartsTheStripAgain) {
-    openSteps();
+    ASSERT_NO_FATAL_FAILURE(openSteps());
     ASSERT_TRUE(everyStepClustered());
     QSignalSpy changed(&strip, &workbench::StepClusterStrip::stepsChanged);
     const int k = bench.selection()->clusterCount() == 2 ? 3 : 2;
@@ -102,19 +83,19 @@ TEST_F(StepClusterStripTest, AnotherClusterCountStartsTheStripAgain) {
     bench.selection()->setClusterCount(k);  // as the window's bindings do
     ASSERT_GE(changed.size(), 1) << "steps clustered at another k are not comparable";
     ASSERT_TRUE(everyStepClustered());
-    for (int step = 1; step < static_cast<int>(kSteps); ++step) {
+    for (int step = 1; step < static_cast<int>(test::kDemoSteps); ++step) {
         EXPECT_EQ(strip.stepClusters(step), commandLineClusters(step)) << "step " << step;
     }
 }
 
 TEST_F(StepClusterStripTest, StoppedFillingLeavesTheOtherStepsUnclustered) {
-    openSteps();  // step 0 recorded, step 1's clustering started
+    ASSERT_NO_FATAL_FAILURE(openSteps());  // step 0 recorded, step 1's clustering started
     ASSERT_FALSE(strip.stepClusters(0).empty());
     QSignalSpy filling(&strip, &workbench::StepClusterStrip::fillingChanged);
     strip.stopFilling();
     ASSERT_EQ(filling.size(), 1);
     // The cancelled job's end asks for the next step, which a stopped strip does not start.
-    ASSERT_TRUE(filling.wait(kStripWaitMs));
+    ASSERT_TRUE(filling.wait(test::kStepWaitMs));
     EXPECT_EQ(filling.back().at(1).toInt(), 0) << "filling is not said to go on";
     EXPECT_TRUE(strip.stepClusters(1).empty());
     EXPECT_TRUE(strip.stepClusters(2).empty());
