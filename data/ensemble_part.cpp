@@ -44,7 +44,8 @@ void checkEnsemblePart(const EnsembleDescription& description, const EnsemblePar
                         what + ", which has " + std::to_string(description.members) + " members");
     }
     try {
-        (void)gridLayers(description.grid, part.firstLayer, part.layerCount);
+        const Grid layers = gridLayers(description.grid, part.firstLayer, part.layerCount);
+        if (part.window) (void)gridWindow(layers, *part.window);
     } catch (const Error& e) {
         throw Error(ErrorKind::InvalidArgument, "cannot read a slab of " + what + ": " + e.what());
     }
@@ -55,11 +56,10 @@ Ensemble openEnsemblePart(const DataSelection& selection, const EnsembleDescript
                           const Progress& progress) {
     const EnsembleReader& reader = readerFor(selection);
     checkEnsemblePart(description, part, sourceOf(selection.paths));
-    // A part of the levels the selection keeps is a part of the file's levels further up.
-    EnsemblePart filePart = part;
-    if (description.keptLevels) filePart.firstLayer += description.keptLevels->first;
-    Ensemble ensemble =
-        reader.readPart(selection, fileDescription(description), filePart, stop, progress);
+    // A part of the levels the selection keeps is a part of the file's levels further up, and
+    // of the file's columns and rows in the region kept.
+    Ensemble ensemble = reader.readPart(selection, fileDescription(description),
+                                        filePart(description, part), stop, progress);
     makeInfinitiesMissing(ensemble);
     return ensemble;
 }

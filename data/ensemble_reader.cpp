@@ -24,14 +24,25 @@
 namespace ensil::data {
 namespace {
 
-// Cuts every member to the layers [first, first + grid.nz()) and gives the ensemble `grid`, the
-// file's grid cut to them. A member's values run x fastest and z slowest, so a layer range is
-// one contiguous block.
-void keepLayers(Ensemble& ensemble, std::size_t first, const Grid& grid) {
-    const std::size_t layer = grid.nx() * grid.ny();
+// Cuts every member of an ensemble read whole to the file's part `part` (its layers, and its
+// window's columns and rows), and gives it `grid`, the grid of that part. A member's values run
+// x fastest and z slowest, so each row of a run of columns is one contiguous block.
+void keepPart(Ensemble& ensemble, const EnsemblePart& part, const Grid& grid) {
+    const std::size_t nx = ensemble.grid.nx();
+    const std::size_t ny = ensemble.grid.ny();
+    const HorizontalWindow window =
+        part.window ? *part.window : HorizontalWindow{{{0, nx, 0.0}}, 0, ny};
     for (Member& member : ensemble.members) {
-        const auto begin = member.values.begin() + static_cast<std::ptrdiff_t>(first * layer);
-        FieldValues kept(begin, begin + static_cast<std::ptrdiff_t>(grid.nz() * layer));
+        FieldValues kept(grid.pointCount());
+        float* to = kept.data();
+        for (std::size_t k = part.firstLayer; k < part.firstLayer + part.layerCount; ++k) {
+            for (std::size_t j = window.firstRow; j < window.firstRow + window.rowCount; ++j) {
+                for (const ColumnRun& run : window.columns) {
+                    to = std::copy_n(member.values.data() + run.first + nx * (j + ny * k),
+                                     run.count, to);
+                }
+            }
+        }
         member.values = std::move(kept);
     }
     ensemble.grid = grid;
@@ -100,7 +111,7 @@ const EnsembleReader& readerFor(const DataSelection& selection) {
 }
 
 EnsembleDescription describeEnsemble(const DataSelection& selection) {
-    return keepLevels(readerFor(selection).describe(selection), selection);
+    return keepRegion(keepLevels(readerFor(selection).describe(selection), selection), selection);
 }
 
 EnsembleDescription keepLevels(EnsembleDescription description, const DataSelection& selection) {
@@ -113,12 +124,35 @@ EnsembleDescription keepLevels(EnsembleDescription description, const DataSelect
     return description;
 }
 
+EnsembleDescription keepRegion(EnsembleDescription description, const DataSelection& selection) {
+    if (!selection.region) return description;
+    const HorizontalWindow window =
+        regionWithin(description.grid, description.gridMapping, *selection.region,
+                     "'" + description.variable + "' in " + sourceOf(selection.paths));
+    description.keptRegion =
+        EnsembleDescription::KeptRegion{window, description.grid.x(), description.grid.y()};
+    description.grid = gridWindow(description.grid, window);
+    return description;
+}
+
 EnsembleDescription fileDescription(const EnsembleDescription& description) {
     EnsembleDescription file = description;
-    if (description.keptLevels) {
-        file.grid = Grid(description.grid.x(), description.grid.y(), description.keptLevels->fileZ);
+    if (description.keptLevels || description.keptRegion) {
+        const auto& region = description.keptRegion;
+        file.grid =
+            Grid(region ? region->fileX : description.grid.x(),
+                 region ? region->fileY : description.grid.y(),
+                 description.keptLevels ? description.keptLevels->fileZ : description.grid.z());
         file.keptLevels.reset();
+        file.keptRegion.reset();
     }
+    return file;
+}
+
+EnsemblePart filePart(const EnsembleDescription& description, const EnsemblePart& part) {
+    EnsemblePart file = part;
+    if (description.keptLevels) file.firstLayer += description.keptLevels->first;
+    if (description.keptRegion) file.window = description.keptRegion->window;
     return file;
 }
 
@@ -142,7 +176,8 @@ std::string sourceIdentity(const DataSelection& selection) {
     }
     return id + "var=" + selection.variable + " member-dim=" + selection.memberDimension +
            " time-index=" + std::to_string(selection.timeIndex) +
-           (selection.levels ? " levels=" + levelRangeText(*selection.levels) : "");
+           (selection.levels ? " levels=" + levelRangeText(*selection.levels) : "") +
+           (selection.region ? " region=" + regionText(*selection.region) : "");
 }
 
 void checkMemoryFor(std::size_t bytes, const std::string& what) {
@@ -178,7 +213,8 @@ void makeInfinitiesMissing(Ensemble& ensemble) {
 Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& stop,
                       const Progress& progress, EnsembleDescription* describedAs) {
     const EnsembleReader& reader = readerFor(selection);
-    EnsembleDescription description = keepLevels(reader.describe(selection), selection);
+    EnsembleDescription description =
+        keepRegion(keepLevels(reader.describe(selection), selection), selection);
     const auto checkMemory = [](const EnsembleDescription& d) {
         checkMemoryFor(d.bytes(), "'" + d.variable + "' (" + std::to_string(d.members) +
                                       " members of " + std::to_string(d.grid.nx()) + " x " +
@@ -187,19 +223,21 @@ Ensemble openEnsemble(const DataSelection& selection, const std::stop_token& sto
     };
     checkMemory(description);
     Ensemble ensemble;
-    if (!description.keptLevels) {
+    if (!description.keptLevels && !description.keptRegion) {
         ensemble = reader.read(selection, stop, progress);
-    } else if (reader.readsParts()) {
-        // Only the levels kept are read.
-        ensemble = reader.readPart(
-            selection, fileDescription(description),
-            {0, description.members, description.keptLevels->first, description.grid.nz()}, stop,
-            progress);
     } else {
-        // A format read whole (GRIB, VTK, HDF5): read, then the levels kept copied out.
-        checkMemory(fileDescription(description));
-        ensemble = reader.read(selection, stop, progress);
-        keepLayers(ensemble, description.keptLevels->first, description.grid);
+        const EnsemblePart part =
+            filePart(description, {0, description.members, 0, description.grid.nz()});
+        if (reader.readsParts()) {
+            // Only the levels, columns and rows kept are read.
+            ensemble =
+                reader.readPart(selection, fileDescription(description), part, stop, progress);
+        } else {
+            // A format read whole (GRIB, VTK, HDF5): read, then what is kept copied out.
+            checkMemory(fileDescription(description));
+            ensemble = reader.read(selection, stop, progress);
+            keepPart(ensemble, part, description.grid);
+        }
     }
     if (describedAs != nullptr) *describedAs = std::move(description);
     makeInfinitiesMissing(ensemble);

@@ -19,6 +19,7 @@
 #include "data/ensemble.h"
 #include "data/job.h"
 #include "data/level_range.h"
+#include "data/region.h"
 
 namespace ensil::data {
 
@@ -30,6 +31,8 @@ struct DataSelection {
     std::size_t timeIndex = 0;         // index for every other non-spatial dimension
     // The vertical levels kept (data/level_range.h); none: all of them.
     std::optional<LevelRange> levels{};
+    // The region kept (data/region.h); none: the whole grid.
+    std::optional<Region> region{};
 
     bool operator==(const DataSelection&) const = default;
 };
@@ -74,6 +77,14 @@ struct EnsembleDescription {
         Axis fileZ;
     };
     std::optional<KeptLevels> keptLevels;
+    // Set when the selection keeps a region (DataSelection::region): `grid` is cut to the
+    // file's columns and rows in `window` (gridWindow), along `fileX` and `fileY`, the file's.
+    struct KeptRegion {
+        HorizontalWindow window;
+        Axis fileX;
+        Axis fileY;
+    };
+    std::optional<KeptRegion> keptRegion;
     [[nodiscard]] std::size_t bytes() const { return members * grid.pointCount() * sizeof(float); }
 };
 
@@ -84,6 +95,9 @@ struct EnsemblePart {
     std::size_t memberCount = 0;
     std::size_t firstLayer = 0;
     std::size_t layerCount = 0;
+    // The grid's columns and rows read (data/region.h); none: all of them. Set for the reader
+    // from the region a selection keeps (filePart); a part asked for leaves it empty.
+    std::optional<HorizontalWindow> window{};
 
     bool operator==(const EnsemblePart&) const = default;
 };
@@ -116,15 +130,22 @@ public:
 // or Error(UnsupportedFormat) listing the formats ensil reads.
 const EnsembleReader& readerFor(const DataSelection& selection);
 
-// What the headers say of the selection, its grid cut to the levels it keeps.
+// What the headers say of the selection, its grid cut to the levels and the region it keeps.
 EnsembleDescription describeEnsemble(const DataSelection& selection);
 // The description the selection's reader gave, cut to the levels the selection keeps (a
 // description of the file's every level when it keeps them all). Throws Error(InvalidArgument)
 // when the levels cannot be kept (layersWithin).
 EnsembleDescription keepLevels(EnsembleDescription description, const DataSelection& selection);
+// The description, cut to the region the selection keeps (unchanged when it keeps the whole
+// grid). Throws Error(InvalidArgument) when the grid is not a regular longitude-latitude grid,
+// RegionOutsideGrid when the region holds fewer than 2 of its columns or rows (regionWithin).
+EnsembleDescription keepRegion(EnsembleDescription description, const DataSelection& selection);
 // The reader's own description of what `description` keeps: its grid with all of the file's
-// levels again (what EnsembleReader::readPart expects).
+// levels, columns and rows again (what EnsembleReader::readPart expects).
 EnsembleDescription fileDescription(const EnsembleDescription& description);
+// `part` of what `description` keeps as a part of the file: its layers further up by the
+// levels left out below, and the window of the region kept.
+EnsemblePart filePart(const EnsembleDescription& description, const EnsemblePart& part);
 
 // Checks the memory the ensemble needs against what the machine has (Error(OutOfMemory) with
 // both figures), then reads it. Infinite values become NaN (missing), counted in
@@ -160,8 +181,8 @@ std::string memberWithoutDataWarning(const Ensemble& ensemble, const std::string
 std::string membersWithoutDataKey(const std::vector<std::string>& names);
 
 // What identifies the data a selection reads, for cache keys: every file's absolute path,
-// size and modification time, and the variable, member dimension and time index. A file
-// that changes changes the identity.
+// size and modification time, and the variable, member dimension, time index, levels and
+// region. A file that changes changes the identity.
 std::string sourceIdentity(const DataSelection& selection);
 
 // Throws Error(OutOfMemory) when `bytes` will not fit in the memory available now.

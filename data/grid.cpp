@@ -1,9 +1,11 @@
 #include "data/grid.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
+#include <string_view>
 
 #include "data/ascii_case.h"
 #include "data/error.h"
@@ -63,6 +65,33 @@ double metresPer(const std::string& units) {
     if (u == "m" || u == "meters" || u == "metres" || u == "meter" || u == "metre") return 1.0;
     if (u == "km" || u == "kilometers" || u == "kilometres") return 1000.0;
     return 0.0;
+}
+
+namespace {
+template <std::size_t N>
+bool oneOf(const std::string& value, const std::array<std::string_view, N>& options) {
+    return std::find(options.begin(), options.end(), value) != options.end();
+}
+}  // namespace
+
+bool isLongitudeAxis(const Axis& axis) {
+    const std::string units = asciiLower(axis.units);
+    const std::string name = asciiLower(axis.name);
+    return axis.standardName == "longitude" ||
+           oneOf(units, std::array<std::string_view, 6>{"degrees_east", "degree_east", "degree_e",
+                                                        "degrees_e", "degreee", "degreese"}) ||
+           (units.starts_with("degree") &&
+            oneOf(name, std::array<std::string_view, 3>{"lon", "longitude", "long"}));
+}
+
+bool isLatitudeAxis(const Axis& axis) {
+    const std::string units = asciiLower(axis.units);
+    const std::string name = asciiLower(axis.name);
+    return axis.standardName == "latitude" ||
+           oneOf(units, std::array<std::string_view, 6>{"degrees_north", "degree_north", "degree_n",
+                                                        "degrees_n", "degreen", "degreesn"}) ||
+           (units.starts_with("degree") &&
+            oneOf(name, std::array<std::string_view, 2>{"lat", "latitude"}));
 }
 
 Axis makeUniformAxis(std::string name, std::string units, double first, double last,

@@ -43,6 +43,12 @@ bool isPressureUnit(const std::string& units);
 double hectopascalsPer(const std::string& units);
 double metresPer(const std::string& units);
 
+// CF: a longitude axis has standard_name longitude or units degrees_east (and spellings); plain
+// "degrees" counts when the axis is named like one (lon, longitude, long). A rotated pole's
+// grid_longitude is not one. Latitude likewise (degrees_north; lat, latitude).
+bool isLongitudeAxis(const Axis& axis);
+bool isLatitudeAxis(const Axis& axis);
+
 class Grid {
 public:
     Grid() = default;

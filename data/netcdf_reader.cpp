@@ -65,10 +65,10 @@ void unpackInto(const T* raw, std::size_t n, const Unpacking& u, float* out) {
 }
 
 // Reads one member of one component into `out` (sizes[0] * sizes[1] * sizes[2] values, x fastest),
-// from the layer zStart along z on.
+// from the point `first` (along x, y, z) on.
 void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent& c,
                    std::size_t member, FieldValues& out, std::vector<double>& scratch,
-                   std::size_t zStart = 0) {
+                   const std::array<std::size_t, 3>& first) {
     const NcVariable& var = *c.variable;
     const std::size_t rank = var.dimIds.size();
     std::vector<std::size_t> start(rank, 0), count(rank, 1);
@@ -83,7 +83,7 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
         if (slot != c.spatialDims.end()) {
             const auto s = static_cast<std::size_t>(slot - c.spatialDims.begin());
             count[d] = c.sizes[s];
-            start[d] = s == 2 ? zStart : 0;
+            start[d] = first.at(s);
             imap[d] = strides[s];
             order.push_back(static_cast<int>(s));
         } else {
@@ -128,10 +128,10 @@ void readComponent(const NetcdfFile& file, const NcPlan& plan, const NcComponent
     unpackInto(scratch.data(), n, u, out.data());
 }
 
-// Averages neighbours along every axis where the component has one more point than the grid.
-void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
+// Averages neighbours along every axis where the component has one more point than `target`.
+void destagger(const NcComponent& c, const std::array<std::size_t, 3>& target,
+               FieldValues& values) {
     std::array<std::size_t, 3> size = c.sizes;
-    const std::array<std::size_t, 3> target{grid.nx(), grid.ny(), grid.nz()};
     for (std::size_t axis = 0; axis < 3; ++axis) {
         if (size[axis] == target[axis]) continue;
         std::array<std::size_t, 3> next = size;
@@ -152,32 +152,69 @@ void destagger(const NcComponent& c, const Grid& grid, FieldValues& values) {
     }
 }
 
-// The component as read over the layers [firstLayer, firstLayer + layers) of the grid: as many
-// layers, one more where it is staggered along z.
-NcComponent componentLayers(const NcPlan& plan, const NcComponent& c, std::size_t layers) {
+// A box of the plan's grid: the points [first[s], first[s] + count[s]) along x, y and z.
+struct Block {
+    std::array<std::size_t, 3> first{};
+    std::array<std::size_t, 3> count{};
+};
+
+// The component as read over `block`: as many points along each axis, one more where it is
+// staggered.
+NcComponent componentBlock(const NcPlan& plan, const NcComponent& c, const Block& block) {
     NcComponent part = c;
-    part.sizes[2] = layers + (c.sizes[2] - plan.grid.nz());
+    const std::array<std::size_t, 3> grid{plan.grid.nx(), plan.grid.ny(), plan.grid.nz()};
+    for (std::size_t s = 0; s < 3; ++s)
+        part.sizes.at(s) = block.count.at(s) + (c.sizes.at(s) - grid.at(s));
     return part;
 }
 
-// One member over the grid's layers [firstLayer, firstLayer + grid.nz()), `grid` being the plan's
-// grid cut to them (the whole grid for the whole member).
-void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, FieldValues& out,
-                const Grid& grid, std::size_t firstLayer) {
+// One member over `block` into `out` (its points, x fastest): one hyperslab per component.
+void readBlock(const NetcdfFile& file, const NcPlan& plan, std::size_t member, const Block& block,
+               FieldValues& out) {
     FieldValues part;
     std::vector<double> scratch;
-    const NcComponent first = componentLayers(plan, plan.components.front(), grid.nz());
-    readComponent(file, plan, first, member, out, scratch, firstLayer);
-    destagger(first, grid, out);
+    const NcComponent first = componentBlock(plan, plan.components.front(), block);
+    readComponent(file, plan, first, member, out, scratch, block.first);
+    destagger(first, block.count, out);
     if (plan.offset != 0.0) {
         const auto offset = static_cast<float>(plan.offset);
         for (float& v : out) v += offset;  // NaN stays NaN
     }
     if (plan.components.size() < 2) return;
-    const NcComponent second = componentLayers(plan, plan.components.at(1), grid.nz());
-    readComponent(file, plan, second, member, part, scratch, firstLayer);
-    destagger(second, grid, part);
+    const NcComponent second = componentBlock(plan, plan.components.at(1), block);
+    readComponent(file, plan, second, member, part, scratch, block.first);
+    destagger(second, block.count, part);
     toWindSpeed(out.data(), part.data(), out.size());
+}
+
+// One member over the grid's layers [firstLayer, firstLayer + grid.nz()), `grid` being the plan's
+// grid cut to them (the whole grid for the whole member), and to `window`'s columns and rows
+// where one is given (a region kept): a hyperslab per run of columns, two across the seam.
+void readMember(const NetcdfFile& file, const NcPlan& plan, std::size_t member, FieldValues& out,
+                const Grid& grid, std::size_t firstLayer, const HorizontalWindow* window) {
+    if (window == nullptr) {
+        readBlock(file, plan, member, {{0, 0, firstLayer}, {grid.nx(), grid.ny(), grid.nz()}}, out);
+        return;
+    }
+    const auto blockOf = [&](const ColumnRun& run) {
+        return Block{{run.first, window->firstRow, firstLayer},
+                     {run.count, window->rowCount, grid.nz()}};
+    };
+    if (window->columns.size() == 1) {
+        readBlock(file, plan, member, blockOf(window->columns.front()), out);
+        return;
+    }
+    out.resize(grid.pointCount());
+    FieldValues block;
+    std::size_t column = 0;  // where the run's first column goes
+    for (const ColumnRun& run : window->columns) {
+        readBlock(file, plan, member, blockOf(run), block);
+        for (std::size_t row = 0; row < window->rowCount * grid.nz(); ++row) {
+            std::copy_n(block.data() + run.count * row, run.count,
+                        out.data() + column + grid.nx() * row);
+        }
+        column += run.count;
+    }
 }
 
 std::size_t membersIn(const NetcdfFile& file, const NcPlan& plan) {
@@ -283,7 +320,7 @@ Ensemble NetcdfReader::read(const DataSelection& selection, const std::stop_toke
             throwIfStopped(stop);
             Member& member = e.members.at(next);
             member.name = description.memberNames.at(next);
-            readMember(file, plan, m, member.values, plan.grid, 0);
+            readMember(file, plan, m, member.values, plan.grid, 0, nullptr);
             report(progress, static_cast<double>(next + 1) / static_cast<double>(e.members.size()));
         }
     }
@@ -295,6 +332,7 @@ Ensemble NetcdfReader::readPart(const DataSelection& selection,
                                 const std::stop_token& stop, const Progress& progress) const {
     Ensemble e = ensembleDescribedBy(description, selection.paths);
     e.grid = gridLayers(description.grid, part.firstLayer, part.layerCount);
+    if (part.window) e.grid = gridWindow(e.grid, *part.window);
     e.members.resize(part.memberCount);
     const std::size_t end = part.firstMember + part.memberCount;
     std::size_t next = 0;  // the ensemble's index of the file's first member
@@ -308,7 +346,8 @@ Ensemble NetcdfReader::readPart(const DataSelection& selection,
             throwIfStopped(stop);
             Member& member = e.members.at(m - part.firstMember);
             member.name = description.memberNames.at(m);
-            readMember(file, plan, m - next, member.values, e.grid, part.firstLayer);
+            readMember(file, plan, m - next, member.values, e.grid, part.firstLayer,
+                       part.window ? &*part.window : nullptr);
             report(progress, static_cast<double>(m + 1 - part.firstMember) /
                                  static_cast<double>(part.memberCount));
         }

@@ -28,28 +28,6 @@ bool oneOf(const std::string& value, const std::array<std::string_view, N>& opti
     return std::find(options.begin(), options.end(), value) != options.end();
 }
 
-// CF: a longitude axis has standard_name longitude or units degrees_east (and spellings);
-// plain "degrees" counts when the axis is named like one.
-bool isLongitude(const data::Axis& axis) {
-    const std::string units = lower(axis.units);
-    const std::string name = lower(axis.name);
-    return axis.standardName == "longitude" ||
-           oneOf(units, std::array<std::string_view, 6>{"degrees_east", "degree_east", "degree_e",
-                                                        "degrees_e", "degreee", "degreese"}) ||
-           (units.starts_with("degree") &&
-            oneOf(name, std::array<std::string_view, 3>{"lon", "longitude", "long"}));
-}
-
-bool isLatitude(const data::Axis& axis) {
-    const std::string units = lower(axis.units);
-    const std::string name = lower(axis.name);
-    return axis.standardName == "latitude" ||
-           oneOf(units, std::array<std::string_view, 6>{"degrees_north", "degree_north", "degree_n",
-                                                        "degrees_n", "degreen", "degreesn"}) ||
-           (units.starts_with("degree") &&
-            oneOf(name, std::array<std::string_view, 2>{"lat", "latitude"}));
-}
-
 double metresPerUnit(const std::string& units) {
     const std::string u = lower(units);
     if (oneOf(u, std::array<std::string_view, 5>{"km", "kilometre", "kilometres", "kilometer",
@@ -93,7 +71,7 @@ MapProjection MapProjection::forGrid(const data::Grid& grid, const data::GridMap
     MapProjection result;
     result.m_xMiddle = 0.5 * (grid.x().minValue() + grid.x().maxValue());
     if (mapping.empty() || mapping.name == "latitude_longitude") {
-        if (isLongitude(grid.x()) && isLatitude(grid.y())) {
+        if (data::isLongitudeAxis(grid.x()) && data::isLatitudeAxis(grid.y())) {
             result.m_kind = Kind::LonLat;
         } else {
             result.m_reason = "the horizontal axes ('" + grid.x().name + "', '" + grid.y().name +

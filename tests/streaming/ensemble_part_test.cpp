@@ -58,7 +58,7 @@ TEST(EnsemblePart, SlabsOfOneFileWithMembersEqualTheWholeRead) {
     const data::DataSelection selection{.paths = {path}};
     const data::EnsembleDescription description = data::describeEnsemble(selection);
     const data::Ensemble whole = data::openEnsemble(selection);
-    for (const data::EnsemblePart at :
+    for (const data::EnsemblePart& at :
          {data::EnsemblePart{0, 5, 0, 7}, data::EnsemblePart{1, 3, 2, 3},
           data::EnsemblePart{4, 1, 5, 2}}) {
         SCOPED_TRACE(testing::Message() << "members " << at.firstMember << "+" << at.memberCount
@@ -83,8 +83,10 @@ TEST(EnsemblePart, SlabsAcrossFilesAndOfADerivedStaggeredVariable) {
         const int xs = file.dim("west_east_stag", 5);
         const int u = file.variable("U", NC_FLOAT, {t, z, y, xs});
         const int v = file.variable("V", NC_FLOAT, {t, z, ys, x});
-        file.write(u, 2 * 4 * 3 * 5, [&](std::size_t n) { return static_cast<double>(n % 7 + f); });
-        file.write(v, 2 * 4 * 4 * 4, [](std::size_t n) { return static_cast<double>(n % 5); });
+        file.write(u, std::size_t{2} * 4 * 3 * 5,
+                   [&](std::size_t n) { return static_cast<double>(n % 7 + f); });
+        file.write(v, std::size_t{2} * 4 * 4 * 4,
+                   [](std::size_t n) { return static_cast<double>(n % 5); });
     }
     const data::DataSelection selection{
         .paths = paths, .variable = "wind_speed", .memberDimension = "Time"};
@@ -102,7 +104,7 @@ TEST(EnsemblePart, PartsOutsideTheDataAreRefusedNamingTheVariableAndFile) {
                       path);
     const data::DataSelection selection{.paths = {path}};
     const data::EnsembleDescription description = data::describeEnsemble(selection);
-    for (const data::EnsemblePart at :
+    for (const data::EnsemblePart& at :
          {data::EnsemblePart{0, 4, 0, 4}, data::EnsemblePart{3, 1, 0, 4},
           data::EnsemblePart{0, 0, 0, 4}, data::EnsemblePart{0, 3, 3, 2},
           data::EnsemblePart{0, 3, 1, 1}, data::EnsemblePart{0, 3, 4, 2}}) {
