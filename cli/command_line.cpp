@@ -13,6 +13,7 @@
 #include "cli/render_command.h"
 #include "cli/section_command.h"
 #include "cli/stats_command.h"
+#include "cli/subcommand.h"
 #include "data/library_versions.h"
 #include "engine/streaming_run.h"
 #include "session/version.h"
@@ -65,6 +66,9 @@ QString topLevelHelp() {
         "  --member-dim D    Dimension that holds the members, when ensil finds none.\n"
         "  --time-index I    Index along other dimensions such as time (default 0).\n"
         "  --levels A:B      Keep the vertical levels from A to B (e.g. 1000:100hPa).\n"
+        "  --bbox LON0,LON1,LAT0,LAT1\n"
+        "                    Keep the region within these longitudes and latitudes\n"
+        "                    (e.g. -10,40,35,72; LON0 > LON1 crosses the date line).\n"
         "  --memory-limit S  Memory the workbench may hold for the data (default: three\n"
         "                    quarters of what is available now). NetCDF data that would\n"
         "                    take more (1.5 times its values) are opened as a copy at every\n"
@@ -118,6 +122,7 @@ CommandLineOutcome runCommandLine(const QStringList& args, QTextStream& out, QTe
                 err << rest.front() << ": there is not enough memory for this\n";
             } catch (const std::exception& e) {
                 err << rest.front() << ": " << e.what() << "\n";
+                return {dataFailureStatus(e), std::nullopt};
             } catch (...) {
                 err << rest.front() << ": an unexpected error stopped it\n";
             }

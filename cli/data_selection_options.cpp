@@ -2,6 +2,7 @@
 
 #include "data/error.h"
 #include "data/level_range.h"
+#include "data/region.h"
 
 namespace ensil::cli {
 
@@ -24,10 +25,17 @@ DataSelectionOptions::DataSelectionOptions()
                               "any units UDUNITS-2 converts to the vertical axis's (e.g. "
                               "1000:100hPa, 0:12km), or in the axis's own without units "
                               "(default: every level)."),
-               QStringLiteral("FROM:TO")) {}
+               QStringLiteral("FROM:TO")),
+      m_region(QStringList{QStringLiteral("bbox")},
+               QStringLiteral("Keep only the grid columns and rows within LON0..LON1 east and "
+                              "LAT0..LAT1 north, edges included, in degrees (e.g. -10,40,35,72 "
+                              "for Europe; LON0 > LON1 crosses the date line or the 0/360 seam: "
+                              "350,20,35,70). Needs a regular longitude-latitude grid (default: "
+                              "the whole grid)."),
+               QStringLiteral("LON0,LON1,LAT0,LAT1")) {}
 
 void DataSelectionOptions::addTo(QCommandLineParser& parser) const {
-    parser.addOptions({m_variable, m_memberDim, m_timeIndex, m_levels});
+    parser.addOptions({m_variable, m_memberDim, m_timeIndex, m_levels, m_region});
     parser.addPositionalArgument(
         QStringLiteral("PATH"),
         QStringLiteral(
@@ -55,6 +63,14 @@ std::optional<data::DataSelection> DataSelectionOptions::selection(const QComman
             s.levels = data::parseLevelRange(parser.value(m_levels).toStdString());
         } catch (const data::Error& e) {
             error = QStringLiteral("--levels: %1").arg(QString::fromUtf8(e.what()));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(m_region)) {
+        try {
+            s.region = data::parseRegion(parser.value(m_region).toStdString());
+        } catch (const data::Error& e) {
+            error = QStringLiteral("--bbox: %1").arg(QString::fromUtf8(e.what()));
             return std::nullopt;
         }
     }

@@ -1,5 +1,6 @@
 // The data-selection options every command that reads files shares (info, preprocess, render,
-// and the workbench itself): PATH..., --var, --member-dim, --time-index, --levels. Main thread.
+// and the workbench itself): PATH..., --var, --member-dim, --time-index, --levels, --bbox. Main
+// thread.
 #pragma once
 
 #include <QCommandLineOption>
@@ -25,6 +26,7 @@ private:
     QCommandLineOption m_memberDim;
     QCommandLineOption m_timeIndex;
     QCommandLineOption m_levels;
+    QCommandLineOption m_region;  // --bbox
 };
 
 }  // namespace ensil::cli

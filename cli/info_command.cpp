@@ -7,6 +7,7 @@
 #include "cli/data_selection_options.h"
 #include "cli/subcommand.h"
 #include "data/error.h"
+#include "data/region.h"
 #include "engine/ensemble_facts.h"
 #include "engine/ensemble_info.h"
 #include "preprocessing/field_statistics.h"
@@ -82,6 +83,12 @@ void printText(QTextStream& out, const data::DataSelection& sel, const data::Ens
             << d.keptLevels->first + d.grid.nz() << " of the file's " << d.keptLevels->fileZ.size()
             << " kept (--levels)\n";
     }
+    if (d.keptRegion) {  // --bbox
+        const data::Grid& file = data::fileDescription(d).grid;
+        out << "            region " << qs(data::regionText(d.keptRegion->region)) << ": "
+            << d.grid.nx() << " x " << d.grid.ny() << " of the file's " << file.nx() << " x "
+            << file.ny() << " columns and rows kept (--bbox)\n";
+    }
     if (!d.gridMapping.empty()) out << "Mapping:    " << qs(d.gridMapping.name) << "\n";
     const engine::Geography geography = engine::geographyOf(d);
     if (geography.bounds) {
@@ -147,7 +154,7 @@ int runInfoCommand(const QStringList& args, QTextStream& out, QTextStream& err) 
         return 0;
     } catch (const data::Error& e) {
         err << "ensil info: " << e.what() << "\n";
-        return 1;
+        return dataFailureStatus(e);
     } catch (const std::bad_alloc&) {
         err << "ensil info: not enough memory to read the ensemble\n";
         return 1;

@@ -594,7 +594,7 @@ int runPreprocessCommand(const QStringList& args, QTextStream& out, QTextStream&
     } catch (const data::Error& e) {
         progress.endLine();
         err << "ensil preprocess: " << e.what() << "\n";
-        return 1;
+        return dataFailureStatus(e);
     } catch (const std::bad_alloc&) {
         progress.endLine();
         err << "ensil preprocess: not enough memory\n";

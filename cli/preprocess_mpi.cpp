@@ -2,6 +2,7 @@
 
 #include <exception>
 
+#include "cli/subcommand.h"
 #include "data/error.h"
 #include "engine/streaming_run.h"
 #include "mpi/distributed_preprocess.h"
@@ -66,7 +67,7 @@ int runDistributedPreprocess(const data::DataSelection& selection,
         return e.exitCode();
     } catch (const data::Error& e) {
         say(QString::fromUtf8(e.what()));
-        return 1;
+        return dataFailureStatus(e);
     }
 }
 

@@ -316,7 +316,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
                                            "'" + selection->paths.front() + "'", why);
         } catch (const std::exception& e) {
             err << "ensil render: " << e.what() << "\n";
-            return 1;
+            return dataFailureStatus(e);
         }
         if (!range) {
             problem = QString::fromStdString(why);
@@ -397,7 +397,7 @@ int runRenderCommand(const QStringList& args, QTextStream& out, QTextStream& err
     } catch (const std::exception& e) {
         progress.endLine();
         err << "ensil render: " << e.what() << "\n";
-        return 1;
+        return dataFailureStatus(e);
     }
 }
 

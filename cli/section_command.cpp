@@ -289,7 +289,7 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
     } catch (const data::Error& e) {
         progress.endLine();
         err << "ensil section: " << e.what() << "\n";
-        return 1;
+        return dataFailureStatus(e);
     }
 }
 

@@ -355,7 +355,7 @@ int runStatsCommand(const QStringList& args, QTextStream& out, QTextStream& err)
     } catch (const data::Error& e) {
         progress.endLine();
         err << "ensil stats: " << e.what() << "\n";
-        return 1;
+        return dataFailureStatus(e);
     } catch (const std::bad_alloc&) {
         progress.endLine();
         err << "ensil stats: not enough memory to read " << fileNames << "\n";

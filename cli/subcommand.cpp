@@ -1,5 +1,7 @@
 #include "cli/subcommand.h"
 
+#include "data/region.h"
+
 namespace ensil::cli {
 
 std::optional<int> parseSubcommand(QCommandLineParser& parser, const QStringList& args,
@@ -15,6 +17,10 @@ std::optional<int> parseSubcommand(QCommandLineParser& parser, const QStringList
         return 0;
     }
     return std::nullopt;
+}
+
+int dataFailureStatus(const std::exception& e) {
+    return dynamic_cast<const data::RegionOutsideGrid*>(&e) != nullptr ? 2 : 1;
 }
 
 }  // namespace ensil::cli

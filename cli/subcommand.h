@@ -4,6 +4,7 @@
 
 #include <QCommandLineParser>
 #include <QTextStream>
+#include <exception>
 #include <optional>
 
 namespace ensil::cli {
@@ -12,5 +13,9 @@ namespace ensil::cli {
 // when it should go on with the parsed options.
 std::optional<int> parseSubcommand(QCommandLineParser& parser, const QStringList& args,
                                    const QString& name, QTextStream& out, QTextStream& err);
+
+// The exit status for what reading or using the data threw: 2 where the data refused an argument
+// the command line gave (a --bbox with no grid point, data::RegionOutsideGrid), 1 otherwise.
+int dataFailureStatus(const std::exception& e);
 
 }  // namespace ensil::cli

@@ -129,8 +129,8 @@ EnsembleDescription keepRegion(EnsembleDescription description, const DataSelect
     const HorizontalWindow window =
         regionWithin(description.grid, description.gridMapping, *selection.region,
                      "'" + description.variable + "' in " + sourceOf(selection.paths));
-    description.keptRegion =
-        EnsembleDescription::KeptRegion{window, description.grid.x(), description.grid.y()};
+    description.keptRegion = EnsembleDescription::KeptRegion{
+        *selection.region, window, description.grid.x(), description.grid.y()};
     description.grid = gridWindow(description.grid, window);
     return description;
 }

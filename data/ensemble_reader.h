@@ -77,9 +77,10 @@ struct EnsembleDescription {
         Axis fileZ;
     };
     std::optional<KeptLevels> keptLevels;
-    // Set when the selection keeps a region (DataSelection::region): `grid` is cut to the
+    // Set when the selection keeps `region` (DataSelection::region): `grid` is cut to the
     // file's columns and rows in `window` (gridWindow), along `fileX` and `fileY`, the file's.
     struct KeptRegion {
+        Region region;
         HorizontalWindow window;
         Axis fileX;
         Axis fileY;

@@ -46,6 +46,25 @@ QJsonObject ensembleInfoJson(const data::EnsembleDescription& d, const prep::Fie
                         {QStringLiteral("count"), static_cast<qint64>(d.grid.nz())},
                         {QStringLiteral("of"), static_cast<qint64>(d.keptLevels->fileZ.size())}};
     }
+    // The region --bbox keeps: the box asked for, the columns and rows kept of the file's, and
+    // which (runs of columns from 0, in the order kept; the first row); absent for the whole grid.
+    if (d.keptRegion) {
+        const data::EnsembleDescription::KeptRegion& kept = *d.keptRegion;
+        QJsonArray runs;
+        for (const data::ColumnRun& run : kept.window.columns) {
+            runs.append(QJsonObject{{QStringLiteral("first"), static_cast<qint64>(run.first)},
+                                    {QStringLiteral("count"), static_cast<qint64>(run.count)}});
+        }
+        o[QStringLiteral("kept_region")] = QJsonObject{
+            {QStringLiteral("bbox"),
+             QJsonArray{kept.region.lon0, kept.region.lon1, kept.region.lat0, kept.region.lat1}},
+            {QStringLiteral("columns"), static_cast<qint64>(d.grid.nx())},
+            {QStringLiteral("rows"), static_cast<qint64>(d.grid.ny())},
+            {QStringLiteral("of"), QJsonArray{static_cast<qint64>(kept.fileX.size()),
+                                              static_cast<qint64>(kept.fileY.size())}},
+            {QStringLiteral("column_runs"), runs},
+            {QStringLiteral("first_row"), static_cast<qint64>(kept.window.firstRow)}};
+    }
     QJsonArray fixed;
     for (const auto& f : d.fixedDimensions) fixed.append(qs(f));
     o[QStringLiteral("fixed_dimensions")] = fixed;

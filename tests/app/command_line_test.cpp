@@ -261,3 +261,65 @@ TEST(InfoCommand, LevelsKeepTheVerticalLevelsBetweenTheirEndsInAnyPressureUnits)
     EXPECT_TRUE(one.err.contains("hold 1 level of the vertical axis 'level'"))
         << one.err.toStdString();
 }
+
+// --bbox keeps the columns and rows within a box, here across the 0/360 seam of ERA5's 0..357
+// grid (3 degrees: 351..357 written as -9..-3, then 0..39; 72 N down to 36 N), and info says
+// which (--json: kept_region). A malformed box, and one with no grid point, are usage errors (2)
+// on every command that reads, the latter naming the grid's extent; a grid that is not
+// longitude-latitude is a data error (1) naming the file.
+TEST(InfoCommand, BboxKeepsARegionAcrossTheSeamAndABoxWithoutPointsIsAUsageError) {
+    const QString file = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
+    const auto json = [](const CliRun& r) {
+        return QJsonDocument::fromJson(r.out.toUtf8()).object();
+    };
+    const CliRun europe = run({"info", file, "--var", "t", "--bbox", "-10,40,35,72", "--json"});
+    ASSERT_EQ(europe.code, 0) << europe.err.toStdString();
+    EXPECT_EQ(json(europe)["grid"].toArray(), (QJsonArray{17, 13, 2}));
+    const QJsonObject x = json(europe)["axes"].toArray()[0].toObject();
+    EXPECT_DOUBLE_EQ(x["first"].toDouble(), -9.0);
+    EXPECT_DOUBLE_EQ(x["last"].toDouble(), 39.0);
+    const QJsonObject y = json(europe)["axes"].toArray()[1].toObject();
+    EXPECT_DOUBLE_EQ(y["first"].toDouble(), 72.0);
+    EXPECT_DOUBLE_EQ(y["last"].toDouble(), 36.0);
+    EXPECT_EQ(json(europe)["kept_region"].toObject(),
+              (QJsonObject{{"bbox", QJsonArray{-10, 40, 35, 72}},
+                           {"columns", 17},
+                           {"rows", 13},
+                           {"of", QJsonArray{120, 61}},
+                           {"column_runs", QJsonArray{QJsonObject{{"first", 117}, {"count", 3}},
+                                                      QJsonObject{{"first", 0}, {"count", 14}}}},
+                           {"first_row", 6}}));
+    const CliRun whole = run({"info", file, "--var", "t", "--json"});
+    EXPECT_FALSE(json(whole).contains("kept_region"));
+    const CliRun text = run({"info", file, "--var", "t", "--bbox=350,40,72,35"});
+    EXPECT_TRUE(text.out.contains(
+        "region 350,40,72,35: 17 x 13 of the file's 120 x 61 columns and rows kept (--bbox)"))
+        << text.out.toStdString();
+
+    const CliRun malformed = run({"info", file, "--var", "t", "--bbox", "-10,40,35"});
+    EXPECT_EQ(malformed.code, 2);
+    EXPECT_TRUE(malformed.err.contains("--bbox: the region '-10,40,35' has 3 values"))
+        << malformed.err.toStdString();
+
+    const ensil::test::TempDir dir;
+    const QString extent = QStringLiteral(
+                               "the region 1,2,35,72 holds no grid point of 't' in %1, whose grid "
+                               "spans longitudes 0 to "
+                               "357 and latitudes 90 to -90 (120 x 61 points)")
+                               .arg(file);
+    for (const QStringList& command : {QStringList{"info"}, QStringList{"preprocess", "--no-cache"},
+                                       QStringList{"stats", "--iso", "260", "--out",
+                                                   QString::fromStdString(dir.file("s.nc"))}}) {
+        const CliRun nothing =
+            run(command + QStringList{file, "--var", "t", "--bbox", "1,2,35,72"});
+        EXPECT_EQ(nothing.code, 2) << command.front().toStdString();
+        EXPECT_TRUE(nothing.err.contains(extent)) << nothing.err.toStdString();
+    }
+
+    const QString rotatedFile = QStringLiteral(ENSIL_SHARED_DATA_DIR "/uk_hires.nc");
+    const CliRun rotated =
+        run({"info", rotatedFile, "--member-dim", "time", "--bbox", "-5,0,50,55"});
+    EXPECT_EQ(rotated.code, 1);
+    EXPECT_TRUE(rotated.err.contains("uk_hires.nc: it lies on a 'rotated_latitude_longitude' grid"))
+        << rotated.err.toStdString();
+}
