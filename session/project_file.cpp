@@ -14,6 +14,7 @@
 
 #include "data/error.h"
 #include "data/level_range.h"
+#include "data/region.h"
 #include "session/setting_table.h"
 #include "session/version.h"
 
@@ -269,6 +270,13 @@ void readData(const Fields& root, const QDir& projectDir, SessionState& p) {
             data.fail(QStringLiteral("levels"), e.what());
         }
     }
+    if (const QString region = data.text(QStringLiteral("region"), {}); !region.isEmpty()) {
+        try {
+            p.data.region = data::parseRegion(region.toStdString());
+        } catch (const data::Error& e) {
+            data.fail(QStringLiteral("region"), e.what());
+        }
+    }
 }
 
 QJsonObject dataJson(const SessionState& p, const QDir& projectDir) {
@@ -295,6 +303,9 @@ QJsonObject dataJson(const SessionState& p, const QDir& projectDir) {
     if (p.data.levels) {
         data[QStringLiteral("levels")] =
             QString::fromStdString(data::levelRangeText(*p.data.levels));
+    }
+    if (p.data.region) {
+        data[QStringLiteral("region")] = QString::fromStdString(data::regionText(*p.data.region));
     }
     return data;
 }

@@ -27,6 +27,7 @@ session::SessionState sample(const QString& dataFile) {
     p.data.memberDimension = "number";
     p.data.timeIndex = 2;
     p.data.levels = data::LevelRange{1000, 100, "hPa"};
+    p.data.region = data::Region{350, 20.5, 72, 35};
     p.isovalue = 261.5F;
     p.camera.azimuth = -40.0F;
     p.camera.elevation = 55.0F;
@@ -80,6 +81,7 @@ TEST(Project, EverythingSavedComesBack) {
     EXPECT_EQ(p.data.memberDimension, "number");
     EXPECT_EQ(p.data.timeIndex, 2u);
     EXPECT_EQ(p.data.levels, (data::LevelRange{1000, 100, "hPa"}));
+    EXPECT_EQ(p.data.region, (data::Region{350, 20.5, 72, 35}));
     ASSERT_TRUE(p.isovalue);
     EXPECT_FLOAT_EQ(*p.isovalue, 261.5F);
     EXPECT_FLOAT_EQ(p.camera.azimuth, -40.0F);
@@ -248,6 +250,11 @@ TEST(Project, MalformedFilesAreRefusedWithTheLineOrFieldAndTheReason) {
             "data": {"files": [{"path": "t.nc"}], "levels": "1000 to 100"}})")
                   .first.find("data.levels "),
               0U);
+    const auto region = error(R"({"format": "ensil project", "schema_version": 3,
+            "data": {"files": [{"path": "t.nc"}], "region": "-10,40,95,72"}})")
+                            .first;
+    EXPECT_EQ(region.find("data.region "), 0U) << region;
+    EXPECT_NE(region.find("LAT0 = 95, not a latitude"), std::string::npos) << region;
 }
 
 TEST(Project, AFailedWriteLeavesThePreviousFileIntact) {
