@@ -153,10 +153,11 @@ QJsonObject toJson(const engine::SectionView& view, const engine::PreprocessResu
 
 }  // namespace
 
-// --colour-map, --range-min, --range-max and --band, as the setting table names them.
+// --colour-map, --range-min, --range-max, --band and --vertical-axis, as the setting table
+// names them.
 const session::SettingOptions& sectionOptions() {
     static const session::SettingOptions options{"sections_colour_map", "sections_range_min",
-                                                 "sections_range_max", "band"};
+                                                 "sections_range_max", "band", "vertical_axis"};
     return options;
 }
 
@@ -257,6 +258,7 @@ int runSectionCommand(const QStringList& args, QTextStream& out, QTextStream& er
                                        progress.callback(QStringLiteral("clustering")));
         engine::SectionRequest section =
             engine::sectionRequestFor(clusters, *place, fill->first, fill->second);
+        section.place.verticalAxis = requested.render.verticalAxis;
         requested.sectionsColours.fixedRange = !rangeGiven.isEmpty();
         engine::applySectionColours(section, requested.sectionsColours);
         if (requested.render.showBand) {

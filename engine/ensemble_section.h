@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "data/display_frame.h"
 #include "data/ensemble.h"
 #include "preprocessing/marching_squares.h"
 #include "session/session_state.h"
@@ -38,6 +39,9 @@ struct SectionPlace {
     // without geography), joined by the great circle.
     glm::dvec2 from{0.0};
     glm::dvec2 to{0.0};
+    // How a pressure axis is drawn up a cross-section, and where a map's level lies in the 3D
+    // view's box: the session's choice (the setting "vertical_axis"), as the 3D view draws it.
+    data::VerticalAxis verticalAxis = data::VerticalAxis::LogPressure;
 };
 
 enum class SectionFill { None, Member, Mean, Spread, Probability, Anomaly };

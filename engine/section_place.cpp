@@ -314,7 +314,7 @@ std::vector<double> positionsAlong(const std::vector<glm::dvec2>& points, bool g
 void placeMap(const data::Ensemble& ensemble, const SectionPlace& place,
               const geo::MapProjection& projection, PlacedSection& out) {
     const data::Grid& grid = ensemble.grid;
-    const data::DisplayFrame frame(grid, 1.0F);
+    const data::DisplayFrame frame(grid, 1.0F, place.verticalAxis);
     const double zIndex = levelIndex(grid, place, out.placeText);
     out.lattice = prep::horizontalLattice(grid, zIndex);
     out.levelHeight =
@@ -436,7 +436,7 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
     out.lattice = prep::verticalLattice(grid, path, goesRoundTheGlobe(grid, projection));
     double total = 0.0;
     out.columnPositions = positionsAlong(lonLat, geographic, total);
-    const data::DisplayFrame frame(grid, 1.0F);
+    const data::DisplayFrame frame(grid, 1.0F, place.verticalAxis);
     // Across the seam of a global grid the x index runs past the last column: one more step.
     const auto xAt = [&grid](double i) {
         const double last = static_cast<double>(grid.nx() - 1);

@@ -245,9 +245,11 @@ SectionsPanel::SectionsPanel(session::SessionModel* model, workbench::MemberSele
         emit placesEdited();
     });
     connect(m_model, &session::SessionModel::changed, this, [this](session::SessionParts parts) {
-        // Rendering > Contour boxplot draws the boxplot on the sections too.
-        if (!parts.testFlag(session::SessionPart::Sections) &&
-            m_model->state().render.showBand == m_boxplotDrawn) {
+        // Rendering > Contour boxplot draws the boxplot on the sections too, and the vertical
+        // axis is drawn as the 3D view draws it.
+        const gl::RenderSettings& render = m_model->state().render;
+        if (!parts.testFlag(session::SessionPart::Sections) && render.showBand == m_boxplotDrawn &&
+            render.verticalAxis == m_verticalAxisDrawn) {
             return;
         }
         showPlaces();
@@ -311,6 +313,7 @@ void SectionsPanel::showPlaces() {
 
 void SectionsPanel::rebuild() {
     m_boxplotDrawn = m_model->state().render.showBand;
+    m_verticalAxisDrawn = m_model->state().render.verticalAxis;
     if (!m_ensemble) return;
     if (!m_shown) {
         m_dirty = true;
@@ -354,6 +357,7 @@ engine::SectionRequest SectionsPanel::request(bool map, QString* problem) const 
         return r;
     }
     r.place = *place;
+    r.place.verticalAxis = m_model->state().render.verticalAxis;
     r.isovalue = m_isovalue;
     r.fill = engineFill(m_model->state().sectionsFill);
     if (r.fill == engine::SectionFill::Member || r.fill == engine::SectionFill::Anomaly) {

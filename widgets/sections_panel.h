@@ -108,6 +108,7 @@ private:
     bool m_shown = false;
     bool m_dirty = false;         // data or places changed while the dock was hidden
     bool m_boxplotDrawn = false;  // Rendering > Contour boxplot when last built
+    data::VerticalAxis m_verticalAxisDrawn = data::VerticalAxis::LogPressure;  // likewise
     bool m_mapPending = false;
     bool m_crossPending = false;
     bool m_defaultsPending = false;

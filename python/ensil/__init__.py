@@ -190,7 +190,7 @@ def render(target, iso=None, size=(1600, 1000), mode=None, view=None, cache=True
 
 def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mean", iso=None,
                       clusters=None, linkage="average", cache=True, colour_map="automatic",
-                      range=None, band=False):
+                      range=None, band=False, vertical_axis="log-pressure"):
     """A map or a cross-section of the ensemble, as ``ensil section`` draws it: the members'
     values and their contours of the isovalue, each member in its cluster's colour (the
     clusters of ``preprocess(iso, clusters, linkage)``, from the mesh cache when it has them).
@@ -204,6 +204,8 @@ def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mea
     range       (lower, upper): a fixed colour bar; by default the section's own values
     band        the contour boxplot: its 50 % band shaded (.band), the median's contour thick
                 (.median_member), the outliers' dashed
+    vertical_axis  log-pressure, pressure or height: how a pressure axis goes up a
+                cross-section (the 3D view's setting of that name)
 
     Returns an ensil.Section: .values (members x rows x columns), .fill, .contours,
     .mean_contour, .save("figure.svg"). Raises ensil.ArgumentError for a malformed place and
@@ -211,7 +213,8 @@ def _ensemble_section(self, level=None, lat=None, lon=None, path=None, fill="mea
     """
     result = self.preprocess(iso=iso, clusters=clusters, linkage=linkage, cache=cache)
     return result.section(level=level, lat=lat, lon=lon, path=path, fill=fill,
-                          colour_map=colour_map, range=range, band=band)
+                          colour_map=colour_map, range=range, band=band,
+                          vertical_axis=vertical_axis)
 
 
 Ensemble.section = _ensemble_section

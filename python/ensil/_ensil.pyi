@@ -81,7 +81,8 @@ class PreprocessResult:
                 lon: Union[str, float, None] = None,
                 path: Union[str, tuple[tuple[float, float], tuple[float, float]], None] = None,
                 fill: str = "mean", colour_map: str = "automatic",
-                range: Optional[tuple[float, float]] = None, band: bool = False) -> Section: ...
+                range: Optional[tuple[float, float]] = None, band: bool = False,
+                vertical_axis: str = "log-pressure") -> Section: ...
 
 class Section:
     @property
@@ -155,7 +156,8 @@ class Ensemble:
                 path: Union[str, tuple[tuple[float, float], tuple[float, float]], None] = None,
                 fill: str = "mean", iso: Optional[float] = None, clusters: Optional[int] = None,
                 linkage: str = "average", cache: bool = True, colour_map: str = "automatic",
-                range: Optional[tuple[float, float]] = None, band: bool = False) -> Section: ...
+                range: Optional[tuple[float, float]] = None, band: bool = False,
+                vertical_axis: str = "log-pressure") -> Section: ...
     def stats(self, iso: float, members: Optional[Sequence[int]] = None,
               progress: ProgressCallback = None) -> dict[str, Any]: ...
     def __len__(self) -> int: ...

@@ -100,18 +100,24 @@ py::array_t<float> latticeArray(const engine::SectionView& view, const std::vect
     return out;
 }
 
+// The index of a choice setting's value given by name (colour_map=, vertical_axis=), or an
+// ArgumentError naming the argument and the choices.
+int choiceOf(const char* id, const std::string& argument, const std::string& value) {
+    const session::Setting& setting = session::setting(id);
+    const auto found = std::find(setting.choices.begin(), setting.choices.end(), value);
+    if (found == setting.choices.end()) {
+        throw ArgumentError(argument + " '" + value + "' is refused: it must be one of " +
+                            setting.allowed());
+    }
+    return static_cast<int>(std::distance(setting.choices.begin(), found));
+}
+
 // colour_map= and range=, checked as the setting table checks them.
 session::SectionsColours coloursOf(const std::string& colourMap,
                                    const std::optional<std::pair<double, double>>& range) {
     session::SectionsColours colours;
-    const session::Setting& maps = session::setting("sections_colour_map");
-    const auto found = std::find(maps.choices.begin(), maps.choices.end(), colourMap);
-    if (found == maps.choices.end()) {
-        throw ArgumentError("colour_map '" + colourMap + "' is refused: it must be one of " +
-                            maps.allowed());
-    }
-    colours.map =
-        static_cast<session::SectionsColourMap>(std::distance(maps.choices.begin(), found));
+    colours.map = static_cast<session::SectionsColourMap>(
+        choiceOf("sections_colour_map", "colour_map", colourMap));
     if (range) {
         for (const auto& [id, value] : {std::pair{"sections_range_min", range->first},
                                         std::pair{"sections_range_max", range->second}}) {
@@ -131,8 +137,11 @@ session::SectionsColours coloursOf(const std::string& colourMap,
 PySection section(const PyPreprocessResult& self, const py::object& level, const py::object& lat,
                   const py::object& lon, const py::object& path, const std::string& fill,
                   const std::string& colourMap,
-                  const std::optional<std::pair<double, double>>& range, bool band) {
-    const engine::SectionPlace place = placeOf(level, lat, lon, path);
+                  const std::optional<std::pair<double, double>>& range, bool band,
+                  const std::string& verticalAxis) {
+    engine::SectionPlace place = placeOf(level, lat, lon, path);
+    place.verticalAxis =
+        static_cast<data::VerticalAxis>(choiceOf("vertical_axis", "vertical_axis", verticalAxis));
     std::string problem;
     const auto chosen = engine::parseSectionFill(fill, problem);
     if (!chosen) throw ArgumentError("fill is refused: " + problem);
@@ -271,7 +280,7 @@ square, x right and y up, laid out as the 3D view lays out the data.)doc")
     result.def("section", &section, py::arg("level") = py::none(), py::arg("lat") = py::none(),
                py::arg("lon") = py::none(), py::arg("path") = py::none(), py::arg("fill") = "mean",
                py::arg("colour_map") = "automatic", py::arg("range") = py::none(),
-               py::arg("band") = false,
+               py::arg("band") = false, py::arg("vertical_axis") = "log-pressure",
                R"doc(
 A map or a cross-section at this result's isovalue, members in their clusters' colours:
 level= a map ("500hPa", "5km", "index:3", or a number in the vertical axis's units); lat= or
@@ -280,8 +289,10 @@ great circle between two points, ((lon, lat), (lon, lat)) or "LON,LAT:LON,LAT". 
 spread, probability, member:N, anomaly:N (N from 1) or none. colour_map= automatic (by the
 fill), viridis, greys, rdbu or ylgnbu; range=(lower, upper) fixes the colour bar (by default the
 section's own values); band=True draws the contour boxplot: its 50 % band shaded, the median's
-contour thick, the outliers' dashed. Raises ensil.ArgumentError for a malformed place, colour map or range and
-ensil.Error for a place outside the data.)doc");
+contour thick, the outliers' dashed. vertical_axis= log-pressure, pressure or height: how a
+pressure axis goes up a cross-section, as the 3D view's setting "vertical_axis". Raises
+ensil.ArgumentError for a malformed place, colour map, range or vertical axis and ensil.Error
+for a place outside the data.)doc");
 }
 
 }  // namespace ensil::python

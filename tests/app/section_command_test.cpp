@@ -120,6 +120,7 @@ TEST(SectionCommand, RefusesWhatItCannotDrawSayingWhy) {
           QStringList{"--level", "500hPa"},
           QStringList{"--level", "500hPa", "--colour-map", "jet", "--out", png},
           QStringList{"--level", "500hPa", "--range-min", "250", "--out", png},
+          QStringList{"--lat", "45", "--vertical-axis", "linear", "--out", png},
           QStringList{"--level", "500hPa", "--range-min", "260", "--range-max", "250", "--out",
                       png}}) {
         const test::EnsilRun r = run(bad);

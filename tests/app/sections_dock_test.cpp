@@ -16,6 +16,7 @@
 #include <QToolButton>
 
 #include "app/main_window.h"
+#include "data/display_frame.h"
 #include "engine/section_painter.h"
 #include "session/session_history.h"
 #include "tests/app/workbench_helpers.h"
@@ -141,6 +142,28 @@ TEST(SectionsDock, ShowsTheDemosJetsWhereTheContoursAreAndSelectsByClick) {
     EXPECT_GT(path.front().y, 0.8);
     EXPECT_GT(path.back().x, 0.8);
     EXPECT_LT(path.back().y, 0.2);
+    // The cross-section's pressure axis goes up as the 3D view's does: Rendering > Vertical
+    // axis, linear in pressure, puts each level where that display frame puts it.
+    auto* vertical = window.renderPanel()->findChild<QComboBox*>("vertical_axis");
+    ASSERT_NE(vertical, nullptr);
+    const std::vector<double> throughLogPressure = panel->crossCanvas()->view()->rowPositions;
+    vertical->setCurrentIndex(static_cast<int>(data::VerticalAxis::Pressure));
+    while (panel->isBuilding()) ASSERT_TRUE(settled(*panel));
+    {
+        const data::Grid& grid = window.overview()->ensemble->grid;
+        const data::DisplayFrame linear(grid, 1.0F, data::VerticalAxis::Pressure);
+        std::vector<double> expected;
+        for (const double p : grid.z().values) {
+            expected.push_back(linear.toDisplay({grid.x().front(), grid.y().front(), p}).z /
+                               linear.boxMax().z);
+        }
+        std::vector<double> rows = panel->crossCanvas()->view()->rowPositions;
+        std::sort(rows.begin(), rows.end());
+        std::sort(expected.begin(), expected.end());
+        ASSERT_EQ(rows.size(), expected.size());
+        for (std::size_t k = 0; k < rows.size(); ++k) EXPECT_NEAR(rows[k], expected[k], 1e-5);
+        EXPECT_NE(panel->crossCanvas()->view()->rowPositions, throughLogPressure);
+    }
     // A hidden dock leaves the 3D view as it was.
     window.findChild<QDockWidget*>(QStringLiteral("sectionsDock"))->hide();
     EXPECT_TRUE(window.view()->renderer().sectionGuides().empty());

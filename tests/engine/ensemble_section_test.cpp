@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -159,6 +160,38 @@ TEST(EnsembleSection, CrossSectionAlongALatitudeHasEveryLevelAndTheMembersStatis
     EXPECT_EQ(view.bottom.ticks.front().label, "0°");
     EXPECT_EQ(view.bottom.ticks.back().label, "40°E");
     ASSERT_FALSE(view.left.ticks.empty());
+}
+
+// A cross-section's pressure axis goes up as the 3D view's vertical axis does (the setting
+// "vertical_axis"): 500 hPa of a 1000-250 hPa section lies at ln 2 / ln 4 of its height through
+// log-pressure, at 500/750 linearly in pressure, and at the ICAO standard atmosphere's heights
+// (h = T0/L (1 - (p/p0)^(R L / g)): 110.9 m, 5574.4 m and 10362.7 m) otherwise; its tick too.
+TEST(EnsembleSection, APressureAxisGoesUpAsTheVerticalAxisSettingSays) {
+    const data::Ensemble e = circles(2);
+    const auto heightOf = [](double hPa) {
+        return 288.15 / 0.0065 * (1.0 - std::pow(hPa / 1013.25, 0.190263));
+    };
+    const std::pair<data::VerticalAxis, double> expected[] = {
+        {data::VerticalAxis::LogPressure, std::log(2.0) / std::log(4.0)},
+        {data::VerticalAxis::Pressure, 500.0 / 750.0},
+        {data::VerticalAxis::StandardHeight,
+         (heightOf(500) - heightOf(1000)) / (heightOf(250) - heightOf(1000))},
+    };
+    for (const auto& [axis, position] : expected) {
+        std::string problem;
+        engine::SectionRequest request;
+        request.place = *engine::parseLatitude("40N", problem);
+        request.place.verticalAxis = axis;
+        request.isovalue = 150.0F;
+        const engine::SectionView view = engine::buildSection(e, request);
+        ASSERT_EQ(view.rows, 4U);
+        EXPECT_NEAR(view.rowPositions[2], position, 1e-3) << static_cast<int>(axis);
+        const auto tick =
+            std::find_if(view.left.ticks.begin(), view.left.ticks.end(),
+                         [](const engine::SectionTick& t) { return t.label == "500"; });
+        ASSERT_NE(tick, view.left.ticks.end());
+        EXPECT_NEAR(tick->position, position, 1e-3) << static_cast<int>(axis);
+    }
 }
 
 TEST(EnsembleSection, PathFollowsTheGreatCircleAndMeasuresItInKilometres) {

@@ -91,6 +91,19 @@ def test_probability_and_the_figure_in_each_format(era5_path, tmp_path):
     assert "<text" in (tmp_path / "map.svg").read_text(encoding="utf-8")
 
 
+def test_a_pressure_axis_goes_up_as_the_vertical_axis_setting_says():
+    demo = ensil.demo(members=4)
+    plev = demo.to_xarray()["plev"].values  # hPa, from 1000 up to 100, even in log-pressure
+    bottom, top = plev.max(), plev.min()
+    linear = demo.section(lat=45, vertical_axis="pressure", cache=False)
+    np.testing.assert_allclose(linear.row_positions, (bottom - plev) / (bottom - top), atol=1e-6)
+    logarithmic = demo.section(lat=45, cache=False)  # the default, as the 3D view's
+    np.testing.assert_allclose(logarithmic.row_positions,
+                               np.log(bottom / plev) / np.log(bottom / top), atol=1e-6)
+    with pytest.raises(ensil.ArgumentError, match="vertical_axis 'linear' is refused"):
+        demo.section(lat=45, vertical_axis="linear", cache=False)
+
+
 def test_refusals_say_what_is_wrong(era5_path):
     era5 = ensil.open(era5_path, var="t")
     result = era5.preprocess(iso=260, cache=False)
