@@ -34,6 +34,7 @@ from ._ensil import (  # noqa: F401  (re-exported)
     demo,
 )
 from . import _ensil
+from . import _html
 from . import _xarray
 
 # help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
@@ -45,6 +46,8 @@ from_xarray = _xarray.from_xarray
 Ensemble.to_xarray = _xarray.ensemble_to_xarray
 Ensemble.stats_dataset = _xarray.ensemble_stats_dataset
 PreprocessResult.to_xarray = _xarray.result_to_xarray
+Ensemble._repr_html_ = _html.ensemble_html
+PreprocessResult._repr_html_ = _html.result_html
 # da.ensil / ds.ensil, where xarray is already imported (else from the first from_xarray call).
 if "xarray" in _sys.modules:
     _xarray.register_accessors()
