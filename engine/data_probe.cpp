@@ -53,6 +53,14 @@ void fill(DataProbe& probe, const data::EnsembleDescription& d) {
                             .arg(d.grid.nz())
                             .arg(d.keptLevels->fileZ.size());
     }
+    probe.region = describeAxis(d.grid.x()) + QStringLiteral("; ") + describeAxis(d.grid.y());
+    if (d.keptRegion) {
+        probe.region += QObject::tr(" (%1 x %2 of the file's %3 x %4 columns and rows)")
+                            .arg(d.grid.nx())
+                            .arg(d.grid.ny())
+                            .arg(d.keptRegion->fileX.size())
+                            .arg(d.keptRegion->fileY.size());
+    }
     for (const std::string& f : d.fixedDimensions) probe.fixedDimensions << qs(f);
     fillChoices(probe, d);
 }

@@ -37,6 +37,10 @@ struct DataProbe {
     // The vertical axis kept, as ensil info says it: "plev: 1000 .. 100 hPa, 7 points, uneven
     // spacing" (what a level range is typed against).
     QString levels;
+    // The horizontal axes kept, as ensil info says them, "lon: -9 .. 39 degrees_east, 17 points,
+    // uniform; lat: 72 .. 36 degrees_north, 13 points, uniform" (what a region is typed
+    // against), and how much of the file's they are when a region is kept.
+    QString region;
     QString size;   // "21 MiB of values", and how they open; empty: not said
     QString error;  // plain words; non-empty: the files cannot be read so
 };

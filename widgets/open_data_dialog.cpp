@@ -16,6 +16,7 @@
 
 #include "data/error.h"
 #include "data/level_range.h"
+#include "data/region.h"
 
 namespace ensil::ui {
 namespace {
@@ -36,6 +37,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
       m_memberDimension(new QComboBox(this)),
       m_timeIndex(new QSpinBox(this)),
       m_levels(new QLineEdit(this)),
+      m_region(new QLineEdit(this)),
       m_details(new QLabel(this)),
       m_error(new QLabel(this)),
       m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)) {
@@ -63,6 +65,14 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
         tr("Keep only the vertical levels between two values, ends included, in any units "
            "that convert to the vertical axis's (hPa, Pa, millibars, km, m), or in its own "
            "units without any: the troposphere of a box reaching 10 hPa, say."));
+    m_region->setObjectName(QStringLiteral("openDataRegion"));
+    m_region->setPlaceholderText(tr("the whole grid; or LON0,LON1,LAT0,LAT1, e.g. -10,40,35,72"));
+    m_region->setClearButtonEnabled(true);
+    m_region->setToolTip(
+        tr("Keep only the grid columns and rows within these longitudes and latitudes, in "
+           "degrees, edges included: -10,40,35,72 is Europe. LON0 greater than LON1 crosses the "
+           "date line or the 0/360 seam (350,20,35,70). Needs a regular longitude-latitude "
+           "grid; the file is read only there."));
     m_details->setObjectName(QStringLiteral("openDataDetails"));
     m_details->setWordWrap(true);
     m_details->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -76,6 +86,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     form->addRow(tr("Member dimension:"), m_memberDimension);
     form->addRow(tr("Time index:"), m_timeIndex);
     form->addRow(tr("&Levels:"), m_levels);
+    form->addRow(tr("&Region:"), m_region);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(new QLabel(filesText(m_paths), this));
     layout->addWidget(m_variables, 1);
@@ -94,6 +105,7 @@ OpenDataDialog::OpenDataDialog(QStringList paths, QWidget* parent)
     connect(m_memberDimension, &QComboBox::currentIndexChanged, this, [this] { requestProbe(); });
     connect(m_timeIndex, &QSpinBox::valueChanged, this, [this] { requestProbe(); });
     connect(m_levels, &QLineEdit::editingFinished, this, [this] { requestProbe(); });
+    connect(m_region, &QLineEdit::editingFinished, this, [this] { requestProbe(); });
     setProbing(false);
 }
 
@@ -110,6 +122,13 @@ data::DataSelection OpenDataDialog::selection() const {
             // levelsError() says why; the dialog cannot be accepted meanwhile.
         }
     }
+    if (const QString region = m_region->text().trimmed(); !region.isEmpty()) {
+        try {
+            s.region = data::parseRegion(region.toStdString());
+        } catch (const data::Error&) {
+            // regionError() says why; the dialog cannot be accepted meanwhile.
+        }
+    }
     return s;
 }
 
@@ -124,9 +143,23 @@ QString OpenDataDialog::levelsError() const {
     return {};
 }
 
+QString OpenDataDialog::regionError() const {
+    const QString region = m_region->text().trimmed();
+    if (region.isEmpty()) return {};
+    try {
+        (void)data::parseRegion(region.toStdString());
+    } catch (const data::Error& e) {
+        return QString::fromUtf8(e.what());
+    }
+    return {};
+}
+
 void OpenDataDialog::requestProbe() {
-    // A level range that does not parse is said at once; the headers are read for the rest.
-    if (const QString why = levelsError(); !why.isEmpty()) {
+    // A level range or region that does not parse is said at once; the headers are read for
+    // the rest.
+    QString why = levelsError();
+    if (why.isEmpty()) why = regionError();
+    if (!why.isEmpty()) {
         ++m_request;  // an answer on its way is for other choices
         m_error->setText(why);
         m_error->setVisible(true);
@@ -210,6 +243,7 @@ void OpenDataDialog::fillDetails(const engine::DataProbe& probe) {
                  .arg(probe.members)
                  .arg(probe.variable, probe.grid);
     if (!probe.levels.isEmpty()) lines << tr("Levels: %1").arg(probe.levels);
+    if (!probe.region.isEmpty()) lines << tr("Region: %1").arg(probe.region);
     for (const QString& fixed : probe.fixedDimensions) lines << tr("Fixed: %1").arg(fixed);
     if (!probe.size.isEmpty()) lines << tr("Size: %1").arg(probe.size);
     m_details->setText(lines.join(QLatin1Char('\n')));
@@ -224,7 +258,8 @@ void OpenDataDialog::setProbing(bool probing) {
 QString OpenDataDialog::errorText() const { return m_error->text(); }
 
 bool OpenDataDialog::canAccept() const {
-    return !m_probing && m_error->text().isEmpty() && m_usableVariable && levelsError().isEmpty();
+    return !m_probing && m_error->text().isEmpty() && m_usableVariable && levelsError().isEmpty() &&
+           regionError().isEmpty();
 }
 
 }  // namespace ensil::ui

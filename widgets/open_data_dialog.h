@@ -33,18 +33,21 @@ public:
     // Shows the answer to the latest request; answers to older requests are ignored.
     void showProbe(const engine::DataProbe& probe, int request);
 
-    // The choices, ready for MainWindow::openFiles (a level range that does not parse is left
-    // out; levelsError says why).
+    // The choices, ready for MainWindow::openFiles (a level range or region that does not parse
+    // is left out; levelsError and regionError say why).
     [[nodiscard]] data::DataSelection selection() const;
     [[nodiscard]] bool isProbing() const { return m_probing; }
     [[nodiscard]] QString errorText() const;
     // Why the Levels text is not a level range; empty when it is one, or empty.
     [[nodiscard]] QString levelsError() const;
+    // Why the Region text is not a region (LON0,LON1,LAT0,LAT1); empty when it is one, or empty.
+    [[nodiscard]] QString regionError() const;
     [[nodiscard]] bool canAccept() const;
     [[nodiscard]] QTreeWidget* variableList() const { return m_variables; }
     [[nodiscard]] QComboBox* memberDimensionBox() const { return m_memberDimension; }
     [[nodiscard]] QSpinBox* timeIndexBox() const { return m_timeIndex; }
     [[nodiscard]] QLineEdit* levelsEdit() const { return m_levels; }
+    [[nodiscard]] QLineEdit* regionEdit() const { return m_region; }
 
 signals:
     // `request` numbers the requests, so that a late answer cannot overwrite a newer one.
@@ -62,6 +65,7 @@ private:
     QComboBox* m_memberDimension;
     QSpinBox* m_timeIndex;
     QLineEdit* m_levels;  // the level range kept (data/level_range.h); empty: every level
+    QLineEdit* m_region;  // the region kept (data/region.h); empty: the whole grid
     QLabel* m_details;
     QLabel* m_error;
     QDialogButtonBox* m_buttons;

@@ -226,3 +226,60 @@ TEST(OpenDataDialog, ALevelRangeIsProbedWithTheChoicesAndAMalformedOneIsSaidAtOn
     EXPECT_TRUE(okButton(dialog)->isEnabled());
     EXPECT_TRUE(dialog.findChild<QLabel*>("openDataDetails")->text().contains("Levels: level"));
 }
+
+// The Region field: a box that parses goes into the selection and is probed (the probe of the
+// real ERA5 file then says the columns and rows kept, across its 0/360 seam); one that does not
+// is said at once with the parser's message, without reading the headers, and OK waits until it
+// is mended; a box with no grid point is the probe's error, naming the grid's extent; an empty
+// field keeps the whole grid.
+TEST(OpenDataDialog, ARegionIsProbedWithTheChoicesAndAMalformedOneIsSaidAtOnce) {
+    const QString file = QStringLiteral(ENSIL_SHARED_DATA_DIR "/era5_eda_members.nc");
+    OpenDataDialog dialog({file});
+    answerFirstProbe(dialog, era5Probe());
+    ASSERT_TRUE(okButton(dialog)->isEnabled());
+
+    QSignalSpy requested(&dialog, &OpenDataDialog::probeRequested);
+    dialog.regionEdit()->setText(QStringLiteral("-10,40,95,72"));
+    dialog.requestProbe();
+    EXPECT_EQ(requested.count(), 0) << "nothing to read for a malformed region";
+    EXPECT_TRUE(dialog.errorText().contains(QStringLiteral("the region '-10,40,95,72' has LAT0")))
+        << dialog.errorText().toStdString();
+    EXPECT_FALSE(okButton(dialog)->isEnabled());
+    EXPECT_FALSE(dialog.selection().region.has_value());
+
+    dialog.regionEdit()->setText(QStringLiteral(" -10, 40, 35, 72 "));
+    dialog.requestProbe();
+    ASSERT_EQ(requested.count(), 1);
+    auto selection = requested.back().front().value<data::DataSelection>();
+    EXPECT_EQ(selection.region, (data::Region{-10, 40, 35, 72}));
+    selection.variable = "t";  // the engine's answer for the real file
+    const engine::DataProbe probe = engine::probeData(selection);
+    EXPECT_TRUE(probe.error.isEmpty()) << probe.error.toStdString();
+    EXPECT_EQ(probe.grid, QStringLiteral("17 x 13 x 2"));
+    EXPECT_TRUE(probe.region.contains(QStringLiteral("lon: -9 .. 39 degrees_east, 17 points")))
+        << probe.region.toStdString();
+    EXPECT_TRUE(probe.region.contains(QStringLiteral("17 x 13 of the file's 120 x 61 columns")))
+        << probe.region.toStdString();
+    dialog.showProbe(probe, requested.back().at(1).toInt());
+    EXPECT_TRUE(okButton(dialog)->isEnabled());
+    EXPECT_TRUE(dialog.findChild<QLabel*>("openDataDetails")
+                    ->text()
+                    .contains("Region: lon: -9 .. 39 degrees_east"));
+
+    dialog.regionEdit()->setText(QStringLiteral("1,2,35,72"));
+    dialog.requestProbe();
+    ASSERT_EQ(requested.count(), 2);
+    selection = requested.back().front().value<data::DataSelection>();
+    selection.variable = "t";
+    const engine::DataProbe none = engine::probeData(selection);
+    dialog.showProbe(none, requested.back().at(1).toInt());
+    EXPECT_TRUE(dialog.errorText().contains(
+        QStringLiteral("holds no grid point of 't' in %1, whose grid spans longitudes 0 to 357")
+            .arg(file)))
+        << dialog.errorText().toStdString();
+    EXPECT_FALSE(okButton(dialog)->isEnabled());
+
+    dialog.regionEdit()->clear();
+    EXPECT_FALSE(dialog.selection().region.has_value());
+    EXPECT_TRUE(dialog.regionError().isEmpty());
+}
