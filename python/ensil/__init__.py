@@ -65,7 +65,8 @@ def _paths(paths):
     return [_os.fsdecode(_os.fspath(p)) for p in paths]
 
 
-def open(paths, var=None, member_dim=None, time_index=0, levels=None, progress=None):  # noqa: A001
+def open(paths, var=None, member_dim=None, time_index=0, levels=None, bbox=None,  # noqa: A001
+         progress=None):
     """Reads an ensemble from NetCDF, HDF5, VTK (or GRIB) files, as ``ensil info`` and the
     workbench read it: one file with a member dimension, or one file per member.
 
@@ -77,13 +78,17 @@ def open(paths, var=None, member_dim=None, time_index=0, levels=None, progress=N
     levels      the vertical levels kept, 'FROM:TO' with ends included, in any units UDUNITS-2
                 converts to the vertical axis's ('1000:100hPa', '0:12km'), or in the axis's own
                 (default: every level)
+    bbox        the region kept, (lon0, lon1, lat0, lat1) in degrees, edges included, on a regular
+                longitude-latitude grid: (-10, 40, 35, 72) is Europe; lon0 > lon1 crosses the
+                date line or the 0/360 seam, the longitudes kept then run on eastwards from lon0
+                (-10..40 on a 0..360 grid) (default: the whole grid)
     progress    called with the fraction read; raising from it, or Ctrl+C, stops reading
 
     Raises ensil.Error with the command line's message (a missing file, an unknown variable,
     with ``.choices`` listing the usable ones).
     """
     return _ensil._open(_paths(paths), var or "", member_dim or "", int(time_index),
-                        levels or "", progress)
+                        levels or "", bbox, progress)
 
 
 def _is_data_array(values):

@@ -26,6 +26,7 @@ Axis = Union[npt.ArrayLike, tuple[npt.ArrayLike, str]]
 
 def open(paths: Union[PathLike, Sequence[PathLike]], var: Optional[str] = None,
          member_dim: Optional[str] = None, time_index: int = 0, levels: Optional[str] = None,
+         bbox: Union[tuple[float, float, float, float], Sequence[float], str, None] = None,
          progress: ProgressCallback = None) -> Ensemble: ...
 def from_numpy(values: Any, axes: Union[Mapping[str, Axis], Sequence[npt.ArrayLike], None] = None,
                units: Optional[str] = None, names: Optional[Sequence[str]] = None,

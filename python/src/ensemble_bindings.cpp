@@ -71,7 +71,7 @@ void warnAboutValues(const data::Ensemble& e) {
 
 PyEnsemble openFiles(const std::vector<std::string>& paths, const std::string& variable,
                      const std::string& memberDim, long long timeIndex, const std::string& levels,
-                     const py::object& progress) {
+                     const py::object& bbox, const py::object& progress) {
     if (paths.empty()) throw ArgumentError("name at least one file, e.g. ensil.open('data.nc')");
     if (timeIndex < 0) {
         throw ArgumentError("time_index must be a whole number from 0, not '" +
@@ -81,6 +81,7 @@ PyEnsemble openFiles(const std::vector<std::string>& paths, const std::string& v
     result.selection =
         data::DataSelection{paths, variable, memberDim, static_cast<std::size_t>(timeIndex)};
     result.selection->levels = levelsArgument(levels);
+    result.selection->region = bboxArgument(bbox);
     data::EnsembleDescription description;
     data::Ensemble ensemble;
     runInterruptible(
@@ -349,7 +350,7 @@ range and mean, missing values, the file's variables.)doc")
         });
 
     module.def("_open", &openFiles, py::arg("paths"), py::arg("var"), py::arg("member_dim"),
-               py::arg("time_index"), py::arg("levels"), py::arg("progress"));
+               py::arg("time_index"), py::arg("levels"), py::arg("bbox"), py::arg("progress"));
     module.def("_from_numpy", &fromArray, py::arg("values"), py::arg("axes"), py::arg("variable"),
                py::arg("units"), py::arg("names"), py::arg("member_dim"));
     // For the tests only: the date ensil names a time step with, against python3-cftime.

@@ -4,6 +4,7 @@
 #include <new>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "data/error.h"
 #include "data/job.h"
@@ -20,6 +21,31 @@ std::optional<data::LevelRange> levelsArgument(const std::string& text) {
         return data::parseLevelRange(text);
     } catch (const data::Error& e) {
         throw ArgumentError(std::string("levels: ") + e.what());
+    }
+}
+
+std::optional<data::Region> bboxArgument(const py::object& given) {
+    if (given.is_none()) return std::nullopt;
+    const std::string form =
+        "give it as (lon0, lon1, lat0, lat1) in degrees, e.g. (-10, 40, 35, 72)";
+    try {
+        if (py::isinstance<py::str>(given)) return data::parseRegion(given.cast<std::string>());
+        std::vector<double> values;
+        try {
+            values = given.cast<std::vector<double>>();
+        } catch (const py::cast_error&) {
+            throw ArgumentError("bbox: " + py::repr(given).cast<std::string>() +
+                                " is not four numbers; " + form);
+        }
+        if (values.size() != 4) {
+            throw ArgumentError("bbox: " + py::repr(given).cast<std::string>() + " has " +
+                                std::to_string(values.size()) + " numbers, not 4; " + form);
+        }
+        const data::Region region{values[0], values[1], values[2], values[3]};
+        data::checkRegion(region);
+        return region;
+    } catch (const data::Error& e) {
+        throw ArgumentError(std::string("bbox: ") + e.what());
     }
 }
 

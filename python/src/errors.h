@@ -19,6 +19,7 @@
 #include <string>
 
 #include "data/level_range.h"
+#include "data/region.h"
 
 namespace ensil::python {
 
@@ -31,6 +32,11 @@ public:
 // The level range a `levels=` argument gives ("1000:100hPa"; data/level_range.h), none for "";
 // a malformed one raises ensil.ArgumentError naming the argument.
 std::optional<data::LevelRange> levelsArgument(const std::string& text);
+
+// The region a `bbox=` argument gives (data/region.h): (lon0, lon1, lat0, lat1) in degrees, any
+// sequence of four numbers, or the command line's text "LON0,LON1,LAT0,LAT1"; none for None. A
+// malformed one raises ensil.ArgumentError naming the argument.
+std::optional<data::Region> bboxArgument(const pybind11::object& given);
 
 // Creates the exception types in `m` and translates ensil's C++ exceptions into them.
 void bindErrors(pybind11::module_& m);

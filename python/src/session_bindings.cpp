@@ -54,7 +54,8 @@ std::vector<std::string> pathList(const py::object& given) {
 }
 
 PySession newSession(const py::object& given, const std::string& variable,
-                     const std::string& memberDim, long long timeIndex, const std::string& levels) {
+                     const std::string& memberDim, long long timeIndex, const std::string& levels,
+                     const py::object& bbox) {
     PySession s;
     const std::vector<std::string> paths = pathList(given);
     if (timeIndex < 0) {
@@ -62,6 +63,7 @@ PySession newSession(const py::object& given, const std::string& variable,
                             std::to_string(timeIndex) + "'");
     }
     const std::optional<data::LevelRange> kept = levelsArgument(levels);
+    const std::optional<data::Region> region = bboxArgument(bbox);
     if (paths.empty()) {
         s.state->demo = true;
         return s;
@@ -69,6 +71,7 @@ PySession newSession(const py::object& given, const std::string& variable,
     s.state->data =
         data::DataSelection{paths, variable, memberDim, static_cast<std::size_t>(timeIndex)};
     s.state->data.levels = kept;
+    s.state->data.region = region;
     return s;
 }
 
@@ -133,9 +136,10 @@ Session.load() reads a project (validated whole, as the workbench and `ensil ren
 save() writes one atomically; ensil.render(session) draws it as the workbench shows it.)doc")
         .def(py::init(&newSession), py::arg("paths") = py::none(), py::arg("var") = "",
              py::arg("member_dim") = "", py::arg("time_index") = 0, py::arg("levels") = "",
-             R"doc(
+             py::arg("bbox") = py::none(), R"doc(
 A new session with the default settings over data files (the selection as ensil.open takes
-it, levels='1000:100hPa' included), or over the built-in demo when no paths are given.)doc")
+it, levels='1000:100hPa' and bbox=(-10, 40, 35, 72) included), or over the built-in demo when
+no paths are given.)doc")
         .def_static(
             "load",
             [](const std::string& path) {
