@@ -64,4 +64,5 @@ fi
 deb=$(stage "package" packaging/build-package.sh build/ci)
 stage "check the tarball" packaging/test-tarball.sh "$(dirname "$deb")"/ensil-*-Linux.tar.gz "$deb"
 stage "check the package" packaging/test-package.sh "$deb"
+stage "check the RPM" packaging/test-rpm.sh "$(dirname "$deb")"/ensil-*.rpm
 echo "==> all stages took $((SECONDS - run_start)) s" >&2

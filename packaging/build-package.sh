@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds ensil's Linux packages (.deb and .tar.gz) with CPack.
+# Builds ensil's Linux packages (.deb, .rpm and .tar.gz) with CPack.
 #   packaging/build-package.sh              configure and build the release preset, then package
 #   packaging/build-package.sh BUILD_DIR    package an existing build (e.g. build/ci), after
 #                                           bringing its `ensil` target up to date
@@ -33,9 +33,9 @@ else
 fi
 
 out_dir=$build_dir/packages
-rm -f "$out_dir"/ensil_*.deb "$out_dir"/ensil-*.tar.gz
+rm -f "$out_dir"/ensil_*.deb "$out_dir"/ensil-*.tar.gz "$out_dir"/ensil-*.rpm
 cpack --config "$build_dir/CPackConfig.cmake" -B "$out_dir"
 
 deb=$(ls "$out_dir"/ensil_*.deb)
-ls -l "$out_dir"/ensil_*.deb "$out_dir"/ensil-*.tar.gz
+ls -l "$out_dir"/ensil_*.deb "$out_dir"/ensil-*.tar.gz "$out_dir"/ensil-*.rpm
 echo "$deb" >&3

@@ -44,6 +44,8 @@ packages=(
     clang-tidy-14
     # the manual pages, made from ensil's --help at build time (packaging/make-command-help.sh)
     help2man
+    # rpmbuild, for the RPM CPack makes beside the .deb (packaging/rpm/cpack.cmake)
+    rpm
     # headless OpenGL (Mesa llvmpipe) under Xvfb, and EGL for batch rendering; xcb to check
     # that an X display answers before Qt is started on it
     xvfb xauth libgl1-mesa-dri libegl-mesa0 libegl-dev libgl-dev libxcb1-dev
