@@ -439,7 +439,7 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
     const data::DisplayFrame frame(grid, 1.0F, place.verticalAxis);
     // Across the seam of a global grid the x index runs past the last column: one more step.
     const auto xAt = [&grid](double i) {
-        const double last = static_cast<double>(grid.nx() - 1);
+        const auto last = static_cast<double>(grid.nx() - 1);
         if (i <= last) return grid.x().valueAt(i);
         return grid.x().values.back() +
                (i - last) * (grid.x().values.back() - grid.x().values[grid.nx() - 2]);
@@ -464,6 +464,7 @@ void placeCrossSection(const data::Ensemble& ensemble, const SectionPlace& place
     } else {
         const bool alongParallel = place.kind == SectionKind::Latitude;
         std::vector<double> values;
+        values.reserve(lonLat.size());
         for (const glm::dvec2& p : lonLat) values.push_back(alongParallel ? p.x : p.y);
         out.bottom.title = alongParallel ? "longitude" : "latitude";
         out.bottom.ticks = ticksAlong(values, out.columnPositions, true, [alongParallel](double v) {

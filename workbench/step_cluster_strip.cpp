@@ -93,11 +93,6 @@ void StepClusterStrip::stopFilling() {
     emit fillingChanged(0, 0);
 }
 
-void StepClusterStrip::fillLater() {
-    // After the events waiting: a step the user asked for goes first.
-    QTimer::singleShot(0, this, &StepClusterStrip::fill);
-}
-
 void StepClusterStrip::fill() {
     const int n = stepCount();
     const engine::EnsembleOverview* overview = m_workbench->overview();
@@ -143,7 +138,7 @@ void StepClusterStrip::fill() {
                 m_steps[static_cast<std::size_t>(step)] = identities;
                 emit stepClustered(step, identities);
             }
-            fillLater();
+            QTimer::singleShot(0, this, &StepClusterStrip::fill);  // after the events waiting
         },
         [this](const std::exception_ptr& error, bool cancelled) {
             if (error && !cancelled) {
@@ -152,7 +147,7 @@ void StepClusterStrip::fill() {
                 emit fillingChanged(0, 0);
                 return;
             }
-            fillLater();
+            QTimer::singleShot(0, this, &StepClusterStrip::fill);  // after the events waiting
         });
 }
 

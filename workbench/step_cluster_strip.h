@@ -57,7 +57,6 @@ signals:
 private:
     // The clusters, isovalue and linkage the steps were clustered at.
     [[nodiscard]] QString clusteringKey() const;
-    void fillLater();
 
     Workbench* m_workbench;
     QStringList m_labels;

@@ -106,7 +106,7 @@ TEST(SectionCommand, PdfAndPathsAcrossTheMap) {
 TEST(SectionCommand, RefusesWhatItCannotDrawSayingWhy) {
     test::TempDir dir;
     const QString png = QString::fromStdString(dir.file("x.png"));
-    const auto run = [&](QStringList extra) {
+    const auto run = [&](const QStringList& extra) {
         return test::runEnsil(QStringList{"section", test::kEra5, "--var", "t", "--no-cache"} +
                               extra);
     };

@@ -44,7 +44,8 @@ data::Ensemble circles(std::size_t members) {
                 for (std::size_t i = 0; i < e.grid.nx(); ++i) {
                     const double d =
                         std::hypot(e.grid.x().values[i] - c.x, e.grid.y().values[j] - c.y);
-                    values[e.grid.index(i, j, k)] = static_cast<float>(d + 100.0 * k);
+                    values[e.grid.index(i, j, k)] =
+                        static_cast<float>(d + 100.0 * static_cast<double>(k));
                 }
             }
         }
