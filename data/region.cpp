@@ -187,6 +187,12 @@ HorizontalWindow regionWithin(const Grid& grid, const GridMapping& mapping, cons
         }
         window.columns.push_back({c.index, 1, c.shift});
     }
+    // Past 360 the longitudes are written a turn lower (350,20 keeps -10 .. 20, as -10,20 does),
+    // so that the same box gives the same grid however it is typed and no axis reads 380.
+    const double eastmost = kept.empty() ? 0.0 : increasing ? kept.back().lon : kept.front().lon;
+    if (eastmost > 360.0 + kEdgeSlack) {
+        for (ColumnRun& run : window.columns) run.shift -= 360.0;
+    }
 
     const double south = std::min(region.lat0, region.lat1) - kEdgeSlack;
     const double north = std::max(region.lat0, region.lat1) + kEdgeSlack;

@@ -3,7 +3,8 @@
 // 0.25-degree ensemble is read as Europe without cutting it with another tool first. LON0 > LON1
 // is a box across the date line or the 0/360 seam ("350,20,35,70"): the longitudes kept then
 // run continuously eastwards from LON0 (a 0..360 grid asked for -10..40 gives 350..359.75 as
-// -10..-0.25, then 0..40), so maps, coastlines and sections stay right. Only a regular
+// -10..-0.25, then 0..40; never past 360: 350..20 is written -10..20), so maps, coastlines and
+// sections stay right. Only a regular
 // longitude-latitude grid (1D longitude and latitude axes, no other grid mapping) can be cut
 // so. Applied where every reader is called (data/ensemble_reader.cpp), as the levels kept are.
 #pragma once
@@ -61,7 +62,8 @@ struct HorizontalWindow {
 // The grid's columns and rows within `region`, edges included (within 1e-4 degrees, so that a
 // coordinate stored as float still counts). Longitudes are compared modulo 360; the columns
 // kept are ordered as the grid's longitudes run (eastwards for an increasing axis), each
-// written as its longitude plus the multiple of 360 that puts it at or east of LON0.
+// written as its longitude plus the multiple of 360 that puts it at or east of LON0, all a turn
+// lower where the easternmost would lie past 360.
 // Throws Error(InvalidArgument) naming `source` when the grid is not a regular
 // longitude-latitude grid (a grid mapping other than latitude_longitude, or axes that are not
 // longitude and latitude), and RegionOutsideGrid when fewer than 2 columns or rows lie within.

@@ -81,7 +81,7 @@ def open(paths, var=None, member_dim=None, time_index=0, levels=None, bbox=None,
     bbox        the region kept, (lon0, lon1, lat0, lat1) in degrees, edges included, on a regular
                 longitude-latitude grid: (-10, 40, 35, 72) is Europe; lon0 > lon1 crosses the
                 date line or the 0/360 seam, the longitudes kept then run on eastwards from lon0
-                (-10..40 on a 0..360 grid) (default: the whole grid)
+                (-10..40 on a 0..360 grid; never past 360) (default: the whole grid)
     progress    called with the fraction read; raising from it, or Ctrl+C, stops reading
 
     Raises ensil.Error with the command line's message (a missing file, an unknown variable,

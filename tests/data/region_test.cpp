@@ -157,7 +157,8 @@ TEST(Region, ParsesFourNumbersAndSaysWhatIsWrong) {
 }
 
 // On a 0..350 grid, -10..40 is the columns 350, 0, 10, ..., 40, written as -10..40; 350..20
-// the columns 350 to 20 written as 350..380; edges included; rows in the file's order.
+// the columns 350 to 20 written as -10..20 (never past 360); edges included; rows in the file's
+// order.
 TEST(Region, ColumnsWrapAcrossTheSeamInTheOrderTheLongitudesRun) {
     const data::Grid grid = indexedGlobe(true).grid;
     data::HorizontalWindow w = data::regionWithin(grid, {}, {-10, 40, 35, 72}, "globe");
@@ -169,9 +170,13 @@ TEST(Region, ColumnsWrapAcrossTheSeamInTheOrderTheLongitudesRun) {
     EXPECT_EQ(kept.y().values, (std::vector<double>{70, 60, 50, 40}));
     EXPECT_EQ(kept.z().values, grid.z().values);
 
+    // 350..20 is the same box: written a turn lower rather than as 350..380.
     w = data::regionWithin(grid, {}, {350, 20, 35, 72}, "globe");
-    EXPECT_EQ(w.columns, (std::vector<data::ColumnRun>{{35, 1, 0.0}, {0, 3, 360.0}}));
-    expectCoordinates(data::gridWindow(grid, w).x().values, {350, 360, 370, 380});
+    EXPECT_EQ(w.columns, (std::vector<data::ColumnRun>{{35, 1, -360.0}, {0, 3, 0.0}}));
+    expectCoordinates(data::gridWindow(grid, w).x().values, {-10, 0, 10, 20});
+    // So is 360..20: the file's 0 .. 20.
+    w = data::regionWithin(grid, {}, {360, 20, 35, 72}, "globe");
+    EXPECT_EQ(w.columns, (std::vector<data::ColumnRun>{{0, 3, 0.0}}));
 
     // A box within the grid's longitudes: one run, the file's own longitudes.
     w = data::regionWithin(grid, {}, {20, 50, -20, 20}, "globe");
