@@ -86,7 +86,7 @@ void labelAxis(int a, glm::vec3 corner, const OverlayInput& in, const Projector&
         glm::vec2 away = pixel - centrePx;
         away = glm::length(away) > 1e-3F ? glm::normalize(away) : glm::vec2(0.0F, 1.0F);
         labels.push_back(
-            {pixel + offset * away, away, std::move(text), title, title ? 0 : (a == 2 ? 1 : 2)});
+            {pixel + offset * away, away, std::move(text), title, a, title ? 0 : (a == 2 ? 1 : 2)});
     };
     const glm::dvec3 origin{in.grid->x().front(), in.grid->y().front(), in.grid->z().front()};
     const AxisLabelling labelling = labellingFor(axis);
@@ -299,7 +299,8 @@ ViewOverlay computeOverlay(const OverlayInput& in) {
             if (!visible) continue;
             glm::vec2 away = pixel - centrePx;
             away = glm::length(away) > 1e-3F ? glm::normalize(away) : glm::vec2(0.0F, 1.0F);
-            overlay.labels.push_back({pixel + 0.5F * kTickOffsetPx * away, away, text, false, 3});
+            overlay.labels.push_back(
+                {pixel + 0.5F * kTickOffsetPx * away, away, text, false, -1, 3});
         }
     }
 
@@ -512,13 +513,30 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
     std::stable_sort(order.begin(), order.end(), [](const OverlayLabel* a, const OverlayLabel* b) {
         return a->priority < b->priority;
     });
+    // The vertical axis's title beside an upright edge (a side view, most oblique ones) is
+    // written upwards beyond its tick values, as a plot's y axis: level by level, written
+    // across, it covered a tick value (and the tick was left out) or ran off the picture.
+    double widestVerticalTick = 0.0;
+    for (const OverlayLabel& label : overlay.labels) {
+        if (label.axis == 2 && !label.title) {
+            widestVerticalTick =
+                std::max(widestVerticalTick, QFontMetricsF(font).horizontalAdvance(label.text));
+        }
+    }
     for (const OverlayLabel* entry : order) {
         const OverlayLabel& label = *entry;
         painter.setFont(label.title ? titleFont : font);
-        const QSizeF size = QFontMetricsF(painter.font()).size(Qt::TextSingleLine, label.text);
+        const bool upright = label.title && label.axis == 2 &&
+                             std::abs(label.direction.x) > std::abs(label.direction.y);
+        QSizeF size = QFontMetricsF(painter.font()).size(Qt::TextSingleLine, label.text);
+        if (upright) size.transpose();
         // The anchor sits on the label's side facing the box: a label pushed right starts at
         // the anchor, one pushed left ends there, and likewise vertically.
-        const glm::vec2 p = label.pixel * scale;
+        glm::vec2 p = label.pixel * scale;
+        if (upright) {
+            p += label.direction * (static_cast<float>(widestVerticalTick + kLabelGap) +
+                                    (kTickOffsetPx - kTitleOffsetPx) * scale);
+        }
         const double x = p.x - 0.5 * size.width() * (1.0 - label.direction.x);
         const double y = p.y - 0.5 * size.height() * (1.0 - label.direction.y);
         // Kept inside the picture: a title beside a box edge near the border would be cut.
@@ -537,7 +555,17 @@ void paintOverlay(QPainter& painter, const ViewOverlay& overlay, double pixelRat
         placed.push_back(rect);
         record(rect, label.text);
         painter.setPen(overlay.text);
-        painter.drawText(rect, Qt::AlignCenter, label.text);
+        if (upright) {
+            painter.save();
+            painter.translate(rect.center());
+            painter.rotate(-90.0);
+            painter.drawText(
+                QRectF(-0.5 * rect.height(), -0.5 * rect.width(), rect.height(), rect.width()),
+                Qt::AlignCenter, label.text);
+            painter.restore();
+        } else {
+            painter.drawText(rect, Qt::AlignCenter, label.text);
+        }
     }
     if (!overlay.message.isEmpty()) {
         QFont large = font;

@@ -29,6 +29,7 @@ struct OverlayLabel {
     glm::vec2 direction{0.0F};  // unit screen direction the label is pushed away from the box
     QString text;
     bool title = false;  // an axis title rather than a tick value
+    int axis = -1;       // the axis (0 x, 1 y, 2 vertical) it labels; -1: none
     // Where labels collide the lower number is kept: titles 0, the vertical axis's ticks 1
     // (levels are few and each one matters), the horizontal axes' ticks 2, floor labels 3.
     int priority = 2;

@@ -212,6 +212,48 @@ TEST(ViewOverlay, PaintsTheLegendSwatchesAndTextIntoTheImage) {
     EXPECT_GT(light, 200);
 }
 
+// From the side, the vertical axis's title is written upwards beyond its tick values, as a
+// plot's y axis: written across, it covered the 300 hPa tick (which was then left out).
+TEST(ViewOverlay, TheVerticalTitleOfASideViewStandsBesideEveryLevelTick) {
+    Scene scene;
+    scene.grid = data::Grid(data::makeUniformAxis("lon", "degrees_east", -80, 40, 121),
+                            data::makeUniformAxis("lat", "degrees_north", 25, 75, 51),
+                            data::Axis{"plev",
+                                       "hPa",
+                                       "air_pressure",
+                                       {1000, 850, 700, 500, 400, 300, 250, 200, 150, 100},
+                                       false});
+    scene.frame = data::DisplayFrame(scene.grid, 1.0F);
+    gl::OverlayInput in = scene.input(1400, 800);
+    scene.camera.setAngles(-90.0F, 0.0F);  // from the south, as View > From the South
+    scene.camera.setProjection(gl::Camera::Projection::Orthographic);
+    in.appearance = nullptr;  // no legend in the corner
+    in.viewProjection = scene.camera.viewProjection(1400.0F / 800.0F);
+    in.eye = scene.camera.eye();
+    const gl::ViewOverlay o = gl::computeOverlay(in);
+    QImage image(1400, 800, QImage::Format_RGB32);
+    std::vector<gl::PaintedItem> painted;
+    {
+        QPainter painter(&image);
+        gl::paintOverlay(painter, o, 1.0, QSizeF(1400, 800), &painted);
+    }
+    const auto title = std::find_if(painted.begin(), painted.end(), [](const gl::PaintedItem& p) {
+        return p.text.startsWith(QStringLiteral("plev (hPa)"));
+    });
+    QStringList said;
+    for (const gl::PaintedItem& p : painted) said << p.text;
+    ASSERT_NE(title, painted.end()) << said.join(QStringLiteral(" | ")).toStdString();
+    EXPECT_GT(title->rect.height(), 2.0 * title->rect.width()) << "written upwards";
+    for (const char* level : {"1000", "700", "500", "300", "200", "100"}) {
+        const auto tick = std::find_if(painted.begin(), painted.end(),
+                                       [&](const gl::PaintedItem& p) { return p.text == level; });
+        ASSERT_NE(tick, painted.end())
+            << level << " hPa was left out: " << said.join(QStringLiteral(" | ")).toStdString();
+        EXPECT_FALSE(tick->rect.intersects(title->rect)) << level;
+        EXPECT_LT(title->rect.right(), tick->rect.left()) << "beyond the tick values";
+    }
+}
+
 // The legend keeps clear of the data: with the box over the top-left quarter it moves to the
 // top right; the title line sits above it, centred.
 TEST(ViewOverlay, TheLegendTakesACornerClearOfTheDataBoxBelowTheTitle) {
