@@ -38,6 +38,30 @@ TEST(RecentSelections, KeepTheChoicesNewestFirstAndWithoutDuplicates) {
     EXPECT_TRUE(recent[2].selection.variable.empty());
 }
 
+// File > Open Recent opens the same part of the files: the levels and the region kept too.
+TEST(RecentSelections, KeepTheLevelsAndTheRegion) {
+    test::TempDir dir;
+    QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
+    data::DataSelection part = selectionOf({"/data/gfs.nc"}, "t", "", 3);
+    part.levels = data::parseLevelRange("850:200hPa");
+    part.region = data::parseRegion("-10,40,35,72");
+    workbench::rememberSelection(settings, part);
+    workbench::rememberSelection(settings, selectionOf({"/data/whole.nc"}, "u"));
+    const auto recent = workbench::recentSelections(settings);
+    ASSERT_EQ(recent.size(), 2u);
+    EXPECT_EQ(recent[1].selection, part);
+    EXPECT_FALSE(recent[0].selection.levels.has_value());
+    EXPECT_FALSE(recent[0].selection.region.has_value());
+
+    // Edited by hand into nonsense: the whole file, not a failure.
+    QVariantMap choices = settings.value("recentChoices").toMap();
+    choices["/data/gfs.nc"] = QStringList{"t", "", "3", "ten to twenty", "-10,40,35,72"};
+    settings.setValue("recentChoices", choices);
+    const auto edited = workbench::recentSelections(settings);
+    EXPECT_EQ(edited[1].selection.variable, "t");
+    EXPECT_FALSE(edited[1].selection.levels.has_value());
+}
+
 TEST(RecentSelections, DropOldEntriesAndReadEntriesWithoutChoices) {
     test::TempDir dir;
     QSettings settings(QString::fromStdString(dir.file("recent.ini")), QSettings::IniFormat);
