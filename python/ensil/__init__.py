@@ -30,6 +30,7 @@ from ._ensil import (  # noqa: F401  (re-exported)
     Section,
     Session,
     Settings,
+    TimeStep,
     __version__,
     demo,
 )
@@ -38,7 +39,7 @@ from . import _html
 from . import _xarray
 
 # help() and reprs name them where users find them: ensil.Ensemble, not ensil._ensil.Ensemble.
-for _type in (Ensemble, Mesh, PreprocessResult, Section, Session, Settings, demo):
+for _type in (Ensemble, Mesh, PreprocessResult, Section, Session, Settings, TimeStep, demo):
     _type.__module__ = __name__
 
 # xarray in and out (python/ensil/_xarray.py); xarray itself is imported only when used.
@@ -55,7 +56,7 @@ if "xarray" in _sys.modules:
 # Not `open`: `from ensil import *` must not hide the built-in open; use ensil.open.
 __all__ = [
     "ArgumentError", "DataWarning", "Ensemble", "Error", "Image", "Mesh", "PreprocessResult",
-    "Section", "Session", "Settings", "demo", "from_numpy", "from_xarray", "render",
+    "Section", "Session", "Settings", "TimeStep", "demo", "from_numpy", "from_xarray", "render",
 ]
 
 

@@ -17,6 +17,7 @@ from ._ensil import (
     Session as Session,
     SettingValue,
     Settings as Settings,
+    TimeStep as TimeStep,
     __version__ as __version__,
     demo as demo,
 )

@@ -160,7 +160,18 @@ class Ensemble:
                 vertical_axis: str = "log-pressure") -> Section: ...
     def stats(self, iso: float, members: Optional[Sequence[int]] = None,
               progress: ProgressCallback = None) -> dict[str, Any]: ...
+    def time_series(self, times: str = "all", iso: Optional[float] = None,
+                    clusters: Optional[int] = None, linkage: str = "average", error: float = 0.25,
+                    decimate: bool = True, cache: bool = True, cache_dir: Optional[str] = None,
+                    progress: ProgressCallback = None) -> list[TimeStep]: ...
     def __len__(self) -> int: ...
+
+class TimeStep:
+    index: int
+    time: str
+    result: PreprocessResult
+    @property
+    def identities(self) -> npt.NDArray[np.int32]: ...
 
 SettingValue = bool | int | float | str
 

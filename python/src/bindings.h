@@ -13,5 +13,6 @@ void bindPreprocess(pybind11::module_& m);  // preprocess_bindings.cpp
 void bindSession(pybind11::module_& m);     // session_bindings.cpp
 void bindRender(pybind11::module_& m);      // render_bindings.cpp
 void bindSection(pybind11::module_& m);     // section_bindings.cpp
+void bindTimeSeries(pybind11::module_& m);  // time_series_bindings.cpp
 
 }  // namespace ensil::python

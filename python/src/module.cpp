@@ -22,4 +22,5 @@ PYBIND11_MODULE(_ensil, m) {
     ensil::python::bindSession(m);
     ensil::python::bindRender(m);
     ensil::python::bindSection(m);
+    ensil::python::bindTimeSeries(m);
 }

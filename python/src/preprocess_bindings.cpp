@@ -39,10 +39,13 @@ struct PyMesh {
     const data::PackedMesh* mesh;
 };
 
-PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double>& iso,
-                              const py::object& clusters, const py::object& linkage, double error,
-                              bool decimate, bool cache, const std::optional<std::string>& cacheDir,
-                              const py::object& progress) {
+}  // namespace
+
+engine::PreprocessRequest preprocessRequestOf(const PyEnsemble& self,
+                                              const std::optional<double>& iso,
+                                              const py::object& clusters, const py::object& linkage,
+                                              double error, bool decimate, bool cache,
+                                              const std::optional<std::string>& cacheDir) {
     engine::PreprocessRequest request;
     if (iso) request.isovalue = boundedNumber("--iso", *iso, -1e30, 1e30);
     request.clustersGiven = !clusters.is_none();
@@ -62,6 +65,17 @@ PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double
     }
     request.sourceKey = self.sourceKey();
     if (request.sourceKey.empty()) request.cacheDirectory.reset();  // arrays are not cached
+    return request;
+}
+
+namespace {
+
+PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double>& iso,
+                              const py::object& clusters, const py::object& linkage, double error,
+                              bool decimate, bool cache, const std::optional<std::string>& cacheDir,
+                              const py::object& progress) {
+    const engine::PreprocessRequest request =
+        preprocessRequestOf(self, iso, clusters, linkage, error, decimate, cache, cacheDir);
     std::vector<std::string> notices;
     std::mutex noticesMutex;
     auto result = std::make_shared<engine::PreprocessResult>();

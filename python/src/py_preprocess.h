@@ -2,16 +2,31 @@
 // the meshes and sections made from it) and the linkage it was clustered with. Any thread.
 #pragma once
 
+#include <pybind11/pybind11.h>
+
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "engine/preprocess_run.h"
 #include "preprocessing/clustering.h"
 
 namespace ensil::python {
 
+struct PyEnsemble;
+
 struct PyPreprocessResult {
     std::shared_ptr<const engine::PreprocessResult> result;
     prep::Linkage linkage;
 };
+
+// Ensemble.preprocess's arguments as the engine's request (the command line's ranges and
+// messages), shared by Ensemble.time_series. Raises ArgumentError for a value out of range.
+engine::PreprocessRequest preprocessRequestOf(const PyEnsemble& self,
+                                              const std::optional<double>& iso,
+                                              const pybind11::object& clusters,
+                                              const pybind11::object& linkage, double error,
+                                              bool decimate, bool cache,
+                                              const std::optional<std::string>& cacheDir);
 
 }  // namespace ensil::python
