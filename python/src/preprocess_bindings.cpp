@@ -41,6 +41,22 @@ struct PyMesh {
 
 }  // namespace
 
+void runPreprocessing(const std::function<void(const std::stop_token&, const data::Progress&,
+                                               const engine::PreprocessNotice&)>& step,
+                      const py::object& progress) {
+    std::vector<std::string> notices;
+    std::mutex noticesMutex;
+    runInterruptible(
+        [&](const std::stop_token& stop, const data::Progress& report) {
+            step(stop, report, [&](const std::string& kind, const std::string& text) {
+                const std::lock_guard lock(noticesMutex);
+                notices.push_back(kind + ": " + text);
+            });
+        },
+        progress);
+    for (const std::string& n : notices) warn(n);
+}
+
 engine::PreprocessRequest preprocessRequestOf(const PyEnsemble& self,
                                               const std::optional<double>& iso,
                                               const py::object& clusters, const py::object& linkage,
@@ -76,21 +92,13 @@ PyPreprocessResult preprocess(const PyEnsemble& self, const std::optional<double
                               const py::object& progress) {
     const engine::PreprocessRequest request =
         preprocessRequestOf(self, iso, clusters, linkage, error, decimate, cache, cacheDir);
-    std::vector<std::string> notices;
-    std::mutex noticesMutex;
     auto result = std::make_shared<engine::PreprocessResult>();
-    runInterruptible(
-        [&](const std::stop_token& stop, const data::Progress& report) {
-            *result = engine::preprocessEnsemble(
-                self.data, request,
-                [&](const std::string& kind, const std::string& text) {
-                    const std::lock_guard lock(noticesMutex);
-                    notices.push_back(kind + ": " + text);
-                },
-                stop, report);
+    runPreprocessing(
+        [&](const std::stop_token& stop, const data::Progress& report,
+            const engine::PreprocessNotice& notice) {
+            *result = engine::preprocessEnsemble(self.data, request, notice, stop, report);
         },
         progress);
-    for (const std::string& n : notices) warn(n);
     return {std::move(result), request.linkage};
 }
 

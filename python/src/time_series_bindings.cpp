@@ -2,14 +2,12 @@
 // (engine::preprocessTimeSeries): every step of the files read at its time index and
 // preprocessed at one isovalue, its clusters matched to the previous step's so that a colour
 // follows a group of members from step to step (METHODS.md section 8).
-#include <mutex>
 #include <string>
 #include <vector>
 
 #include "engine/time_series.h"
 #include "python/src/bindings.h"
 #include "python/src/errors.h"
-#include "python/src/interruptible.h"
 #include "python/src/numpy_arrays.h"
 #include "python/src/py_ensemble.h"
 #include "python/src/py_preprocess.h"
@@ -45,21 +43,13 @@ std::vector<PyTimeStep> timeSeries(const PyEnsemble& self, const std::string& ti
     request.steps = *steps;
     request.preprocess =
         preprocessRequestOf(self, iso, clusters, linkage, error, decimate, cache, cacheDir);
-    std::vector<std::string> notices;
-    std::mutex noticesMutex;
     std::vector<engine::TimeStepResult> done;
-    runInterruptible(
-        [&](const std::stop_token& stop, const data::Progress& report) {
-            done = engine::preprocessTimeSeries(
-                request,
-                [&](const std::string& kind, const std::string& text) {
-                    const std::lock_guard lock(noticesMutex);
-                    notices.push_back(kind + ": " + text);
-                },
-                stop, report);
+    runPreprocessing(
+        [&](const std::stop_token& stop, const data::Progress& report,
+            const engine::PreprocessNotice& notice) {
+            done = engine::preprocessTimeSeries(request, notice, stop, report);
         },
         progress);
-    for (const std::string& n : notices) warn(n);
     std::vector<PyTimeStep> out;
     out.reserve(done.size());
     for (engine::TimeStepResult& step : done) {
