@@ -233,7 +233,7 @@ suffix or a file that cannot be written.)doc")
         .def_property_readonly(
             "triangles",
             [](const py::object& self) {
-                const PyMesh& mesh = self.cast<const PyMesh&>();
+                const auto& mesh = self.cast<const PyMesh&>();
                 const auto n = static_cast<py::ssize_t>(mesh.mesh->indices.size() / 3);
                 const auto u = static_cast<py::ssize_t>(sizeof(std::uint32_t));
                 return readOnlyView(mesh.mesh->indices.data(), {n, py::ssize_t{3}}, {3 * u, u},
