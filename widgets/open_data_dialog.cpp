@@ -132,27 +132,25 @@ data::DataSelection OpenDataDialog::selection() const {
     return s;
 }
 
-QString OpenDataDialog::levelsError() const {
-    const QString levels = m_levels->text().trimmed();
-    if (levels.isEmpty()) return {};
+namespace {
+// What `parse` (data::parseLevelRange, data::parseRegion) says of a field's text; empty when the
+// text is empty (the whole file) or parses.
+template <typename Parse>
+QString parseError(const QLineEdit& field, Parse parse) {
+    const QString text = field.text().trimmed();
+    if (text.isEmpty()) return {};
     try {
-        (void)data::parseLevelRange(levels.toStdString());
+        (void)parse(text.toStdString());
     } catch (const data::Error& e) {
         return QString::fromUtf8(e.what());
     }
     return {};
 }
+}  // namespace
 
-QString OpenDataDialog::regionError() const {
-    const QString region = m_region->text().trimmed();
-    if (region.isEmpty()) return {};
-    try {
-        (void)data::parseRegion(region.toStdString());
-    } catch (const data::Error& e) {
-        return QString::fromUtf8(e.what());
-    }
-    return {};
-}
+QString OpenDataDialog::levelsError() const { return parseError(*m_levels, data::parseLevelRange); }
+
+QString OpenDataDialog::regionError() const { return parseError(*m_region, data::parseRegion); }
 
 void OpenDataDialog::requestProbe() {
     // A level range or region that does not parse is said at once; the headers are read for
