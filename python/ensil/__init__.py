@@ -96,7 +96,7 @@ def _is_data_array(values):
     return all(hasattr(values, a) for a in ("values", "dims", "coords"))
 
 
-def from_numpy(values, axes=None, units=None, names=None, variable=None):
+def from_numpy(values, axes=None, units=None, names=None, variable=None, grid_mapping=None):
     """An Ensemble from a (member, z, y, x) array (copied into ensil's memory as float32; NaN
     and infinities are missing values).
 
@@ -106,6 +106,10 @@ def from_numpy(values, axes=None, units=None, names=None, variable=None):
     units     the variable's units
     names     the members' names (default: member 1, member 2, ...)
     variable  the variable's name
+    grid_mapping  the horizontal axes' map projection, as a CF grid mapping variable's
+              attributes: {"grid_mapping_name": "rotated_latitude_longitude",
+              "grid_north_pole_latitude": 37.5, ...} (default: plain longitude/latitude axes,
+              or none)
 
     An xarray.DataArray with dims (member, z, y, x) is taken as it is: its coordinates (with
     their 'units' attributes), its name and 'units' attribute, and its member coordinate's
@@ -147,7 +151,8 @@ def from_numpy(values, axes=None, units=None, names=None, variable=None):
             raise ArgumentError("give three axes, (z, y, x), not %d" % len(axes))
     array = _np.ascontiguousarray(values, dtype=_np.float32)
     return _ensil._from_numpy(array, given, variable or "values", units or "",
-                              [str(n) for n in names] if names is not None else [], member_dim)
+                              [str(n) for n in names] if names is not None else [], member_dim,
+                              dict(grid_mapping or {}))
 
 
 class Image(_np.ndarray):

@@ -116,8 +116,24 @@ def from_xarray(data, var=None, member_dim=None, time_index=0):
                                 % (index, str(dim), array.sizes[dim]))
     if others:
         array = array.isel({dim: index for dim in others})
+    mapping = _grid_mapping(data, array)
     array = array.transpose(roles["member"], roles["z"], roles["y"], roles["x"])
-    return from_numpy(array, names=_member_names(array, roles["member"]))
+    return from_numpy(array, names=_member_names(array, roles["member"]), grid_mapping=mapping)
+
+
+def _grid_mapping(data, array):
+    """The attributes of the variable the array's CF ``grid_mapping`` names (in the Dataset given,
+    or among the array's coordinates when opened with decode_coords="all"); None when it names
+    none, so coastlines and true bounds come with projected and rotated grids as from the file."""
+    name = array.attrs.get("grid_mapping") or array.encoding.get("grid_mapping")
+    if not name:
+        return None
+    name = str(name).split(":")[0].strip()  # the CF form "crs: x y" names its axes after a colon
+    if hasattr(data, "data_vars") and name in data.variables:
+        return dict(data[name].attrs)
+    if name in array.coords:
+        return dict(array.coords[name].attrs)
+    return None
 
 
 def _member_names(array, dim):

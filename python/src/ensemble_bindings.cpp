@@ -5,6 +5,7 @@
 
 #include "data/cf_conventions.h"
 #include "data/error.h"
+#include "data/grid_mapping.h"
 #include "data/level_range.h"
 #include "engine/ensemble_info.h"
 #include "engine/session_renderer.h"
@@ -109,10 +110,38 @@ data::Axis axisFrom(const py::tuple& given) {
     return axis;
 }
 
+// A CF grid mapping given as its variable's attributes ({"grid_mapping_name": ..., numbers or
+// lists of numbers}), as the NetCDF reader takes it from a file: other attributes (text such as
+// crs_wkt) are left out, as the reader leaves them. An empty dict: none.
+data::GridMapping gridMappingFrom(const py::dict& attributes) {
+    data::GridMapping mapping;
+    if (attributes.empty()) return mapping;
+    if (!attributes.contains("grid_mapping_name")) {
+        throw ArgumentError("grid_mapping must name its grid_mapping_name, as CF's attributes do");
+    }
+    mapping.name = py::str(attributes["grid_mapping_name"]);
+    for (const auto& [key, value] : attributes) {
+        const std::string name = py::str(key);
+        if (name == "grid_mapping_name" || py::isinstance<py::str>(value)) continue;
+        std::vector<double> numbers;
+        try {
+            if (py::isinstance<py::iterable>(value)) {
+                for (const py::handle item : value) numbers.push_back(item.cast<double>());
+            } else {
+                numbers.push_back(value.cast<double>());
+            }
+        } catch (const py::cast_error&) {
+            continue;  // neither a number nor numbers: not a projection parameter
+        }
+        if (!numbers.empty()) mapping.parameters.emplace_back(name, std::move(numbers));
+    }
+    return mapping;
+}
+
 PyEnsemble fromArray(const py::array_t<float, py::array::c_style | py::array::forcecast>& values,
                      const std::vector<py::tuple>& axes, const std::string& variable,
                      const std::string& units, const std::vector<std::string>& names,
-                     const std::string& memberDim) {
+                     const std::string& memberDim, const py::dict& gridMapping) {
     if (values.ndim() != 4) {
         throw ArgumentError("values must be 4-D, (member, z, y, x); these have " +
                             std::to_string(values.ndim()) + " dimensions");
@@ -141,6 +170,7 @@ PyEnsemble fromArray(const py::array_t<float, py::array::c_style | py::array::fo
     e.units = units;
     e.memberDimension = memberDim;
     e.source = "NumPy array";
+    e.gridMapping = gridMappingFrom(gridMapping);
     const std::size_t points = e.grid.pointCount();
     const float* source = values.data();
     {
@@ -352,7 +382,8 @@ range and mean, missing values, the file's variables.)doc")
     module.def("_open", &openFiles, py::arg("paths"), py::arg("var"), py::arg("member_dim"),
                py::arg("time_index"), py::arg("levels"), py::arg("bbox"), py::arg("progress"));
     module.def("_from_numpy", &fromArray, py::arg("values"), py::arg("axes"), py::arg("variable"),
-               py::arg("units"), py::arg("names"), py::arg("member_dim"));
+               py::arg("units"), py::arg("names"), py::arg("member_dim"),
+               py::arg("grid_mapping") = py::dict());
     // For the tests only: the date ensil names a time step with, against python3-cftime.
     module.def(
         "_format_cf_time",

@@ -12,6 +12,7 @@ import scipy.spatial.distance
 import xarray as xr
 
 import ensil
+from conftest import SHARED_DATA
 
 
 @pytest.fixture
@@ -123,3 +124,24 @@ def test_the_statistics_dataset_is_what_ensil_stats_writes(era5_path, tmp_path):
             np.testing.assert_allclose(ours[name].values, written[name].values, rtol=1e-12)
         assert ours.attrs["members"] == written.attrs["members"]
         assert ours.attrs["isovalue"] == written.attrs["isovalue"]
+
+
+def test_a_grid_mapping_comes_through_as_from_the_file():
+    """A rotated-pole file through xarray has the file's map projection: the same grid mapping
+    and true longitude/latitude bounds as ensil.open gives (coastlines and bounds depend on
+    them), from the Dataset or from a DataArray whose mapping xarray kept as a coordinate."""
+    path = os.path.join(SHARED_DATA, "uk_hires.nc")
+    from_file = ensil.open(path, member_dim="time").info()
+    assert from_file["grid_mapping"] == "rotated_latitude_longitude"
+    with xr.open_dataset(path) as ds:
+        through = ensil.from_xarray(ds, member_dim="time").info()
+    assert through["grid_mapping"] == from_file["grid_mapping"]
+    np.testing.assert_allclose(through["lon_lat_bounds"], from_file["lon_lat_bounds"], atol=1e-9)
+    with xr.open_dataset(path, decode_coords="all") as ds:
+        array = ds["air_potential_temperature"]
+        assert ensil.from_xarray(array, member_dim="time").info()["grid_mapping"] == \
+            from_file["grid_mapping"]
+    with pytest.raises(ensil.ArgumentError, match="grid_mapping_name"):
+        ensil.from_numpy(np.zeros((2, 2, 2, 2), np.float32),
+                         axes=[[0.0, 1.0], [0.0, 1.0], [0.0, 1.0]],
+                         grid_mapping={"grid_north_pole_latitude": 37.5})
