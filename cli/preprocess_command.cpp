@@ -91,12 +91,6 @@ struct Options {
     QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
-// Clusters and linkage, with their ranges from the one setting table.
-const session::SettingOptions& clusterOptions() {
-    static const session::SettingOptions options{"clusters", "linkage"};
-    return options;
-}
-
 double seconds(const QElapsedTimer& t) { return static_cast<double>(t.nsecsElapsed()) * 1e-9; }
 
 // The shared result, with what only the command reports.

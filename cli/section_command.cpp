@@ -63,11 +63,6 @@ struct Options {
     QCommandLineOption quiet = CommandProgress::quietOption();
 };
 
-const session::SettingOptions& clusterOptions() {
-    static const session::SettingOptions options{"clusters", "linkage"};
-    return options;
-}
-
 // The fill named on the command line; nullopt with `problem` set when it is not one.
 std::optional<std::pair<engine::SectionFill, int>> parseFill(const QString& text,
                                                              QString& problem) {

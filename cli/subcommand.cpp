@@ -23,4 +23,9 @@ int dataFailureStatus(const std::exception& e) {
     return dynamic_cast<const data::RegionOutsideGrid*>(&e) != nullptr ? 2 : 1;
 }
 
+const session::SettingOptions& clusterOptions() {
+    static const session::SettingOptions options{"clusters", "linkage"};
+    return options;
+}
+
 }  // namespace ensil::cli
