@@ -7,8 +7,10 @@
 #include <QTextStream>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "app/display_loss.h"
 #include "app/main_window.h"
 #include "cli/command_line.h"
 #include "data/platform.h"
@@ -46,7 +48,9 @@ int main(int argc, char* argv[]) {
             return 4;
         }
         QSurfaceFormat::setDefaultFormat(ensil::gl::preferredSurfaceFormat());
+        std::optional<ensil::app::DisplayLossGuard> guard(std::in_place, "ensil render");
         QGuiApplication app(argc, argv);
+        guard.reset();
         setApplicationIdentity();
         return ensil::cli::runCommandLine(args, out, err).exitCode;
     }
@@ -75,7 +79,9 @@ int main(int argc, char* argv[]) {
 
     // The default format must be set before the QApplication exists.
     QSurfaceFormat::setDefaultFormat(ensil::workbench::workbenchSurfaceFormat());
+    std::optional<ensil::app::DisplayLossGuard> guard(std::in_place, "ensil");
     QApplication app(argc, argv);
+    guard.reset();
     setApplicationIdentity();
     // Wayland compositors match the window to the installed desktop entry by this id (X11 ones
     // by WM_CLASS "ensil", the entry's StartupWMClass); ENSIL_APP_ID comes from
