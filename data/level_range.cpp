@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "data/ascii_case.h"
 #include "data/error.h"
 #include "data/number_text.h"
 #include "data/unit_conversion.h"
@@ -18,19 +19,13 @@ constexpr const char* kForm = "give it as FROM:TO with optional units, e.g. 1000
                 "the level range '" + text + "' " + why + ": " + std::string(kForm));
 }
 
-std::string trimmed(const std::string& s) {
-    const auto first = s.find_first_not_of(" \t");
-    if (first == std::string::npos) return {};
-    return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
 // A number at the start of `s` (after spaces); sets `rest` to what follows it.
 std::optional<double> leadingNumber(const std::string& s, std::string& rest) {
-    const std::string t = trimmed(s);
+    const std::string t = asciiTrimmed(s);
     double value = 0.0;
     const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (error != std::errc() || !std::isfinite(value)) return std::nullopt;
-    rest = trimmed(std::string(end, t.data() + t.size()));
+    rest = asciiTrimmed(std::string(end, t.data() + t.size()));
     return value;
 }
 

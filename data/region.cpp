@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "data/ascii_case.h"
 #include "data/number_text.h"
 
 namespace ensil::data {
@@ -23,15 +24,9 @@ constexpr double kEdgeSlack = 1e-4;
                 "the region '" + text + "' " + why + ": " + std::string(kForm));
 }
 
-std::string trimmed(const std::string& s) {
-    const auto first = s.find_first_not_of(" \t");
-    if (first == std::string::npos) return {};
-    return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
-
 // The whole of `text` (spaces around allowed) as a finite number.
 std::optional<double> number(const std::string& text) {
-    const std::string t = trimmed(text);
+    const std::string t = asciiTrimmed(text);
     double value = 0.0;
     const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (t.empty() || error != std::errc() || end != t.data() + t.size() || !std::isfinite(value)) {
@@ -98,9 +93,9 @@ Region parseRegion(const std::string& text) {
             const std::optional<double> value = number(part);
             if (!value) {
                 constexpr std::array<const char*, 4> kNames{"LON0", "LON1", "LAT0", "LAT1"};
-                refuse(text, trimmed(part).empty()
+                refuse(text, asciiTrimmed(part).empty()
                                  ? "has no " + std::string(kNames.at(count))
-                                 : "has '" + trimmed(part) + "' for " + kNames.at(count) +
+                                 : "has '" + asciiTrimmed(part) + "' for " + kNames.at(count) +
                                        ", which is not a number");
             }
             values.at(count) = *value;

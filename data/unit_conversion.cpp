@@ -5,6 +5,8 @@
 #include <memory>
 #include <mutex>
 
+#include "data/ascii_case.h"
+
 namespace ensil::data {
 namespace {
 
@@ -34,9 +36,8 @@ const ut_system* unitSystem() {
 Unit parse(const std::string& units) {
     const ut_system* system = unitSystem();
     // ut_parse refuses surrounding spaces.
-    const auto first = units.find_first_not_of(" \t");
-    if (system == nullptr || first == std::string::npos) return nullptr;
-    const std::string trimmed = units.substr(first, units.find_last_not_of(" \t") - first + 1);
+    const std::string trimmed = asciiTrimmed(units);
+    if (system == nullptr || trimmed.empty()) return nullptr;
     return Unit(ut_parse(system, trimmed.c_str(), UT_UTF8));
 }
 
