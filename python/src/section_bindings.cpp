@@ -21,6 +21,7 @@
 #include "python/src/gui_application.h"
 #include "python/src/numpy_arrays.h"
 #include "python/src/py_preprocess.h"
+#include "python/src/settings.h"
 #include "session/setting_table.h"
 
 namespace py = pybind11;
@@ -100,24 +101,12 @@ py::array_t<float> latticeArray(const engine::SectionView& view, const std::vect
     return out;
 }
 
-// The index of a choice setting's value given by name (colour_map=, vertical_axis=), or an
-// ArgumentError naming the argument and the choices.
-int choiceOf(const char* id, const std::string& argument, const std::string& value) {
-    const session::Setting& setting = session::setting(id);
-    const auto found = std::find(setting.choices.begin(), setting.choices.end(), value);
-    if (found == setting.choices.end()) {
-        throw ArgumentError(argument + " '" + value + "' is refused: it must be one of " +
-                            setting.allowed());
-    }
-    return static_cast<int>(std::distance(setting.choices.begin(), found));
-}
-
 // colour_map= and range=, checked as the setting table checks them.
 session::SectionsColours coloursOf(const std::string& colourMap,
                                    const std::optional<std::pair<double, double>>& range) {
     session::SectionsColours colours;
-    colours.map = static_cast<session::SectionsColourMap>(
-        choiceOf("sections_colour_map", "colour_map", colourMap));
+    colours.map = static_cast<session::SectionsColourMap>(settingFromPython(
+        session::setting("sections_colour_map"), py::str(colourMap), "colour_map"));
     if (range) {
         for (const auto& [id, value] : {std::pair{"sections_range_min", range->first},
                                         std::pair{"sections_range_max", range->second}}) {
@@ -140,8 +129,8 @@ PySection section(const PyPreprocessResult& self, const py::object& level, const
                   const std::optional<std::pair<double, double>>& range, bool band,
                   const std::string& verticalAxis) {
     engine::SectionPlace place = placeOf(level, lat, lon, path);
-    place.verticalAxis =
-        static_cast<data::VerticalAxis>(choiceOf("vertical_axis", "vertical_axis", verticalAxis));
+    place.verticalAxis = static_cast<data::VerticalAxis>(settingFromPython(
+        session::setting("vertical_axis"), py::str(verticalAxis), "vertical_axis"));
     std::string problem;
     const auto chosen = engine::parseSectionFill(fill, problem);
     if (!chosen) throw ArgumentError("fill is refused: " + problem);

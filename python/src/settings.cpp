@@ -19,7 +19,8 @@ const session::Setting& settingNamed(std::string_view id) {
     throw ArgumentError("there is no setting '" + std::string(id) + "'; the settings are " + names);
 }
 
-double settingFromPython(const session::Setting& setting, const py::handle& value) {
+double settingFromPython(const session::Setting& setting, const py::handle& value,
+                         const std::string& argument) {
     std::string text;
     if (py::isinstance<py::bool_>(value)) {
         text = value.cast<bool>() ? "true" : "false";
@@ -34,8 +35,12 @@ double settingFromPython(const session::Setting& setting, const py::handle& valu
     const auto parsed = session::parseSettingValue(setting, QString::fromStdString(text), problem);
     if (!parsed) {
         std::string message = problem.toStdString();
-        // The parser names the option; a setting without one goes by its id.
-        if (setting.option.empty() && message.rfind("--", 0) == 0) {
+        // The parser names the option; Python names the argument it came as, a setting without
+        // an option goes by its id.
+        const std::string option = "--" + std::string(setting.option);
+        if (!argument.empty() && !setting.option.empty() && message.rfind(option, 0) == 0) {
+            message.replace(0, option.size(), argument);
+        } else if (setting.option.empty() && message.rfind("--", 0) == 0) {
             message.replace(0, 2, setting.id);
         }
         throw ArgumentError(message);

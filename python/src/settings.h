@@ -16,9 +16,11 @@ namespace ensil::python {
 
 // The setting named `id`; ensil.ArgumentError naming the settings there are when none is.
 const session::Setting& settingNamed(std::string_view id);
-// Python's bool, int, float or str (a choice's name, "#rrggbb") as the setting's value.
-// Throws ArgumentError when refused.
-double settingFromPython(const session::Setting& setting, const pybind11::handle& value);
+// Python's bool, int, float or str (a choice's name, "#rrggbb") as the setting's value, parsed
+// as the command line parses it. Throws ArgumentError when refused, naming `argument` (the
+// Python argument it came as, e.g. "colour_map"), else the setting's option or id.
+double settingFromPython(const session::Setting& setting, const pybind11::handle& value,
+                         const std::string& argument = {});
 // The value as Python has it: float, int, bool, or str for choices and colours.
 pybind11::object settingToPython(const session::Setting& setting, double value);
 // A number the command line takes as `option` (--iso, --error) with its range and refusal.
