@@ -41,6 +41,7 @@
 #include "workbench/isovalue_session.h"
 #include "workbench/point_description.h"
 #include "workbench/recent_selections.h"
+#include "workbench/step_cluster_strip.h"
 #include "workbench/time_steps.h"
 #include "workbench/workbench.h"
 
@@ -297,8 +298,8 @@ void MainWindow::showOverview() {
         std::make_unique<geo::MapProjection>(geo::MapProjection::forGrid(e.grid, e.gridMapping));
     m_info->showFacts(engine::ensembleFacts(overview));
     offerVariables();
-    QStringList times;
-    for (const std::string& label : e.timeSteps.labels) times << QString::fromStdString(label);
+    // The data's time steps, as the workbench's strip has them.
+    const QStringList& times = m_workbench->strip()->labels();
     const auto& files = m_workbench->files();
     m_timeBar->setSteps(times, files ? static_cast<int>(files->timeIndex) : 0);
     // Time controls only for data with time steps.

@@ -30,6 +30,7 @@ public:
     // New steps (new data, or steps clustered otherwise): every step's clusters forgotten.
     void setSteps(const QStringList& labels);
     [[nodiscard]] int stepCount() const { return static_cast<int>(m_steps.size()); }
+    [[nodiscard]] const QStringList& labels() const { return m_labels; }
     // A step's cluster identity per member shown (empty: not clustered yet).
     [[nodiscard]] const std::vector<int>& stepClusters(int step) const;
     // Other data: their clusters come with their first surfaces, and the strip fills again.
